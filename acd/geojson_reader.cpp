@@ -1,0 +1,1 @@
+#include "acd/geojson_reader.h"

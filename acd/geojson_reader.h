@@ -1,0 +1,18 @@
+#pragma once
+
+#include <istream>
+#include <string>
+#include <vector>
+
+#include "acd/polygon2d.h"
+
+namespace acdplan::acd {
+
+/// Parses GeoJSON (RFC 7946): a Polygon, MultiPolygon, Feature or FeatureCollection (features of other geometry types are an error naming the feature index), or a GeometryCollection of those.
+/// Returns the polygons as written (not yet cleaned or validated: see PreparePolygon()).
+/// @param source  the file name used in messages.
+/// @throws InputError naming `source`, the line (or element) and the rule broken, e.g. a
+///         malformed or non-finite number, a wrong count, a truncated file.
+std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source);
+
+}  // namespace acdplan::acd

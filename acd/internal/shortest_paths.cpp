@@ -1,0 +1,1 @@
+#include "acd/internal/shortest_paths.h"

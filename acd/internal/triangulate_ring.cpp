@@ -1,0 +1,1 @@
+#include "acd/internal/triangulate_ring.h"

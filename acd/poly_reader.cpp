@@ -1,0 +1,1 @@
+#include "acd/poly_reader.h"

@@ -1,0 +1,1 @@
+#include "acd/prepare_polygon.h"

@@ -1,0 +1,1 @@
+#include "acd/read_polygons.h"

@@ -1,0 +1,1 @@
+#include "acd/wkt_reader.h"

@@ -1,0 +1,18 @@
+#pragma once
+
+#include <istream>
+#include <string>
+#include <vector>
+
+#include "acd/polygon2d.h"
+
+namespace acdplan::acd {
+
+/// Parses Well-Known Text: one or more POLYGON or MULTIPOLYGON geometries (GEOMETRYCOLLECTION of them too), case-insensitive, EMPTY allowed and skipped.
+/// Returns the polygons as written (not yet cleaned or validated: see PreparePolygon()).
+/// @param source  the file name used in messages.
+/// @throws InputError naming `source`, the line (or element) and the rule broken, e.g. a
+///         malformed or non-finite number, a wrong count, a truncated file.
+std::vector<Polygon2d> ReadWkt(std::istream& in, const std::string& source);
+
+}  // namespace acdplan::acd

@@ -1,0 +1,46 @@
+#include "acd/polygon2d.h"
+
+#include <gtest/gtest.h>
+
+namespace acdplan::acd {
+namespace {
+
+Polygon2d SquareWithHole() {
+  Polygon2d p;
+  p.outer = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  p.holes = {{{1, 1}, {1, 2}, {2, 2}, {2, 1}}};  // clockwise
+  return p;
+}
+
+TEST(Polygon2dTest, SignedAreaFollowsOrientation) {
+  const Ring2d ccw = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+  EXPECT_DOUBLE_EQ(SignedArea(ccw), 2.0);
+  EXPECT_DOUBLE_EQ(SignedArea(Reversed(ccw)), -2.0);
+}
+
+TEST(Polygon2dTest, AreaSubtractsHoles) { EXPECT_DOUBLE_EQ(Area(SquareWithHole()), 15.0); }
+
+TEST(Polygon2dTest, CentroidAccountsForHoles) {
+  const Point2d c = Centroid(SquareWithHole());
+  // (16 * (2,2) - 1 * (1.5,1.5)) / 15
+  EXPECT_NEAR(c.x(), (32.0 - 1.5) / 15.0, 1e-12);
+  EXPECT_NEAR(c.y(), (32.0 - 1.5) / 15.0, 1e-12);
+}
+
+TEST(Polygon2dTest, CentroidIsStableFarFromTheOrigin) {
+  Polygon2d p;
+  for (const Point2d& v : Ring2d{{0, 0}, {1, 0}, {1, 1}, {0, 1}}) p.outer.push_back(v + Point2d(1e8, -1e8));
+  const Point2d c = Centroid(p);
+  EXPECT_NEAR(c.x(), 1e8 + 0.5, 1e-6);
+  EXPECT_NEAR(c.y(), -1e8 + 0.5, 1e-6);
+}
+
+TEST(Polygon2dTest, ReferenceRadiusIsMaxDistanceFromVertexMean) {
+  Polygon2d p;
+  p.outer = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  EXPECT_DOUBLE_EQ(ReferenceRadius(p), std::sqrt(2.0));
+  EXPECT_EQ(VertexCount(SquareWithHole()), 8);
+}
+
+}  // namespace
+}  // namespace acdplan::acd
