@@ -1,0 +1,30 @@
+#pragma once
+// Writing a decomposition: DESIGN.md's JSON contract and an SVG picture.
+
+#include <string>
+
+#include "acd/decomposition2d.h"
+
+namespace acdplan::acd {
+
+/// Labels that go into the JSON and the picture's caption.
+struct DecompositionLabels {
+  std::string input;       ///< Input file name as given.
+  double tau_rel = -1.0;   ///< tau relative to ReferenceRadius(); < 0 when tau was absolute.
+};
+
+/// The decomposition JSON ("format": "acdplan.decomposition2d/1"), exactly as in DESIGN.md.
+std::string DecompositionToJson(const Decomposition2d& decomposition,
+                                const DecompositionLabels& labels);
+
+/// An SVG a person reads at a glance: components in distinct fills, openings drawn, the most
+/// concave notches of the input marked, and a caption with tau, measure, components and time.
+std::string DecompositionToSvg(const Decomposition2d& decomposition,
+                               const DecompositionLabels& labels);
+
+/// Writes `text` to `path` atomically (a temporary file renamed into place), so a failed run
+/// never leaves a partial file that looks complete.
+/// @throws std::runtime_error naming the path if it cannot be written.
+void WriteFileAtomically(const std::string& path, const std::string& text);
+
+}  // namespace acdplan::acd
