@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Builds acdplan and runs its whole test suite.
+#
+#   tools/test.sh             Release build in build/ (or $ACDPLAN_BUILD_DIR)
+#   tools/test.sh --sanitize  ASan+UBSan RelWithDebInfo build in build-asan/
+#                             (or $ACDPLAN_ASAN_BUILD_DIR)
+#
+# Ends with one line "acdplan tests: N passed, M failed"; exits 0 only if every test passed.
+# $ACDPLAN_JOBS overrides the parallelism (default: nproc).
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+
+sanitize=0
+for arg in "$@"; do
+  case "$arg" in
+    --sanitize) sanitize=1 ;;
+    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "test.sh: unknown argument '$arg' (expected --sanitize)" >&2; exit 2 ;;
+  esac
+done
+
+jobs=${ACDPLAN_JOBS:-$(nproc)}
+label="acdplan tests"
+
+if [[ $sanitize -eq 1 ]]; then
+  build_dir=${ACDPLAN_ASAN_BUILD_DIR:-build-asan}
+  cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DACDPLAN_SANITIZE=ON)
+  # Options already in the environment come last, so they win.
+  export ASAN_OPTIONS="detect_leaks=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
+  echo "test.sh: sanitizer build in $build_dir (ASan + UBSan)"
+else
+  build_dir=${ACDPLAN_BUILD_DIR:-build}
+  cmake_args=(-DCMAKE_BUILD_TYPE=Release -DACDPLAN_SANITIZE=OFF)
+fi
+
+"$root/tools/install-deps.sh"
+
+if ! cmake -S "$root" -B "$build_dir" "${cmake_args[@]}" -DACDPLAN_BUILD_TESTS=ON; then
+  echo "$label: 0 passed, 0 failed (configure failed, no tests ran)"
+  exit 1
+fi
+if ! cmake --build "$build_dir" -j "$jobs"; then
+  echo "$label: 0 passed, 0 failed (build failed, no tests ran)"
+  exit 1
+fi
+
+log="$build_dir/ctest-summary.log"
+set +e
+(cd "$build_dir" && ctest --output-on-failure --no-tests=error -j "$jobs") 2>&1 | tee "$log"
+ctest_status=${PIPESTATUS[0]}
+set -e
+
+# ctest's summary: "97% tests passed, 1 tests failed out of 34".
+summary=$(grep -E '^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1 || true)
+if [[ -z "$summary" ]]; then
+  echo "$label: 0 passed, 0 failed (ctest found no tests or did not finish; status $ctest_status)"
+  exit 1
+fi
+failed=$(sed -E 's/^[0-9]+% tests passed, ([0-9]+) tests? failed.*/\1/' <<<"$summary")
+total=$(sed -E 's/.* out of ([0-9]+).*/\1/' <<<"$summary")
+passed=$((total - failed))
+echo "$label: $passed passed, $failed failed"
+if [[ $failed -ne 0 || $ctest_status -ne 0 ]]; then
+  exit 1
+fi
+exit 0
