@@ -7,7 +7,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 
-shared="$root/../shared"
+shared="$(cd "$root/.." && pwd)/shared"
 input="$shared/data/polygons/acd2d/nazca/nazca_monkey.poly"
 if [[ ! -f "$input" ]]; then
   echo "run.sh: input polygon not found: $input" >&2
