@@ -1,0 +1,344 @@
+#include "acd/concavity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <queue>
+
+#include <Eigen/Eigenvalues>
+
+#include "acd/internal/exact_predicates.h"
+#include "acd/internal/shortest_paths.h"
+
+namespace acdplan::acd {
+namespace {
+
+using internal::Orientation;
+
+// Rounding noise of a coordinate of magnitude 1, relative (a few hundred ulps).
+constexpr double kRoundingNoise = 1e-13;
+
+double MaxAbsCoordinate(const Point2d& a, const Point2d& b, const Point2d& c) {
+  return std::max({a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff()});
+}
+
+double Cross(const Point2d& u, const Point2d& v) { return u.x() * v.y() - u.y() * v.x(); }
+
+double DistanceToSegment(const Point2d& p, const Point2d& a, const Point2d& b) {
+  const Point2d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  if (length2 == 0.0) return (p - a).norm();
+  const double t = std::clamp((p - a).dot(ab) / length2, 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
+
+// A pocket: the ring from hull vertex `begin` forward to hull vertex `end` (the bridge is
+// end -> begin across the hull), with at least one vertex in between.
+struct Pocket {
+  int begin;
+  int end;
+};
+
+// Bridges and pockets of the outer ring (Ch. III.B, Observation B.3). Ring vertices lying on a
+// bridge (on the hull boundary) split a pocket, so every pocket vertex is strictly inside.
+std::vector<Pocket> FindPockets(const Ring2d& ring, const std::vector<int>& hull) {
+  std::vector<Pocket> pockets;
+  const int n = static_cast<int>(ring.size());
+  const int h = static_cast<int>(hull.size());
+  for (int k = 0; k < h; ++k) {
+    const int begin = hull[k];
+    const int end = hull[(k + 1) % h];
+    const int gap = (end - begin + n) % n;
+    if (gap <= 1) continue;
+    int start = begin;
+    for (int step = 1; step < gap; ++step) {
+      const int i = (begin + step) % n;
+      if (Orientation(ring[begin], ring[end], ring[i]) == 0) {
+        if ((i - start + n) % n > 1) pockets.push_back({start, i});
+        start = i;
+      }
+    }
+    if ((end - start + n) % n > 1) pockets.push_back({start, end});
+  }
+  return pockets;
+}
+
+Ring2d PocketChain(const Ring2d& ring, const Pocket& pocket) {
+  const int n = static_cast<int>(ring.size());
+  Ring2d chain;
+  for (int i = pocket.begin;; i = (i + 1) % n) {
+    chain.push_back(ring[i]);
+    if (i == pocket.end) break;
+  }
+  return chain;
+}
+
+// Observation A.5: SL may under-measure a pocket only if one of its edges faces away from the
+// bridge, i.e. its outward normal has a negative dot product with the bridge's. Rotating both
+// normals by the same angle, that is the edge direction against the bridge direction.
+bool HasHazard(const Ring2d& chain) {
+  const Point2d bridge_direction = chain.back() - chain.front();
+  for (size_t i = 0; i + 1 < chain.size(); ++i) {
+    if ((chain[i + 1] - chain[i]).dot(bridge_direction) < 0.0) return true;
+  }
+  return false;
+}
+
+std::vector<double> StraightLineDistances(const Ring2d& chain) {
+  std::vector<double> d(chain.size());
+  for (size_t i = 0; i < chain.size(); ++i) {
+    d[i] = DistanceToSegment(chain[i], chain.front(), chain.back());
+  }
+  return d;
+}
+
+// Per-vertex concavity of one pocket under `measure` (Algorithms 2, 3, 4).
+std::vector<double> PocketConcavity(const Ring2d& chain, ConcavityMeasure measure, double tau) {
+  switch (measure) {
+    case ConcavityMeasure::kStraightLine:
+      return StraightLineDistances(chain);
+    case ConcavityMeasure::kShortestPath:
+      return internal::ShortestPathsToBridge(chain);
+    case ConcavityMeasure::kHybrid1:
+      return HasHazard(chain) ? internal::ShortestPathsToBridge(chain)
+                              : StraightLineDistances(chain);
+    case ConcavityMeasure::kHybrid2: {
+      std::vector<double> sl = StraightLineDistances(chain);
+      if (*std::max_element(sl.begin(), sl.end()) > tau || !HasHazard(chain)) return sl;
+      return internal::ShortestPathsToBridge(chain);
+    }
+  }
+  return StraightLineDistances(chain);
+}
+
+// The antipodal pair of a hole and the distance between them (Ch. IV.A.2.b). `hole` is
+// clockwise; the hole region as a polygon of its own is the reversed, counter-clockwise ring.
+struct Antipodes {
+  int a, b;
+  double distance;
+};
+
+Antipodes PrincipalAxisAntipodes(const Ring2d& hole) {
+  Point2d mean = Point2d::Zero();
+  for (const Point2d& p : hole) mean += p;
+  mean /= static_cast<double>(hole.size());
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
+  for (const Point2d& p : hole) covariance += (p - mean) * (p - mean).transpose();
+  // Eqn. 4.1: the principal axis is the eigenvector of the largest eigenvalue.
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(covariance);
+  const Point2d axis = solver.eigenvectors().col(1);
+  int lo = 0, hi = 0;
+  for (int i = 1; i < static_cast<int>(hole.size()); ++i) {
+    if (hole[i].dot(axis) < hole[lo].dot(axis)) lo = i;
+    if (hole[i].dot(axis) > hole[hi].dot(axis)) hi = i;
+  }
+  return {lo, hi, (hole[lo] - hole[hi]).norm()};
+}
+
+// Two shortest-path sweeps inside the hole region: from a principal-axis extreme to the
+// geodesically farthest vertex, and from there to its farthest. A lower bound of the geodesic
+// diameter that, unlike the principal axis, follows a winding hole (Fig. 20).
+Antipodes GeodesicAntipodes(const Ring2d& hole) {
+  const Ring2d region = Reversed(hole);
+  const int n = static_cast<int>(hole.size());
+  auto farthest = [&](int source) {
+    const internal::ShortestPathTree tree = internal::ComputeShortestPathTree(region, source);
+    const int far = static_cast<int>(std::max_element(tree.distance.begin(), tree.distance.end()) -
+                                     tree.distance.begin());
+    return std::make_pair(far, tree.distance[far]);
+  };
+  const int start = n - 1 - PrincipalAxisAntipodes(hole).a;
+  const int first = farthest(start).first;
+  const auto [second, distance] = farthest(first);
+  // Back to indices of the clockwise hole ring.
+  return {n - 1 - first, n - 1 - second, distance};
+}
+
+bool UseGeodesic(const ConcavityOptions& options) {
+  switch (options.hole_diameter) {
+    case HoleDiameter::kPrincipalAxis:
+      return false;
+    case HoleDiameter::kGeodesic:
+      return true;
+    case HoleDiameter::kAuto:
+      break;
+  }
+  return options.measure == ConcavityMeasure::kShortestPath ||
+         options.measure == ConcavityMeasure::kHybrid1;
+}
+
+// Closest vertex of `ring` to `p`: index and distance.
+std::pair<int, double> ClosestVertex(const Ring2d& ring, const Point2d& p) {
+  int best = 0;
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < static_cast<int>(ring.size()); ++i) {
+    const double d2 = (ring[i] - p).squaredNorm();
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      best = i;
+    }
+  }
+  return {best, std::sqrt(best_d2)};
+}
+
+// Hole concavity, Eqn. 4.2: concavity(P_i) = concavity(x) + dist(x, p_i) + dist(p_i, cw(p_i))
+// + delta, x the vertex closest to p_i outside P_i; if x is on hole P_j, concavity(x) is
+// concavity(P_j). The chains of holes are resolved with Dijkstra's algorithm over the holes
+// (a hole's depth is the smallest over its connections), which also settles cyclic "closest"
+// relations that the equation leaves open.
+std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
+                                        const std::vector<double>& outer_concavity, double delta,
+                                        const ConcavityOptions& options) {
+  const int k = static_cast<int>(polygon.holes.size());
+  std::vector<HoleConcavity> holes(k);
+  if (k == 0) return holes;
+  const bool geodesic = UseGeodesic(options);
+  for (int i = 0; i < k; ++i) {
+    const Ring2d& hole = polygon.holes[i];
+    const Antipodes pair = geodesic ? GeodesicAntipodes(hole) : PrincipalAxisAntipodes(hole);
+    holes[i].p = pair.a;
+    holes[i].cw_p = pair.b;
+    holes[i].diameter = pair.distance;
+  }
+  // Depth through the outer boundary, for either antipode.
+  std::vector<double> depth(k, std::numeric_limits<double>::infinity());
+  std::vector<int> entry(k, 0);  // 0: p connects, 1: cw(p) connects.
+  for (int i = 0; i < k; ++i) {
+    for (int end = 0; end < 2; ++end) {
+      const Point2d& a = polygon.holes[i][end == 0 ? holes[i].p : holes[i].cw_p];
+      const auto [x, d] = ClosestVertex(polygon.outer, a);
+      if (outer_concavity[x] + d < depth[i]) {
+        depth[i] = outer_concavity[x] + d;
+        entry[i] = end;
+      }
+    }
+  }
+  // Dijkstra over holes: reaching hole i through hole j costs concavity(P_j) + dist.
+  std::vector<bool> done(k, false);
+  for (int round = 0; round < k; ++round) {
+    int j = -1;
+    for (int i = 0; i < k; ++i) {
+      if (!done[i] && (j < 0 || depth[i] < depth[j])) j = i;
+    }
+    done[j] = true;
+    const double concavity_j = depth[j] + holes[j].diameter + delta;
+    for (int i = 0; i < k; ++i) {
+      if (done[i]) continue;
+      for (int end = 0; end < 2; ++end) {
+        const Point2d& a = polygon.holes[i][end == 0 ? holes[i].p : holes[i].cw_p];
+        const double d = ClosestVertex(polygon.holes[j], a).second;
+        if (concavity_j + d < depth[i]) {
+          depth[i] = concavity_j + d;
+          entry[i] = end;
+        }
+      }
+    }
+  }
+  for (int i = 0; i < k; ++i) {
+    if (entry[i] == 1) std::swap(holes[i].p, holes[i].cw_p);
+    holes[i].depth = depth[i];
+    holes[i].concavity = depth[i] + holes[i].diameter + delta;
+  }
+  return holes;
+}
+
+}  // namespace
+
+bool IsNotch(const Point2d& prev, const Point2d& v, const Point2d& next) {
+  if (Orientation(prev, v, next) >= 0) return false;
+  const Point2d chord = next - prev;
+  const double length = chord.norm();
+  const double noise = kRoundingNoise * std::max(1.0, MaxAbsCoordinate(prev, v, next));
+  if (length == 0.0) return (v - prev).norm() > noise;  // A spike back onto itself.
+  return std::abs(Cross(chord, v - prev)) / length > noise;
+}
+
+int CountNotches(const Polygon2d& polygon) {
+  int count = 0;
+  auto count_ring = [&count](const Ring2d& ring) {
+    const size_t n = ring.size();
+    for (size_t i = 0; i < n; ++i) {
+      if (IsNotch(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n])) ++count;
+    }
+  };
+  count_ring(polygon.outer);
+  for (const Ring2d& hole : polygon.holes) count_ring(hole);
+  return count;
+}
+
+std::vector<int> ConvexHullIndices(const Ring2d& ring) {
+  // Andrew's monotone chain on the indices, with exact orientation; strict turns only.
+  const int n = static_cast<int>(ring.size());
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&ring](int a, int b) {
+    return ring[a].x() < ring[b].x() || (ring[a].x() == ring[b].x() && ring[a].y() < ring[b].y());
+  });
+  std::vector<int> hull(2 * n);
+  int size = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    const int floor = size;
+    for (int idx = 0; idx < n; ++idx) {
+      const int i = pass == 0 ? order[idx] : order[n - 1 - idx];
+      while (size >= floor + 2 &&
+             Orientation(ring[hull[size - 2]], ring[hull[size - 1]], ring[i]) <= 0) {
+        --size;
+      }
+      hull[size++] = i;
+    }
+    --size;  // The last point of each chain starts the other.
+  }
+  hull.resize(std::max(size, 0));
+  std::sort(hull.begin(), hull.end());
+  return hull;
+}
+
+Ring2d ConvexHull(const Ring2d& points) {
+  std::vector<int> indices = ConvexHullIndices(points);
+  // ConvexHullIndices sorted by index; restore the counter-clockwise order for a point cloud.
+  Ring2d hull;
+  if (indices.empty()) return hull;
+  Point2d center = Point2d::Zero();
+  for (int i : indices) center += points[i];
+  center /= static_cast<double>(indices.size());
+  std::sort(indices.begin(), indices.end(), [&](int a, int b) {
+    return std::atan2(points[a].y() - center.y(), points[a].x() - center.x()) <
+           std::atan2(points[b].y() - center.y(), points[b].x() - center.x());
+  });
+  for (int i : indices) hull.push_back(points[i]);
+  return hull;
+}
+
+Concavity2d MeasureConcavity(const Polygon2d& polygon, const ConcavityOptions& options) {
+  Concavity2d result;
+  const Ring2d& ring = polygon.outer;
+  const int n = static_cast<int>(ring.size());
+  result.outer.assign(n, 0.0);
+  const std::vector<int> hull = ConvexHullIndices(ring);
+  for (const Pocket& pocket : FindPockets(ring, hull)) {
+    const Ring2d chain = PocketChain(ring, pocket);
+    const std::vector<double> d = PocketConcavity(chain, options.measure, options.tau);
+    for (size_t k = 1; k + 1 < chain.size(); ++k) result.outer[(pocket.begin + k) % n] = d[k];
+  }
+  // The maximum over notches only (Lemma C.2: the most concave point is a notch).
+  for (int i = 0; i < n; ++i) {
+    if (result.outer[i] > result.value &&
+        IsNotch(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n])) {
+      result.value = result.outer[i];
+      result.witness_vertex = i;
+    }
+  }
+  const double delta = result.value;
+  result.holes = MeasureHoles(polygon, result.outer, delta, options);
+  for (int i = 0; i < static_cast<int>(result.holes.size()); ++i) {
+    if (result.holes[i].concavity >= result.value) {
+      result.value = result.holes[i].concavity;
+      result.witness_hole = i;
+      result.witness_vertex = -1;
+    }
+  }
+  return result;
+}
+
+}  // namespace acdplan::acd

@@ -1,0 +1,142 @@
+#include "acd/decompose2d.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "acd/concavity.h"
+#include "acd/input_error.h"
+#include "acd/internal/openings.h"
+#include "acd/internal/resolve.h"
+
+namespace acdplan::acd {
+namespace {
+
+void ValidateOptions(const Decompose2dOptions& options) {
+  auto fail = [](const std::string& what) { throw InputError("Decompose2d(): " + what); };
+  if (!(options.tau >= 0.0) || !std::isfinite(options.tau)) {
+    fail("tau must be a finite number >= 0, got " + std::to_string(options.tau));
+  }
+  if (!(options.min_convexity >= 0.0 && options.min_convexity <= 1.0)) {
+    fail("min_convexity must be in [0, 1], got " + std::to_string(options.min_convexity));
+  }
+  if (!(options.score_concavity >= 0.0) || !std::isfinite(options.score_concavity)) {
+    fail("score_concavity must be >= 0");
+  }
+  if (!(options.score_distance > 0.0) || !std::isfinite(options.score_distance)) {
+    fail("score_distance must be > 0");
+  }
+}
+
+Ring2d HullOf(const Ring2d& ring) {
+  Ring2d hull;
+  for (int i : ConvexHullIndices(ring)) hull.push_back(ring[i]);
+  return hull;
+}
+
+// Whether a piece is final: Algorithm 1's concavity test, or Algorithm 9's convexity test.
+bool IsAccepted(const Polygon2d& piece, const Concavity2d& concavity,
+                const Decompose2dOptions& options) {
+  const bool convex = concavity.witness_vertex < 0 && concavity.witness_hole < 0;
+  if (convex) return true;
+  if (options.min_convexity > 0.0) {
+    return Area(piece) >= options.min_convexity * std::abs(SignedArea(HullOf(piece.outer)));
+  }
+  // tau == 0 asks for convex pieces; a notch always has positive concavity (Lemma C.1).
+  return options.tau > 0.0 && concavity.value <= options.tau;
+}
+
+// Algorithm 1 (or 9) on one input polygon, appending its nodes and leaves to `out`.
+void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions& options,
+                  Decomposition2d* out) {
+  const ConcavityOptions measure{options.measure, options.hole_diameter, options.tau};
+  const internal::ResolveOptions resolve{options.score_concavity, options.score_distance,
+                                         options.steiner_cuts};
+  const int root = static_cast<int>(out->tree.size());
+  out->roots.push_back(root);
+  out->tree.push_back({});
+  out->tree[root].piece = polygon;
+  // Each resolution removes a notch or a hole and creates no new ones but rounding-level
+  // vertices on edges, so the number of splits is bounded by notches + holes (Theorem C.4).
+  const long budget = 4L * (VertexCount(polygon) + static_cast<long>(polygon.holes.size())) + 16;
+  long splits = 0;
+  std::vector<int> stack = {root};
+  while (!stack.empty()) {
+    const int id = stack.back();
+    stack.pop_back();
+    const Concavity2d concavity = MeasureConcavity(out->tree[id].piece, measure);
+    out->tree[id].concavity = concavity.value;
+    if (IsAccepted(out->tree[id].piece, concavity, options)) {
+      HierarchyNode2d& node = out->tree[id];
+      node.component = static_cast<int>(out->components.size());
+      node.witness = concavity.witness_vertex >= 0
+                         ? node.piece.outer[concavity.witness_vertex]
+                         : (concavity.witness_hole >= 0
+                                ? node.piece.holes[concavity.witness_hole]
+                                                  [concavity.holes[concavity.witness_hole].p]
+                                : Point2d(node.piece.outer.front()));
+      out->components.push_back({node.piece, HullOf(node.piece.outer), Centroid(node.piece),
+                                 concavity.value, source});
+      continue;
+    }
+    internal::Resolution resolution;
+    if (++splits > budget || !Resolve(out->tree[id].piece, concavity, resolve, &resolution)) {
+      std::ostringstream message;
+      message << "Decompose2d(): could not resolve a piece with " << VertexCount(out->tree[id].piece)
+              << " vertices and concavity " << concavity.value << " (split " << splits << ")";
+      throw std::logic_error(message.str());
+    }
+    out->tree[id].witness = resolution.witness;
+    out->tree[id].cuts = resolution.cuts;
+    for (int side = 1; side >= 0; --side) {  // Child 0 is processed first (depth-first order).
+      const int child = static_cast<int>(out->tree.size());
+      HierarchyNode2d node;
+      node.piece = std::move(resolution.pieces[side]);
+      node.parent = id;
+      node.depth = out->tree[id].depth + 1;
+      out->tree.push_back(std::move(node));
+      out->tree[id].children[side] = child;
+      stack.push_back(child);
+    }
+  }
+}
+
+}  // namespace
+
+Decomposition2d Decompose2d(const std::vector<Polygon2d>& polygons,
+                            const Decompose2dOptions& options) {
+  ValidateOptions(options);
+  Decomposition2d out;
+  out.measure = options.measure;
+  out.tau = options.tau;
+  out.min_convexity = options.min_convexity;
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < static_cast<int>(polygons.size()); ++i) {
+    DecomposeOne(polygons[i], i, options, &out);
+  }
+  out.openings = internal::FindOpenings(out);
+  out.stats.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  double area = 0.0, hull_area = 0.0;
+  for (const Component2d& c : out.components) {
+    area += Area(c.polygon);
+    hull_area += std::abs(SignedArea(c.hull));
+    out.stats.max_concavity = std::max(out.stats.max_concavity, c.concavity);
+  }
+  out.stats.convexity = hull_area > 0.0 ? area / hull_area : 1.0;  // Eqn. 4.4.
+  out.stats.components = static_cast<int>(out.components.size());
+  for (const Polygon2d& p : polygons) {
+    out.stats.vertices += VertexCount(p);
+    out.stats.notches += CountNotches(p);
+  }
+  return out;
+}
+
+Decomposition2d Decompose2d(const Polygon2d& polygon, const Decompose2dOptions& options) {
+  return Decompose2d(std::vector<Polygon2d>{polygon}, options);
+}
+
+}  // namespace acdplan::acd

@@ -1,0 +1,94 @@
+#include "acd/internal/openings.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace acdplan::acd::internal {
+namespace {
+
+struct Interval {
+  double t0, t1;
+  int component;
+};
+
+// The parameter intervals, along cut `from` -> `to`, of outer edges of components
+// [first, last) that lie on the cut.
+std::vector<Interval> IntervalsOnCut(const Decomposition2d& d, const Cut2d& cut, int first,
+                                     int last) {
+  const Point2d axis = cut.to - cut.from;
+  const double length = axis.norm();
+  std::vector<Interval> intervals;
+  if (length == 0.0) return intervals;
+  const Point2d unit = axis / length;
+  const double scale = std::max({length, cut.from.cwiseAbs().maxCoeff(), cut.to.cwiseAbs().maxCoeff()});
+  const double tolerance = 1e-9 * scale;
+  for (int c = first; c < last; ++c) {
+    const Ring2d& ring = d.components[c].polygon.outer;
+    const size_t n = ring.size();
+    for (size_t i = 0; i < n; ++i) {
+      const Point2d u = ring[i] - cut.from;
+      const Point2d w = ring[(i + 1) % n] - cut.from;
+      const double off_u = unit.x() * u.y() - unit.y() * u.x();
+      const double off_w = unit.x() * w.y() - unit.y() * w.x();
+      if (std::abs(off_u) > tolerance || std::abs(off_w) > tolerance) continue;
+      double t0 = u.dot(unit) / length, t1 = w.dot(unit) / length;
+      if (t0 > t1) std::swap(t0, t1);
+      t0 = std::max(t0, 0.0);
+      t1 = std::min(t1, 1.0);
+      if ((t1 - t0) * length > tolerance) intervals.push_back({t0, t1, c});
+    }
+  }
+  std::sort(intervals.begin(), intervals.end(),
+            [](const Interval& a, const Interval& b) { return a.t0 < b.t0; });
+  return intervals;
+}
+
+// First and one-past-last component index of the leaves below `node` (leaves are numbered in
+// depth-first order, so they are contiguous).
+std::pair<int, int> LeafRange(const Decomposition2d& d, int node) {
+  int lo = node, hi = node;
+  while (d.tree[lo].children[0] >= 0) lo = d.tree[lo].children[0];
+  while (d.tree[hi].children[1] >= 0) hi = d.tree[hi].children[1];
+  return {d.tree[lo].component, d.tree[hi].component + 1};
+}
+
+}  // namespace
+
+std::vector<Opening2d> FindOpenings(const Decomposition2d& d) {
+  std::vector<Opening2d> openings;
+  for (int id = 0; id < static_cast<int>(d.tree.size()); ++id) {
+    const HierarchyNode2d& node = d.tree[id];
+    if (node.children[0] < 0) continue;
+    const auto [a0, a1] = LeafRange(d, node.children[0]);
+    const auto [b0, b1] = LeafRange(d, node.children[1]);
+    for (const Cut2d& cut : node.cuts) {
+      const std::vector<Interval> left = IntervalsOnCut(d, cut, a0, a1);
+      const std::vector<Interval> right = IntervalsOnCut(d, cut, b0, b1);
+      const double length = (cut.to - cut.from).norm();
+      const double tolerance = 1e-9 * std::max(1.0, length);
+      std::vector<Opening2d> found;
+      double last_t1 = 0.0;
+      for (const Interval& l : left) {
+        for (const Interval& r : right) {
+          const double t0 = std::max(l.t0, r.t0), t1 = std::min(l.t1, r.t1);
+          if ((t1 - t0) * length <= tolerance) continue;
+          const int ca = std::min(l.component, r.component);
+          const int cb = std::max(l.component, r.component);
+          // Merge with the previous piece of this cut when it continues it.
+          if (!found.empty() && found.back().component_a == ca && found.back().component_b == cb &&
+              std::abs(t0 - last_t1) * length <= tolerance) {
+            found.back().b = cut.from + t1 * (cut.to - cut.from);
+          } else {
+            found.push_back({cut.from + t0 * (cut.to - cut.from), cut.from + t1 * (cut.to - cut.from),
+                             ca, cb});
+          }
+          last_t1 = t1;
+        }
+      }
+      openings.insert(openings.end(), found.begin(), found.end());
+    }
+  }
+  return openings;
+}
+
+}  // namespace acdplan::acd::internal

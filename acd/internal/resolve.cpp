@@ -1,0 +1,347 @@
+#include "acd/internal/resolve.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <optional>
+
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include "acd/internal/exact_predicates.h"
+
+namespace acdplan::acd::internal {
+namespace {
+
+// A point of the boundary where a cut ends: a vertex of a ring, or a new point on an edge.
+struct Endpoint {
+  int ring = -1;        // -1: the outer ring; k >= 0: hole k.
+  int index = 0;        // The vertex, or the edge's first vertex when `on_edge`.
+  bool on_edge = false;
+  Point2d point = Point2d::Zero();
+};
+
+// A candidate end point of a cut with its score (higher is better).
+struct Candidate {
+  Endpoint end;
+  double score;
+};
+
+// New points closer than this (relative to the edge length) to an edge end snap to that end:
+// a sliver edge would carry rounding noise into the pieces.
+constexpr double kMinEdgeFraction = 1e-6;
+
+const Ring2d& RingOf(const Polygon2d& polygon, int ring) {
+  return ring < 0 ? polygon.outer : polygon.holes[ring];
+}
+
+int Next(int i, int n) { return i + 1 == n ? 0 : i + 1; }
+int Prev(int i, int n) { return i == 0 ? n - 1 : i - 1; }
+
+// Whether a segment leaving `e` toward `target` starts strictly into the interior. Every ring
+// keeps the interior on its left (outer counter-clockwise, holes clockwise).
+bool LeavesInward(const Polygon2d& polygon, const Endpoint& e, const Point2d& target) {
+  const Ring2d& ring = RingOf(polygon, e.ring);
+  const int n = static_cast<int>(ring.size());
+  if (e.on_edge) return Orientation(ring[e.index], ring[Next(e.index, n)], target) > 0;
+  const Point2d& u = ring[Prev(e.index, n)];
+  const Point2d& v = ring[e.index];
+  const Point2d& w = ring[Next(e.index, n)];
+  const int left_of_in = Orientation(u, v, target);
+  const int left_of_out = Orientation(v, w, target);
+  if (Orientation(u, v, w) > 0) return left_of_in > 0 && left_of_out > 0;
+  return left_of_in > 0 || left_of_out > 0;
+}
+
+bool IsIncident(const Endpoint& e, int ring, int edge, int n) {
+  if (e.ring != ring) return false;
+  if (e.on_edge) return edge == e.index;
+  return edge == e.index || Next(edge, n) == e.index;
+}
+
+// Whether the segment a-b is a valid cut: it leaves both ends into the interior and meets no
+// boundary edge elsewhere (exact predicates).
+bool IsClearCut(const Polygon2d& polygon, const Endpoint& a, const Endpoint& b) {
+  if (!LeavesInward(polygon, a, b.point) || !LeavesInward(polygon, b, a.point)) return false;
+  const Kernel::Segment_2 cut(ToCgal(a.point), ToCgal(b.point));
+  const double xmin = std::min(a.point.x(), b.point.x()), xmax = std::max(a.point.x(), b.point.x());
+  const double ymin = std::min(a.point.y(), b.point.y()), ymax = std::max(a.point.y(), b.point.y());
+  for (int r = -1; r < static_cast<int>(polygon.holes.size()); ++r) {
+    const Ring2d& ring = RingOf(polygon, r);
+    const int n = static_cast<int>(ring.size());
+    for (int i = 0; i < n; ++i) {
+      const Point2d& u = ring[i];
+      const Point2d& w = ring[Next(i, n)];
+      if (std::max(u.x(), w.x()) < xmin || std::min(u.x(), w.x()) > xmax ||
+          std::max(u.y(), w.y()) < ymin || std::min(u.y(), w.y()) > ymax) {
+        continue;
+      }
+      if (IsIncident(a, r, i, n) || IsIncident(b, r, i, n)) continue;
+      if (CGAL::do_intersect(cut, Kernel::Segment_2(ToCgal(u), ToCgal(w)))) return false;
+    }
+  }
+  return true;
+}
+
+bool SegmentsMeet(const Point2d& a, const Point2d& b, const Point2d& c, const Point2d& d) {
+  return CGAL::do_intersect(Kernel::Segment_2(ToCgal(a), ToCgal(b)),
+                            Kernel::Segment_2(ToCgal(c), ToCgal(d)));
+}
+
+// The first boundary point hit by the ray from vertex `r` of ring `ring` along the bisector of
+// the cone its two edges' extensions span (the cut that splits a reflex angle in halves).
+std::optional<Endpoint> BisectorHit(const Polygon2d& polygon, int ring_id, int r) {
+  const Ring2d& ring = RingOf(polygon, ring_id);
+  const int n = static_cast<int>(ring.size());
+  const Point2d& v = ring[r];
+  const Point2d d = (v - ring[Prev(r, n)]).normalized() + (v - ring[Next(r, n)]).normalized();
+  if (d.squaredNorm() < 1e-24) return std::nullopt;
+  double best_t = std::numeric_limits<double>::infinity();
+  std::optional<Endpoint> best;
+  for (int k = -1; k < static_cast<int>(polygon.holes.size()); ++k) {
+    const Ring2d& other = RingOf(polygon, k);
+    const int m = static_cast<int>(other.size());
+    for (int i = 0; i < m; ++i) {
+      if (k == ring_id && (i == r || Next(i, m) == r)) continue;
+      const Point2d& p = other[i];
+      const Point2d e = other[Next(i, m)] - p;
+      const double denom = d.x() * e.y() - d.y() * e.x();
+      if (denom == 0.0) continue;
+      const Point2d w = p - v;
+      const double t = (w.x() * e.y() - w.y() * e.x()) / denom;
+      const double s = (w.x() * d.y() - w.y() * d.x()) / denom;
+      if (t <= 0.0 || s < 0.0 || s > 1.0 || t >= best_t) continue;
+      best_t = t;
+      Endpoint hit{k, i, true, p + s * e};
+      if (s < kMinEdgeFraction) {
+        hit = {k, i, false, p};
+      } else if (s > 1.0 - kMinEdgeFraction) {
+        hit = {k, Next(i, m), false, other[Next(i, m)]};
+      }
+      best = hit;
+    }
+  }
+  return best;
+}
+
+double ConcavityAt(const Concavity2d& concavity, const Ring2d& outer, const Endpoint& e) {
+  if (!e.on_edge) return concavity.outer[e.index];
+  // Interpolated along the edge.
+  const int n = static_cast<int>(outer.size());
+  const Point2d& a = outer[e.index];
+  const Point2d& b = outer[Next(e.index, n)];
+  const double s = std::clamp((e.point - a).norm() / std::max((b - a).norm(), 1e-300), 0.0, 1.0);
+  return (1.0 - s) * concavity.outer[e.index] + s * concavity.outer[Next(e.index, n)];
+}
+
+// Candidate end points on the outer ring for a cut from `from` (vertex `index` of ring
+// `ring_id`), scored by Ch. IV.D.1: f = (1 + s_c concavity(x)) / (s_d dist(r, x)); only those
+// in the cone that resolves the notch (both angles at r at most 180 degrees).
+std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavity2d& concavity,
+                                        int ring_id, int index, const ResolveOptions& options) {
+  const Ring2d& ring = RingOf(polygon, ring_id);
+  const int n = static_cast<int>(ring.size());
+  const Point2d& a = ring[Prev(index, n)];
+  const Point2d& r = ring[index];
+  const Point2d& b = ring[Next(index, n)];
+  const Ring2d& outer = polygon.outer;
+  std::vector<Candidate> candidates;
+  auto add = [&](const Endpoint& x) {
+    if (Orientation(a, r, x.point) < 0 || Orientation(r, b, x.point) < 0) return;
+    const double distance = (x.point - r).norm();
+    if (distance == 0.0) return;
+    const double score = (1.0 + options.score_concavity * ConcavityAt(concavity, outer, x)) /
+                         (options.score_distance * distance);
+    candidates.push_back({x, score});
+  };
+  const int m = static_cast<int>(outer.size());
+  for (int i = 0; i < m; ++i) {
+    if (ring_id < 0 && (i == index || i == Prev(index, n) || i == Next(index, n))) continue;
+    add({-1, i, false, outer[i]});
+  }
+  if (options.steiner_cuts) {
+    if (const std::optional<Endpoint> hit = BisectorHit(polygon, ring_id, index);
+        hit && hit->ring < 0 && hit->on_edge) {
+      add(*hit);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& x, const Candidate& y) { return x.score > y.score; });
+  return candidates;
+}
+
+// Outer vertices and closest edge points, nearest first: the fallback ends of a hole's cut.
+std::vector<Candidate> NearestCandidates(const Polygon2d& polygon, const Point2d& from) {
+  std::vector<Candidate> candidates;
+  const Ring2d& outer = polygon.outer;
+  const int m = static_cast<int>(outer.size());
+  for (int i = 0; i < m; ++i) {
+    candidates.push_back({{-1, i, false, outer[i]}, -(outer[i] - from).norm()});
+    const Point2d& p = outer[i];
+    const Point2d e = outer[Next(i, m)] - p;
+    const double s = (from - p).dot(e) / std::max(e.squaredNorm(), 1e-300);
+    if (s > kMinEdgeFraction && s < 1.0 - kMinEdgeFraction) {
+      const Point2d foot = p + s * e;
+      candidates.push_back({{-1, i, true, foot}, -(foot - from).norm()});
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& x, const Candidate& y) { return x.score > y.score; });
+  return candidates;
+}
+
+// The ring `ring` from index `from` forward to index `to`, both included.
+void AppendChain(const Ring2d& ring, int from, int to, Ring2d* out) {
+  const int n = static_cast<int>(ring.size());
+  for (int i = from;; i = Next(i, n)) {
+    out->push_back(ring[i]);
+    if (i == to) break;
+  }
+}
+
+// Inserts the new points of `ends` (on outer edges) into a copy of the outer ring and returns
+// it; each end's index then names its vertex.
+Ring2d InsertOnOuter(const Ring2d& outer, std::vector<Endpoint*> ends) {
+  std::sort(ends.begin(), ends.end(), [](const Endpoint* x, const Endpoint* y) {
+    return x->index > y->index;  // Back to front, so earlier indices stay valid.
+  });
+  Ring2d ring = outer;
+  for (Endpoint* e : ends) {
+    if (!e->on_edge) continue;
+    ring.insert(ring.begin() + e->index + 1, e->point);
+    for (Endpoint* other : ends) {
+      if (other != e && other->index > e->index) ++other->index;
+    }
+    e->index += 1;
+    e->on_edge = false;
+  }
+  return ring;
+}
+
+// Gives each hole of `polygon` other than `skip` to the piece that contains it.
+void DistributeHoles(const Polygon2d& polygon, int skip, std::array<Polygon2d, 2>* pieces) {
+  for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
+    if (k == skip) continue;
+    const Ring2d& hole = polygon.holes[k];
+    const Ring2d& first = (*pieces)[0].outer;
+    std::vector<Kernel::Point_2> boundary;
+    boundary.reserve(first.size());
+    for (const Point2d& p : first) boundary.push_back(ToCgal(p));
+    const CGAL::Bounded_side side =
+        CGAL::bounded_side_2(boundary.begin(), boundary.end(), ToCgal(hole.front()), Kernel());
+    (*pieces)[side == CGAL::ON_BOUNDED_SIDE ? 0 : 1].holes.push_back(hole);
+  }
+}
+
+bool ResolveOuterNotch(const Polygon2d& polygon, const Concavity2d& concavity, int r,
+                       const ResolveOptions& options, Resolution* resolution) {
+  const Endpoint from{-1, r, false, polygon.outer[r]};
+  for (const Candidate& candidate : ScoredCandidates(polygon, concavity, -1, r, options)) {
+    if (!IsClearCut(polygon, from, candidate.end)) continue;
+    Endpoint start = from;
+    Endpoint end = candidate.end;
+    const Ring2d ring = InsertOnOuter(polygon.outer, {&start, &end});
+    resolution->pieces = {};
+    AppendChain(ring, start.index, end.index, &resolution->pieces[0].outer);
+    AppendChain(ring, end.index, start.index, &resolution->pieces[1].outer);
+    DistributeHoles(polygon, -1, &resolution->pieces);
+    resolution->cuts = {{from.point, candidate.end.point}};
+    resolution->witness = from.point;
+    return true;
+  }
+  return false;
+}
+
+// Splits `polygon` through hole `h` with two cuts: p -> x (the closest visible outer point,
+// Algorithm 5) and q -> y (the best-scoring cut at the antipode).
+bool ResolveHole(const Polygon2d& polygon, const Concavity2d& concavity, int h, int p, int q,
+                 const ResolveOptions& options, Resolution* resolution) {
+  const Ring2d& hole = polygon.holes[h];
+  const Endpoint at_p{h, p, false, hole[p]};
+  const Endpoint at_q{h, q, false, hole[q]};
+  std::optional<Endpoint> x;
+  for (const Candidate& candidate : NearestCandidates(polygon, at_p.point)) {
+    if (IsClearCut(polygon, at_p, candidate.end)) {
+      x = candidate.end;
+      break;
+    }
+  }
+  if (!x) return false;
+  auto compatible = [&](const Endpoint& y) {
+    if (y.index == x->index && y.on_edge == x->on_edge) return false;
+    if (y.on_edge && x->on_edge && y.index == x->index) return false;
+    return !SegmentsMeet(at_p.point, x->point, at_q.point, y.point) &&
+           IsClearCut(polygon, at_q, y);
+  };
+  std::optional<Endpoint> y;
+  for (const Candidate& candidate : ScoredCandidates(polygon, concavity, h, q, options)) {
+    if (compatible(candidate.end)) {
+      y = candidate.end;
+      break;
+    }
+  }
+  if (!y) {
+    for (const Candidate& candidate : NearestCandidates(polygon, at_q.point)) {
+      if (compatible(candidate.end)) {
+        y = candidate.end;
+        break;
+      }
+    }
+  }
+  if (!y) return false;
+  Endpoint end_x = *x;
+  Endpoint end_y = *y;
+  const Ring2d ring = InsertOnOuter(polygon.outer, {&end_x, &end_y});
+  resolution->pieces = {};
+  // Piece 0: outer x..y, cut to q, hole q..p (forward keeps the interior on the left), cut to x.
+  AppendChain(ring, end_x.index, end_y.index, &resolution->pieces[0].outer);
+  AppendChain(hole, q, p, &resolution->pieces[0].outer);
+  AppendChain(ring, end_y.index, end_x.index, &resolution->pieces[1].outer);
+  AppendChain(hole, p, q, &resolution->pieces[1].outer);
+  DistributeHoles(polygon, h, &resolution->pieces);
+  resolution->cuts = {{hole[p], x->point}, {hole[q], y->point}};
+  resolution->witness = hole[p];
+  return true;
+}
+
+}  // namespace
+
+bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity,
+             const ResolveOptions& options, Resolution* resolution) {
+  if (concavity.witness_hole >= 0) {
+    // The witness hole first, then the others by decreasing concavity; each with either
+    // antipode connecting first.
+    std::vector<int> order(polygon.holes.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      return concavity.holes[a].concavity > concavity.holes[b].concavity;
+    });
+    std::stable_partition(order.begin(), order.end(),
+                          [&](int k) { return k == concavity.witness_hole; });
+    for (int k : order) {
+      const HoleConcavity& hole = concavity.holes[k];
+      if (ResolveHole(polygon, concavity, k, hole.p, hole.cw_p, options, resolution) ||
+          ResolveHole(polygon, concavity, k, hole.cw_p, hole.p, options, resolution)) {
+        return true;
+      }
+    }
+    return false;
+  }
+  // Outer notches by decreasing concavity, the witness first.
+  const Ring2d& outer = polygon.outer;
+  const int n = static_cast<int>(outer.size());
+  std::vector<int> notches;
+  for (int i = 0; i < n; ++i) {
+    if (IsNotch(outer[Prev(i, n)], outer[i], outer[Next(i, n)])) notches.push_back(i);
+  }
+  std::stable_sort(notches.begin(), notches.end(),
+                   [&](int a, int b) { return concavity.outer[a] > concavity.outer[b]; });
+  std::stable_partition(notches.begin(), notches.end(),
+                        [&](int i) { return i == concavity.witness_vertex; });
+  for (int r : notches) {
+    if (ResolveOuterNotch(polygon, concavity, r, options, resolution)) return true;
+  }
+  return false;
+}
+
+}  // namespace acdplan::acd::internal

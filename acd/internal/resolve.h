@@ -1,0 +1,40 @@
+#pragma once
+// Resolve (dissertation Algorithm 5): the cut(s) that remove the most concave feature.
+
+#include <array>
+#include <vector>
+
+#include "acd/concavity.h"
+#include "acd/decomposition2d.h"
+#include "acd/polygon2d.h"
+
+namespace acdplan::acd::internal {
+
+/// Scoring of candidate cuts (Ch. IV.D.1).
+struct ResolveOptions {
+  double score_concavity = 0.1;  ///< s_c.
+  double score_distance = 1.0;   ///< s_d.
+  bool steiner_cuts = true;      ///< Allow a cut to end on an edge (a new vertex).
+};
+
+/// Two pieces and the cut(s) between them.
+struct Resolution {
+  std::array<Polygon2d, 2> pieces;
+  std::vector<Cut2d> cuts;
+  Point2d witness;  ///< The feature resolved.
+};
+
+/// Resolves the witness of `concavity` in `polygon` (prepared orientation).
+///  - An outer notch r gets the cut r -> x of highest score
+///    f(r, x) = (1 + s_c concavity(x)) / (s_d dist(r, x)) among the boundary points x that
+///    resolve r (x in the cone of the extensions of r's two edges) and see r; x is a vertex or,
+///    if `steiner_cuts`, the point where r's angle bisector first meets an edge.
+///  - A hole is connected at p to the closest visible outer vertex x (Algorithm 5) and, so that
+///    the piece splits in two, at cw(p) by the best-scoring cut to the outer boundary (the cut
+///    the next iteration would make at cw(p), the pocket's deepest point, Fig. 19).
+/// Both pieces are simple, counter-clockwise, with the remaining holes distributed.
+/// Returns false only when no valid cut exists for any notch or hole (never for valid input).
+bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity,
+             const ResolveOptions& options, Resolution* resolution);
+
+}  // namespace acdplan::acd::internal
