@@ -1,0 +1,309 @@
+#include "acd/decomposition_io.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "acd/decomposition2d.h"
+
+namespace acdplan::acd {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// An L-shape split at its notch (2, 1) into two rectangles, plus a square with an unresolved
+// hole from a second input polygon. Values chosen to need 17 significant digits.
+Decomposition2d HandBuilt() {
+  Decomposition2d d;
+  d.measure = ConcavityMeasure::kStraightLine;
+  d.tau = 0.1;
+
+  Component2d bottom;
+  bottom.polygon.outer = {{0, 0}, {4, 0}, {4, 1}, {2, 1}, {0, 1}};
+  bottom.hull = {{0, 0}, {4, 0}, {4, 1}, {0, 1}};
+  bottom.centroid = {2, 0.5};
+  bottom.concavity = 0.0;
+  Component2d top;
+  top.polygon.outer = {{0, 1}, {2, 1}, {2, 3}, {0, 3}};
+  top.hull = top.polygon.outer;
+  top.centroid = {1, 2};
+  top.concavity = 0.1 + 0.2;  // 0.30000000000000004
+  Component2d ring;
+  ring.polygon.outer = {{10, 0}, {14, 0}, {14, 4}, {10, 4}};
+  ring.polygon.holes = {{{11, 1}, {11, 2}, {12, 2}, {12, 1}}};
+  ring.hull = ring.polygon.outer;
+  ring.centroid = {12.033333333333333, 2.0333333333333332};
+  ring.concavity = 0.05;
+  ring.source = 1;
+  d.components = {bottom, top, ring};
+  d.openings = {{Point2d(0, 1), Point2d(2, 1), 0, 1}};
+
+  HierarchyNode2d root;
+  root.piece.outer = {{0, 0}, {4, 0}, {4, 1}, {2, 1}, {2, 3}, {0, 3}};
+  root.concavity = 1.0;
+  root.witness = {2, 1};
+  root.cuts = {{Point2d(2, 1), Point2d(0, 1)}};
+  root.children[0] = 1;
+  root.children[1] = 2;
+  HierarchyNode2d leaf0;
+  leaf0.piece = bottom.polygon;
+  leaf0.parent = 0;
+  leaf0.component = 0;
+  leaf0.depth = 1;
+  HierarchyNode2d leaf1 = leaf0;
+  leaf1.piece = top.polygon;
+  leaf1.component = 1;
+  HierarchyNode2d root2;
+  root2.piece = ring.polygon;
+  root2.component = 2;
+  d.tree = {root, leaf0, leaf1, root2};
+  d.roots = {0, 3};
+
+  d.stats.vertices = 14;
+  d.stats.notches = 5;
+  d.stats.components = 3;
+  d.stats.max_concavity = 0.30000000000000004;
+  d.stats.convexity = 0.99;
+  d.stats.time_ms = 1.25;
+  return d;
+}
+
+bool IsPoint(const json& p) {
+  return p.is_array() && p.size() == 2 && p[0].is_number() && p[1].is_number();
+}
+
+bool IsRing(const json& r) {
+  if (!r.is_array()) return false;
+  for (const json& p : r) {
+    if (!IsPoint(p)) return false;
+  }
+  return true;
+}
+
+TEST(DecompositionToJsonTest, FollowsTheContract) {
+  const Decomposition2d d = HandBuilt();
+  const json j = json::parse(DecompositionToJson(d, {"shapes/l.poly", 0.025}));
+
+  EXPECT_EQ(j.at("format"), "acdplan.decomposition2d/1");
+  EXPECT_EQ(j.at("input"), "shapes/l.poly");
+  EXPECT_EQ(j.at("measure"), "sl");
+  ASSERT_TRUE(j.at("tau").is_number_float());
+  EXPECT_EQ(j.at("tau").get<double>(), 0.1);
+  ASSERT_TRUE(j.at("tau_rel").is_number());
+  EXPECT_EQ(j.at("tau_rel").get<double>(), 0.025);
+
+  const json& components = j.at("components");
+  ASSERT_TRUE(components.is_array());
+  ASSERT_EQ(components.size(), 3u);
+  for (const json& c : components) {
+    EXPECT_TRUE(IsRing(c.at("boundary")));
+    ASSERT_TRUE(c.at("holes").is_array());
+    for (const json& hole : c.at("holes")) EXPECT_TRUE(IsRing(hole));
+    EXPECT_TRUE(IsRing(c.at("hull")));
+    EXPECT_TRUE(IsPoint(c.at("centroid")));
+    EXPECT_TRUE(c.at("concavity").is_number());
+  }
+  EXPECT_EQ(components[0].at("boundary").size(), 5u);
+  EXPECT_EQ(components[0].at("boundary")[3], json::array({2.0, 1.0}));
+  EXPECT_EQ(components[0].at("hull").size(), 4u);
+  EXPECT_TRUE(components[0].at("holes").empty());
+  ASSERT_EQ(components[2].at("holes").size(), 1u);
+  EXPECT_EQ(components[2].at("holes")[0].size(), 4u);
+  EXPECT_EQ(components[2].at("holes")[0][1], json::array({11.0, 2.0}));
+  // Full precision: the values read back exactly.
+  EXPECT_EQ(components[1].at("concavity").get<double>(), 0.1 + 0.2);
+  EXPECT_EQ(components[2].at("centroid")[0].get<double>(), 12.033333333333333);
+  EXPECT_EQ(components[2].at("centroid")[1].get<double>(), 2.0333333333333332);
+
+  const json& openings = j.at("openings");
+  ASSERT_EQ(openings.size(), 1u);
+  EXPECT_EQ(openings[0].at("a"), json::array({0.0, 1.0}));
+  EXPECT_EQ(openings[0].at("b"), json::array({2.0, 1.0}));
+  EXPECT_EQ(openings[0].at("components"), json::array({0, 1}));
+  EXPECT_TRUE(openings[0].at("components")[0].is_number_integer());
+
+  const json& stats = j.at("stats");
+  EXPECT_EQ(stats.size(), 6u);
+  EXPECT_TRUE(stats.at("vertices").is_number_integer());
+  EXPECT_EQ(stats.at("vertices"), 14);
+  EXPECT_TRUE(stats.at("notches").is_number_integer());
+  EXPECT_EQ(stats.at("notches"), 5);
+  EXPECT_TRUE(stats.at("components").is_number_integer());
+  EXPECT_EQ(stats.at("components"), 3);
+  EXPECT_EQ(stats.at("max_concavity").get<double>(), 0.30000000000000004);
+  EXPECT_EQ(stats.at("convexity").get<double>(), 0.99);
+  EXPECT_EQ(stats.at("time_ms").get<double>(), 1.25);
+
+  // Extensions.
+  EXPECT_EQ(j.at("graph"), json::parse("[[1], [0], []]"));
+  EXPECT_FALSE(j.contains("min_convexity"));
+  EXPECT_EQ(components[2].at("source"), 1);
+}
+
+TEST(DecompositionToJsonTest, TauRelIsNullWhenTauWasAbsolute) {
+  const json j = json::parse(DecompositionToJson(HandBuilt(), {"l.poly", -1.0}));
+  ASSERT_TRUE(j.contains("tau_rel"));
+  EXPECT_TRUE(j.at("tau_rel").is_null());
+}
+
+TEST(DecompositionToJsonTest, MinConvexityOnlyWhenUsed) {
+  Decomposition2d d = HandBuilt();
+  d.min_convexity = 0.9;
+  const json j = json::parse(DecompositionToJson(d, {"l.poly", -1.0}));
+  EXPECT_EQ(j.at("min_convexity").get<double>(), 0.9);
+}
+
+TEST(DecompositionToJsonTest, KeysAppearInTheContractOrder) {
+  const std::string text = DecompositionToJson(HandBuilt(), {"l.poly", -1.0});
+  size_t last = 0;
+  for (const char* key : {"\"format\"", "\"input\"", "\"measure\"", "\"tau\"", "\"tau_rel\"",
+                          "\"components\"", "\"openings\"", "\"stats\""}) {
+    const size_t at = text.find(key);
+    ASSERT_NE(at, std::string::npos) << key;
+    EXPECT_GT(at, last == 0 ? 0 : last) << key;
+    last = at;
+  }
+}
+
+TEST(DecompositionToJsonTest, EmptyDecompositionIsValid) {
+  const json j = json::parse(DecompositionToJson(Decomposition2d{}, {}));
+  EXPECT_TRUE(j.at("components").empty());
+  EXPECT_TRUE(j.at("openings").empty());
+  EXPECT_TRUE(j.at("graph").empty());
+  EXPECT_EQ(j.at("measure"), "sp");
+}
+
+int Count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(DecompositionToSvgTest, DrawsComponentsOpeningsNotchesAndCaption) {
+  const std::string svg = DecompositionToSvg(HandBuilt(), {"shapes/l&r.poly", 0.025});
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("viewBox=\""), std::string::npos);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_EQ(Count(svg, "<path class=\"component\""), 3);
+  EXPECT_EQ(Count(svg, "<path"), 3);
+  EXPECT_EQ(Count(svg, "<line"), 1);                         // the opening
+  EXPECT_EQ(Count(svg, "class=\"most-concave-notch\""), 1);  // root 0 (root 1 is not split)
+  EXPECT_EQ(Count(svg, "class=\"resolved-notch\""), 1);
+  // The hole is its own subpath, left open by the even-odd rule.
+  EXPECT_NE(svg.find("fill-rule=\"evenodd\""), std::string::npos);
+  // Distinct fills.
+  EXPECT_NE(svg.find("fill=\"#"), std::string::npos);
+  // Caption: input (escaped), tau, tau_rel, measure, components, convexity, time.
+  EXPECT_NE(svg.find("shapes/l&amp;r.poly"), std::string::npos);
+  EXPECT_EQ(svg.find("l&r"), std::string::npos);
+  EXPECT_NE(svg.find("tau 0.1 (tau_rel 0.025)"), std::string::npos);
+  EXPECT_NE(svg.find("measure sl"), std::string::npos);
+  EXPECT_NE(svg.find("3 components"), std::string::npos);
+  EXPECT_NE(svg.find("convexity 0.99"), std::string::npos);
+  EXPECT_NE(svg.find("1.25 ms"), std::string::npos);
+}
+
+TEST(DecompositionToSvgTest, FlipsTheYAxis) {
+  // The bottom rectangle (y in [0, 1]) must be drawn below the top one (y in [1, 3]): larger
+  // SVG y. Drawing spans y in [0, 4] (the ring), so y = 0 maps to SVG y 4.
+  const std::string svg = DecompositionToSvg(HandBuilt(), {"l.poly", -1.0});
+  EXPECT_NE(svg.find("d=\"M0,4 L4,4 L4,3 L2,3 L0,3 Z\""), std::string::npos) << svg;
+  EXPECT_EQ(svg.find("tau_rel"), std::string::npos);
+}
+
+TEST(DecompositionToSvgTest, EmptyDecompositionStillRenders) {
+  const std::string svg = DecompositionToSvg(Decomposition2d{}, {});
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_EQ(svg.find("nan"), std::string::npos);
+  EXPECT_EQ(svg.find("inf"), std::string::npos);
+}
+
+class WriteFileAtomicallyTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("acdplan_write_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add, ignored);
+    fs::remove_all(dir_, ignored);
+  }
+  static std::string Read(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  int FileCount() const {
+    int n = 0;
+    for (auto it = fs::recursive_directory_iterator(dir_); it != fs::recursive_directory_iterator();
+         ++it) {
+      n += it->is_regular_file() ? 1 : 0;
+    }
+    return n;
+  }
+  fs::path dir_;
+};
+
+TEST_F(WriteFileAtomicallyTest, CreatesDirectoriesAndLeavesNoTemporaryFile) {
+  const fs::path path = dir_ / "a" / "b" / "out.json";
+  WriteFileAtomically(path.string(), "first");
+  EXPECT_EQ(Read(path), "first");
+  WriteFileAtomically(path.string(), "second, longer");  // replaces
+  EXPECT_EQ(Read(path), "second, longer");
+  EXPECT_EQ(FileCount(), 1);
+}
+
+TEST_F(WriteFileAtomicallyTest, FailsClearlyOnAnUnwritablePath) {
+  fs::create_directories(dir_);
+  // A directory where the file should be: rename() cannot replace it.
+  const fs::path path = dir_ / "taken";
+  fs::create_directories(path);
+  try {
+    WriteFileAtomically(path.string(), "x");
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find(path.string()), std::string::npos) << error.what();
+  }
+  EXPECT_EQ(FileCount(), 0);
+
+  // A parent that is a regular file.
+  std::ofstream(dir_ / "file") << "x";
+  const fs::path below_file = dir_ / "file" / "out.svg";
+  try {
+    WriteFileAtomically(below_file.string(), "x");
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find(below_file.string()), std::string::npos)
+        << error.what();
+  }
+  EXPECT_EQ(FileCount(), 1);
+}
+
+TEST_F(WriteFileAtomicallyTest, FailsClearlyInAReadOnlyDirectory) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions";
+  fs::create_directories(dir_);
+  fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec);
+  const fs::path path = dir_ / "out.json";
+  try {
+    WriteFileAtomically(path.string(), "x");
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find(path.string()), std::string::npos) << error.what();
+  }
+  fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add);
+  EXPECT_EQ(FileCount(), 0);
+}
+
+}  // namespace
+}  // namespace acdplan::acd
