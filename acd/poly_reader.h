@@ -8,11 +8,18 @@
 
 namespace acdplan::acd {
 
-/// Parses Lien's .poly format (../shared/data/polygons/acd2d/POLY_FORMAT.txt): a chain count, then per chain "<n> out|in", n lines "x y", and one line with the 1-based vertex order. Several "out" chains may appear; each "in" chain is a hole of the preceding "out" chain. Text after '#' on a line is a comment.
-/// Returns the polygons as written (not yet cleaned or validated: see PreparePolygon()).
+/// Parses Lien's .poly format (../shared/data/polygons/acd2d/POLY_FORMAT.txt): a chain count, then
+/// per chain "<n> out|in", n lines "x y", and one line with the 1-based vertex order. Several "out"
+/// chains may appear; each "in" chain is a hole of the preceding "out" chain. Text after '#' on a
+/// line is a comment. Returns the polygons as written (not yet cleaned or validated: see
+/// PreparePolygon()).
 /// @param source  the file name used in messages.
+/// The file is read word by word (a vertex order may span several lines); every message has
+/// the form "<source>:<line>: <rule>", e.g. "bird.poly:47: malformed number '-6.64248.788605'".
 /// @throws InputError naming `source`, the line (or element) and the rule broken, e.g. a
-///         malformed or non-finite number, a wrong count, a truncated file.
+///         malformed or non-finite number, a wrong count, a truncated file, a vertex order that
+///         is not a permutation of 1..n (index out of range, repeated, missing), an "in" chain
+///         before any "out" chain, or content after the declared number of chains.
 std::vector<Polygon2d> ReadPoly(std::istream& in, const std::string& source);
 
 }  // namespace acdplan::acd

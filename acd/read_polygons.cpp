@@ -1,1 +1,47 @@
 #include "acd/read_polygons.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "acd/geojson_reader.h"
+#include "acd/input_error.h"
+#include "acd/internal/text_parsing.h"
+#include "acd/poly_reader.h"
+#include "acd/prepare_polygon.h"
+#include "acd/wkt_reader.h"
+
+namespace acdplan::acd {
+
+std::vector<Polygon2d> ReadPolygons(const std::string& path) {
+  const std::string extension = internal::ToLower(std::filesystem::path(path).extension().string());
+  using Reader = std::vector<Polygon2d> (*)(std::istream&, const std::string&);
+  Reader reader = nullptr;
+  if (extension == ".poly") {
+    reader = &ReadPoly;
+  } else if (extension == ".wkt") {
+    reader = &ReadWkt;
+  } else if (extension == ".geojson" || extension == ".json") {
+    reader = &ReadGeoJson;
+  } else {
+    throw InputError(path + ": unknown polygon file extension '" + extension +
+                     "' (expected .poly, .wkt, .geojson or .json)");
+  }
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(path + ": cannot read file: it is a directory");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot read file: " + std::strerror(errno));
+
+  std::vector<Polygon2d> polygons = reader(in, path);
+  if (in.bad()) throw InputError(path + ": cannot read file: read error");
+  if (polygons.empty()) throw InputError(path + ": no polygon in file");
+  for (size_t k = 0; k < polygons.size(); ++k) {
+    polygons[k] = PreparePolygon(polygons[k], path + ": polygon " + std::to_string(k));
+  }
+  return polygons;
+}
+
+}  // namespace acdplan::acd

@@ -1,1 +1,210 @@
 #include "acd/wkt_reader.h"
+
+#include <cctype>
+#include <iterator>
+#include <string>
+
+#include "acd/input_error.h"
+#include "acd/internal/text_parsing.h"
+
+namespace acdplan::acd {
+namespace {
+
+// Recursive-descent parser over the whole text (OGC 06-103r4, section 7):
+//   text       := geometry*
+//   geometry   := POLYGON [dim] (EMPTY | polygon)
+//               | MULTIPOLYGON [dim] (EMPTY | '(' polygon (',' polygon)* ')')
+//               | GEOMETRYCOLLECTION [dim] (EMPTY | '(' geometry (',' geometry)* ')')
+//   polygon    := '(' ring (',' ring)* ')'   first ring outer, the others holes
+//   ring       := '(' point (',' point)* ')' closed: the last point repeats the first
+//   point      := number number [number [number]]   z and m are ignored
+//   dim        := Z | M | ZM
+class WktParser {
+ public:
+  WktParser(std::istream& in, const std::string& source)
+      : text_(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
+        source_(source) {}
+
+  std::vector<Polygon2d> Parse() {
+    SkipSpace();
+    if (pos_ >= text_.size()) Fail("expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION");
+    while (pos_ < text_.size()) {
+      ParseGeometry();
+      SkipSpace();
+      // Several geometries may follow one another, optionally separated by ';'.
+      if (pos_ < text_.size() && text_[pos_] == ';') {
+        ++pos_;
+        SkipSpace();
+      }
+    }
+    return std::move(polygons_);
+  }
+
+ private:
+  [[noreturn]] void Fail(const std::string& message) const { FailAt(pos_, message); }
+
+  [[noreturn]] void FailAt(size_t offset, const std::string& message) const {
+    int line = 1;
+    size_t line_start = 0;
+    for (size_t i = 0; i < offset && i < text_.size(); ++i) {
+      if (text_[i] == '\n') {
+        ++line;
+        line_start = i + 1;
+      }
+    }
+    std::string found = "end of input";
+    if (offset < text_.size()) {
+      const std::string word = WordAt(offset);
+      found = "'" + (word.empty() ? std::string(1, text_[offset]) : word) + "'";
+    }
+    throw InputError(source_ + ": " + message + " at line " + std::to_string(line) + ", column " +
+                     std::to_string(offset - line_start + 1) + ", found " + found);
+  }
+
+  static bool IsDelimiter(char c) {
+    return std::isspace(static_cast<unsigned char>(c)) || c == '(' || c == ')' || c == ',' ||
+           c == ';';
+  }
+
+  std::string WordAt(size_t offset) const {
+    size_t end = offset;
+    while (end < text_.size() && !IsDelimiter(text_[end])) ++end;
+    return text_.substr(offset, end - offset);
+  }
+
+  void SkipSpace() {
+    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+  }
+
+  std::string PeekWord() {
+    SkipSpace();
+    return internal::ToLower(WordAt(pos_));
+  }
+
+  void Expect(char c) {
+    SkipSpace();
+    if (pos_ >= text_.size() || text_[pos_] != c) Fail(std::string("expected '") + c + "'");
+    ++pos_;
+  }
+
+  // Consumes ',' and returns true, or returns false at ')' (left in place); else fails.
+  bool CommaOr(char close, const std::string& what) {
+    SkipSpace();
+    if (pos_ < text_.size() && text_[pos_] == ',') {
+      ++pos_;
+      return true;
+    }
+    if (pos_ < text_.size() && text_[pos_] == close) return false;
+    Fail("expected ',' or ')' after " + what);
+  }
+
+  // Skips an optional dimension word; returns true when the next word is EMPTY (consumed).
+  bool DimensionThenEmpty() {
+    std::string word = PeekWord();
+    if (word == "z" || word == "m" || word == "zm") {
+      pos_ += word.size();
+      word = PeekWord();
+    }
+    if (word == "empty") {
+      pos_ += word.size();
+      return true;
+    }
+    return false;
+  }
+
+  void ParseGeometry() {
+    SkipSpace();
+    const size_t start = pos_;
+    const std::string word = PeekWord();
+    if (word == "polygon") {
+      pos_ += word.size();
+      if (!DimensionThenEmpty()) ParsePolygon();
+    } else if (word == "multipolygon") {
+      pos_ += word.size();
+      if (DimensionThenEmpty()) return;
+      Expect('(');
+      do {
+        ParsePolygon();
+      } while (CommaOr(')', "a polygon"));
+      Expect(')');
+    } else if (word == "geometrycollection") {
+      pos_ += word.size();
+      if (DimensionThenEmpty()) return;
+      Expect('(');
+      do {
+        ParseGeometry();
+      } while (CommaOr(')', "a geometry"));
+      Expect(')');
+    } else {
+      FailAt(start,
+             "expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION (other geometry types "
+             "are not supported)");
+    }
+  }
+
+  void ParsePolygon() {
+    Expect('(');
+    Polygon2d polygon;
+    polygon.outer = ParseRing();
+    while (CommaOr(')', "a ring")) polygon.holes.push_back(ParseRing());
+    Expect(')');
+    polygons_.push_back(std::move(polygon));
+  }
+
+  Ring2d ParseRing() {
+    Expect('(');
+    const size_t start = pos_;
+    Ring2d ring;
+    do {
+      ring.push_back(ParsePoint());
+    } while (CommaOr(')', "a point"));
+    if (ring.size() < 2 || ring.front() != ring.back()) {
+      FailAt(start, "ring is not closed (its last point must repeat its first point " +
+                        internal::FormatPoint(ring.front()) + ")");
+    }
+    ring.pop_back();  // The repeated closing point.
+    Expect(')');
+    return ring;
+  }
+
+  Point2d ParsePoint() {
+    double xy[2] = {0.0, 0.0};
+    int count = 0;
+    while (true) {
+      SkipSpace();
+      if (pos_ >= text_.size() || IsDelimiter(text_[pos_])) break;
+      const size_t start = pos_;
+      const std::string word = WordAt(pos_);
+      double value = 0.0;
+      switch (internal::ParseDouble(word, value)) {
+        case internal::NumberStatus::kOk:
+          break;
+        case internal::NumberStatus::kMalformed:
+          FailAt(start, "malformed number '" + word + "'");
+        case internal::NumberStatus::kNotFinite:
+          FailAt(start, "non-finite number '" + word + "'");
+        case internal::NumberStatus::kOutOfRange:
+          FailAt(start, "number out of range '" + word + "'");
+      }
+      if (count == 4) FailAt(start, "more than 4 coordinates in a point");
+      if (count < 2) xy[count] = value;
+      ++count;
+      pos_ += word.size();
+    }
+    if (count < 2) Fail("expected a point: two numbers 'x y'");
+    return Point2d(xy[0], xy[1]);
+  }
+
+  std::string text_;
+  const std::string& source_;
+  size_t pos_ = 0;
+  std::vector<Polygon2d> polygons_;
+};
+
+}  // namespace
+
+std::vector<Polygon2d> ReadWkt(std::istream& in, const std::string& source) {
+  return WktParser(in, source).Parse();
+}
+
+}  // namespace acdplan::acd

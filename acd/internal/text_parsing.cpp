@@ -1,0 +1,57 @@
+#include "acd/internal/text_parsing.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <system_error>
+
+namespace acdplan::acd::internal {
+
+NumberStatus ParseDouble(std::string_view token, double& value) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty() || token.front() == '+') return NumberStatus::kMalformed;
+  double parsed = 0.0;
+  const char* end = token.data() + token.size();
+  // std::from_chars is locale independent (strtod would read "1,5" in a German locale).
+  const auto [ptr, ec] = std::from_chars(token.data(), end, parsed);
+  if (ptr != end) return NumberStatus::kMalformed;
+  if (ec == std::errc::result_out_of_range) {
+    // from_chars also reports underflow ("1e-400") as out of range; a tiny number is fine.
+    const double magnitude = std::strtod(std::string(token).c_str(), nullptr);
+    if (std::isinf(magnitude)) return NumberStatus::kOutOfRange;
+    value = magnitude;
+    return NumberStatus::kOk;
+  }
+  if (ec != std::errc()) return NumberStatus::kMalformed;
+  if (!std::isfinite(parsed)) return NumberStatus::kNotFinite;
+  value = parsed;
+  return NumberStatus::kOk;
+}
+
+bool ParseInt(std::string_view token, long long& value) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty() || token.front() == '+') return false;
+  const char* end = token.data() + token.size();
+  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  return ec == std::errc() && ptr == end;
+}
+
+std::string FormatNumber(double value) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof(buffer), "%.15g", value);
+  return buffer;
+}
+
+std::string FormatPoint(const Point2d& p) {
+  return "(" + FormatNumber(p.x()) + ", " + FormatNumber(p.y()) + ")";
+}
+
+std::string ToLower(std::string_view text) {
+  std::string lower(text);
+  for (char& c : lower) {
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  }
+  return lower;
+}
+
+}  // namespace acdplan::acd::internal

@@ -1,0 +1,36 @@
+#pragma once
+// Small text helpers shared by the polygon readers (acd/poly_reader.cpp, acd/wkt_reader.cpp,
+// acd/geojson_reader.cpp) and PreparePolygon()'s messages. Not part of the public API.
+
+#include <string>
+#include <string_view>
+
+#include "acd/polygon2d.h"
+
+namespace acdplan::acd::internal {
+
+/// Outcome of ParseDouble().
+enum class NumberStatus {
+  kOk,          ///< `value` holds a finite number.
+  kMalformed,   ///< The token is not one number, e.g. "-6.64248.788605" or "1,5".
+  kNotFinite,   ///< The token spells NaN or infinity.
+  kOutOfRange,  ///< The number overflows a double, e.g. "1e400".
+};
+
+/// Parses the whole of `token` as a decimal floating-point number (locale independent; a
+/// leading '+' is accepted). Sets `value` only on kOk.
+NumberStatus ParseDouble(std::string_view token, double& value);
+
+/// Parses the whole of `token` as a decimal integer (a leading '+' is accepted).
+bool ParseInt(std::string_view token, long long& value);
+
+/// Formats `value` with up to 15 significant digits ("0.5", "1.25", "1e+06").
+std::string FormatNumber(double value);
+
+/// Formats `p` as "(x, y)" with FormatNumber().
+std::string FormatPoint(const Point2d& p);
+
+/// Lower-cases ASCII letters.
+std::string ToLower(std::string_view text);
+
+}  // namespace acdplan::acd::internal

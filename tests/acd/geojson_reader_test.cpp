@@ -1,0 +1,94 @@
+#include "acd/geojson_reader.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "acd/input_error.h"
+
+namespace acdplan::acd {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+std::vector<Polygon2d> Read(const std::string& text) {
+  std::istringstream in(text);
+  return ReadGeoJson(in, "shape.geojson");
+}
+
+std::string ErrorOf(const std::string& text) {
+  try {
+    Read(text);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+const char* const kSquareWithHole =
+    R"({"type": "Polygon", "coordinates": [[[0,0],[4,0],[4,4],[0,4],[0,0]],
+                                           [[1,1],[1,2],[2,2],[2,1],[1,1]]]})";
+
+TEST(GeoJsonReaderTest, ReadsPolygonWithHoleDroppingClosingPositions) {
+  const std::vector<Polygon2d> polygons = Read(kSquareWithHole);
+  ASSERT_EQ(polygons.size(), 1u);
+  EXPECT_EQ(polygons[0].outer, Ring2d({{0, 0}, {4, 0}, {4, 4}, {0, 4}}));
+  ASSERT_EQ(polygons[0].holes.size(), 1u);
+  EXPECT_EQ(polygons[0].holes[0], Ring2d({{1, 1}, {1, 2}, {2, 2}, {2, 1}}));
+}
+
+TEST(GeoJsonReaderTest, ReadsFeatureCollectionMultiPolygonAndGeometryCollection) {
+  const std::string text = std::string(R"({"type": "FeatureCollection", "features": [
+      {"type": "Feature", "properties": {}, "geometry": )") +
+                           kSquareWithHole + R"(},
+      {"type": "Feature", "properties": null, "geometry": {"type": "MultiPolygon",
+       "coordinates": [[[[0,0,7],[1,0,7],[1,1,7],[0,0,7]]], [[[5,5],[6,5],[6,6],[5,5]]]]}},
+      {"type": "Feature", "geometry": null},
+      {"type": "Feature", "geometry": {"type": "GeometryCollection", "geometries": [
+        {"type": "Polygon", "coordinates": [[[0,0],[2,0],[2,2],[0,0]]]}]}}]})";
+  const std::vector<Polygon2d> polygons = Read(text);
+  ASSERT_EQ(polygons.size(), 4u);
+  EXPECT_EQ(polygons[0].holes.size(), 1u);
+  EXPECT_EQ(polygons[1].outer, Ring2d({{0, 0}, {1, 0}, {1, 1}}));  // z ignored
+  EXPECT_EQ(polygons[2].outer.size(), 3u);
+  EXPECT_EQ(polygons[3].outer, Ring2d({{0, 0}, {2, 0}, {2, 2}}));
+}
+
+TEST(GeoJsonReaderTest, UnsupportedTypeNamesElementPath) {
+  EXPECT_EQ(ErrorOf(R"({"type": "FeatureCollection", "features": [
+      {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,0]]]}},
+      {"type": "Feature", "geometry": null},
+      {"type": "Feature", "geometry": {"type": "LineString", "coordinates": [[0,0],[1,1]]}}]})"),
+            "shape.geojson: features[2].geometry: unsupported type 'LineString' (expected "
+            "Polygon, MultiPolygon or GeometryCollection)");
+  EXPECT_THAT(ErrorOf(R"({"type": "Point", "coordinates": [0, 0]})"),
+              HasSubstr("shape.geojson: root: unsupported type 'Point'"));
+}
+
+TEST(GeoJsonReaderTest, StructureErrorsNameElementPath) {
+  EXPECT_THAT(ErrorOf(R"({"coordinates": []})"),
+              HasSubstr("shape.geojson: root: missing member 'type'"));
+  EXPECT_THAT(ErrorOf(R"({"type": "Polygon", "coordinates": [[[0,0],[1,0],["a",1],[0,0]]]})"),
+              HasSubstr("shape.geojson: coordinates[0][2][0]: expected a number, found string"));
+  EXPECT_THAT(ErrorOf(R"({"type": "Polygon", "coordinates": [[[0,0],[1],[1,1],[0,0]]]})"),
+              HasSubstr("shape.geojson: coordinates[0][1]: expected a position [x, y]"));
+  EXPECT_THAT(ErrorOf(R"({"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[1,1],[0,0]]],
+                                                                [[[0,0],[1,0],[1,1]]]]})"),
+              HasSubstr("shape.geojson: coordinates[1][0]: ring is not closed"));
+  // nlohmann::json rejects numbers that overflow a double while parsing.
+  EXPECT_THAT(ErrorOf(R"({"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1e999],[0,0]]]})"),
+              AllOf(HasSubstr("shape.geojson: invalid JSON"), HasSubstr("1e999")));
+  EXPECT_THAT(ErrorOf(R"({"type": "FeatureCollection", "features": [{"type": "Polygon"}]})"),
+              HasSubstr("shape.geojson: features[0]: expected a Feature"));
+}
+
+TEST(GeoJsonReaderTest, InvalidJsonNamesPosition) {
+  EXPECT_THAT(ErrorOf("{\"type\": \"Polygon\",\n \"coordinates\": [[[0,0],]]}"),
+              HasSubstr("shape.geojson: invalid JSON: parse error at line 2"));
+}
+
+}  // namespace
+}  // namespace acdplan::acd

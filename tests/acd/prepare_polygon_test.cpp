@@ -1,0 +1,181 @@
+#include "acd/prepare_polygon.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "acd/input_error.h"
+
+namespace acdplan::acd {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+Ring2d Square(double x0, double y0, double size) {
+  return {{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}};
+}
+
+// The message of the InputError PreparePolygon() throws, or "" if it does not throw.
+std::string ErrorOf(const Polygon2d& raw) {
+  try {
+    PreparePolygon(raw, "test.poly: polygon 0");
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(PreparePolygonTest, KeepsCleanCounterClockwiseSquare) {
+  const Polygon2d clean = PreparePolygon({Square(0, 0, 1), {}}, "w");
+  EXPECT_EQ(clean.outer, Square(0, 0, 1));
+  EXPECT_DOUBLE_EQ(Area(clean), 1.0);
+}
+
+TEST(PreparePolygonTest, ReorientsClockwiseOuterAndCounterClockwiseHole) {
+  const Polygon2d raw{Reversed(Square(0, 0, 4)), {Square(1, 1, 1)}};
+  const Polygon2d clean = PreparePolygon(raw, "w");
+  EXPECT_GT(SignedArea(clean.outer), 0.0);
+  ASSERT_EQ(clean.holes.size(), 1u);
+  EXPECT_LT(SignedArea(clean.holes[0]), 0.0);
+  EXPECT_DOUBLE_EQ(Area(clean), 15.0);
+}
+
+TEST(PreparePolygonTest, DropsDuplicatesClosingVertexCollinearAndSpikes) {
+  // A square with a repeated vertex, a collinear midpoint, a zero-width spike (2,1)->(2,3)->
+  // (2,1.5) on the right side, and the first vertex repeated at the end.
+  const Ring2d raw = {{0, 0}, {1, 0},   {1, 0}, {2, 0}, {2, 1},
+                      {2, 3}, {2, 1.5}, {2, 2}, {0, 2}, {0, 0}};
+  const Polygon2d clean = PreparePolygon({raw, {}}, "w");
+  EXPECT_EQ(clean.outer, Ring2d({{0, 0}, {2, 0}, {2, 2}, {0, 2}}));
+}
+
+TEST(PreparePolygonTest, AcceptsLargeAndSmallScales) {
+  for (const double scale : {1e6, 1e-6}) {
+    const Polygon2d raw{
+        {{1 * scale, 1 * scale},
+         {5 * scale, 1 * scale},
+         {5 * scale, 5 * scale},
+         {3 * scale, 2 * scale},
+         {1 * scale, 5 * scale}},
+        {{{2 * scale, 1.5 * scale}, {2.5 * scale, 1.5 * scale}, {2.5 * scale, 2 * scale}}}};
+    const Polygon2d clean = PreparePolygon(raw, "w");
+    EXPECT_EQ(clean.outer.size(), 5u) << scale;
+    EXPECT_EQ(clean.holes.size(), 1u) << scale;
+    EXPECT_NEAR(Area(clean), (10.0 - 0.125) * scale * scale, 1e-9 * scale * scale) << scale;
+  }
+  // Far from the origin as well: the same square offset by 1e6.
+  EXPECT_NO_THROW(PreparePolygon({Square(1e6, 1e6, 1e-3), {}}, "w"));
+}
+
+TEST(PreparePolygonTest, RejectsNonFiniteCoordinate) {
+  Polygon2d raw{Square(0, 0, 1), {Square(0.2, 0.2, 0.1)}};
+  raw.holes[0][2].y() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THAT(ErrorOf(raw),
+              AllOf(HasSubstr("test.poly: polygon 0: hole 0: vertex 2"), HasSubstr("not finite")));
+  raw.holes[0][2].y() = 0.25;
+  raw.outer[1].x() = std::numeric_limits<double>::infinity();
+  EXPECT_THAT(ErrorOf(raw), AllOf(HasSubstr("outer ring: vertex 1"), HasSubstr("not finite")));
+}
+
+TEST(PreparePolygonTest, RejectsTooFewVertices) {
+  EXPECT_THAT(ErrorOf({{{0, 0}, {1, 1}}, {}}),
+              AllOf(HasSubstr("test.poly: polygon 0: outer ring"), HasSubstr("fewer than 3")));
+  // Collinear points clean down to a segment.
+  EXPECT_THAT(ErrorOf({{{0, 0}, {1, 1}, {2, 2}, {3, 3}}, {}}),
+              AllOf(HasSubstr("outer ring"), HasSubstr("fewer than 3")));
+  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {{{1, 1}, {1, 1}, {2, 2}}}}),
+              AllOf(HasSubstr("hole 0"), HasSubstr("fewer than 3")));
+}
+
+TEST(PreparePolygonTest, RejectsSelfIntersectingOuterRingNamingEdgesAndPoint) {
+  // A bow tie: edges (0,1) and (2,3) cross at (1.5, 1.5).
+  EXPECT_THAT(ErrorOf({{{0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}),
+              AllOf(HasSubstr("test.poly: polygon 0: outer ring is not simple"),
+                    HasSubstr("edges (0,1) and (2,3) intersect at (1.5, 1.5)")));
+}
+
+TEST(PreparePolygonTest, VertexIndicesAreThoseOfTheInput) {
+  // The same crossing with a duplicate vertex: indices still refer to the input.
+  EXPECT_THAT(ErrorOf({{{0, 0}, {0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}),
+              HasSubstr("edges (0,2) and (3,4) intersect at (1.5, 1.5)"));
+}
+
+TEST(PreparePolygonTest, RejectsVertexTouchingNonAdjacentEdge) {
+  // Vertex 3 (2, 0) lies on edge (0,1) from (0,0) to (4,0).
+  const Ring2d ring = {{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}};
+  EXPECT_THAT(ErrorOf({ring, {}}),
+              AllOf(HasSubstr("outer ring is not simple"), HasSubstr("intersect at (2, 0)")));
+}
+
+TEST(PreparePolygonTest, RejectsRingTouchingItselfAtAVertex) {
+  // Two triangles sharing the vertex (2, 2): vertices 0 and 3 coincide.
+  const Ring2d ring = {{2, 2}, {4, 0}, {4, 4}, {2, 2}, {0, 4}, {0, 0}};
+  EXPECT_THAT(ErrorOf({ring, {}}),
+              AllOf(HasSubstr("outer ring is not simple"), HasSubstr("intersect at (2, 2)")));
+}
+
+TEST(PreparePolygonTest, RejectsSelfIntersectingHole) {
+  EXPECT_THAT(ErrorOf({Square(0, 0, 10), {{{1, 1}, {3, 3}, {4, 1}, {1, 4}}}}),
+              AllOf(HasSubstr("hole 0 is not simple"), HasSubstr("intersect at (2.5, 2.5)")));
+}
+
+TEST(PreparePolygonTest, RejectsHoleCrossingOuterRing) {
+  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {Square(3, 1, 2)}}),
+              AllOf(HasSubstr("hole 0 touches or crosses the outer ring"),
+                    HasSubstr("strictly inside"), HasSubstr("intersect at (4, 3)")));
+}
+
+TEST(PreparePolygonTest, RejectsHoleTouchingOuterRing) {
+  // The hole's vertex (2, 0) lies on the outer ring's bottom edge.
+  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {{{2, 0}, {3, 1}, {1, 1}}}}),
+              AllOf(HasSubstr("hole 0 touches or crosses the outer ring"),
+                    HasSubstr("intersect at (2, 0)")));
+  // A hole sharing a vertex with the outer ring.
+  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {{{0, 0}, {2, 1}, {1, 2}}}}),
+              HasSubstr("hole 0 touches or crosses the outer ring"));
+}
+
+TEST(PreparePolygonTest, RejectsHoleOutsideOuterRing) {
+  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {Square(1, 1, 1), Square(10, 10, 1)}}),
+              AllOf(HasSubstr("hole 1 is not inside the outer ring"), HasSubstr("is outside")));
+  // A hole around the outer ring is not inside it either.
+  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {Square(-1, -1, 6)}}),
+              HasSubstr("hole 0 is not inside the outer ring"));
+}
+
+TEST(PreparePolygonTest, RejectsOverlappingHoles) {
+  EXPECT_THAT(
+      ErrorOf({Square(0, 0, 10), {Square(1, 1, 3), Square(2, 2, 3)}}),
+      AllOf(HasSubstr("hole 0 and hole 1 touch or overlap"), HasSubstr("holes must be disjoint")));
+}
+
+TEST(PreparePolygonTest, RejectsTouchingHoles) {
+  // Sharing the edge x = 4 partly, and sharing only a vertex.
+  EXPECT_THAT(ErrorOf({Square(0, 0, 10), {Square(1, 1, 3), Square(4, 2, 3)}}),
+              HasSubstr("hole 0 and hole 1 touch or overlap"));
+  EXPECT_THAT(
+      ErrorOf({Square(0, 0, 10), {Square(1, 1, 3), Square(4, 4, 3)}}),
+      AllOf(HasSubstr("hole 0 and hole 1 touch or overlap"), HasSubstr("intersect at (4, 4)")));
+}
+
+TEST(PreparePolygonTest, RejectsNestedHoles) {
+  EXPECT_THAT(ErrorOf({Square(0, 0, 10), {Square(1, 1, 6), Square(2, 2, 1)}}),
+              AllOf(HasSubstr("hole 1 lies inside hole 0"), HasSubstr("nested")));
+}
+
+TEST(PreparePolygonTest, AcceptsManyDisjointHoles) {
+  Polygon2d raw{Square(0, 0, 100), {}};
+  for (int i = 0; i < 10; ++i) {
+    for (int j = 0; j < 10; ++j) raw.holes.push_back(Square(1 + 10 * i, 1 + 10 * j, 5));
+  }
+  const Polygon2d clean = PreparePolygon(raw, "w");
+  EXPECT_EQ(clean.holes.size(), 100u);
+  EXPECT_DOUBLE_EQ(Area(clean), 10000.0 - 100 * 25.0);
+}
+
+}  // namespace
+}  // namespace acdplan::acd

@@ -1,0 +1,114 @@
+#include "acd/read_polygons.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "acd/input_error.h"
+
+namespace acdplan::acd {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+const fs::path kAcd2d = fs::path(ACDPLAN_SHARED_DATA) / "polygons" / "acd2d";
+
+std::string ErrorOf(const std::string& path) {
+  try {
+    ReadPolygons(path);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// A scratch file under the test's temporary directory.
+std::string WriteTemp(const std::string& name, const std::string& text) {
+  const fs::path path = fs::temp_directory_path() / ("acdplan_read_polygons_test_" + name);
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+TEST(ReadPolygonsTest, DispatchesByExtensionCaseInsensitiveAndPrepares) {
+  // Clockwise outer rings everywhere: ReadPolygons re-orients them.
+  const std::string wkt = WriteTemp("a.WKT", "POLYGON ((0 0, 0 4, 4 4, 4 0, 0 0))");
+  const std::string json = WriteTemp(
+      "a.GeoJSON", R"({"type": "Polygon", "coordinates": [[[0,0],[0,4],[4,4],[4,0],[0,0]]]})");
+  const std::string json2 = WriteTemp(
+      "a.json", R"({"type": "Polygon", "coordinates": [[[0,0],[0,4],[4,4],[4,0],[0,0]]]})");
+  const std::string poly = WriteTemp("a.Poly", "1\n4 out\n0 0\n0 4\n4 4\n4 0\n1 2 3 4\n");
+  for (const std::string& path : {wkt, json, json2, poly}) {
+    const std::vector<Polygon2d> polygons = ReadPolygons(path);
+    ASSERT_EQ(polygons.size(), 1u) << path;
+    EXPECT_DOUBLE_EQ(SignedArea(polygons[0].outer), 16.0) << path;
+    fs::remove(path);
+  }
+}
+
+TEST(ReadPolygonsTest, FileErrors) {
+  EXPECT_THAT(ErrorOf("/nonexistent/shape.poly"),
+              HasSubstr("/nonexistent/shape.poly: cannot read file: No such file or directory"));
+  EXPECT_THAT(ErrorOf("shape.svg"), HasSubstr("shape.svg: unknown polygon file extension '.svg'"));
+  const std::string empty = WriteTemp("empty.wkt", "POLYGON EMPTY");
+  EXPECT_THAT(ErrorOf(empty), HasSubstr("empty.wkt: no polygon in file"));
+  fs::remove(empty);
+}
+
+TEST(ReadPolygonsTest, GeometryErrorsNameFileAndPolygon) {
+  // The second polygon is a bow tie.
+  const std::string path =
+      WriteTemp("bowtie.wkt", "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((0 0, 2 2, 3 0, 0 3, 0 0)))");
+  EXPECT_THAT(ErrorOf(path), HasSubstr("bowtie.wkt: polygon 1: outer ring is not simple: edges "
+                                       "(0,1) and (2,3) intersect at (1.5, 1.5)"));
+  fs::remove(path);
+}
+
+TEST(ReadPolygonsTest, EveryAcd2dPolyFileValidatesExceptKnownDefects) {
+  int files = 0;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(kAcd2d)) {
+    if (entry.path().extension() != ".poly") continue;
+    ++files;
+    const std::string name = entry.path().filename().string();
+    const std::string path = entry.path().string();
+    if (name == "bird.poly") {
+      EXPECT_THAT(ErrorOf(path), HasSubstr("bird.poly:47: malformed number '-6.64248.788605'"));
+    } else if (name == "simple5.poly") {
+      // Declares 1 chain but holds 4 (the outer ring and holes of hole3.poly); Lien's reader
+      // read the first chain only. We reject the wrong count.
+      EXPECT_THAT(ErrorOf(path), HasSubstr("simple5.poly:380: unexpected '40' after the 1 "
+                                           "chain(s) declared on line 1"));
+    } else {
+      EXPECT_EQ(ErrorOf(path), "") << name;
+    }
+  }
+  EXPECT_EQ(files, 54);
+}
+
+TEST(ReadPolygonsTest, NazcaMonkeyAndNeuronCounts) {
+  const std::vector<Polygon2d> monkey =
+      ReadPolygons((kAcd2d / "nazca" / "nazca_monkey.poly").string());
+  ASSERT_EQ(monkey.size(), 1u);
+  EXPECT_EQ(VertexCount(monkey[0]), 1204);  // The dissertation's count (Table 2).
+  EXPECT_TRUE(monkey[0].holes.empty());
+
+  const std::vector<Polygon2d> neuron = ReadPolygons((kAcd2d / "neuron" / "neuron.poly").string());
+  ASSERT_EQ(neuron.size(), 1u);
+  EXPECT_EQ(neuron[0].holes.size(), 18u);
+  EXPECT_EQ(VertexCount(neuron[0]), 1786);  // 1,815 in the file; 29 collinear ones dropped.
+
+  // egg.poly's outer chain is clockwise in the file: re-oriented, not rejected.
+  const std::vector<Polygon2d> egg = ReadPolygons((kAcd2d / "egg.poly").string());
+  ASSERT_EQ(egg.size(), 1u);
+  EXPECT_GT(SignedArea(egg[0].outer), 0.0);
+  EXPECT_EQ(egg[0].outer.size(), 64u);
+
+  const std::vector<Polygon2d> nacd = ReadPolygons((kAcd2d / "neuron" / "nacd.poly").string());
+  EXPECT_EQ(nacd.size(), 234u);  // 234 "out" chains: 234 polygons.
+}
+
+}  // namespace
+}  // namespace acdplan::acd
