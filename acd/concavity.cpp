@@ -1,6 +1,7 @@
 #include "acd/concavity.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -9,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "acd/internal/exact_predicates.h"
+#include "acd/internal/pocket_cache.h"
 #include "acd/internal/shortest_paths.h"
 
 namespace acdplan::acd {
@@ -268,28 +270,54 @@ int CountNotches(const Polygon2d& polygon) {
 }
 
 std::vector<int> ConvexHullIndices(const Ring2d& ring) {
-  // Andrew's monotone chain on the indices, with exact orientation; strict turns only.
+  // Melkman's linear-time hull of a simple polygonal chain, started at the lexicographically
+  // smallest vertex (always a strict hull vertex), with exact orientation; strict turns only.
   const int n = static_cast<int>(ring.size());
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&ring](int a, int b) {
-    return ring[a].x() < ring[b].x() || (ring[a].x() == ring[b].x() && ring[a].y() < ring[b].y());
-  });
-  std::vector<int> hull(2 * n);
-  int size = 0;
-  for (int pass = 0; pass < 2; ++pass) {
-    const int floor = size;
-    for (int idx = 0; idx < n; ++idx) {
-      const int i = pass == 0 ? order[idx] : order[n - 1 - idx];
-      while (size >= floor + 2 &&
-             Orientation(ring[hull[size - 2]], ring[hull[size - 1]], ring[i]) <= 0) {
-        --size;
-      }
-      hull[size++] = i;
-    }
-    --size;  // The last point of each chain starts the other.
+  if (n < 3) {
+    std::vector<int> all(n);
+    std::iota(all.begin(), all.end(), 0);
+    return all;
   }
-  hull.resize(std::max(size, 0));
+  int start = 0;
+  for (int i = 1; i < n; ++i) {
+    if (ring[i].x() < ring[start].x() ||
+        (ring[i].x() == ring[start].x() && ring[i].y() < ring[start].y())) {
+      start = i;
+    }
+  }
+  auto at = [&](int k) { return (start + k) % n; };
+  auto turn = [&](int a, int b, int c) { return Orientation(ring[a], ring[b], ring[c]); };
+  // Skip vertices collinear with the first edge: they lie on it (the chain is simple).
+  int second = at(1);
+  int k = 2;
+  while (k < n && turn(at(0), second, at(k)) == 0) second = at(k++);
+  if (k == n) return {std::min(at(0), second), std::max(at(0), second)};
+  // A deque in a flat array: [bottom, top] with room to grow both ways.
+  std::vector<int> deque(2 * n + 3);
+  int bottom = n, top = n - 1;
+  auto push_top = [&](int v) { deque[++top] = v; };
+  auto push_bottom = [&](int v) { deque[--bottom] = v; };
+  const int third = at(k);
+  push_top(third);
+  if (turn(at(0), second, third) > 0) {
+    push_top(at(0));
+    push_top(second);
+  } else {
+    push_top(second);
+    push_top(at(0));
+  }
+  push_top(third);
+  for (++k; k < n; ++k) {
+    const int v = at(k);
+    if (turn(deque[top - 1], deque[top], v) > 0 && turn(deque[bottom], deque[bottom + 1], v) > 0) {
+      continue;  // Inside the current hull.
+    }
+    while (top - bottom >= 2 && turn(deque[top - 1], deque[top], v) <= 0) --top;
+    push_top(v);
+    while (top - bottom >= 2 && turn(v, deque[bottom], deque[bottom + 1]) <= 0) ++bottom;
+    push_bottom(v);
+  }
+  std::vector<int> hull(deque.begin() + bottom, deque.begin() + top);  // Drop the repeated end.
   std::sort(hull.begin(), hull.end());
   return hull;
 }
@@ -311,6 +339,38 @@ Ring2d ConvexHull(const Ring2d& points) {
 }
 
 Concavity2d MeasureConcavity(const Polygon2d& polygon, const ConcavityOptions& options) {
+  return internal::MeasureConcavityCached(polygon, options, nullptr);
+}
+
+namespace internal {
+
+std::uint64_t PocketCache::Hash(const Ring2d& chain) {
+  std::uint64_t h = 1469598103934665603ull ^ chain.size();
+  for (const Point2d& p : chain) {
+    for (const double c : {p.x(), p.y()}) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &c, sizeof bits);
+      h = (h ^ bits) * 1099511628211ull;
+      h ^= h >> 29;
+    }
+  }
+  return h;
+}
+
+const std::vector<double>* PocketCache::Find(const Ring2d& chain) const {
+  const auto [first, last] = entries_.equal_range(Hash(chain));
+  for (auto it = first; it != last; ++it) {
+    if (it->second.chain == chain) return &it->second.distances;
+  }
+  return nullptr;
+}
+
+void PocketCache::Insert(const Ring2d& chain, std::vector<double> distances) {
+  entries_.emplace(Hash(chain), Entry{chain, std::move(distances)});
+}
+
+Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOptions& options,
+                                   PocketCache* cache) {
   Concavity2d result;
   const Ring2d& ring = polygon.outer;
   const int n = static_cast<int>(ring.size());
@@ -318,12 +378,20 @@ Concavity2d MeasureConcavity(const Polygon2d& polygon, const ConcavityOptions& o
   const std::vector<int> hull = ConvexHullIndices(ring);
   for (const Pocket& pocket : FindPockets(ring, hull)) {
     const Ring2d chain = PocketChain(ring, pocket);
-    const std::vector<double> d = PocketConcavity(chain, options.measure, options.tau);
+    // SL is cheaper than a lookup; the measures that may run SP go through the cache.
+    const bool cacheable = cache != nullptr && options.measure != ConcavityMeasure::kStraightLine;
+    const std::vector<double>* cached = cacheable ? cache->Find(chain) : nullptr;
+    std::vector<double> computed;
+    if (cached == nullptr) {
+      computed = PocketConcavity(chain, options.measure, options.tau);
+      if (cacheable) cache->Insert(chain, computed);
+    }
+    const std::vector<double>& d = cached != nullptr ? *cached : computed;
     for (size_t k = 1; k + 1 < chain.size(); ++k) result.outer[(pocket.begin + k) % n] = d[k];
   }
   // The maximum over notches only (Lemma C.2: the most concave point is a notch).
   for (int i = 0; i < n; ++i) {
-    if (result.outer[i] > result.value &&
+    if ((result.witness_vertex < 0 || result.outer[i] > result.value) &&
         IsNotch(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n])) {
       result.value = result.outer[i];
       result.witness_vertex = i;
@@ -341,4 +409,5 @@ Concavity2d MeasureConcavity(const Polygon2d& polygon, const ConcavityOptions& o
   return result;
 }
 
+}  // namespace internal
 }  // namespace acdplan::acd

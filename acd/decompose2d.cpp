@@ -9,6 +9,7 @@
 #include "acd/concavity.h"
 #include "acd/input_error.h"
 #include "acd/internal/openings.h"
+#include "acd/internal/pocket_cache.h"
 #include "acd/internal/resolve.h"
 
 namespace acdplan::acd {
@@ -52,8 +53,11 @@ bool IsAccepted(const Polygon2d& piece, const Concavity2d& concavity,
 void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions& options,
                   Decomposition2d* out) {
   const ConcavityOptions measure{options.measure, options.hole_diameter, options.tau};
-  const internal::ResolveOptions resolve{options.score_concavity, options.score_distance,
-                                         options.steiner_cuts};
+  internal::ResolveOptions resolve;
+  resolve.score_concavity = options.score_concavity;
+  resolve.score_distance = options.score_distance;
+  resolve.steiner_cuts = options.steiner_cuts;
+  resolve.tau = options.min_convexity > 0.0 ? 0.0 : options.tau;
   const int root = static_cast<int>(out->tree.size());
   out->roots.push_back(root);
   out->tree.push_back({});
@@ -62,11 +66,13 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   // vertices on edges, so the number of splits is bounded by notches + holes (Theorem C.4).
   const long budget = 4L * (VertexCount(polygon) + static_cast<long>(polygon.holes.size())) + 16;
   long splits = 0;
+  internal::PocketCache cache;
   std::vector<int> stack = {root};
   while (!stack.empty()) {
     const int id = stack.back();
     stack.pop_back();
-    const Concavity2d concavity = MeasureConcavity(out->tree[id].piece, measure);
+    const Concavity2d concavity =
+        internal::MeasureConcavityCached(out->tree[id].piece, measure, &cache);
     out->tree[id].concavity = concavity.value;
     if (IsAccepted(out->tree[id].piece, concavity, options)) {
       HierarchyNode2d& node = out->tree[id];

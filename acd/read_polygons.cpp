@@ -14,7 +14,7 @@
 
 namespace acdplan::acd {
 
-std::vector<Polygon2d> ReadPolygons(const std::string& path) {
+std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>* reference_radii) {
   const std::string extension = internal::ToLower(std::filesystem::path(path).extension().string());
   using Reader = std::vector<Polygon2d> (*)(std::istream&, const std::string&);
   Reader reader = nullptr;
@@ -38,6 +38,10 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path) {
   std::vector<Polygon2d> polygons = reader(in, path);
   if (in.bad()) throw InputError(path + ": cannot read file: read error");
   if (polygons.empty()) throw InputError(path + ": no polygon in file");
+  if (reference_radii != nullptr) {
+    reference_radii->clear();
+    for (const Polygon2d& raw : polygons) reference_radii->push_back(ReferenceRadius(raw));
+  }
   for (size_t k = 0; k < polygons.size(); ++k) {
     polygons[k] = PreparePolygon(polygons[k], path + ": polygon " + std::to_string(k));
   }

@@ -134,6 +134,15 @@ double ConcavityAt(const Concavity2d& concavity, const Ring2d& outer, const Endp
   return (1.0 - s) * concavity.outer[e.index] + s * concavity.outer[Next(e.index, n)];
 }
 
+// Whether a cut from `r` also resolves outer vertex `x`: x is a notch and r lies in its cone.
+bool ResolvesBoth(const Ring2d& outer, int x, const Point2d& r) {
+  const int n = static_cast<int>(outer.size());
+  const Point2d& a = outer[Prev(x, n)];
+  const Point2d& b = outer[Next(x, n)];
+  return IsNotch(a, outer[x], b) && Orientation(a, outer[x], r) >= 0 &&
+         Orientation(outer[x], b, r) >= 0;
+}
+
 // Candidate end points on the outer ring for a cut from `from` (vertex `index` of ring
 // `ring_id`), scored by Ch. IV.D.1: f = (1 + s_c concavity(x)) / (s_d dist(r, x)); only those
 // in the cone that resolves the notch (both angles at r at most 180 degrees).
@@ -150,8 +159,11 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
     if (Orientation(a, r, x.point) < 0 || Orientation(r, b, x.point) < 0) return;
     const double distance = (x.point - r).norm();
     if (distance == 0.0) return;
-    const double score = (1.0 + options.score_concavity * ConcavityAt(concavity, outer, x)) /
-                         (options.score_distance * distance);
+    double score = (1.0 + options.score_concavity * ConcavityAt(concavity, outer, x)) /
+                   (options.score_distance * distance);
+    if (!x.on_edge && concavity.outer[x.index] > options.tau && ResolvesBoth(outer, x.index, r)) {
+      score *= options.double_resolve_bonus;
+    }
     candidates.push_back({x, score});
   };
   const int m = static_cast<int>(outer.size());
@@ -159,11 +171,12 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
     if (ring_id < 0 && (i == index || i == Prev(index, n) || i == Next(index, n))) continue;
     add({-1, i, false, outer[i]});
   }
-  if (options.steiner_cuts) {
-    if (const std::optional<Endpoint> hit = BisectorHit(polygon, ring_id, index);
-        hit && hit->ring < 0 && hit->on_edge) {
-      add(*hit);
-    }
+  // The bisector's hit always resolves the notch and always sees it, so it stays in the list
+  // as a last resort even without Steiner cuts: no vertex may lie in the resolving cone.
+  if (const std::optional<Endpoint> hit = BisectorHit(polygon, ring_id, index);
+      hit && hit->ring < 0 && hit->on_edge) {
+    add(*hit);
+    if (!options.steiner_cuts) candidates.back().score = -1.0;
   }
   std::sort(candidates.begin(), candidates.end(),
             [](const Candidate& x, const Candidate& y) { return x.score > y.score; });
@@ -260,10 +273,18 @@ bool ResolveHole(const Polygon2d& polygon, const Concavity2d& concavity, int h, 
   const Endpoint at_p{h, p, false, hole[p]};
   const Endpoint at_q{h, q, false, hole[q]};
   std::optional<Endpoint> x;
-  for (const Candidate& candidate : NearestCandidates(polygon, at_p.point)) {
+  for (const Candidate& candidate : ScoredCandidates(polygon, concavity, h, p, options)) {
     if (IsClearCut(polygon, at_p, candidate.end)) {
       x = candidate.end;
       break;
+    }
+  }
+  if (!x) {
+    for (const Candidate& candidate : NearestCandidates(polygon, at_p.point)) {
+      if (IsClearCut(polygon, at_p, candidate.end)) {
+        x = candidate.end;
+        break;
+      }
     }
   }
   if (!x) return false;
