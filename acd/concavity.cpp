@@ -77,42 +77,11 @@ Ring2d PocketChain(const Ring2d& ring, const Pocket& pocket) {
 }
 
 // Observation A.5: SL may under-measure a pocket only if one of its edges faces away from the
-// bridge, i.e. its outward normal has a negative dot product with the bridge's. Rotating both
-// normals by the same angle, that is the edge direction against the bridge direction.
-bool HasHazard(const Ring2d& chain) {
-  const Point2d bridge_direction = chain.back() - chain.front();
-  for (size_t i = 0; i + 1 < chain.size(); ++i) {
-    if ((chain[i + 1] - chain[i]).dot(bridge_direction) < 0.0) return true;
-  }
-  return false;
-}
-
-std::vector<double> StraightLineDistances(const Ring2d& chain) {
-  std::vector<double> d(chain.size());
-  for (size_t i = 0; i < chain.size(); ++i) {
-    d[i] = DistanceToSegment(chain[i], chain.front(), chain.back());
-  }
-  return d;
-}
-
-// Per-vertex concavity of one pocket under `measure` (Algorithms 2, 3, 4).
-std::vector<double> PocketConcavity(const Ring2d& chain, ConcavityMeasure measure, double tau) {
-  switch (measure) {
-    case ConcavityMeasure::kStraightLine:
-      return StraightLineDistances(chain);
-    case ConcavityMeasure::kShortestPath:
-      return internal::ShortestPathsToBridge(chain);
-    case ConcavityMeasure::kHybrid1:
-      return HasHazard(chain) ? internal::ShortestPathsToBridge(chain)
-                              : StraightLineDistances(chain);
-    case ConcavityMeasure::kHybrid2: {
-      std::vector<double> sl = StraightLineDistances(chain);
-      if (*std::max_element(sl.begin(), sl.end()) > tau || !HasHazard(chain)) return sl;
-      return internal::ShortestPathsToBridge(chain);
-    }
-  }
-  return StraightLineDistances(chain);
-}
+// bridge (a "hazard"): its outward normal has a negative dot product with the bridge's; rotating
+// both normals alike, the edge direction is against the bridge direction. Without a hazard the
+// chain is monotone along the bridge, every vertex sees the bridge straight on, and SP == SL
+// exactly; hence H1 equals SP (Ch. IV.A.1.c observes identical decompositions) and SP skips the
+// triangulation for such pockets. H2 runs SP only where SL stays within tau (Algorithm 4).
 
 // The antipodal pair of a hole and the distance between them (Ch. IV.A.2.b). `hole` is
 // clockwise; the hole region as a polygon of its own is the reversed, counter-clockwise ring.
@@ -285,7 +254,7 @@ std::vector<int> ConvexHullIndices(const Ring2d& ring) {
       start = i;
     }
   }
-  auto at = [&](int k) { return (start + k) % n; };
+  auto at = [&](int k) { return start + k < n ? start + k : start + k - n; };
   auto turn = [&](int a, int b, int c) { return Orientation(ring[a], ring[b], ring[c]); };
   // Skip vertices collinear with the first edge: they lie on it (the chain is simple).
   int second = at(1);
@@ -375,24 +344,46 @@ Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOpti
   const Ring2d& ring = polygon.outer;
   const int n = static_cast<int>(ring.size());
   result.outer.assign(n, 0.0);
-  const std::vector<int> hull = ConvexHullIndices(ring);
-  for (const Pocket& pocket : FindPockets(ring, hull)) {
+  result.hull = ConvexHullIndices(ring);
+  for (const Pocket& pocket : FindPockets(ring, result.hull)) {
+    // SL distances straight off the ring: no copy, no lookup. They are final for SL, for H2
+    // when they exceed tau, and for SP and H1 when the pocket has no hazard (see
+    // PocketConcavity()).
+    const Point2d& from = ring[pocket.begin];
+    const Point2d& to = ring[pocket.end];
+    const Point2d bridge = to - from;
+    bool hazard = false;
+    double sl_max = 0.0;
+    for (int i = pocket.begin; i != pocket.end;) {
+      const int next = i + 1 == n ? 0 : i + 1;
+      hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
+      if (i != pocket.begin) {
+        result.outer[i] = DistanceToSegment(ring[i], from, to);
+        sl_max = std::max(sl_max, result.outer[i]);
+      }
+      i = next;
+    }
+    const bool needs_sp = hazard && (options.measure == ConcavityMeasure::kShortestPath ||
+                                     options.measure == ConcavityMeasure::kHybrid1 ||
+                                     (options.measure == ConcavityMeasure::kHybrid2 &&
+                                      sl_max <= options.tau));
+    if (!needs_sp) continue;
     const Ring2d chain = PocketChain(ring, pocket);
-    // SL is cheaper than a lookup; the measures that may run SP go through the cache.
-    const bool cacheable = cache != nullptr && options.measure != ConcavityMeasure::kStraightLine;
-    const std::vector<double>* cached = cacheable ? cache->Find(chain) : nullptr;
+    const std::vector<double>* cached = cache != nullptr ? cache->Find(chain) : nullptr;
     std::vector<double> computed;
     if (cached == nullptr) {
-      computed = PocketConcavity(chain, options.measure, options.tau);
-      if (cacheable) cache->Insert(chain, computed);
+      computed = internal::ShortestPathsToBridge(chain);
+      if (cache != nullptr) cache->Insert(chain, computed);
     }
     const std::vector<double>& d = cached != nullptr ? *cached : computed;
-    for (size_t k = 1; k + 1 < chain.size(); ++k) result.outer[(pocket.begin + k) % n] = d[k];
+    for (size_t k = 1; k + 1 < chain.size(); ++k) {
+      result.outer[(pocket.begin + static_cast<int>(k)) % n] = d[k];
+    }
   }
   // The maximum over notches only (Lemma C.2: the most concave point is a notch).
   for (int i = 0; i < n; ++i) {
     if ((result.witness_vertex < 0 || result.outer[i] > result.value) &&
-        IsNotch(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n])) {
+        IsNotch(ring[i == 0 ? n - 1 : i - 1], ring[i], ring[i + 1 == n ? 0 : i + 1])) {
       result.value = result.outer[i];
       result.witness_vertex = i;
     }

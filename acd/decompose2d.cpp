@@ -31,9 +31,10 @@ void ValidateOptions(const Decompose2dOptions& options) {
   }
 }
 
-Ring2d HullOf(const Ring2d& ring) {
+Ring2d HullOf(const Ring2d& ring, const std::vector<int>& indices) {
   Ring2d hull;
-  for (int i : ConvexHullIndices(ring)) hull.push_back(ring[i]);
+  hull.reserve(indices.size());
+  for (int i : indices) hull.push_back(ring[i]);
   return hull;
 }
 
@@ -43,7 +44,8 @@ bool IsAccepted(const Polygon2d& piece, const Concavity2d& concavity,
   const bool convex = concavity.witness_vertex < 0 && concavity.witness_hole < 0;
   if (convex) return true;
   if (options.min_convexity > 0.0) {
-    return Area(piece) >= options.min_convexity * std::abs(SignedArea(HullOf(piece.outer)));
+    return Area(piece) >=
+           options.min_convexity * std::abs(SignedArea(HullOf(piece.outer, concavity.hull)));
   }
   // tau == 0 asks for convex pieces; a notch always has positive concavity (Lemma C.1).
   return options.tau > 0.0 && concavity.value <= options.tau;
@@ -83,7 +85,8 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
                                 ? node.piece.holes[concavity.witness_hole]
                                                   [concavity.holes[concavity.witness_hole].p]
                                 : Point2d(node.piece.outer.front()));
-      out->components.push_back({node.piece, HullOf(node.piece.outer), Centroid(node.piece),
+      out->components.push_back({node.piece, HullOf(node.piece.outer, concavity.hull),
+                                 Centroid(node.piece),
                                  concavity.value, source});
       continue;
     }

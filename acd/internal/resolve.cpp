@@ -178,9 +178,20 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
     add(*hit);
     if (!options.steiner_cuts) candidates.back().score = -1.0;
   }
-  std::sort(candidates.begin(), candidates.end(),
-            [](const Candidate& x, const Candidate& y) { return x.score > y.score; });
   return candidates;
+}
+
+// Calls `accept` on the candidates from best to worst score until it returns true; returns the
+// accepted candidate. A heap, since the first few candidates usually suffice.
+template <typename Accept>
+std::optional<Endpoint> FirstAccepted(std::vector<Candidate> candidates, Accept accept) {
+  auto worse = [](const Candidate& x, const Candidate& y) { return x.score < y.score; };
+  std::make_heap(candidates.begin(), candidates.end(), worse);
+  for (auto end = candidates.end(); end != candidates.begin(); --end) {
+    std::pop_heap(candidates.begin(), end, worse);
+    if (accept((end - 1)->end)) return (end - 1)->end;
+  }
+  return std::nullopt;
 }
 
 // Outer vertices and closest edge points, nearest first: the fallback ends of a hole's cut.
@@ -198,8 +209,6 @@ std::vector<Candidate> NearestCandidates(const Polygon2d& polygon, const Point2d
       candidates.push_back({{-1, i, true, foot}, -(foot - from).norm()});
     }
   }
-  std::sort(candidates.begin(), candidates.end(),
-            [](const Candidate& x, const Candidate& y) { return x.score > y.score; });
   return candidates;
 }
 
@@ -249,20 +258,20 @@ void DistributeHoles(const Polygon2d& polygon, int skip, std::array<Polygon2d, 2
 bool ResolveOuterNotch(const Polygon2d& polygon, const Concavity2d& concavity, int r,
                        const ResolveOptions& options, Resolution* resolution) {
   const Endpoint from{-1, r, false, polygon.outer[r]};
-  for (const Candidate& candidate : ScoredCandidates(polygon, concavity, -1, r, options)) {
-    if (!IsClearCut(polygon, from, candidate.end)) continue;
-    Endpoint start = from;
-    Endpoint end = candidate.end;
-    const Ring2d ring = InsertOnOuter(polygon.outer, {&start, &end});
-    resolution->pieces = {};
-    AppendChain(ring, start.index, end.index, &resolution->pieces[0].outer);
-    AppendChain(ring, end.index, start.index, &resolution->pieces[1].outer);
-    DistributeHoles(polygon, -1, &resolution->pieces);
-    resolution->cuts = {{from.point, candidate.end.point}};
-    resolution->witness = from.point;
-    return true;
-  }
-  return false;
+  const std::optional<Endpoint> to =
+      FirstAccepted(ScoredCandidates(polygon, concavity, -1, r, options),
+                    [&](const Endpoint& x) { return IsClearCut(polygon, from, x); });
+  if (!to) return false;
+  Endpoint start = from;
+  Endpoint end = *to;
+  const Ring2d ring = InsertOnOuter(polygon.outer, {&start, &end});
+  resolution->pieces = {};
+  AppendChain(ring, start.index, end.index, &resolution->pieces[0].outer);
+  AppendChain(ring, end.index, start.index, &resolution->pieces[1].outer);
+  DistributeHoles(polygon, -1, &resolution->pieces);
+  resolution->cuts = {{from.point, to->point}};
+  resolution->witness = from.point;
+  return true;
 }
 
 // Splits `polygon` through hole `h` with two cuts: p -> x (the closest visible outer point,
@@ -272,21 +281,10 @@ bool ResolveHole(const Polygon2d& polygon, const Concavity2d& concavity, int h, 
   const Ring2d& hole = polygon.holes[h];
   const Endpoint at_p{h, p, false, hole[p]};
   const Endpoint at_q{h, q, false, hole[q]};
-  std::optional<Endpoint> x;
-  for (const Candidate& candidate : ScoredCandidates(polygon, concavity, h, p, options)) {
-    if (IsClearCut(polygon, at_p, candidate.end)) {
-      x = candidate.end;
-      break;
-    }
-  }
-  if (!x) {
-    for (const Candidate& candidate : NearestCandidates(polygon, at_p.point)) {
-      if (IsClearCut(polygon, at_p, candidate.end)) {
-        x = candidate.end;
-        break;
-      }
-    }
-  }
+  auto clear_from_p = [&](const Endpoint& e) { return IsClearCut(polygon, at_p, e); };
+  std::optional<Endpoint> x =
+      FirstAccepted(ScoredCandidates(polygon, concavity, h, p, options), clear_from_p);
+  if (!x) x = FirstAccepted(NearestCandidates(polygon, at_p.point), clear_from_p);
   if (!x) return false;
   auto compatible = [&](const Endpoint& y) {
     if (y.index == x->index && y.on_edge == x->on_edge) return false;
@@ -294,21 +292,9 @@ bool ResolveHole(const Polygon2d& polygon, const Concavity2d& concavity, int h, 
     return !SegmentsMeet(at_p.point, x->point, at_q.point, y.point) &&
            IsClearCut(polygon, at_q, y);
   };
-  std::optional<Endpoint> y;
-  for (const Candidate& candidate : ScoredCandidates(polygon, concavity, h, q, options)) {
-    if (compatible(candidate.end)) {
-      y = candidate.end;
-      break;
-    }
-  }
-  if (!y) {
-    for (const Candidate& candidate : NearestCandidates(polygon, at_q.point)) {
-      if (compatible(candidate.end)) {
-        y = candidate.end;
-        break;
-      }
-    }
-  }
+  std::optional<Endpoint> y =
+      FirstAccepted(ScoredCandidates(polygon, concavity, h, q, options), compatible);
+  if (!y) y = FirstAccepted(NearestCandidates(polygon, at_q.point), compatible);
   if (!y) return false;
   Endpoint end_x = *x;
   Endpoint end_y = *y;
@@ -348,17 +334,21 @@ bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity,
     }
     return false;
   }
-  // Outer notches by decreasing concavity, the witness first.
+  // The witness; should no cut resolve it, the other outer notches by decreasing concavity.
+  if (concavity.witness_vertex >= 0 &&
+      ResolveOuterNotch(polygon, concavity, concavity.witness_vertex, options, resolution)) {
+    return true;
+  }
   const Ring2d& outer = polygon.outer;
   const int n = static_cast<int>(outer.size());
   std::vector<int> notches;
   for (int i = 0; i < n; ++i) {
-    if (IsNotch(outer[Prev(i, n)], outer[i], outer[Next(i, n)])) notches.push_back(i);
+    if (i != concavity.witness_vertex && IsNotch(outer[Prev(i, n)], outer[i], outer[Next(i, n)])) {
+      notches.push_back(i);
+    }
   }
   std::stable_sort(notches.begin(), notches.end(),
                    [&](int a, int b) { return concavity.outer[a] > concavity.outer[b]; });
-  std::stable_partition(notches.begin(), notches.end(),
-                        [&](int i) { return i == concavity.witness_vertex; });
   for (int r : notches) {
     if (ResolveOuterNotch(polygon, concavity, r, options, resolution)) return true;
   }
