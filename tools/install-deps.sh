@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ccache pkg-config
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev
   libboost-dev libboost-filesystem-dev libboost-serialization-dev libboost-system-dev
-  libompl-dev libode-dev libfcl-dev libyaml-cpp-dev libassimp-dev
+  libompl-dev libode-dev libfcl-dev libyaml-cpp-dev libassimp-dev libpng-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
   python3-matplotlib
 )

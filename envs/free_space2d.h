@@ -1,0 +1,38 @@
+#pragma once
+// The free space of a 2D workspace: bounds minus the union of the obstacles.
+
+#include <vector>
+
+#include "acd/polygon2d.h"
+#include "envs/workspace2d.h"
+
+namespace acdplan::envs {
+
+/// Options for FreeSpace2d(); `{}` is valid.
+struct FreeSpace2dOptions {
+  /// Half-diagonal of the small square (a diamond, |dx| + |dy| <= gap) added to the obstacles
+  /// at each pinch where a hole would touch another ring, relative to the bounds' diagonal;
+  /// > 0. Each such pinch removes at most 2 gap^2 of free area.
+  double pinch_gap = 1e-7;
+};
+
+/// The free space `workspace.bounds` minus the union of `workspace.obstacles`, computed with
+/// exact Boolean operations (CGAL Boolean_set_operations_2, exact constructions), converted to
+/// doubles and passed through acd::PreparePolygon(): a list of valid polygons with holes, one
+/// per connected region, ready for acd::Decompose2d(). Sorted by their lowest-leftmost vertex.
+///
+/// Obstacles may overlap, touch each other, touch or cross the bounds, or split the free space
+/// into several regions. Pinches (a free region whose boundary passes twice through a point):
+///  - two lobes of one region meeting at a point become two polygons, exactly (a zero-width
+///    passage is no passage; the split is where the topology already is);
+///  - a hole touching the outer ring or another hole at a point (the region is not simply
+///    connected in a way a set of simple rings can describe) is closed by adding a diamond of
+///    half-diagonal `pinch_gap` * diagonal to the obstacles there; the free space only shrinks
+///    (collision stays conservative) and the pinch point was not traversable anyway.
+/// The result may be empty (obstacles cover the bounds).
+/// @throws acd::InputError if the bounds are empty or an obstacle is invalid, or
+///         `options.pinch_gap` <= 0.
+std::vector<acd::Polygon2d> FreeSpace2d(const Workspace2d& workspace,
+                                        const FreeSpace2dOptions& options = {});
+
+}  // namespace acdplan::envs

@@ -1,0 +1,154 @@
+#include "envs/internal/gray_image.h"
+
+#include <png.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include "acd/input_error.h"
+
+namespace acdplan::envs::internal {
+namespace {
+
+std::string ReadBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw acd::InputError(path + ": cannot read file: " + std::strerror(errno));
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw acd::InputError(path + ": cannot read file: read error");
+  return bytes;
+}
+
+// A cursor over a PGM header: whitespace and '#' comments are skipped between tokens.
+class PgmHeader {
+ public:
+  PgmHeader(const std::string& path, const std::string& bytes) : path_(path), bytes_(bytes) {}
+
+  int Integer(const char* what) {
+    SkipSpaceAndComments();
+    long long value = 0;
+    size_t digits = 0;
+    while (pos_ < bytes_.size() && std::isdigit(static_cast<unsigned char>(bytes_[pos_]))) {
+      value = value * 10 + (bytes_[pos_++] - '0');
+      if (value > 1000000000) break;
+      ++digits;
+    }
+    if (digits == 0 || value > 1000000000) {
+      throw acd::InputError(path_ + ": malformed PGM header: expected " + what);
+    }
+    return static_cast<int>(value);
+  }
+
+  void SkipSpaceAndComments() {
+    while (pos_ < bytes_.size()) {
+      if (bytes_[pos_] == '#') {
+        while (pos_ < bytes_.size() && bytes_[pos_] != '\n') ++pos_;
+      } else if (std::isspace(static_cast<unsigned char>(bytes_[pos_]))) {
+        ++pos_;
+      } else {
+        break;
+      }
+    }
+  }
+
+  size_t pos_ = 2;
+
+ private:
+  const std::string& path_;
+  const std::string& bytes_;
+};
+
+}  // namespace
+
+GrayImage ReadPgm(const std::string& path) {
+  const std::string bytes = ReadBytes(path);
+  if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '2' && bytes[1] != '5')) {
+    throw acd::InputError(path + ": not a PGM image (expected magic 'P2' or 'P5')");
+  }
+  const bool binary = bytes[1] == '5';
+  PgmHeader header(path, bytes);
+  GrayImage image;
+  image.width = header.Integer("width");
+  image.height = header.Integer("height");
+  image.max_value = header.Integer("maxval");
+  if (image.width <= 0 || image.height <= 0) {
+    throw acd::InputError(path + ": malformed PGM header: width and height must be > 0");
+  }
+  if (image.max_value < 1 || image.max_value > 65535) {
+    throw acd::InputError(path + ": malformed PGM header: maxval must be in [1, 65535]");
+  }
+  const size_t n = static_cast<size_t>(image.width) * image.height;
+  image.pixels.resize(n);
+  if (binary) {
+    // Exactly one whitespace byte separates maxval from the raster.
+    size_t pos = header.pos_ + 1;
+    const size_t bytes_per_pixel = image.max_value > 255 ? 2 : 1;
+    if (header.pos_ >= bytes.size() || bytes.size() - pos < n * bytes_per_pixel) {
+      throw acd::InputError(path + ": truncated PGM data: expected " + std::to_string(n) +
+                            " pixels");
+    }
+    for (size_t i = 0; i < n; ++i) {
+      unsigned value = static_cast<unsigned char>(bytes[pos++]);
+      if (bytes_per_pixel == 2) value = (value << 8) | static_cast<unsigned char>(bytes[pos++]);
+      image.pixels[i] = static_cast<std::uint16_t>(value);
+    }
+  } else {
+    for (size_t i = 0; i < n; ++i) {
+      header.SkipSpaceAndComments();
+      if (header.pos_ >= bytes.size()) {
+        throw acd::InputError(path + ": truncated PGM data: expected " + std::to_string(n) +
+                              " pixels, found " + std::to_string(i));
+      }
+      image.pixels[i] =
+          static_cast<std::uint16_t>(std::min(header.Integer("a pixel value"), 65535));
+    }
+  }
+  for (size_t i = 0; i < n; ++i) {
+    if (image.pixels[i] > image.max_value) {
+      throw acd::InputError(path + ": PGM pixel " + std::to_string(i) + " value " +
+                            std::to_string(image.pixels[i]) + " exceeds maxval " +
+                            std::to_string(image.max_value));
+    }
+  }
+  return image;
+}
+
+GrayImage ReadPng(const std::string& path) {
+  const std::string bytes = ReadBytes(path);
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_memory(&png, bytes.data(), bytes.size())) {
+    const std::string reason = png.message;
+    png_image_free(&png);
+    throw acd::InputError(path + ": cannot read PNG: " + reason);
+  }
+  png.format = PNG_FORMAT_GRAY;
+  GrayImage image;
+  image.width = static_cast<int>(png.width);
+  image.height = static_cast<int>(png.height);
+  image.max_value = 255;
+  std::vector<png_byte> buffer(PNG_IMAGE_SIZE(png));
+  if (!png_image_finish_read(&png, nullptr, buffer.data(), 0, nullptr)) {
+    const std::string reason = png.message;
+    png_image_free(&png);
+    throw acd::InputError(path + ": cannot read PNG: " + reason);
+  }
+  image.pixels.assign(buffer.begin(), buffer.end());
+  return image;
+}
+
+GrayImage ReadGrayImage(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw acd::InputError(path + ": cannot read file: " + std::strerror(errno));
+  char magic[8] = {};
+  in.read(magic, sizeof magic);
+  static const unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (in.gcount() == 8 && std::memcmp(magic, kPngSignature, 8) == 0) return ReadPng(path);
+  return ReadPgm(path);
+}
+
+}  // namespace acdplan::envs::internal

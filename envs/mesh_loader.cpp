@@ -1,0 +1,62 @@
+#include "envs/mesh_loader.h"
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include "acd/input_error.h"
+
+namespace acdplan::envs {
+
+TriangleMesh ReadMesh(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    const bool exists = std::filesystem::exists(path, error);
+    throw acd::InputError(path + ": cannot read mesh: " +
+                          (exists ? std::string("not a regular file") : std::strerror(ENOENT)));
+  }
+  Assimp::Importer importer;
+  // Points and lines are not surfaces: drop them instead of failing on mixed files.
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                  aiProcess_PreTransformVertices | aiProcess_SortByPType);
+  if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) {
+    std::string reason = importer.GetErrorString();
+    if (reason.empty()) reason = "unsupported or malformed file";
+    throw acd::InputError(path + ": cannot read mesh: " + reason);
+  }
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<Eigen::Vector3i> triangles;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* mesh = scene->mMeshes[m];
+    const int base = static_cast<int>(vertices.size());
+    for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+      const aiVector3D& p = mesh->mVertices[v];
+      vertices.emplace_back(p.x, p.y, p.z);
+    }
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const aiFace& face = mesh->mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      triangles.emplace_back(base + static_cast<int>(face.mIndices[0]),
+                             base + static_cast<int>(face.mIndices[1]),
+                             base + static_cast<int>(face.mIndices[2]));
+    }
+  }
+  if (triangles.empty()) throw acd::InputError(path + ": no triangles in file");
+  TriangleMesh result;
+  result.vertices.resize(static_cast<Eigen::Index>(vertices.size()), 3);
+  result.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (size_t i = 0; i < vertices.size(); ++i) result.vertices.row(i) = vertices[i].transpose();
+  for (size_t i = 0; i < triangles.size(); ++i) result.triangles.row(i) = triangles[i].transpose();
+  CheckTriangleMesh(result, path);
+  return result;
+}
+
+}  // namespace acdplan::envs

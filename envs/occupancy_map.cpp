@@ -1,0 +1,91 @@
+#include "envs/occupancy_map.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include "acd/input_error.h"
+#include "envs/internal/gray_image.h"
+#include "envs/internal/yaml_util.h"
+
+namespace acdplan::envs {
+
+OccupancyGrid ReadOccupancyMap(const std::string& yaml_path, const OccupancyMapOptions& options) {
+  const internal::YamlFile file = internal::LoadYamlFile(yaml_path);
+  const YAML::Node& root = file.root;
+  internal::CheckKeys(
+      file, root, "",
+      {"image", "resolution", "origin", "occupied_thresh", "free_thresh", "negate", "mode"});
+  for (const char* key : {"image", "resolution", "origin"}) {
+    if (!root[key]) file.Fail(key, "missing required key");
+  }
+  const std::string image_name = internal::String(file, root["image"], "image");
+  const double resolution = internal::Number(file, root["resolution"], "resolution");
+  if (!(resolution > 0.0)) file.Fail("resolution", "expected a number > 0");
+  const std::vector<double> origin =
+      internal::Numbers(file, root["origin"], "origin", 3, "[x, y, yaw]");
+  if (origin[2] != 0.0) file.Fail("origin", "yaw must be 0 (rotated maps are not supported)");
+  const double occupied_thresh =
+      root["occupied_thresh"] ? internal::Number(file, root["occupied_thresh"], "occupied_thresh")
+                              : 0.65;
+  const double free_thresh =
+      root["free_thresh"] ? internal::Number(file, root["free_thresh"], "free_thresh") : 0.196;
+  if (occupied_thresh < 0.0 || occupied_thresh > 1.0) {
+    file.Fail("occupied_thresh", "expected a number in [0, 1]");
+  }
+  if (free_thresh < 0.0 || free_thresh > 1.0)
+    file.Fail("free_thresh", "expected a number in [0, 1]");
+  if (!(free_thresh < occupied_thresh)) {
+    file.Fail("free_thresh", "must be less than occupied_thresh");
+  }
+  bool negate = false;
+  if (root["negate"]) {
+    const double value = internal::Number(file, root["negate"], "negate");
+    if (value != 0.0 && value != 1.0) file.Fail("negate", "expected 0 or 1");
+    negate = value == 1.0;
+  }
+  if (root["mode"]) {
+    const std::string mode = internal::String(file, root["mode"], "mode");
+    if (mode != "trinary" && mode != "scale" && mode != "raw") {
+      file.Fail("mode", "expected trinary, scale or raw, got '" + mode + "'");
+    }
+  }
+
+  const std::string image_path = internal::ResolvePath(yaml_path, image_name);
+  if (!std::filesystem::is_regular_file(image_path)) {
+    file.Fail("image", "cannot read '" + image_path + "': " +
+                           (std::filesystem::exists(image_path) ? "not a regular file"
+                                                                : std::strerror(ENOENT)));
+  }
+  const internal::GrayImage image = internal::ReadGrayImage(image_path);
+
+  OccupancyGrid grid;
+  grid.width = image.width;
+  grid.height = image.height;
+  grid.resolution = resolution;
+  grid.origin = Eigen::Vector2d(origin[0], origin[1]);
+  grid.blocked.resize(image.pixels.size());
+  const double max_value = image.max_value;
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    const double value = image.pixels[i];
+    const double occupancy = negate ? value / max_value : (max_value - value) / max_value;
+    bool blocked;
+    if (occupancy > occupied_thresh) {
+      blocked = true;
+    } else if (occupancy < free_thresh) {
+      blocked = false;
+    } else {
+      blocked = options.unknown == UnknownCells::kBlocked;
+    }
+    grid.blocked[i] = blocked ? 1 : 0;
+  }
+  return grid;
+}
+
+Workspace2d LoadOccupancyMap(const std::string& yaml_path, const OccupancyMapOptions& options) {
+  Workspace2d workspace = GridWorkspace(ReadOccupancyMap(yaml_path, options));
+  workspace.description = "occupancy map " + yaml_path;
+  return workspace;
+}
+
+}  // namespace acdplan::envs

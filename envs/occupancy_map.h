@@ -1,0 +1,43 @@
+#pragma once
+// ROS map_server occupancy maps: map.yaml plus a PGM or PNG image.
+
+#include <string>
+
+#include "envs/occupancy_grid.h"
+#include "envs/workspace2d.h"
+
+namespace acdplan::envs {
+
+/// How ReadOccupancyMap() treats cells that are neither occupied nor free.
+enum class UnknownCells {
+  kBlocked,  ///< Conservative: unknown space is an obstacle (default).
+  kFree,     ///< Optimistic: unknown space is free.
+};
+
+/// Options for ReadOccupancyMap(); `{}` is valid.
+struct OccupancyMapOptions {
+  UnknownCells unknown =
+      UnknownCells::kBlocked;  ///< Cells between free_thresh and occupied_thresh.
+};
+
+/// Reads a ROS map_server `map.yaml`:
+///   image: path of a PGM (P2 or P5, any maxval) or PNG image, relative to the YAML's folder
+///   resolution: metres per pixel (> 0)
+///   origin: [x, y, yaw] of the lower-left pixel's corner; yaw must be 0
+///   occupied_thresh, free_thresh: in [0, 1], free_thresh < occupied_thresh (free_thresh
+///     defaults to 0.196 and occupied_thresh to 0.65 when absent)
+///   negate: 0 or 1 (default 0); mode: trinary | scale | raw (accepted; only the thresholds
+///     are used, as map_server's trinary mode)
+/// A pixel of value v (maxval m) has occupancy p = (m - v) / m (or v / m when negate is 1);
+/// p > occupied_thresh is blocked, p < free_thresh is free, anything else unknown. Colour
+/// PNGs are converted to grey by libpng (luminance); alpha is ignored.
+/// @throws acd::InputError naming the file, the key and the rule, e.g.
+///   "map.yaml: resolution: expected a number > 0", "map.yaml: image: cannot read
+///   'missing.pgm': No such file or directory", "map.pgm: malformed PGM header".
+OccupancyGrid ReadOccupancyMap(const std::string& yaml_path,
+                               const OccupancyMapOptions& options = {});
+
+/// GridWorkspace(ReadOccupancyMap(yaml_path, options)).
+Workspace2d LoadOccupancyMap(const std::string& yaml_path, const OccupancyMapOptions& options = {});
+
+}  // namespace acdplan::envs

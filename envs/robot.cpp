@@ -1,0 +1,90 @@
+#include "envs/robot.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "acd/input_error.h"
+#include "acd/prepare_polygon.h"
+
+namespace acdplan::envs {
+
+Robot Robot::Point() { return Robot{}; }
+
+Robot Robot::Disc(double radius) {
+  if (!std::isfinite(radius) || !(radius > 0.0)) {
+    throw acd::InputError("Robot::Disc(): radius must be finite and > 0, got " +
+                          std::to_string(radius));
+  }
+  Robot robot;
+  robot.shape = RobotShape::kDisc;
+  robot.radius = radius;
+  return robot;
+}
+
+Robot Robot::Polygon(const acd::Polygon2d& outline) {
+  Robot robot;
+  robot.shape = RobotShape::kPolygon;
+  robot.polygon = acd::PreparePolygon(outline, "Robot::Polygon()");
+  return robot;
+}
+
+Robot Robot::Mesh(const TriangleMesh& surface) {
+  CheckTriangleMesh(surface, "Robot::Mesh()");
+  Robot robot;
+  robot.shape = RobotShape::kMesh;
+  robot.mesh = surface;
+  return robot;
+}
+
+double Robot::BoundingRadius() const {
+  switch (shape) {
+    case RobotShape::kPoint:
+      return 0.0;
+    case RobotShape::kDisc:
+      return radius;
+    case RobotShape::kPolygon: {
+      double r = 0.0;
+      for (const acd::Point2d& p : polygon.outer) r = std::max(r, p.norm());
+      return r;
+    }
+    case RobotShape::kMesh:
+      return mesh.vertices.rows() == 0 ? 0.0 : mesh.vertices.rowwise().norm().maxCoeff();
+  }
+  return 0.0;
+}
+
+std::string ShapeName(RobotShape shape) {
+  switch (shape) {
+    case RobotShape::kPoint:
+      return "point";
+    case RobotShape::kDisc:
+      return "disc";
+    case RobotShape::kPolygon:
+      return "polygon";
+    case RobotShape::kMesh:
+      return "mesh";
+  }
+  return "?";
+}
+
+acd::Polygon2d Transformed(const acd::Polygon2d& polygon, const Eigen::Isometry2d& pose) {
+  auto move = [&pose](const acd::Ring2d& ring) {
+    acd::Ring2d out;
+    out.reserve(ring.size());
+    for (const acd::Point2d& p : ring) out.push_back(pose * p);
+    return out;
+  };
+  acd::Polygon2d result{move(polygon.outer), {}};
+  for (const acd::Ring2d& hole : polygon.holes) result.holes.push_back(move(hole));
+  return result;
+}
+
+TriangleMesh Transformed(const TriangleMesh& mesh, const Eigen::Isometry3d& pose) {
+  TriangleMesh result = mesh;
+  for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
+    result.vertices.row(i) = (pose * Eigen::Vector3d(mesh.vertices.row(i).transpose())).transpose();
+  }
+  return result;
+}
+
+}  // namespace acdplan::envs

@@ -1,0 +1,26 @@
+#pragma once
+// A triangle mesh: the 3D obstacle and robot geometry.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <string>
+
+namespace acdplan::envs {
+
+/// An indexed triangle mesh (libigl's V, F convention).
+struct TriangleMesh {
+  Eigen::Matrix<double, Eigen::Dynamic, 3> vertices;  ///< #V by 3 vertex positions [units].
+  Eigen::Matrix<int, Eigen::Dynamic, 3> triangles;    ///< #F by 3 indices into `vertices`,
+                                                      ///< counter-clockwise seen from outside.
+};
+
+/// Axis-aligned bounding box of the vertices (empty box for an empty mesh).
+Eigen::AlignedBox3d BoundingBox(const TriangleMesh& mesh);
+
+/// Checks that `mesh` has at least one triangle, finite coordinates and every index in
+/// [0, #V).
+/// @throws acd::InputError "<where>: <rule>", e.g. "cup.obj: triangle 4: index 17 out of
+///         range [0, 12)".
+void CheckTriangleMesh(const TriangleMesh& mesh, const std::string& where);
+
+}  // namespace acdplan::envs
