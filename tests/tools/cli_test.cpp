@@ -1,0 +1,160 @@
+// Runs the built `acdplan` binary (ACDPLAN_BINARY) and checks exit statuses, messages and
+// outputs of `acdplan decompose`.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kPolygons = std::string(ACDPLAN_SHARED_DATA) + "/polygons/acd2d/";
+
+struct RunResult {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string Read(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string Quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("acdplan_cli_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+
+  RunResult Acdplan(const std::string& arguments) const {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = Quote(ACDPLAN_BINARY) + " " + arguments + " >" +
+                                Quote(out.string()) + " 2>" + Quote(err.string());
+    const int raw = std::system(command.c_str());
+    RunResult run;
+    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    run.out = Read(out);
+    run.err = Read(err);
+    fs::remove(out);
+    fs::remove(err);
+    return run;
+  }
+
+  int FileCount() const {
+    int n = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(dir_)) n += entry.is_regular_file();
+    return n;
+  }
+
+  fs::path dir_;
+};
+
+/// Exactly one line on stderr, "acdplan: error: ...".
+void ExpectUsageError(const RunResult& run) {
+  EXPECT_EQ(run.status, 2) << run.err;
+  EXPECT_EQ(run.err.rfind("acdplan: error: ", 0), 0u) << run.err;
+  ASSERT_FALSE(run.err.empty());
+  EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << run.err;
+}
+
+TEST_F(CliTest, VersionAndHelp) {
+  RunResult run = Acdplan("--version");
+  EXPECT_EQ(run.status, 0);
+  EXPECT_NE(run.out.find(ACDPLAN_VERSION), std::string::npos) << run.out;
+  run = Acdplan("decompose --help");
+  EXPECT_EQ(run.status, 0);
+  EXPECT_NE(run.out.find("--tau-rel"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("largest radius"), std::string::npos) << run.out;
+}
+
+TEST_F(CliTest, MissingFileNamesTheFile) {
+  const std::string missing = (dir_ / "no_such_polygon.poly").string();
+  const RunResult run = Acdplan("decompose " + Quote(missing));
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find(missing), std::string::npos) << run.err;
+}
+
+TEST_F(CliTest, MalformedNumberNamesTheLine) {
+  const RunResult run = Acdplan("decompose " + Quote(kPolygons + "bird.poly") + " --json " +
+                                Quote((dir_ / "bird.json").string()));
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find("bird.poly:47"), std::string::npos) << run.err;
+  EXPECT_EQ(FileCount(), 0);  // nothing written
+}
+
+TEST_F(CliTest, TauAndTauRelAreMutuallyExclusive) {
+  ExpectUsageError(
+      Acdplan("decompose " + Quote(kPolygons + "simple1.poly") + " --tau 1 --tau-rel 0.1"));
+}
+
+TEST_F(CliTest, UnknownMeasureIsAUsageError) {
+  const RunResult run =
+      Acdplan("decompose " + Quote(kPolygons + "simple1.poly") + " --measure xyz");
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find("xyz"), std::string::npos) << run.err;
+}
+
+TEST_F(CliTest, OutOfRangeValuesAreUsageErrors) {
+  const std::string input = Quote(kPolygons + "simple1.poly");
+  ExpectUsageError(Acdplan("decompose " + input + " --tau -1"));
+  ExpectUsageError(Acdplan("decompose " + input + " --tau-rel -0.5"));
+  ExpectUsageError(Acdplan("decompose " + input + " --min-convexity 0"));
+  ExpectUsageError(Acdplan("decompose " + input + " --min-convexity 1.5"));
+  ExpectUsageError(Acdplan("decompose " + input + " --hole-diameter wide"));
+  ExpectUsageError(Acdplan("decompose " + input + " --json " + Quote(dir_.string())));
+  ExpectUsageError(Acdplan("decompose"));
+  ExpectUsageError(Acdplan(""));
+  EXPECT_EQ(FileCount(), 0);
+}
+
+TEST_F(CliTest, DecomposesAndWritesJsonAndSvg) {
+  const fs::path json_path = dir_ / "out" / "simple1.json";
+  const fs::path svg_path = dir_ / "out" / "simple1.svg";
+  const RunResult run = Acdplan("decompose " + Quote(kPolygons + "simple1.poly") +
+                                " --tau-rel 0.05 --measure sl --check --json " +
+                                Quote(json_path.string()) + " --svg " + Quote(svg_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_TRUE(run.err.empty()) << run.err;
+  EXPECT_NE(run.out.find("components"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find(json_path.string()), std::string::npos) << run.out;
+  ASSERT_TRUE(fs::exists(json_path));
+  ASSERT_TRUE(fs::exists(svg_path));
+  EXPECT_EQ(FileCount(), 2);  // no temporary files left
+
+  const nlohmann::json j = nlohmann::json::parse(Read(json_path));
+  EXPECT_EQ(j.at("format"), "acdplan.decomposition2d/1");
+  EXPECT_EQ(j.at("measure"), "sl");
+  EXPECT_EQ(j.at("tau_rel").get<double>(), 0.05);
+  EXPECT_GE(j.at("components").size(), 1u);
+  EXPECT_EQ(j.at("stats").at("components").get<size_t>(), j.at("components").size());
+
+  const std::string svg = Read(svg_path);
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("simple1.poly"), std::string::npos);
+}
+
+}  // namespace

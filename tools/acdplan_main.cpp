@@ -1,0 +1,232 @@
+// The acdplan command line. Exit statuses (DESIGN.md): 0 success; 2 bad input or usage, with
+// one line "acdplan: error: <message>" on stderr; 1 internal error.
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "acd/check_decomposition.h"
+#include "acd/concavity_measure.h"
+#include "acd/decompose2d.h"
+#include "acd/decomposition2d.h"
+#include "acd/decomposition_io.h"
+#include "acd/input_error.h"
+#include "acd/polygon2d.h"
+#include "acd/read_polygons.h"
+
+namespace {
+
+namespace acd = acdplan::acd;
+
+/// What `acdplan decompose` was asked to do.
+struct DecomposeArguments {
+  std::string input;
+  double tau = 0.0;
+  double tau_rel = -1.0;  ///< < 0: not given.
+  std::string measure = "sp";
+  double min_convexity = 0.0;
+  std::string hole_diameter = "auto";
+  bool no_steiner = false;
+  std::string json_path;
+  std::string svg_path;
+  bool check = false;
+};
+
+acd::HoleDiameter ParseHoleDiameter(const std::string& name) {
+  if (name == "auto") return acd::HoleDiameter::kAuto;
+  if (name == "pa") return acd::HoleDiameter::kPrincipalAxis;
+  if (name == "geodesic") return acd::HoleDiameter::kGeodesic;
+  throw acd::InputError("unknown hole diameter '" + name + "' (expected auto, pa or geodesic)");
+}
+
+/// A CLI11 check from a parser that throws InputError, so the value is checked while parsing
+/// and the message names the option ("--measure: unknown concavity measure 'x' ...").
+template <typename Parse>
+CLI::Validator ParsedBy(Parse parse) {
+  return CLI::Validator(
+      [parse](std::string& value) -> std::string {
+        try {
+          parse(value);
+        } catch (const acd::InputError& error) {
+          return error.what();
+        }
+        return "";
+      },
+      "");
+}
+
+/// A check on a number: `accept(x)` or the message "must be <rule>, got <value>".
+template <typename Accept>
+CLI::Validator NumberThat(Accept accept, const std::string& rule) {
+  return CLI::Validator(
+      [accept, rule](std::string& value) -> std::string {
+        double x = 0;
+        if (!CLI::detail::lexical_cast(value, x) || !accept(x)) {
+          return "must be " + rule + ", got " + value;
+        }
+        return "";
+      },
+      "");
+}
+
+/// An output path that can never be written is a usage error, reported before any work.
+void CheckOutputPath(const std::string& option, const std::string& path) {
+  if (path.empty()) return;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw acd::InputError(option + " " + path + ": is a directory");
+  }
+}
+
+int RunDecompose(const DecomposeArguments& args) {
+  // Everything the user typed is checked before the (possibly long) decomposition.
+  acd::Decompose2dOptions options;
+  options.measure = acd::ParseConcavityMeasure(args.measure);
+  options.hole_diameter = ParseHoleDiameter(args.hole_diameter);
+  options.min_convexity = args.min_convexity;
+  options.steiner_cuts = !args.no_steiner;
+  CheckOutputPath("--json", args.json_path);
+  CheckOutputPath("--svg", args.svg_path);
+
+  const std::vector<acd::Polygon2d> polygons = acd::ReadPolygons(args.input);
+  int vertices = 0;
+  double radius = 0.0;
+  for (const acd::Polygon2d& polygon : polygons) {
+    vertices += acd::VertexCount(polygon);
+    radius = std::max(radius, acd::ReferenceRadius(polygon));
+  }
+  // One tau for the whole file: relative to the largest polygon, so a small island next to a
+  // large one is not cut finer than the large one.
+  options.tau = args.tau_rel >= 0 ? args.tau_rel * radius : args.tau;
+
+  const acd::Decomposition2d decomposition = acd::Decompose2d(polygons, options);
+
+  if (args.check) {
+    const acd::DecompositionCheck check = acd::CheckDecomposition(polygons, decomposition);
+    if (!check.ok()) {
+      std::cerr << "acdplan: internal error: the decomposition of " << args.input
+                << " failed its check (" << check.problems.size()
+                << " problems); no output written:\n";
+      for (const std::string& problem : check.problems) std::cerr << "  " << problem << "\n";
+      return 1;
+    }
+  }
+
+  // Outputs are produced in memory first and each written atomically, so a failure leaves
+  // no partial file behind.
+  acd::DecompositionLabels labels;
+  labels.input = args.input;
+  labels.tau_rel = args.tau_rel;
+  std::vector<std::string> written;
+  try {
+    if (!args.json_path.empty()) {
+      acd::WriteFileAtomically(args.json_path, acd::DecompositionToJson(decomposition, labels));
+      written.push_back(args.json_path);
+    }
+    if (!args.svg_path.empty()) {
+      acd::WriteFileAtomically(args.svg_path, acd::DecompositionToSvg(decomposition, labels));
+      written.push_back(args.svg_path);
+    }
+  } catch (const std::runtime_error& error) {
+    // An unwritable output path is the user's to fix, not a bug: exit status 2.
+    throw acd::InputError(error.what());
+  }
+
+  const acd::DecompositionStats2d& stats = decomposition.stats;
+  std::printf("input          %s (%zu polygon%s, %d vertices)\n", args.input.c_str(),
+              polygons.size(), polygons.size() == 1 ? "" : "s", vertices);
+  std::printf("notches        %d\n", stats.notches);
+  if (args.tau_rel >= 0) {
+    std::printf("tau            %.6g (tau_rel %.6g x radius %.6g)\n", decomposition.tau,
+                args.tau_rel, radius);
+  } else {
+    std::printf("tau            %.6g\n", decomposition.tau);
+  }
+  if (decomposition.min_convexity > 0) {
+    std::printf("min convexity  %.6g\n", decomposition.min_convexity);
+  }
+  std::printf("measure        %s\n", acd::ToString(decomposition.measure).c_str());
+  std::printf("components     %d\n", stats.components);
+  std::printf("max concavity  %.6g\n", stats.max_concavity);
+  std::printf("convexity      %.6g\n", stats.convexity);
+  std::printf("time           %.3f ms\n", stats.time_ms);
+  if (args.check) std::printf("check          ok\n");
+  for (const std::string& path : written) std::printf("wrote          %s\n", path.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"acdplan: approximate convex decomposition for motion planning"};
+  app.set_version_flag("--version", std::string("acdplan ") + ACDPLAN_VERSION);
+  app.require_subcommand(1);
+
+  DecomposeArguments args;
+  CLI::App* decompose = app.add_subcommand(
+      "decompose",
+      "Decompose the polygons of INPUT into tau-convex components (dissertation Ch. IV) and "
+      "print a summary. Exit status: 0 ok, 2 bad input or usage, 1 internal error.");
+  decompose->add_option("INPUT", args.input, "Polygon file: .poly, .wkt, .geojson or .json")
+      ->required();
+  CLI::Option* tau = decompose->add_option(
+      "--tau", args.tau, "Concavity tolerated per component [input units]; default 0 (convex)");
+  const CLI::Validator non_negative = NumberThat([](double x) { return x >= 0; }, "a number >= 0");
+  tau->check(non_negative);
+  CLI::Option* tau_rel = decompose->add_option(
+      "--tau-rel", args.tau_rel,
+      "tau relative to the reference radius (largest distance from the vertex mean to a "
+      "vertex of the outer boundary); with several polygons in INPUT, the largest radius");
+  tau_rel->check(non_negative);
+  tau->excludes(tau_rel);
+  tau_rel->excludes(tau);
+  decompose->add_option("--measure", args.measure, "Concavity measure: sl, sp, h1 or h2")
+      ->capture_default_str()
+      ->check(ParsedBy(acd::ParseConcavityMeasure));
+  decompose
+      ->add_option("--min-convexity", args.min_convexity,
+                   "In (0, 1]: shape decomposition (Algorithm 9), accept a piece once "
+                   "area / hull area >= this, instead of the concavity test")
+      ->check(NumberThat([](double x) { return x > 0 && x <= 1; }, "a number in (0, 1]"));
+  decompose
+      ->add_option("--hole-diameter", args.hole_diameter,
+                   "Hole antipodes: auto, pa (principal axis) or geodesic")
+      ->capture_default_str()
+      ->check(ParsedBy(ParseHoleDiameter));
+  decompose->add_flag("--no-steiner", args.no_steiner,
+                      "Cuts end at vertices only (no new vertex on an edge)");
+  decompose->add_option("--json", args.json_path, "Write the decomposition JSON here");
+  decompose->add_option("--svg", args.svg_path, "Write an SVG picture here");
+  decompose->add_flag("--check", args.check,
+                      "Check the result (coverage, disjointness, concavity); on failure "
+                      "list the problems, write nothing and exit 1");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    if (error.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
+      return app.exit(error);  // --help, --version
+    }
+    std::cerr << "acdplan: error: " << error.what() << "\n";
+    return 2;
+  }
+
+  try {
+    if (decompose->parsed()) return RunDecompose(args);
+    return 0;
+  } catch (const acd::InputError& error) {
+    std::cerr << "acdplan: error: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "acdplan: internal error: " << error.what() << "\n";
+    return 1;
+  } catch (...) {
+    std::cerr << "acdplan: internal error: unknown exception\n";
+    return 1;
+  }
+}
