@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <queue>
 
+#include <CGAL/convex_hull_2.h>
 #include <Eigen/Eigenvalues>
 
 #include "acd/internal/exact_predicates.h"
@@ -153,11 +153,19 @@ std::pair<int, double> ClosestVertex(const Ring2d& ring, const Point2d& p) {
   return {best, std::sqrt(best_d2)};
 }
 
+// Where a hole meets the rest of the polygon: the vertex x of another ring closest to one of
+// the hole's antipodes.
+struct HoleLink {
+  int ring = -1;    // -1: the outer ring; j >= 0: hole j.
+  int vertex = 0;   // x.
+  int end = 0;      // 0: p is the antipode closest to x; 1: cw(p) is.
+  double distance = std::numeric_limits<double>::infinity();
+};
+
 // Hole concavity, Eqn. 4.2: concavity(P_i) = concavity(x) + dist(x, p_i) + dist(p_i, cw(p_i))
-// + delta, x the vertex closest to p_i outside P_i; if x is on hole P_j, concavity(x) is
-// concavity(P_j). The chains of holes are resolved with Dijkstra's algorithm over the holes
-// (a hole's depth is the smallest over its connections), which also settles cyclic "closest"
-// relations that the equation leaves open.
+// + delta, where x is the vertex closest to p_i not in P_i and concavity(x) is concavity(P_j)
+// when x lies on hole P_j (Fig. 23: holes behind holes are deeper). The equation leaves cycles
+// open (two holes closest to each other); see the loop below.
 std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
                                         const std::vector<double>& outer_concavity, double delta,
                                         const ConcavityOptions& options) {
@@ -165,51 +173,60 @@ std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
   std::vector<HoleConcavity> holes(k);
   if (k == 0) return holes;
   const bool geodesic = UseGeodesic(options);
+  std::vector<HoleLink> nearest(k), nearest_outer(k);
   for (int i = 0; i < k; ++i) {
     const Ring2d& hole = polygon.holes[i];
     const Antipodes pair = geodesic ? GeodesicAntipodes(hole) : PrincipalAxisAntipodes(hole);
     holes[i].p = pair.a;
     holes[i].cw_p = pair.b;
     holes[i].diameter = pair.distance;
-  }
-  // Depth through the outer boundary, for either antipode.
-  std::vector<double> depth(k, std::numeric_limits<double>::infinity());
-  std::vector<int> entry(k, 0);  // 0: p connects, 1: cw(p) connects.
-  for (int i = 0; i < k; ++i) {
     for (int end = 0; end < 2; ++end) {
-      const Point2d& a = polygon.holes[i][end == 0 ? holes[i].p : holes[i].cw_p];
-      const auto [x, d] = ClosestVertex(polygon.outer, a);
-      if (outer_concavity[x] + d < depth[i]) {
-        depth[i] = outer_concavity[x] + d;
-        entry[i] = end;
+      const Point2d& a = hole[end == 0 ? pair.a : pair.b];
+      for (int ring = -1; ring < k; ++ring) {
+        if (ring == i) continue;
+        const auto [x, d] = ClosestVertex(ring < 0 ? polygon.outer : polygon.holes[ring], a);
+        if (d < nearest[i].distance) nearest[i] = {ring, x, end, d};
+        if (ring < 0 && d < nearest_outer[i].distance) nearest_outer[i] = {ring, x, end, d};
       }
     }
   }
-  // Dijkstra over holes: reaching hole i through hole j costs concavity(P_j) + dist.
-  std::vector<bool> done(k, false);
-  for (int round = 0; round < k; ++round) {
-    int j = -1;
+  // Settle holes whose x lies on the outer ring or on a settled hole; a cycle of holes closest
+  // to each other is broken at the hole cheapest to reach from the outer ring.
+  std::vector<bool> settled(k, false);
+  auto settle = [&](int i, const HoleLink& link, double at_x) {
+    if (link.end == 1) std::swap(holes[i].p, holes[i].cw_p);
+    holes[i].depth = at_x + link.distance;
+    holes[i].concavity = holes[i].depth + holes[i].diameter + delta;
+    settled[i] = true;
+  };
+  for (int done = 0; done < k;) {
+    bool progress = false;
     for (int i = 0; i < k; ++i) {
-      if (!done[i] && (j < 0 || depth[i] < depth[j])) j = i;
+      if (settled[i]) continue;
+      const HoleLink& link = nearest[i];
+      if (link.ring < 0) {
+        settle(i, link, outer_concavity[link.vertex]);
+      } else if (settled[link.ring]) {
+        settle(i, link, holes[link.ring].concavity);
+      } else {
+        continue;
+      }
+      ++done;
+      progress = true;
     }
-    done[j] = true;
-    const double concavity_j = depth[j] + holes[j].diameter + delta;
+    if (progress) continue;
+    int cheapest = -1;
     for (int i = 0; i < k; ++i) {
-      if (done[i]) continue;
-      for (int end = 0; end < 2; ++end) {
-        const Point2d& a = polygon.holes[i][end == 0 ? holes[i].p : holes[i].cw_p];
-        const double d = ClosestVertex(polygon.holes[j], a).second;
-        if (concavity_j + d < depth[i]) {
-          depth[i] = concavity_j + d;
-          entry[i] = end;
-        }
+      if (settled[i]) continue;
+      const double cost = outer_concavity[nearest_outer[i].vertex] + nearest_outer[i].distance;
+      if (cheapest < 0 || cost < outer_concavity[nearest_outer[cheapest].vertex] +
+                                     nearest_outer[cheapest].distance) {
+        cheapest = i;
       }
     }
-  }
-  for (int i = 0; i < k; ++i) {
-    if (entry[i] == 1) std::swap(holes[i].p, holes[i].cw_p);
-    holes[i].depth = depth[i];
-    holes[i].concavity = depth[i] + holes[i].diameter + delta;
+    settle(cheapest, nearest_outer[cheapest],
+           outer_concavity[nearest_outer[cheapest].vertex]);
+    ++done;
   }
   return holes;
 }
@@ -278,8 +295,10 @@ std::vector<int> ConvexHullIndices(const Ring2d& ring) {
   push_top(third);
   for (++k; k < n; ++k) {
     const int v = at(k);
-    if (turn(deque[top - 1], deque[top], v) > 0 && turn(deque[bottom], deque[bottom + 1], v) > 0) {
-      continue;  // Inside the current hull.
+    // Inside the current hull or on its boundary (then it cannot be a strict hull vertex, and
+    // letting it in would pop true hull vertices that are collinear with it).
+    if (turn(deque[top - 1], deque[top], v) >= 0 && turn(deque[bottom], deque[bottom + 1], v) >= 0) {
+      continue;
     }
     while (top - bottom >= 2 && turn(deque[top - 1], deque[top], v) <= 0) --top;
     push_top(v);
@@ -292,18 +311,14 @@ std::vector<int> ConvexHullIndices(const Ring2d& ring) {
 }
 
 Ring2d ConvexHull(const Ring2d& points) {
-  std::vector<int> indices = ConvexHullIndices(points);
-  // ConvexHullIndices sorted by index; restore the counter-clockwise order for a point cloud.
+  // Any point set: CGAL's hull (Akl-Toussaint / Graham-Andrew), counter-clockwise.
+  std::vector<internal::Kernel::Point_2> in, out;
+  in.reserve(points.size());
+  for (const Point2d& p : points) in.push_back(internal::ToCgal(p));
+  CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(out));
   Ring2d hull;
-  if (indices.empty()) return hull;
-  Point2d center = Point2d::Zero();
-  for (int i : indices) center += points[i];
-  center /= static_cast<double>(indices.size());
-  std::sort(indices.begin(), indices.end(), [&](int a, int b) {
-    return std::atan2(points[a].y() - center.y(), points[a].x() - center.x()) <
-           std::atan2(points[b].y() - center.y(), points[b].x() - center.x());
-  });
-  for (int i : indices) hull.push_back(points[i]);
+  hull.reserve(out.size());
+  for (const auto& p : out) hull.emplace_back(p.x(), p.y());
   return hull;
 }
 

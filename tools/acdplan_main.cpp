@@ -93,13 +93,11 @@ int RunDecompose(const DecomposeArguments& args) {
   CheckOutputPath("--json", args.json_path);
   CheckOutputPath("--svg", args.svg_path);
 
-  const std::vector<acd::Polygon2d> polygons = acd::ReadPolygons(args.input);
+  std::vector<double> radii;  // As written in the file: the dissertation's tables use these.
+  const std::vector<acd::Polygon2d> polygons = acd::ReadPolygons(args.input, &radii);
   int vertices = 0;
-  double radius = 0.0;
-  for (const acd::Polygon2d& polygon : polygons) {
-    vertices += acd::VertexCount(polygon);
-    radius = std::max(radius, acd::ReferenceRadius(polygon));
-  }
+  for (const acd::Polygon2d& polygon : polygons) vertices += acd::VertexCount(polygon);
+  const double radius = *std::max_element(radii.begin(), radii.end());
   // One tau for the whole file: relative to the largest polygon, so a small island next to a
   // large one is not cut finer than the large one.
   options.tau = args.tau_rel >= 0 ? args.tau_rel * radius : args.tau;

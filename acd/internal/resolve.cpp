@@ -274,41 +274,106 @@ bool ResolveOuterNotch(const Polygon2d& polygon, const Concavity2d& concavity, i
   return true;
 }
 
-// Splits `polygon` through hole `h` with two cuts: p -> x (the closest visible outer point,
-// Algorithm 5) and q -> y (the best-scoring cut at the antipode).
-bool ResolveHole(const Polygon2d& polygon, const Concavity2d& concavity, int h, int p, int q,
-                 const ResolveOptions& options, Resolution* resolution) {
-  const Ring2d& hole = polygon.holes[h];
-  const Endpoint at_p{h, p, false, hole[p]};
-  const Endpoint at_q{h, q, false, hole[q]};
-  auto clear_from_p = [&](const Endpoint& e) { return IsClearCut(polygon, at_p, e); };
+// The first cut of a hole: from hole vertex `a` to the best-scoring, else the closest, visible
+// outer point (Algorithm 5).
+std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const Concavity2d& concavity, int h,
+                                     int a, const ResolveOptions& options) {
+  const Endpoint from{h, a, false, polygon.holes[h][a]};
+  auto clear = [&](const Endpoint& e) { return IsClearCut(polygon, from, e); };
   std::optional<Endpoint> x =
-      FirstAccepted(ScoredCandidates(polygon, concavity, h, p, options), clear_from_p);
-  if (!x) x = FirstAccepted(NearestCandidates(polygon, at_p.point), clear_from_p);
-  if (!x) return false;
+      FirstAccepted(ScoredCandidates(polygon, concavity, h, a, options), clear);
+  if (!x) x = FirstAccepted(NearestCandidates(polygon, from.point), clear);
+  return x;
+}
+
+// The second cut of a hole: from hole vertex `b` to an outer point, crossing neither the first
+// cut (a -> x) nor anything else. `thorough` also tries the scored candidates.
+std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const Concavity2d& concavity, int h,
+                                      int a, const Endpoint& x, int b, bool thorough,
+                                      const ResolveOptions& options) {
+  const Ring2d& hole = polygon.holes[h];
+  const Endpoint from{h, b, false, hole[b]};
   auto compatible = [&](const Endpoint& y) {
-    if (y.index == x->index && y.on_edge == x->on_edge) return false;
-    if (y.on_edge && x->on_edge && y.index == x->index) return false;
-    return !SegmentsMeet(at_p.point, x->point, at_q.point, y.point) &&
-           IsClearCut(polygon, at_q, y);
+    if (y.index == x.index && (y.on_edge == x.on_edge || (y.on_edge && x.on_edge))) return false;
+    return !SegmentsMeet(hole[a], x.point, from.point, y.point) && IsClearCut(polygon, from, y);
   };
-  std::optional<Endpoint> y =
-      FirstAccepted(ScoredCandidates(polygon, concavity, h, q, options), compatible);
-  if (!y) y = FirstAccepted(NearestCandidates(polygon, at_q.point), compatible);
-  if (!y) return false;
-  Endpoint end_x = *x;
-  Endpoint end_y = *y;
+  std::optional<Endpoint> y;
+  if (thorough) y = FirstAccepted(ScoredCandidates(polygon, concavity, h, b, options), compatible);
+  if (y) return y;
+  std::vector<Candidate> nearest = NearestCandidates(polygon, from.point);
+  if (!thorough && nearest.size() > 8) {
+    // A quick look at the eight nearest: this is a fallback over many hole vertices.
+    std::partial_sort(nearest.begin(), nearest.begin() + 8, nearest.end(),
+                      [](const Candidate& u, const Candidate& v) { return u.score > v.score; });
+    nearest.resize(8);
+  }
+  return FirstAccepted(std::move(nearest), compatible);
+}
+
+// Splits `polygon` through hole `h` with two cuts, a -> x and b -> y, into two pieces.
+void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x, int b,
+                      const Endpoint& y, Resolution* resolution) {
+  const Ring2d& hole = polygon.holes[h];
+  Endpoint end_x = x;
+  Endpoint end_y = y;
   const Ring2d ring = InsertOnOuter(polygon.outer, {&end_x, &end_y});
   resolution->pieces = {};
-  // Piece 0: outer x..y, cut to q, hole q..p (forward keeps the interior on the left), cut to x.
+  // Piece 0: outer x..y, cut to b, hole b..a (forward keeps the interior on the left), cut to x.
   AppendChain(ring, end_x.index, end_y.index, &resolution->pieces[0].outer);
-  AppendChain(hole, q, p, &resolution->pieces[0].outer);
+  AppendChain(hole, b, a, &resolution->pieces[0].outer);
   AppendChain(ring, end_y.index, end_x.index, &resolution->pieces[1].outer);
-  AppendChain(hole, p, q, &resolution->pieces[1].outer);
+  AppendChain(hole, a, b, &resolution->pieces[1].outer);
   DistributeHoles(polygon, h, &resolution->pieces);
-  resolution->cuts = {{hole[p], x->point}, {hole[q], y->point}};
-  resolution->witness = hole[p];
-  return true;
+  resolution->cuts = {{hole[a], x.point}, {hole[b], y.point}};
+  resolution->witness = hole[a];
+}
+
+// Resolves hole `h`: connects its antipode p to the outer boundary (Algorithm 5) and, so that
+// the piece splits in two, cuts at cw(p) too, the deepest point of the pocket the first cut
+// makes (Fig. 19). Where an antipode sees no outer point (a hole wrapped around itself or
+// hidden behind others), other hole vertices stand in: for the first cut, the ones nearest to
+// the outer boundary; for the second, the ones farthest from the first.
+bool ResolveHole(const Polygon2d& polygon, const Concavity2d& concavity, int h,
+                 const ResolveOptions& options, Resolution* resolution) {
+  const Ring2d& hole = polygon.holes[h];
+  const int m = static_cast<int>(hole.size());
+  const HoleConcavity& antipodes = concavity.holes[h];
+  auto try_pair = [&](int a, int b, bool thorough, const Endpoint& x) {
+    if (b == a) return false;
+    const std::optional<Endpoint> y =
+        SecondHoleCut(polygon, concavity, h, a, x, b, thorough, options);
+    if (y) SplitThroughHole(polygon, h, a, x, b, *y, resolution);
+    return y.has_value();
+  };
+  auto try_first = [&](int a, int partner) {
+    const std::optional<Endpoint> x = FirstHoleCut(polygon, concavity, h, a, options);
+    if (!x) return false;
+    if (partner >= 0 && try_pair(a, partner, true, *x)) return true;
+    std::vector<int> others(m);
+    std::iota(others.begin(), others.end(), 0);
+    std::sort(others.begin(), others.end(), [&](int u, int v) {
+      return (hole[u] - hole[a]).squaredNorm() > (hole[v] - hole[a]).squaredNorm();
+    });
+    for (int b : others) {
+      if (b != partner && try_pair(a, b, false, *x)) return true;
+    }
+    return false;
+  };
+  if (try_first(antipodes.p, antipodes.cw_p) || try_first(antipodes.cw_p, antipodes.p)) {
+    return true;
+  }
+  std::vector<int> firsts(m);
+  std::iota(firsts.begin(), firsts.end(), 0);
+  std::vector<double> reach(m);
+  for (int i = 0; i < m; ++i) {
+    reach[i] = std::numeric_limits<double>::infinity();
+    for (const Point2d& v : polygon.outer) reach[i] = std::min(reach[i], (v - hole[i]).squaredNorm());
+  }
+  std::sort(firsts.begin(), firsts.end(), [&](int u, int v) { return reach[u] < reach[v]; });
+  for (int a : firsts) {
+    if (a != antipodes.p && a != antipodes.cw_p && try_first(a, -1)) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -326,11 +391,7 @@ bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity,
     std::stable_partition(order.begin(), order.end(),
                           [&](int k) { return k == concavity.witness_hole; });
     for (int k : order) {
-      const HoleConcavity& hole = concavity.holes[k];
-      if (ResolveHole(polygon, concavity, k, hole.p, hole.cw_p, options, resolution) ||
-          ResolveHole(polygon, concavity, k, hole.cw_p, hole.p, options, resolution)) {
-        return true;
-      }
+      if (ResolveHole(polygon, concavity, k, options, resolution)) return true;
     }
     return false;
   }
