@@ -51,6 +51,16 @@ bool IsAccepted(const Polygon2d& piece, const Concavity2d& concavity,
   return options.tau > 0.0 && concavity.value <= options.tau;
 }
 
+// The most concave point of `piece`: its witness notch, or the antipode p of its witness hole;
+// the first vertex of a convex piece.
+Point2d WitnessPoint(const Polygon2d& piece, const Concavity2d& concavity) {
+  if (concavity.witness_vertex >= 0) return piece.outer[concavity.witness_vertex];
+  if (concavity.witness_hole >= 0) {
+    return piece.holes[concavity.witness_hole][concavity.holes[concavity.witness_hole].p];
+  }
+  return piece.outer.front();
+}
+
 // Algorithm 1 (or 9) on one input polygon, appending its nodes and leaves to `out`.
 void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions& options,
                   Decomposition2d* out) {
@@ -79,15 +89,9 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
     if (IsAccepted(out->tree[id].piece, concavity, options)) {
       HierarchyNode2d& node = out->tree[id];
       node.component = static_cast<int>(out->components.size());
-      node.witness = concavity.witness_vertex >= 0
-                         ? node.piece.outer[concavity.witness_vertex]
-                         : (concavity.witness_hole >= 0
-                                ? node.piece.holes[concavity.witness_hole]
-                                                  [concavity.holes[concavity.witness_hole].p]
-                                : Point2d(node.piece.outer.front()));
+      node.witness = WitnessPoint(node.piece, concavity);
       out->components.push_back({node.piece, HullOf(node.piece.outer, concavity.hull),
-                                 Centroid(node.piece),
-                                 concavity.value, source});
+                                 Centroid(node.piece), concavity.value, source});
       continue;
     }
     internal::Resolution resolution;

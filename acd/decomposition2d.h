@@ -34,7 +34,9 @@ struct Cut2d {
 struct HierarchyNode2d {
   Polygon2d piece;            ///< The piece at this node.
   double concavity = 0.0;     ///< Its concavity [units].
-  Point2d witness = Point2d::Zero();  ///< The most concave point (meaningful when split).
+  /// At a leaf, the piece's most concave point; at an internal node, the feature its cut(s)
+  /// resolved (the most concave point unless no valid cut started there).
+  Point2d witness = Point2d::Zero();
   std::vector<Cut2d> cuts;    ///< One cut (an outer notch) or two (a hole split at p, cw(p)).
   int parent = -1;            ///< Index of the parent node; -1 at a root.
   int children[2] = {-1, -1};  ///< Indices of the two children; -1 at a leaf.
