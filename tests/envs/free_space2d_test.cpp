@@ -1,0 +1,212 @@
+#include "envs/free_space2d.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "envs/occupancy_grid.h"
+#include "test_util.h"
+
+namespace acdplan::envs {
+namespace {
+
+using testing::ExpectValidAndDecomposes;
+using ::testing::HasSubstr;
+using testing::TotalArea;
+
+acd::Polygon2d Box(double x0, double y0, double x1, double y1) {
+  return acd::Polygon2d{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
+}
+
+Workspace2d World(std::vector<acd::Polygon2d> obstacles) {
+  Workspace2d w;
+  w.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(10, 10));
+  w.obstacles = std::move(obstacles);
+  return w;
+}
+
+// The free area one hole pinch closes: a diamond of half-diagonal gap * diagonal, half of it in
+// the free space.
+const double kPinchArea = [] {
+  const double e = FreeSpace2dOptions{}.pinch_gap * std::sqrt(200.0);
+  return e * e;
+}();
+
+TEST(FreeSpace2dTest, NoObstaclesIsTheBounds) {
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({}));
+  ASSERT_EQ(free.size(), 1u);
+  EXPECT_NEAR(acd::Area(free[0]), 100.0, 1e-9);
+  EXPECT_EQ(free[0].outer.size(), 4u);
+}
+
+TEST(FreeSpace2dTest, InteriorObstacleIsAHole) {
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({Box(2, 2, 4, 4)}));
+  ASSERT_EQ(free.size(), 1u);
+  ASSERT_EQ(free[0].holes.size(), 1u);
+  EXPECT_NEAR(acd::Area(free[0]), 96.0, 1e-9);
+  ExpectValidAndDecomposes(free);
+}
+
+TEST(FreeSpace2dTest, OverlappingObstaclesAreUnited) {
+  // Two 3x3 squares overlapping in a 1x1 square, and a clockwise third one inside the first.
+  acd::Polygon2d inner = Box(2.5, 2.5, 3, 3);
+  std::reverse(inner.outer.begin(), inner.outer.end());
+  const std::vector<acd::Polygon2d> free =
+      FreeSpace2d(World({Box(2, 2, 5, 5), Box(4, 4, 7, 7), inner}));
+  ASSERT_EQ(free.size(), 1u);
+  ASSERT_EQ(free[0].holes.size(), 1u);
+  EXPECT_EQ(free[0].holes[0].size(), 8u);
+  EXPECT_NEAR(acd::Area(free[0]), 100.0 - 17.0, 1e-9);
+  ExpectValidAndDecomposes(free);
+}
+
+TEST(FreeSpace2dTest, ObstaclesCrossingOrOutsideTheBounds) {
+  const std::vector<acd::Polygon2d> free =
+      FreeSpace2d(World({Box(-1, -1, 3, 3), Box(8, 4, 12, 6), Box(20, 20, 21, 21)}));
+  ASSERT_EQ(free.size(), 1u);
+  EXPECT_TRUE(free[0].holes.empty());
+  EXPECT_NEAR(acd::Area(free[0]), 100.0 - 9.0 - 4.0, 1e-9);
+  ExpectValidAndDecomposes(free);
+}
+
+TEST(FreeSpace2dTest, ObstacleAlongTheBoundsEdge) {
+  // Shares part of the bottom edge of the bounds: a notch, not a hole.
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({Box(3, 0, 5, 2)}));
+  ASSERT_EQ(free.size(), 1u);
+  EXPECT_TRUE(free[0].holes.empty());
+  EXPECT_EQ(free[0].outer.size(), 8u);
+  EXPECT_NEAR(acd::Area(free[0]), 96.0, 1e-9);
+}
+
+TEST(FreeSpace2dTest, WallSplitsTheFreeSpace) {
+  const std::vector<acd::Polygon2d> free =
+      FreeSpace2d(World({Box(4, -1, 6, 11), Box(1, 1, 2, 2), Box(8, 8, 9, 9)}));
+  ASSERT_EQ(free.size(), 2u);
+  // Sorted by lowest-leftmost vertex: the left region first.
+  EXPECT_NEAR(acd::Area(free[0]), 39.0, 1e-9);
+  EXPECT_NEAR(acd::Area(free[1]), 39.0, 1e-9);
+  EXPECT_LT(free[0].outer[0].x(), 5.0);
+  EXPECT_EQ(free[0].holes.size(), 1u);
+  EXPECT_EQ(free[1].holes.size(), 1u);
+  ExpectValidAndDecomposes(free);
+}
+
+TEST(FreeSpace2dTest, ObstacleWithAHoleEnclosesAFreeRegion) {
+  acd::Polygon2d ring = Box(2, 2, 8, 8);
+  ring.holes.push_back(Box(4, 4, 6, 6).outer);
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({ring}));
+  ASSERT_EQ(free.size(), 2u);
+  EXPECT_NEAR(acd::Area(free[0]), 64.0, 1e-9);
+  EXPECT_NEAR(acd::Area(free[1]), 4.0, 1e-9);
+  ExpectValidAndDecomposes(free);
+}
+
+TEST(FreeSpace2dTest, ObstaclesTouchingAlongAnEdge) {
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({Box(2, 2, 4, 4), Box(4, 2, 6, 4)}));
+  ASSERT_EQ(free.size(), 1u);
+  ASSERT_EQ(free[0].holes.size(), 1u);
+  EXPECT_EQ(free[0].holes[0].size(), 4u);  // One 4x2 hole, the shared edge gone.
+  EXPECT_NEAR(acd::Area(free[0]), 92.0, 1e-9);
+}
+
+TEST(FreeSpace2dTest, ObstaclesTouchingAtAPointAreClosedByADiamond) {
+  // The two holes would touch at (4, 4): the pinch is closed, the holes become one.
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({Box(2, 2, 4, 4), Box(4, 4, 6, 6)}));
+  ASSERT_EQ(free.size(), 1u);
+  ASSERT_EQ(free[0].holes.size(), 1u);
+  EXPECT_NEAR(acd::Area(free[0]), 92.0 - kPinchArea, 1e-9);
+  EXPECT_LT(acd::Area(free[0]), 92.0);
+  ExpectValidAndDecomposes(free);
+}
+
+TEST(FreeSpace2dTest, ObstacleTouchingTheBoundsAtAPoint) {
+  // A triangle standing on its tip at (5, 0) on the bounds' bottom edge.
+  const acd::Polygon2d tip{{{5, 0}, {6, 2}, {4, 2}}, {}};
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({tip}));
+  ASSERT_EQ(free.size(), 1u);
+  EXPECT_TRUE(free[0].holes.empty());  // The hole merged into the outer ring at the pinch.
+  EXPECT_NEAR(acd::Area(free[0]), 98.0, 1e-9);
+  ExpectValidAndDecomposes(free);
+}
+
+TEST(FreeSpace2dTest, LobesMeetingAtAPointBecomeTwoPolygonsExactly) {
+  // Free space: the bottom-left and top-right quarters, meeting at (5, 5).
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({Box(0, 5, 5, 10), Box(5, 0, 10, 5)}));
+  ASSERT_EQ(free.size(), 2u);
+  EXPECT_DOUBLE_EQ(acd::Area(free[0]), 25.0);
+  EXPECT_DOUBLE_EQ(acd::Area(free[1]), 25.0);
+  EXPECT_EQ(free[0].outer.size(), 4u);
+  ExpectValidAndDecomposes(free);
+}
+
+TEST(FreeSpace2dTest, LobesWithHolesKeepTheirHoles) {
+  const std::vector<acd::Polygon2d> free =
+      FreeSpace2d(World({Box(0, 5, 5, 10), Box(5, 0, 10, 5), Box(1, 1, 2, 2), Box(7, 7, 8, 8)}));
+  ASSERT_EQ(free.size(), 2u);
+  EXPECT_EQ(free[0].holes.size(), 1u);
+  EXPECT_EQ(free[1].holes.size(), 1u);
+  EXPECT_NEAR(TotalArea(free), 48.0, 1e-9);
+}
+
+TEST(FreeSpace2dTest, ObstaclesCoveringTheBoundsLeaveNothing) {
+  EXPECT_TRUE(FreeSpace2d(World({Box(-1, -1, 11, 11)})).empty());
+  EXPECT_TRUE(FreeSpace2d(World({Box(0, 0, 5, 10), Box(5, 0, 10, 10)})).empty());
+}
+
+TEST(FreeSpace2dTest, TranslatingTheWorldTranslatesTheFreeSpace) {
+  Workspace2d w = World({Box(2, 2, 4, 4), Box(4, 4, 6, 6), Box(4, -1, 5, 1)});
+  const std::vector<acd::Polygon2d> a = FreeSpace2d(w);
+  const Eigen::Vector2d shift(100.25, -37.5);
+  w.bounds.translate(shift);
+  for (acd::Polygon2d& o : w.obstacles) {
+    for (acd::Point2d& p : o.outer) p += shift;
+  }
+  const std::vector<acd::Polygon2d> b = FreeSpace2d(w);
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t k = 0; k < a.size(); ++k) {
+    EXPECT_NEAR(acd::Area(a[k]), acd::Area(b[k]), 1e-9);
+    EXPECT_EQ(acd::VertexCount(a[k]), acd::VertexCount(b[k]));
+  }
+}
+
+TEST(FreeSpace2dTest, RandomGridsGiveValidFreeSpace) {
+  // Cell grids are full of corner contacts; every result must be valid and lose at most the
+  // pinch diamonds' area.
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    std::mt19937_64 rng(seed);
+    OccupancyGrid grid;
+    grid.width = 14;
+    grid.height = 11;
+    grid.resolution = 0.5;
+    grid.origin = Eigen::Vector2d(-3, 1);
+    int blocked = 0;
+    for (int i = 0; i < grid.width * grid.height; ++i) {
+      grid.blocked.push_back(rng() % 100 < 40 ? 1 : 0);
+      blocked += grid.blocked.back();
+    }
+    const std::vector<acd::Polygon2d> free = FreeSpace2d(GridWorkspace(grid));
+    const double expected = 0.25 * (grid.width * grid.height - blocked);
+    const double pinch = std::pow(FreeSpace2dOptions{}.pinch_gap * std::hypot(7.0, 5.5), 2);
+    EXPECT_LE(TotalArea(free), expected + 1e-9) << "seed " << seed;
+    EXPECT_GE(TotalArea(free), expected - pinch * grid.width * grid.height) << "seed " << seed;
+    ExpectValidAndDecomposes(free);
+  }
+}
+
+TEST(FreeSpace2dTest, Errors) {
+  Workspace2d empty_bounds = World({});
+  empty_bounds.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(1, 1), Eigen::Vector2d(1, 5));
+  EXPECT_THAT(testing::ErrorOf([&] { FreeSpace2d(empty_bounds); }),
+              HasSubstr("FreeSpace2d(): bounds: expected finite xmin < xmax and ymin < ymax"));
+  const acd::Polygon2d bowtie{{{0, 0}, {2, 2}, {2, 0}, {0, 1}}, {}};
+  EXPECT_THAT(testing::ErrorOf([&] {
+                FreeSpace2d(World({Box(1, 1, 2, 2), bowtie}));
+              }),
+              HasSubstr("FreeSpace2d(): obstacle 1: outer ring is not simple"));
+  EXPECT_THAT(testing::ErrorOf([&] { FreeSpace2d(World({}), {0.0}); }),
+              HasSubstr("FreeSpace2d(): pinch_gap must be finite and > 0"));
+}
+
+}  // namespace
+}  // namespace acdplan::envs

@@ -1,0 +1,78 @@
+#include "envs/mesh_loader.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "test_util.h"
+
+namespace acdplan::envs {
+namespace {
+
+using testing::ErrorOf;
+using ::testing::HasSubstr;
+using testing::TempDir;
+
+// A unit cube with quad faces (triangulated on reading): 8 vertices, 12 triangles.
+const char* kCubeObj =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+const char* kTetraOff =
+    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+
+const char* kTetraPly =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+
+const char* kTriangleStl =
+    "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 2 0 0\nvertex 0 3 0\n"
+    "endloop\nendfacet\nendsolid t\n";
+
+TEST(ReadMeshTest, ReadsObjOffPlyStl) {
+  TempDir dir;
+  const TriangleMesh cube = ReadMesh(dir.Write("cube.obj", kCubeObj));
+  EXPECT_EQ(cube.triangles.rows(), 12);
+  EXPECT_EQ(BoundingBox(cube).min(), Eigen::Vector3d(0, 0, 0));
+  EXPECT_EQ(BoundingBox(cube).max(), Eigen::Vector3d(1, 1, 1));
+  for (const auto& [name, text] : {std::pair{"t.off", kTetraOff}, std::pair{"t.ply", kTetraPly}}) {
+    const TriangleMesh tetra = ReadMesh(dir.Write(name, text));
+    EXPECT_EQ(tetra.triangles.rows(), 4) << name;
+    EXPECT_EQ(BoundingBox(tetra).max(), Eigen::Vector3d(1, 1, 1)) << name;
+  }
+  const TriangleMesh triangle = ReadMesh(dir.Write("t.stl", kTriangleStl));
+  EXPECT_EQ(triangle.triangles.rows(), 1);
+  EXPECT_EQ(BoundingBox(triangle).max(), Eigen::Vector3d(2, 3, 0));
+}
+
+TEST(ReadMeshTest, ReadsSharedMeshes) {
+  const TriangleMesh cup = ReadMesh(std::string(ACDPLAN_SHARED_DATA) + "/meshes/vhacd/cup.obj");
+  EXPECT_GT(cup.triangles.rows(), 100);
+  CheckTriangleMesh(cup, "cup.obj");
+}
+
+TEST(ReadMeshTest, Errors) {
+  TempDir dir;
+  EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Path("none.obj")); }),
+              HasSubstr("none.obj: cannot read mesh: No such file or directory"));
+  EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("bad.ply", "ply\nformat nonsense\n")); }),
+              HasSubstr("bad.ply: cannot read mesh: "));
+  EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("bad.xyz123", "hello")); }),
+              HasSubstr("bad.xyz123: cannot read mesh: "));
+  EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("points.obj", "v 0 0 0\nv 1 0 0\n")); }),
+              HasSubstr("points.obj: "));
+}
+
+TEST(CheckTriangleMeshTest, Errors) {
+  TriangleMesh mesh;
+  EXPECT_EQ(ErrorOf([&] { CheckTriangleMesh(mesh, "m"); }), "m: mesh has no triangles");
+  mesh.vertices.resize(3, 3);
+  mesh.vertices.setZero();
+  mesh.triangles.resize(1, 3);
+  mesh.triangles << 0, 1, 3;
+  EXPECT_EQ(ErrorOf([&] { CheckTriangleMesh(mesh, "m"); }),
+            "m: triangle 0: index 3 out of range [0, 3)");
+}
+
+}  // namespace
+}  // namespace acdplan::envs

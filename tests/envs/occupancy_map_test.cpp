@@ -1,0 +1,173 @@
+#include "envs/occupancy_map.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <cstring>
+
+#include "envs/free_space2d.h"
+#include "test_util.h"
+
+namespace acdplan::envs {
+namespace {
+
+using testing::ErrorOf;
+using ::testing::HasSubstr;
+using testing::TempDir;
+
+// 4 x 3 pixels, row 0 on top: 0 = black (occupied), 254 = white (free), 205 = grey (unknown).
+const std::vector<int> kPixels = {0, 254, 254, 205,  //
+                                  0, 254, 254, 254,  //
+                                  0, 0,   254, 254};
+
+std::string PlainPgm() {
+  std::string text = "P2\n# a comment\n4 3\n255\n";
+  for (int v : kPixels) text += std::to_string(v) + " ";
+  return text + "\n";
+}
+
+std::string BinaryPgm() {
+  std::string text = "P5 4 3 255\n";
+  for (int v : kPixels) text += static_cast<char>(v);
+  return text;
+}
+
+void WritePng(const std::string& path) {
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = 4;
+  image.height = 3;
+  image.format = PNG_FORMAT_RGB;  // Colour, so the reader's grey conversion is exercised.
+  std::vector<png_byte> rgb;
+  for (int v : kPixels) rgb.insert(rgb.end(), 3, static_cast<png_byte>(v));
+  ASSERT_TRUE(png_image_write_to_file(&image, path.c_str(), 0, rgb.data(), 0, nullptr));
+}
+
+const char* kYaml =
+    "image: map.pgm\nresolution: 0.5\norigin: [-1.0, 2.0, 0.0]\n"
+    "occupied_thresh: 0.65\nfree_thresh: 0.196\nnegate: 0\n";
+
+const std::vector<std::uint8_t> kBlocked = {1, 0, 0, 1,  //
+                                            1, 0, 0, 0,  //
+                                            1, 1, 0, 0};
+
+TEST(OccupancyMapTest, ReadsPlainAndBinaryPgmAndPng) {
+  TempDir dir;
+  for (const std::string format : {"P2", "P5", "PNG"}) {
+    SCOPED_TRACE(format);
+    std::string yaml = kYaml;
+    if (format == "P2") dir.Write("map.pgm", PlainPgm());
+    if (format == "P5") dir.Write("map.pgm", BinaryPgm());
+    if (format == "PNG") {
+      WritePng(dir.Path("map.png"));
+      yaml.replace(yaml.find("map.pgm"), 7, "map.png");
+    }
+    const OccupancyGrid grid = ReadOccupancyMap(dir.Write("map.yaml", yaml));
+    EXPECT_EQ(grid.width, 4);
+    EXPECT_EQ(grid.height, 3);
+    EXPECT_EQ(grid.blocked, kBlocked);
+    EXPECT_EQ(grid.resolution, 0.5);
+    EXPECT_EQ(grid.origin, Eigen::Vector2d(-1, 2));
+  }
+}
+
+TEST(OccupancyMapTest, NegateAndUnknownCells) {
+  TempDir dir;
+  dir.Write("map.pgm", BinaryPgm());
+  std::string yaml = kYaml;
+  yaml.replace(yaml.find("negate: 0"), 9, "negate: 1");
+  const OccupancyGrid negated = ReadOccupancyMap(dir.Write("map.yaml", yaml));
+  // White is now occupied, black free; grey (205/255 = 0.80) is occupied too.
+  EXPECT_EQ(negated.blocked, (std::vector<std::uint8_t>{0, 1, 1, 1, 0, 1, 1, 1, 0, 0, 1, 1}));
+  const OccupancyGrid optimistic =
+      ReadOccupancyMap(dir.Write("map.yaml", kYaml), {UnknownCells::kFree});
+  EXPECT_EQ(optimistic.blocked[3], 0);
+}
+
+TEST(OccupancyMapTest, LoadsAWorkspaceInWorldCoordinates) {
+  TempDir dir;
+  dir.Write("map.pgm", PlainPgm());
+  const Workspace2d world = LoadOccupancyMap(dir.Write("map.yaml", kYaml));
+  EXPECT_EQ(world.bounds.min(), Eigen::Vector2d(-1, 2));
+  EXPECT_EQ(world.bounds.max(), Eigen::Vector2d(1, 3.5));
+  // The L of black pixels and the unknown pixel (blocked by default): two obstacles.
+  ASSERT_EQ(world.obstacles.size(), 2u);
+  EXPECT_EQ(world.obstacles[0].outer.size() + world.obstacles[1].outer.size(), 10u);
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(world);
+  EXPECT_NEAR(testing::TotalArea(free), 7 * 0.25, 1e-9);
+}
+
+TEST(OccupancyMapTest, YamlErrors) {
+  TempDir dir;
+  dir.Write("map.pgm", PlainPgm());
+  auto error = [&](const std::string& yaml) {
+    const std::string path = dir.Write("map.yaml", yaml);
+    return ErrorOf([&] { ReadOccupancyMap(path); });
+  };
+  const std::string base = "image: map.pgm\nresolution: 0.5\norigin: [0, 0, 0]\n";
+  EXPECT_THAT(error(base + "colour: red\n"),
+              HasSubstr("map.yaml: colour: unknown key (expected one of: image, resolution, "
+                        "origin, occupied_thresh, free_thresh, negate, mode)"));
+  EXPECT_THAT(error("image: map.pgm\norigin: [0, 0, 0]\n"),
+              HasSubstr("map.yaml: resolution: missing required key"));
+  EXPECT_THAT(error("image: map.pgm\nresolution: -1\norigin: [0, 0, 0]\n"),
+              HasSubstr("map.yaml: resolution: expected a number > 0"));
+  EXPECT_THAT(error("image: map.pgm\nresolution: fine\norigin: [0, 0, 0]\n"),
+              HasSubstr("map.yaml: resolution: expected a finite number"));
+  EXPECT_THAT(error("image: map.pgm\nresolution: 1\norigin: [0, 0]\n"),
+              HasSubstr("map.yaml: origin: expected [x, y, yaw] (3 finite numbers)"));
+  EXPECT_THAT(error("image: map.pgm\nresolution: 1\norigin: [0, 0, 0.5]\n"),
+              HasSubstr("map.yaml: origin: yaw must be 0"));
+  EXPECT_THAT(error(base + "negate: 2\n"), HasSubstr("map.yaml: negate: expected 0 or 1"));
+  EXPECT_THAT(error(base + "occupied_thresh: 1.5\n"),
+              HasSubstr("map.yaml: occupied_thresh: expected a number in [0, 1]"));
+  EXPECT_THAT(error(base + "free_thresh: 0.7\noccupied_thresh: 0.6\n"),
+              HasSubstr("map.yaml: free_thresh: must be less than occupied_thresh"));
+  EXPECT_THAT(error(base + "mode: colour\n"),
+              HasSubstr("map.yaml: mode: expected trinary, scale or raw, got 'colour'"));
+  EXPECT_THAT(error("image: [map.pgm]\nresolution: 1\norigin: [0, 0, 0]\n"),
+              HasSubstr("map.yaml: image: expected a string"));
+  EXPECT_THAT(error("image: map.pgm\nresolution: [1\n"),
+              HasSubstr("map.yaml:3: YAML syntax error: end of sequence flow not found"));
+  EXPECT_THAT(error("- image\n"), HasSubstr("map.yaml: expected a YAML mapping of keys"));
+}
+
+TEST(OccupancyMapTest, ImageErrors) {
+  TempDir dir;
+  auto error = [&](const std::string& image_name, const std::string& image) {
+    if (!image.empty()) dir.Write(image_name, image);
+    const std::string path =
+        dir.Write("map.yaml", "image: " + image_name + "\nresolution: 1\norigin: [0, 0, 0]\n");
+    return ErrorOf([&] { ReadOccupancyMap(path); });
+  };
+  EXPECT_THAT(error("missing.pgm", ""),
+              HasSubstr("map.yaml: image: cannot read '" + dir.Path("missing.pgm") +
+                        "': No such file or directory"));
+  EXPECT_THAT(error("a.pgm", "P6 1 1 255\n..."),
+              HasSubstr("a.pgm: not a PGM image (expected magic 'P2' or 'P5')"));
+  EXPECT_THAT(error("b.pgm", "P5 4 x 255\n"),
+              HasSubstr("b.pgm: malformed PGM header: expected height"));
+  EXPECT_THAT(error("c.pgm", "P5 4 3 255\nabc"),
+              HasSubstr("c.pgm: truncated PGM data: expected 12 pixels"));
+  EXPECT_THAT(error("d.pgm", "P2 2 1 15\n3 16\n"),
+              HasSubstr("d.pgm: PGM pixel 1 value 16 exceeds maxval 15"));
+  EXPECT_THAT(error("e.pgm", "P2 2 1 0\n0 0\n"),
+              HasSubstr("e.pgm: malformed PGM header: maxval must be in [1, 65535]"));
+  EXPECT_THAT(error("f.png", std::string("\x89PNG\r\n\x1a\n", 8) + "garbage"),
+              HasSubstr("f.png: cannot read PNG: "));
+}
+
+TEST(OccupancyMapTest, SixteenBitPgm) {
+  TempDir dir;
+  std::string pgm = "P5 2 1 65535\n";
+  pgm += std::string("\x00\x00\xff\xff", 4);
+  dir.Write("map.pgm", pgm);
+  const OccupancyGrid grid =
+      ReadOccupancyMap(dir.Write("map.yaml", "image: map.pgm\nresolution: 1\norigin: [0, 0, 0]\n"));
+  EXPECT_EQ(grid.blocked, (std::vector<std::uint8_t>{1, 0}));
+}
+
+}  // namespace
+}  // namespace acdplan::envs

@@ -1,0 +1,74 @@
+#pragma once
+// Helpers shared by the envs tests: scratch folders, inline fixtures, error messages.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "acd/check_decomposition.h"
+#include "acd/decompose2d.h"
+#include "acd/input_error.h"
+#include "acd/polygon2d.h"
+#include "acd/prepare_polygon.h"
+
+namespace acdplan::envs::testing {
+
+/// A fresh folder under the system's temporary folder, removed at the end of the test.
+class TempDir {
+ public:
+  TempDir() {
+    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = std::filesystem::temp_directory_path() /
+            ("acdplan_envs_" + std::string(info->test_suite_name()) + "_" + info->name());
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() { std::filesystem::remove_all(path_); }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  /// Writes `text` to `name` in the folder and returns the file's path.
+  std::string Write(const std::string& name, const std::string& text) const {
+    const std::filesystem::path file = path_ / name;
+    std::ofstream(file, std::ios::binary) << text;
+    return file.string();
+  }
+  std::string Path(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+/// The InputError message `f()` throws, or "" when it throws nothing.
+template <typename F>
+std::string ErrorOf(F f) {
+  try {
+    f();
+  } catch (const acd::InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+inline double TotalArea(const std::vector<acd::Polygon2d>& polygons) {
+  double area = 0.0;
+  for (const acd::Polygon2d& p : polygons) area += acd::Area(p);
+  return area;
+}
+
+/// Every polygon is already clean and valid (PreparePolygon changes nothing), and the set
+/// decomposes into convex pieces that CheckDecomposition() accepts.
+inline void ExpectValidAndDecomposes(const std::vector<acd::Polygon2d>& polygons) {
+  for (size_t k = 0; k < polygons.size(); ++k) {
+    const acd::Polygon2d again = acd::PreparePolygon(polygons[k], "polygon " + std::to_string(k));
+    EXPECT_EQ(acd::VertexCount(again), acd::VertexCount(polygons[k])) << "polygon " << k;
+  }
+  const acd::Decomposition2d decomposition = acd::Decompose2d(polygons);
+  const acd::DecompositionCheck check = acd::CheckDecomposition(polygons, decomposition);
+  EXPECT_TRUE(check.ok()) << (check.ok() ? "" : check.problems.front());
+}
+
+}  // namespace acdplan::envs::testing
