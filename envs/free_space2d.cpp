@@ -136,36 +136,41 @@ std::vector<acd::Polygon2d> FreeSpace2d(const Workspace2d& workspace,
   PolygonSet free(ToCgal(BoundsPolygon(prepared.bounds).outer));
   free.difference(blocked);
 
-  // Close hole pinches with small diamonds of obstacle, then split the remaining (lobe)
-  // pinches. One round of diamonds removes every hole pinch; a second round is a safety net.
+  // Close hole pinches with small diamonds of obstacle, region by region (a region without
+  // hole pinches is final; the overlay stays as small as the region), then split the remaining
+  // (lobe) pinches. One round removes every hole pinch; further rounds are a safety net.
   std::vector<SplitRegion> regions;
-  for (int round = 0;; ++round) {
-    std::vector<PolygonWithHoles> parts;
-    free.polygons_with_holes(std::back_inserter(parts));
-    regions.clear();
-    std::vector<Point> pinches;
-    for (const PolygonWithHoles& part : parts) {
-      regions.push_back(Split(part));
-      const std::vector<Point> found = HolePinches(regions.back());
-      pinches.insert(pinches.end(), found.begin(), found.end());
-    }
-    if (pinches.empty()) break;
+  std::vector<PolygonWithHoles> work;
+  free.polygons_with_holes(std::back_inserter(work));
+  for (int round = 0; !work.empty(); ++round) {
     if (round == 3) throw std::logic_error("FreeSpace2d(): pinches remain after 3 rounds");
-    std::sort(pinches.begin(), pinches.end(), PointLess());
-    pinches.erase(std::unique(pinches.begin(), pinches.end()), pinches.end());
-    std::vector<Polygon> diamonds;
-    const Kernel::FT e(gap);
-    for (const Point& p : pinches) {
-      Polygon diamond;
-      diamond.push_back(Point(p.x() + e, p.y()));
-      diamond.push_back(Point(p.x(), p.y() + e));
-      diamond.push_back(Point(p.x() - e, p.y()));
-      diamond.push_back(Point(p.x(), p.y() - e));
-      diamonds.push_back(std::move(diamond));
+    std::vector<PolygonWithHoles> next;
+    for (const PolygonWithHoles& part : work) {
+      SplitRegion split = Split(part);
+      std::vector<Point> pinches = HolePinches(split);
+      if (pinches.empty()) {
+        regions.push_back(std::move(split));
+        continue;
+      }
+      std::sort(pinches.begin(), pinches.end(), PointLess());
+      pinches.erase(std::unique(pinches.begin(), pinches.end()), pinches.end());
+      std::vector<Polygon> diamonds;
+      const Kernel::FT e(gap);
+      for (const Point& p : pinches) {
+        Polygon diamond;
+        diamond.push_back(Point(p.x() + e, p.y()));
+        diamond.push_back(Point(p.x(), p.y() + e));
+        diamond.push_back(Point(p.x() - e, p.y()));
+        diamond.push_back(Point(p.x(), p.y() - e));
+        diamonds.push_back(std::move(diamond));
+      }
+      PolygonSet closing;
+      closing.join(diamonds.begin(), diamonds.end());
+      PolygonSet region(part);
+      region.difference(closing);
+      region.polygons_with_holes(std::back_inserter(next));
     }
-    PolygonSet closing;
-    closing.join(diamonds.begin(), diamonds.end());
-    free.difference(closing);
+    work = std::move(next);
   }
 
   std::vector<acd::Polygon2d> result;
