@@ -45,6 +45,43 @@ TEST(ReadMeshTest, ReadsObjOffPlyStl) {
   EXPECT_EQ(BoundingBox(triangle).max(), Eigen::Vector3d(2, 3, 0));
 }
 
+// One triangle in glTF 2.0 with an embedded buffer, and in COLLADA.
+const char* kTriangleGltf = R"({"asset": {"version": "2.0"}, "scene": 0,
+  "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "translation": [0, 0, 5]}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 1, 0]}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}],
+  "buffers": [{"byteLength": 36,
+    "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})";
+
+const char* kTriangleDae = R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit meter="1" name="meter"/><up_axis>Z_UP</up_axis></asset>
+  <library_geometries><geometry id="g"><mesh>
+    <source id="p"><float_array id="pa" count="9">0 0 0 1 0 0 0 1 0</float_array>
+      <technique_common><accessor source="#pa" count="3" stride="3">
+        <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+      </accessor></technique_common></source>
+    <vertices id="v"><input semantic="POSITION" source="#p"/></vertices>
+    <triangles count="1"><input semantic="VERTEX" source="#v" offset="0"/><p>0 1 2</p></triangles>
+  </mesh></geometry></library_geometries>
+  <library_visual_scenes><visual_scene id="s"><node id="n">
+    <instance_geometry url="#g"/></node></visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>
+)";
+
+TEST(ReadMeshTest, ReadsGltfAndCollada) {
+  TempDir dir;
+  const TriangleMesh gltf = ReadMesh(dir.Write("t.gltf", kTriangleGltf));
+  ASSERT_EQ(gltf.triangles.rows(), 1);
+  EXPECT_EQ(BoundingBox(gltf).max(), Eigen::Vector3d(1, 1, 5));  // Node transform applied.
+  const TriangleMesh dae = ReadMesh(dir.Write("t.dae", kTriangleDae));
+  ASSERT_EQ(dae.triangles.rows(), 1);
+  EXPECT_DOUBLE_EQ(BoundingBox(dae).sizes().maxCoeff(), 1.0);
+}
+
 TEST(ReadMeshTest, ReadsSharedMeshes) {
   const TriangleMesh cup = ReadMesh(std::string(ACDPLAN_SHARED_DATA) + "/meshes/vhacd/cup.obj");
   EXPECT_GT(cup.triangles.rows(), 100);
@@ -60,7 +97,7 @@ TEST(ReadMeshTest, Errors) {
   EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("bad.xyz123", "hello")); }),
               HasSubstr("bad.xyz123: cannot read mesh: "));
   EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("points.obj", "v 0 0 0\nv 1 0 0\n")); }),
-              HasSubstr("points.obj: "));
+              HasSubstr("points.obj: cannot read mesh: "));
 }
 
 TEST(CheckTriangleMeshTest, Errors) {
