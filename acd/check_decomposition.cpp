@@ -724,25 +724,38 @@ class Checker {
                       std::to_string(bad) + ")");
         continue;
       }
-      // The hull contains the boundary iff it contains the boundary's own hull vertices.
+      // The hull contains the boundary iff it contains the boundary's own hull vertices, and
+      // it suffices to test, per hull edge, the own-hull vertex farthest out along the edge's
+      // outward normal. That vertex advances monotonically as the edges turn (rotating
+      // calipers), so all edges cost O(h + m) instead of O(h m) for a 10,000-vertex piece.
       const std::vector<int> own = HullIndices(c.polygon.outer);
+      const int m = static_cast<int>(own.size());
+      auto outward = [&](int i, int j) {  // Signed distance beyond edge i (unnormalised).
+        const Point2d& a = hull[i];
+        const Point2d& b = hull[(i + 1) % h];
+        const Point2d& p = c.polygon.outer[own[j]];
+        return (b.y() - a.y()) * (p.x() - a.x()) - (b.x() - a.x()) * (p.y() - a.y());
+      };
+      int j = 0;
+      for (int t = 1; t < m; ++t) {
+        if (outward(0, t) > outward(0, j)) j = t;
+      }
       bool contained = true;
-      for (int v : own) {
-        const Point2d& p = c.polygon.outer[v];
-        for (int i = 0; i < h && contained; ++i) {
-          const Point2d& a = hull[i];
-          const Point2d& b = hull[(i + 1) % h];
-          if (Orientation(a, b, p) >= 0) continue;
-          const Point2d ab = b - a, ap = p - a;
-          const double distance = std::abs(ab.x() * ap.y() - ab.y() * ap.x()) / ab.norm();
-          if (distance > kHullNoise * magnitude) {
-            problems_.Add(Label(k) + "vertex " + std::to_string(v) + " " + Pt(p) +
-                          " lies outside its hull (by " + Num(distance) + " beyond hull edge " +
-                          std::to_string(i) + ")");
-            contained = false;
-          }
+      for (int i = 0; i < h && contained && m > 0; ++i) {
+        for (int steps = 0; steps < m && outward(i, (j + 1) % m) > outward(i, j); ++steps) {
+          j = (j + 1) % m;
         }
-        if (!contained) break;
+        const Point2d& a = hull[i];
+        const Point2d& b = hull[(i + 1) % h];
+        const Point2d& p = c.polygon.outer[own[j]];
+        if (Orientation(a, b, p) >= 0) continue;
+        const double distance = outward(i, j) / (b - a).norm();
+        if (distance > kHullNoise * magnitude) {
+          problems_.Add(Label(k) + "vertex " + std::to_string(own[j]) + " " + Pt(p) +
+                        " lies outside its hull (by " + Num(distance) + " beyond hull edge " +
+                        std::to_string(i) + ")");
+          contained = false;
+        }
       }
       if (!contained) continue;
       const double hull_area = SignedArea(hull);

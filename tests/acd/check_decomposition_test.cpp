@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -247,6 +248,24 @@ TEST(CheckDecompositionTest, WrongHullAndCentroid) {
   FillStats(&d);
   const DecompositionCheck loose = CheckDecomposition(UnitSquare(), d);
   EXPECT_TRUE(HasProblem(loose, {"component 0: hull area 1 exceeds"})) << Joined(loose);
+}
+
+TEST(CheckDecompositionTest, LargeConvexComponentAndItsHull) {
+  Ring2d circle;
+  for (int i = 0; i < 2000; ++i) {
+    const double angle = 2.0 * 3.14159265358979323846 * i / 2000;
+    circle.push_back({100.0 + 50.0 * std::cos(angle), -20.0 + 50.0 * std::sin(angle)});
+  }
+  Decomposition2d d;
+  d.components.push_back(MakeComponent(circle));
+  FillStats(&d);
+  const DecompositionCheck check = CheckDecomposition({Polygon2d{circle, {}}}, d);
+  EXPECT_TRUE(check.ok()) << Joined(check);
+
+  d.components[0].hull.erase(d.components[0].hull.begin() + 700);  // Vertex 700 now sticks out.
+  const DecompositionCheck missing = CheckDecomposition({Polygon2d{circle, {}}}, d);
+  EXPECT_TRUE(HasProblem(missing, {"component 0: vertex 700", "lies outside its hull"}))
+      << Joined(missing);
 }
 
 TEST(CheckDecompositionTest, OpeningNotOnTheBoundary) {
