@@ -186,6 +186,27 @@ double Convexity(const std::vector<CgalPolygon>& pieces) {
   return hull_area > 0.0 ? area / hull_area : 1.0;
 }
 
+/// Why CGAL's `pieces` are not a convex partition of `input`'s outer rings, or "" if they are
+/// (up to rounding). CGAL checks its postcondition only in debug builds, so a Release benchmark
+/// checks here (untimed), and the targets do not compare against a wrong answer.
+std::string PartitionProblem(const BenchInput& input, const std::vector<CgalPolygon>& pieces) {
+  double input_area = 0.0, pieces_area = 0.0;
+  for (const acd::Polygon2d& polygon : input.polygons) input_area += acd::Area(polygon);
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const CgalPolygon& piece = pieces[i];
+    if (!CGAL::is_convex_2(piece.vertices_begin(), piece.vertices_end(), Kernel())) {
+      return "invalid output: piece " + std::to_string(i) + " (" + std::to_string(piece.size()) +
+             " vertices) is not convex";
+    }
+    pieces_area += std::abs(CGAL::to_double(piece.area()));
+  }
+  if (std::abs(pieces_area - input_area) > 1e-9 * input_area) {
+    return "invalid output: pieces' area " + Format("%.10g", pieces_area) + " != polygon's " +
+           Format("%.10g", input_area);
+  }
+  return "";
+}
+
 /// Reflex vertices of a prepared polygon (outer ring ccw, holes cw: a right turn is reflex).
 int CountNotches(const acd::Polygon2d& polygon) {
   int notches = 0;
@@ -330,6 +351,7 @@ void BenchCgal(const BenchInput& input, const BenchArguments& args, std::vector<
         const std::vector<CgalPolygon> pieces(timed.result.begin(), timed.result.end());
         row.components = static_cast<int>(pieces.size());
         row.convexity = Convexity(pieces);
+        row.note = PartitionProblem(input, pieces);
         row.median_ms = timed.median_ms;
         row.runs = timed.runs;
       } catch (const std::exception& error) {
@@ -363,7 +385,8 @@ std::string MarkdownTable(const std::vector<Row>& rows, bool with_check) {
         << (first ? std::to_string(row.notches) : "") << " | "
         << (first ? std::to_string(row.holes) : "") << " | "
         << (row.tau_rel ? Format("%g", *row.tau_rel) : "—") << " | "
-        << (row.tau ? Format("%.4g", *row.tau) : "—") << " | " << row.method << " | ";
+        << (row.tau ? Format("%.4g", *row.tau) : "—") << " | " << row.method
+        << (row.components && !row.note.empty() ? " **(invalid output)**" : "") << " | ";
     if (row.components) {
       out << *row.components << " | " << Format("%.4f", row.convexity) << " | "
           << FormatMs(row.median_ms) << " | " << row.runs << " |";
@@ -453,6 +476,7 @@ struct PeerComparison {
   double worst = 0.0;  ///< Largest ours / peer component ratio.
   std::string worst_polygon;
   std::vector<std::string> misses;
+  std::vector<std::string> excluded;  ///< Polygons where the peer's partition was invalid.
   bool Pass() const { return compared > 0 && misses.empty(); }
   std::string Summary(const std::string& peer) const {
     std::ostringstream line;
@@ -464,6 +488,10 @@ struct PeerComparison {
     if (!misses.empty()) {
       line << "; misses:";
       for (size_t i = 0; i < misses.size(); ++i) line << (i ? ", " : " ") << misses[i];
+    }
+    if (!excluded.empty()) {
+      line << "; not compared (" << peer << " output invalid):";
+      for (size_t i = 0; i < excluded.size(); ++i) line << (i ? ", " : " ") << excluded[i];
     }
     return line.str();
   }
@@ -481,6 +509,10 @@ PeerComparison ComparePeer(const std::vector<Row>& rows, const std::vector<std::
     const Row* ours = Find(rows, base, 0.0, MethodName(measure));
     const Row* peer = Find(rows, base, std::nullopt, peer_method);
     if (ours == nullptr || peer == nullptr || !peer->components) continue;
+    if (!peer->note.empty()) {  // An invalid partition is no yardstick.
+      result.excluded.push_back(polygon);
+      continue;
+    }
     ++result.compared;
     if (!ours->components) {
       result.misses.push_back(polygon + " failed");
@@ -496,7 +528,8 @@ PeerComparison ComparePeer(const std::vector<Row>& rows, const std::vector<std::
       std::string miss = polygon + " " + std::to_string(a) + " vs " + std::to_string(b);
       // Against a heuristic peer, say when no partition could have done better.
       const Row* optimal = Find(rows, base, std::nullopt, kCgalOptimal);
-      if (peer_method != kCgalOptimal && optimal != nullptr && optimal->components) {
+      if (peer_method != kCgalOptimal && optimal != nullptr && optimal->components &&
+          optimal->note.empty()) {
         miss += " (optimal " + std::to_string(*optimal->components) + ")";
       }
       result.misses.push_back(miss);
@@ -656,7 +689,8 @@ int Run(const BenchArguments& args) {
     out << "\n";
   }
   for (const Row& row : rows) {
-    if (row.method.rfind("cgal", 0) == 0 && row.note.rfind("failed", 0) == 0) {
+    if (row.method.rfind("cgal", 0) == 0 &&
+        (row.note.rfind("failed", 0) == 0 || row.note.rfind("invalid", 0) == 0)) {
       problems.push_back(row.polygon + ", " + row.method + ": " + row.note);
     }
   }
