@@ -1,0 +1,33 @@
+#pragma once
+// How a CollisionWorld answers a query: exact BVH, ACD hulls, or hulls confirmed exactly.
+
+#include <string>
+#include <vector>
+
+namespace acdplan::collision {
+
+/// The three ways CollisionWorld checks the robot against the obstacles.
+enum class CollisionMode {
+  /// Exact: the robot against one OBBRSS BVH over every obstacle triangle (plus a containment
+  /// test, since triangle BVHs only see surfaces).
+  kBvh,
+  /// Conservative: the robot against the convex hulls of the obstacles' ACD components in a
+  /// broadphase tree. May report a collision near a concave obstacle feature (the hull covers
+  /// more than the component); never misses one.
+  kHulls,
+  /// Exact: a hull hit is confirmed against that component's own triangles (and containment);
+  /// the answers equal kBvh's.
+  kHullsExact,
+};
+
+/// "bvh", "hulls" or "hulls+exact".
+std::string ModeName(CollisionMode mode);
+
+/// Inverse of ModeName().
+/// @throws acd::InputError naming the known modes for any other string.
+CollisionMode ParseCollisionMode(const std::string& name);
+
+/// Every mode, in declaration order.
+std::vector<CollisionMode> AllCollisionModes();
+
+}  // namespace acdplan::collision

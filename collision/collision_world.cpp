@@ -1,0 +1,412 @@
+#include "collision/collision_world.h"
+
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/geometry/shape/convex.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "acd/concavity.h"
+#include "acd/decompose2d.h"
+#include "acd/input_error.h"
+#include "collision/internal/hull_tree.h"
+#include "collision/internal/mesh_building.h"
+#include "collision/internal/solid_locator.h"
+
+namespace acdplan::collision {
+namespace {
+
+using Geometry = std::shared_ptr<fcl::CollisionGeometryd>;
+
+Geometry MakeBvh(const std::vector<const envs::TriangleMesh*>& meshes) {
+  auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+  model->beginModel();
+  for (const envs::TriangleMesh* mesh : meshes) {
+    std::vector<fcl::Vector3d> v;
+    std::vector<fcl::Triangle> t;
+    for (Eigen::Index i = 0; i < mesh->vertices.rows(); ++i) v.push_back(mesh->vertices.row(i));
+    for (Eigen::Index f = 0; f < mesh->triangles.rows(); ++f) {
+      t.emplace_back(mesh->triangles(f, 0), mesh->triangles(f, 1), mesh->triangles(f, 2));
+    }
+    model->addSubModel(v, t);
+  }
+  model->endModel();
+  model->computeLocalAABB();
+  return model;
+}
+
+Geometry MakeConvex(const envs::TriangleMesh& hull) {
+  auto v = std::make_shared<std::vector<fcl::Vector3d>>();
+  for (Eigen::Index i = 0; i < hull.vertices.rows(); ++i) v->push_back(hull.vertices.row(i));
+  auto f = std::make_shared<std::vector<int>>();
+  for (Eigen::Index k = 0; k < hull.triangles.rows(); ++k) {
+    f->insert(f->end(), {3, hull.triangles(k, 0), hull.triangles(k, 1), hull.triangles(k, 2)});
+  }
+  auto convex = std::make_shared<fcl::Convexd>(v, static_cast<int>(hull.triangles.rows()), f);
+  convex->computeLocalAABB();
+  return convex;
+}
+
+fcl::CollisionRequestd BooleanRequest() {
+  fcl::CollisionRequestd request(1, false);
+  // libccd's GJK: FCL 0.7's own solver (GST_INDEP) misses some Convex-Convex contacts (the
+  // randomized tests found hull misses on an L-shaped robot and a cube robot with it).
+  request.gjk_solver_type = fcl::GST_LIBCCD;
+  return request;
+}
+
+fcl::DistanceRequestd DistanceRequest() {
+  fcl::DistanceRequestd request;
+  // FCL's own GJK for distances: libccd's Convex distances came out up to 30% too large (a
+  // hull distance above the exact mesh distance in the tests), so each query picks the solver
+  // the tests validated for it.
+  request.gjk_solver_type = fcl::GST_INDEP;
+  return request;
+}
+
+bool Collide(const fcl::CollisionGeometryd* a, const fcl::Transform3d& ta,
+             const fcl::CollisionGeometryd* b, const fcl::Transform3d& tb) {
+  static const fcl::CollisionRequestd request = BooleanRequest();
+  fcl::CollisionResultd result;
+  fcl::collide(a, ta, b, tb, request, result);
+  return result.isCollision();
+}
+
+double Distance(const fcl::CollisionGeometryd* a, const fcl::Transform3d& ta,
+                const fcl::CollisionGeometryd* b, const fcl::Transform3d& tb) {
+  static const fcl::DistanceRequestd request = DistanceRequest();
+  fcl::DistanceResultd result;
+  fcl::distance(a, ta, b, tb, request, result);
+  return std::max(result.min_distance, 0.0);
+}
+
+}  // namespace
+
+struct CollisionWorld::Impl {
+  // Robot (body frame).
+  Geometry robot_exact;                // null for a point robot
+  Geometry robot_hull;                 // convex hull (== robot_exact for a disc)
+  std::vector<Geometry> robot_pieces;  // exact convex pieces of a non-convex polygon robot
+  Eigen::Vector3d witness = Eigen::Vector3d::Zero();  // a point of the robot (containment)
+  std::optional<internal::MeshLocator3d> robot_locator;  // closed 3D robot: obstacle inside it
+  Geometry point_probe;                // point robot: a zero-radius sphere for distances
+
+  // Obstacles (world frame).
+  Geometry all_bvh;                       // kBvh
+  std::optional<internal::ExactObstacleLocator> exact_locator;
+  std::vector<Geometry> piece_hulls;      // fcl::Convexd
+  std::vector<std::unique_ptr<fcl::CollisionObjectd>> hull_objects;
+  fcl::DynamicAABBTreeCollisionManagerd manager;
+  std::vector<Geometry> piece_bvhs;       // kHullsExact confirmation
+  std::vector<std::optional<internal::PolygonLocator2d>> piece_polygons;  // 2D containment
+  std::vector<std::optional<internal::MeshLocator3d>> piece_meshes;       // 3D containment
+  internal::HullTree hull_tree;           // point robot, kHulls / kHullsExact
+  int dimension = 2;
+
+  // True if piece `i` lies inside the robot at `pose` (closed 3D robot only): with no surface
+  // contact, one vertex decides.
+  bool PieceInsideRobot(const ObstacleSet& set, size_t i, const Eigen::Isometry3d& pose) const {
+    if (!robot_locator) return false;
+    const Eigen::Vector3d v = set.pieces[i].solid.vertices.row(0).transpose();
+    return robot_locator->Contains(pose.inverse() * v);
+  }
+};
+
+namespace {
+
+size_t PieceOf(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2) {
+  void* data = o1->getUserData() ? o1->getUserData() : o2->getUserData();
+  return reinterpret_cast<size_t>(data) - 1;
+}
+
+void TogglePresence(std::vector<int>* set, int k) {
+  auto it = std::find(set->begin(), set->end(), k);
+  if (it == set->end()) {
+    set->push_back(k);
+  } else {
+    set->erase(it);
+  }
+}
+
+}  // namespace
+
+Eigen::Isometry3d CollisionWorld::Lift(const Eigen::Isometry2d& pose) {
+  Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
+  out.linear().topLeftCorner<2, 2>() = pose.linear();
+  out.translation().head<2>() = pose.translation();
+  return out;
+}
+
+CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
+                               const envs::Robot& robot, const CollisionWorldOptions& options)
+    : obstacles_(std::move(obstacles)), robot_(robot), options_(options),
+      impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  const ObstacleSet& set = *obstacles_;
+  m.dimension = set.dimension;
+  const std::string shape = envs::ShapeName(robot.shape);
+  if (set.dimension == 3 &&
+      (robot.shape == envs::RobotShape::kDisc || robot.shape == envs::RobotShape::kPolygon)) {
+    throw acd::InputError("CollisionWorld(): a " + shape +
+                          " robot moves in the plane; this world is 3D (use a mesh or a point)");
+  }
+  if (set.dimension == 2 && robot.shape == envs::RobotShape::kMesh) {
+    throw acd::InputError(
+        "CollisionWorld(): a mesh robot moves in 3D; this world is 2D (use a point, a disc or "
+        "a polygon)");
+  }
+
+  // Robot geometry.
+  const double h = set.extrusion_height;
+  switch (robot.shape) {
+    case envs::RobotShape::kPoint:
+      m.point_probe = std::make_shared<fcl::Sphered>(0.0);
+      m.point_probe->computeLocalAABB();
+      break;
+    case envs::RobotShape::kDisc:
+      if (!(robot.radius > 0)) throw acd::InputError("CollisionWorld(): disc radius must be > 0");
+      m.robot_exact = std::make_shared<fcl::Cylinderd>(robot.radius, h / 2);
+      m.robot_exact->computeLocalAABB();
+      m.robot_hull = m.robot_exact;
+      break;
+    case envs::RobotShape::kPolygon: {
+      const envs::TriangleMesh prism = internal::ExtrudePolygon(robot.polygon, -h / 4, h / 4);
+      m.robot_exact = MakeBvh({&prism});
+      m.robot_hull =
+          MakeConvex(internal::ExtrudeConvexRing(acd::ConvexHull(robot.polygon.outer), -h / 4, h / 4));
+      const acd::Decomposition2d pieces = acd::Decompose2d(robot.polygon, {});
+      if (pieces.components.size() > 1 || !robot.polygon.holes.empty()) {
+        for (const acd::Component2d& c : pieces.components) {
+          m.robot_pieces.push_back(MakeConvex(internal::ExtrudeConvexRing(c.hull, -h / 4, h / 4)));
+        }
+      }
+      m.witness = Eigen::Vector3d(robot.polygon.outer[0].x(), robot.polygon.outer[0].y(), 0);
+      break;
+    }
+    case envs::RobotShape::kMesh: {
+      envs::CheckTriangleMesh(robot.mesh, "CollisionWorld(): robot mesh");
+      m.robot_exact = MakeBvh({&robot.mesh});
+      std::vector<Eigen::Vector3d> points;
+      for (Eigen::Index i = 0; i < robot.mesh.vertices.rows(); ++i) {
+        points.push_back(robot.mesh.vertices.row(i).transpose());
+      }
+      m.robot_hull = MakeConvex(internal::ConvexHull3(points, 1e-9));
+      m.witness = robot.mesh.vertices.row(robot.mesh.triangles(0, 0)).transpose();
+      if (internal::IsClosedMesh(robot.mesh)) m.robot_locator.emplace(robot.mesh);
+      break;
+    }
+  }
+
+  // Obstacles.
+  std::vector<const envs::TriangleMesh*> meshes;
+  for (const auto& mesh : set.meshes) meshes.push_back(&mesh);
+  m.all_bvh = MakeBvh(meshes);
+  m.exact_locator.emplace(set, /*skip_open=*/true);
+  std::vector<fcl::CollisionObjectd*> objects;
+  std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>> planes;
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (size_t i = 0; i < set.pieces.size(); ++i) {
+    const ObstaclePiece& piece = set.pieces[i];
+    m.piece_hulls.push_back(MakeConvex(piece.hull));
+    m.hull_objects.push_back(std::make_unique<fcl::CollisionObjectd>(m.piece_hulls.back()));
+    // User data = piece index + 1; the robot's object has none.
+    m.hull_objects.back()->setUserData(reinterpret_cast<void*>(i + 1));
+    m.hull_objects.back()->computeAABB();
+    objects.push_back(m.hull_objects.back().get());
+    m.piece_bvhs.push_back(MakeBvh({&piece.solid}));
+    if (set.dimension == 2) {
+      m.piece_polygons.emplace_back(std::in_place, piece.polygon);
+      m.piece_meshes.emplace_back();
+    } else {
+      m.piece_polygons.emplace_back();
+      m.piece_meshes.emplace_back();
+      if (piece.closed) m.piece_meshes.back().emplace(piece.solid);
+    }
+    planes.push_back(piece.planes);
+    boxes.push_back(piece.box);
+  }
+  m.manager.registerObjects(objects);
+  m.manager.setup();
+  const double slack = 1e-12 * (1 + set.bounds.sizes().norm() +
+                                set.bounds.max().cwiseAbs().maxCoeff() +
+                                set.bounds.min().cwiseAbs().maxCoeff());
+  m.hull_tree = internal::HullTree(planes, boxes, slack);
+}
+
+CollisionWorld::~CollisionWorld() = default;
+
+
+bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) const {
+  checks_.fetch_add(1, std::memory_order_relaxed);
+  const Impl& m = *impl_;
+  const ObstacleSet& set = *obstacles_;
+  bool collides = false;
+  const Eigen::Vector3d witness = pose * m.witness;
+
+
+  if (!m.robot_exact) {  // point robot
+    if (mode == CollisionMode::kBvh) {
+      collides = m.exact_locator->Inside(witness);
+    } else if (mode == CollisionMode::kHulls) {
+      collides = m.hull_tree.AnyContains(witness);
+    } else {
+      std::vector<int> candidates;
+      m.hull_tree.Candidates(witness, &candidates);
+      std::vector<int> odd;
+      for (int i : candidates) {
+        exact_confirmations_.fetch_add(1, std::memory_order_relaxed);
+        const auto& poly = m.piece_polygons[static_cast<size_t>(i)];
+        const auto& mesh = m.piece_meshes[static_cast<size_t>(i)];
+        const bool in = poly ? poly->Contains(witness.head<2>()) : (mesh && mesh->Contains(witness));
+        if (!in) continue;
+        if (m.dimension == 2) {
+          collides = true;
+          break;
+        }
+        TogglePresence(&odd, set.pieces[static_cast<size_t>(i)].obstacle);
+      }
+      collides = collides || !odd.empty();
+    }
+  } else if (mode == CollisionMode::kBvh) {
+    collides = Collide(m.robot_exact.get(), pose, m.all_bvh.get(), fcl::Transform3d::Identity()) ||
+               m.exact_locator->Inside(witness);
+    if (!collides && m.robot_locator) {
+      fcl::CollisionObjectd robot(m.robot_hull, pose);
+      const fcl::AABBd& box = robot.getAABB();
+      for (size_t i = 0; i < set.pieces.size() && !collides; ++i) {
+        const auto& pb = set.pieces[i].box;
+        if (pb.min().x() < box.min_.x() || pb.min().y() < box.min_.y() ||
+            pb.min().z() < box.min_.z() || pb.max().x() > box.max_.x() ||
+            pb.max().y() > box.max_.y() || pb.max().z() > box.max_.z()) {
+          continue;  // a piece inside the robot has its box inside the robot's box
+        }
+        collides = m.PieceInsideRobot(set, i, pose);
+      }
+    }
+  } else {
+    // State of this query through the broadphase callback.
+    struct HitQuery {
+      const Impl* m;
+      const ObstacleSet* set;
+      Eigen::Isometry3d pose;
+      Eigen::Vector3d witness;          // world frame
+      bool exact;                       // kHullsExact
+      bool hit = false;
+      std::vector<int> odd_obstacles;   // 3D: obstacles with an odd count of pieces holding witness
+      std::uint64_t hull_tests = 0, confirmations = 0;
+    } q{&m, &set, pose, witness, mode == CollisionMode::kHullsExact, false, {}, 0, 0};
+    fcl::CollisionObjectd robot(m.robot_hull, pose);
+    m.manager.collide(&robot, &q, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2,
+                                     void* data) {
+      HitQuery& q = *static_cast<HitQuery*>(data);
+      const Impl& m = *q.m;
+      const size_t i = PieceOf(o1, o2);
+      const fcl::Transform3d identity = fcl::Transform3d::Identity();
+      ++q.hull_tests;
+      if (!Collide(m.robot_hull.get(), q.pose, m.piece_hulls[i].get(), identity)) return false;
+      if (!q.exact) {
+        if (m.robot_pieces.empty()) {
+          q.hit = true;
+        } else {
+          for (const Geometry& piece : m.robot_pieces) {
+            ++q.hull_tests;
+            if (Collide(piece.get(), q.pose, m.piece_hulls[i].get(), identity)) {
+              q.hit = true;
+              break;
+            }
+          }
+        }
+        return q.hit;
+      }
+      ++q.confirmations;
+      if (Collide(m.robot_exact.get(), q.pose, m.piece_bvhs[i].get(), identity) ||
+          m.PieceInsideRobot(*q.set, i, q.pose)) {
+        q.hit = true;
+        return true;
+      }
+      if (const auto& poly = m.piece_polygons[i]) {
+        q.hit = poly->Contains(q.witness.head<2>());
+        return q.hit;
+      }
+      if (const auto& mesh = m.piece_meshes[i]; mesh && mesh->Contains(q.witness)) {
+        TogglePresence(&q.odd_obstacles, q.set->pieces[i].obstacle);
+      }
+      return false;
+    });
+    collides = q.hit || !q.odd_obstacles.empty();
+    hull_tests_.fetch_add(q.hull_tests, std::memory_order_relaxed);
+    exact_confirmations_.fetch_add(q.confirmations, std::memory_order_relaxed);
+  }
+  if (collides) collisions_.fetch_add(1, std::memory_order_relaxed);
+  return !collides;
+}
+
+double CollisionWorld::Clearance(const Eigen::Isometry3d& pose, CollisionMode mode) const {
+  clearance_queries_.fetch_add(1, std::memory_order_relaxed);
+  if (!IsValid(pose, mode)) return 0.0;
+  const Impl& m = *impl_;
+  const fcl::CollisionGeometryd* exact = m.robot_exact ? m.robot_exact.get() : m.point_probe.get();
+  const Geometry& hull_geometry = m.robot_exact ? m.robot_hull : m.point_probe;
+  if (mode == CollisionMode::kBvh) {
+    return Distance(exact, pose, m.all_bvh.get(), fcl::Transform3d::Identity());
+  }
+  struct Context {
+    const Impl* m;
+    fcl::Transform3d pose;
+    const fcl::CollisionGeometryd* exact;
+    const fcl::CollisionGeometryd* hull;
+    bool refine;
+    double best = std::numeric_limits<double>::infinity();
+  } context{&m, pose, exact, hull_geometry.get(), mode == CollisionMode::kHullsExact};
+  fcl::CollisionObjectd robot(hull_geometry, pose);
+  m.manager.distance(&robot, &context, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2,
+                                          void* data, double& dist) {
+    Context& c = *static_cast<Context*>(data);
+    const size_t i = PieceOf(o1, o2);
+    double d = Distance(c.hull, c.pose, c.m->piece_hulls[i].get(), fcl::Transform3d::Identity());
+    if (!c.refine && !c.m->robot_pieces.empty() && d < c.best) {
+      // The exact convex pieces of the robot give a tighter (still conservative) bound.
+      double pieces = std::numeric_limits<double>::infinity();
+      for (const Geometry& piece : c.m->robot_pieces) {
+        pieces = std::min(pieces, Distance(piece.get(), c.pose, c.m->piece_hulls[i].get(),
+                                           fcl::Transform3d::Identity()));
+      }
+      d = pieces;
+    }
+    if (c.refine && d < c.best) {
+      d = Distance(c.exact, c.pose, c.m->piece_bvhs[i].get(), fcl::Transform3d::Identity());
+    }
+    c.best = std::min(c.best, d);
+    dist = std::min(dist, c.best);
+    return c.best <= 0;
+  });
+  return std::isfinite(context.best) ? context.best : std::numeric_limits<double>::infinity();
+}
+
+CollisionCounters CollisionWorld::counters() const {
+  CollisionCounters c;
+  c.checks = checks_.load(std::memory_order_relaxed);
+  c.collisions = collisions_.load(std::memory_order_relaxed);
+  c.clearance_queries = clearance_queries_.load(std::memory_order_relaxed);
+  c.hull_tests = hull_tests_.load(std::memory_order_relaxed);
+  c.exact_confirmations = exact_confirmations_.load(std::memory_order_relaxed);
+  return c;
+}
+
+void CollisionWorld::ResetCounters() {
+  checks_ = 0;
+  collisions_ = 0;
+  clearance_queries_ = 0;
+  hull_tests_ = 0;
+  exact_confirmations_ = 0;
+}
+
+}  // namespace acdplan::collision

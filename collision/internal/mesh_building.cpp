@@ -1,0 +1,272 @@
+#include "collision/internal/mesh_building.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/convex_hull_3.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <list>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+#include <utility>
+
+namespace acdplan::collision::internal {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+struct FaceInfo {
+  int nesting = -1;  // -1: not visited; odd: inside the polygon
+  bool inside() const { return nesting % 2 == 1; }
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+using Fbb = CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<Kernel, Fbb>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
+
+// Marks faces by nesting level (CGAL's "polygon with holes" triangulation example): flood fill
+// from the infinite face, crossing a constrained edge raises the level by one.
+void MarkDomains(Cdt& cdt) {
+  std::list<Cdt::Edge> border;
+  auto flood = [&](Cdt::Face_handle start, int level) {
+    if (start->info().nesting != -1) return;
+    std::list<Cdt::Face_handle> queue{start};
+    while (!queue.empty()) {
+      Cdt::Face_handle f = queue.front();
+      queue.pop_front();
+      if (f->info().nesting != -1) continue;
+      f->info().nesting = level;
+      for (int i = 0; i < 3; ++i) {
+        Cdt::Face_handle n = f->neighbor(i);
+        if (n->info().nesting != -1) continue;
+        if (cdt.is_constrained(Cdt::Edge(f, i))) {
+          border.push_back(Cdt::Edge(f, i));
+        } else {
+          queue.push_back(n);
+        }
+      }
+    }
+  };
+  flood(cdt.infinite_face(), 0);
+  while (!border.empty()) {
+    Cdt::Edge e = border.front();
+    border.pop_front();
+    Cdt::Face_handle n = e.first->neighbor(e.second);
+    if (n->info().nesting == -1) flood(n, e.first->info().nesting + 1);
+  }
+}
+
+void AddRingWalls(const acd::Ring2d& ring, int bottom0, int top0, int ring_offset,
+                  std::vector<Eigen::Vector3i>* tris) {
+  const int n = static_cast<int>(ring.size());
+  for (int i = 0; i < n; ++i) {
+    const int a = ring_offset + i, b = ring_offset + (i + 1) % n;
+    // Outward for a CCW outer ring and for a CW hole: the wall normal is e x z.
+    tris->emplace_back(bottom0 + a, bottom0 + b, top0 + b);
+    tris->emplace_back(bottom0 + a, top0 + b, top0 + a);
+  }
+}
+
+envs::TriangleMesh ToMesh(const std::vector<Eigen::Vector3d>& v,
+                          const std::vector<Eigen::Vector3i>& t) {
+  envs::TriangleMesh mesh;
+  mesh.vertices.resize(static_cast<Eigen::Index>(v.size()), 3);
+  for (size_t i = 0; i < v.size(); ++i) mesh.vertices.row(static_cast<Eigen::Index>(i)) = v[i];
+  mesh.triangles.resize(static_cast<Eigen::Index>(t.size()), 3);
+  for (size_t i = 0; i < t.size(); ++i) mesh.triangles.row(static_cast<Eigen::Index>(i)) = t[i];
+  return mesh;
+}
+
+}  // namespace
+
+envs::TriangleMesh ExtrudePolygon(const acd::Polygon2d& polygon, double z0, double z1) {
+  std::vector<const acd::Ring2d*> rings{&polygon.outer};
+  for (const acd::Ring2d& hole : polygon.holes) rings.push_back(&hole);
+  std::vector<Eigen::Vector2d> flat;
+  for (const acd::Ring2d* ring : rings) flat.insert(flat.end(), ring->begin(), ring->end());
+  const int n = static_cast<int>(flat.size());
+
+  std::vector<Eigen::Vector3d> v;
+  v.reserve(2 * static_cast<size_t>(n));
+  for (const auto& p : flat) v.emplace_back(p.x(), p.y(), z0);
+  for (const auto& p : flat) v.emplace_back(p.x(), p.y(), z1);
+  std::vector<Eigen::Vector3i> tris;
+
+  int offset = 0;
+  for (const acd::Ring2d* ring : rings) {
+    AddRingWalls(*ring, 0, n, offset, &tris);
+    offset += static_cast<int>(ring->size());
+  }
+
+  Cdt cdt;
+  offset = 0;
+  for (const acd::Ring2d* ring : rings) {
+    const int m = static_cast<int>(ring->size());
+    std::vector<Cdt::Vertex_handle> handles;
+    for (int i = 0; i < m; ++i) {
+      const auto& p = (*ring)[static_cast<size_t>(i)];
+      Cdt::Vertex_handle h = cdt.insert(Kernel::Point_2(p.x(), p.y()));
+      h->info() = offset + i;
+      handles.push_back(h);
+    }
+    for (int i = 0; i < m; ++i) cdt.insert_constraint(handles[i], handles[(i + 1) % m]);
+    offset += m;
+  }
+  MarkDomains(cdt);
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!f->info().inside()) continue;
+    const int a = f->vertex(0)->info(), b = f->vertex(1)->info(), c = f->vertex(2)->info();
+    tris.emplace_back(n + a, n + b, n + c);  // CDT faces are CCW: top cap faces +z
+    tris.emplace_back(a, c, b);              // bottom cap faces -z
+  }
+  return ToMesh(v, tris);
+}
+
+envs::TriangleMesh ExtrudeConvexRing(const acd::Ring2d& hull, double z0, double z1) {
+  const int n = static_cast<int>(hull.size());
+  std::vector<Eigen::Vector3d> v;
+  for (const auto& p : hull) v.emplace_back(p.x(), p.y(), z0);
+  for (const auto& p : hull) v.emplace_back(p.x(), p.y(), z1);
+  std::vector<Eigen::Vector3i> tris;
+  AddRingWalls(hull, 0, n, 0, &tris);
+  for (int i = 1; i + 1 < n; ++i) {
+    tris.emplace_back(n, n + i, n + i + 1);
+    tris.emplace_back(0, i + 1, i);
+  }
+  return ToMesh(v, tris);
+}
+
+envs::TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thickness) {
+  if (points.empty()) throw std::logic_error("ConvexHull3(): no points");
+  // Thicken a flat or degenerate set along its missing principal directions, so the hull is a
+  // solid (FCL's GJK and the half-space test both want a volume).
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const auto& p : points) cov += (p - mean) * (p - mean).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  const double largest = std::max(eig.eigenvalues()(2), 0.0);
+  std::vector<Kernel::Point_3> pts;
+  pts.reserve(points.size() * 2);
+  for (const auto& p : points) pts.emplace_back(p.x(), p.y(), p.z());
+  for (int axis = 0; axis < 3; ++axis) {
+    const double spread = std::sqrt(std::max(eig.eigenvalues()(axis), 0.0));
+    if (spread > 1e-9 * std::sqrt(largest) && largest > 0) continue;
+    const Eigen::Vector3d dir = eig.eigenvectors().col(axis) * thickness;
+    const size_t count = pts.size();
+    for (size_t i = 0; i < count; ++i) {
+      pts.emplace_back(pts[i].x() + dir.x(), pts[i].y() + dir.y(), pts[i].z() + dir.z());
+    }
+  }
+  CGAL::Surface_mesh<Kernel::Point_3> hull;
+  CGAL::convex_hull_3(pts.begin(), pts.end(), hull);
+  std::vector<Eigen::Vector3d> v;
+  std::map<CGAL::Surface_mesh<Kernel::Point_3>::Vertex_index, int> index;
+  for (auto vi : hull.vertices()) {
+    const auto& p = hull.point(vi);
+    index[vi] = static_cast<int>(v.size());
+    v.emplace_back(p.x(), p.y(), p.z());
+  }
+  std::vector<Eigen::Vector3i> tris;
+  for (auto f : hull.faces()) {
+    std::vector<int> ids;
+    for (auto vi : CGAL::vertices_around_face(hull.halfedge(f), hull)) ids.push_back(index[vi]);
+    for (size_t i = 1; i + 1 < ids.size(); ++i) tris.emplace_back(ids[0], ids[i], ids[i + 1]);
+  }
+  return ToMesh(v, tris);
+}
+
+Eigen::Matrix<double, Eigen::Dynamic, 4> HullPlanes(const envs::TriangleMesh& hull) {
+  std::vector<Eigen::Vector4d> planes;
+  for (Eigen::Index f = 0; f < hull.triangles.rows(); ++f) {
+    const Eigen::Vector3d a = hull.vertices.row(hull.triangles(f, 0));
+    const Eigen::Vector3d b = hull.vertices.row(hull.triangles(f, 1));
+    const Eigen::Vector3d c = hull.vertices.row(hull.triangles(f, 2));
+    Eigen::Vector3d n = (b - a).cross(c - a);
+    const double len = n.norm();
+    if (!(len > 0)) continue;  // a sliver face adds no constraint its neighbours lack
+    n /= len;
+    const double d = n.dot(a);
+    bool duplicate = false;
+    for (const auto& q : planes) {
+      if (q.head<3>().dot(n) > 1 - 1e-12 && std::abs(q(3) - d) <= 1e-12 * (1 + std::abs(d))) {
+        duplicate = true;
+        break;
+      }
+    }
+    if (!duplicate) planes.emplace_back(n.x(), n.y(), n.z(), d);
+  }
+  Eigen::Matrix<double, Eigen::Dynamic, 4> out(static_cast<Eigen::Index>(planes.size()), 4);
+  for (size_t i = 0; i < planes.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = planes[i];
+  return out;
+}
+
+std::vector<envs::TriangleMesh> ConnectedComponents(const envs::TriangleMesh& mesh) {
+  const int nv = static_cast<int>(mesh.vertices.rows());
+  std::vector<int> parent(static_cast<size_t>(nv));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[static_cast<size_t>(x)] != x) {
+      parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
+      x = parent[static_cast<size_t>(x)];
+    }
+    return x;
+  };
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    for (int k = 1; k < 3; ++k) {
+      const int a = find(mesh.triangles(f, 0)), b = find(mesh.triangles(f, k));
+      if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
+    }
+  }
+  std::map<int, size_t> component_of_root;
+  std::vector<std::vector<Eigen::Vector3i>> tris;
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    const int root = find(mesh.triangles(f, 0));
+    auto [it, inserted] = component_of_root.emplace(root, tris.size());
+    if (inserted) tris.emplace_back();
+    tris[it->second].push_back(mesh.triangles.row(f).transpose());
+  }
+  std::vector<envs::TriangleMesh> out;
+  for (const auto& component : tris) {
+    std::map<int, int> remap;
+    std::vector<Eigen::Vector3d> v;
+    std::vector<Eigen::Vector3i> t;
+    for (const Eigen::Vector3i& tri : component) {
+      Eigen::Vector3i r;
+      for (int k = 0; k < 3; ++k) {
+        auto [it, inserted] = remap.emplace(tri(k), static_cast<int>(v.size()));
+        if (inserted) v.push_back(mesh.vertices.row(tri(k)).transpose());
+        r(k) = it->second;
+      }
+      t.push_back(r);
+    }
+    out.push_back(ToMesh(v, t));
+  }
+  return out;
+}
+
+bool IsClosedMesh(const envs::TriangleMesh& mesh, int* bad_edges) {
+  std::map<std::pair<int, int>, int> uses;
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      int a = mesh.triangles(f, k), b = mesh.triangles(f, (k + 1) % 3);
+      if (a > b) std::swap(a, b);
+      ++uses[{a, b}];
+    }
+  }
+  int bad = 0;
+  for (const auto& [edge, count] : uses) bad += count != 2;
+  if (bad_edges) *bad_edges = bad;
+  return bad == 0 && mesh.triangles.rows() > 0;
+}
+
+}  // namespace acdplan::collision::internal

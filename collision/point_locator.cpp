@@ -1,0 +1,48 @@
+#include "collision/point_locator.h"
+
+#include <optional>
+
+#include "collision/internal/hull_tree.h"
+#include "collision/internal/solid_locator.h"
+
+namespace acdplan::collision {
+
+std::string LocateMethodName(LocateMethod method) {
+  return method == LocateMethod::kExact ? "exact" : "hulls";
+}
+
+struct PointLocator::Impl {
+  std::optional<internal::ExactObstacleLocator> exact;
+  internal::HullTree hulls;
+};
+
+PointLocator::PointLocator(std::shared_ptr<const ObstacleSet> obstacles, LocateMethod method)
+    : obstacles_(std::move(obstacles)), method_(method), impl_(std::make_unique<Impl>()) {
+  if (method_ == LocateMethod::kExact) {
+    impl_->exact.emplace(*obstacles_, /*skip_open=*/false);
+  } else {
+    std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>> planes;
+    std::vector<Eigen::AlignedBox3d> boxes;
+    for (const ObstaclePiece& piece : obstacles_->pieces) {
+      planes.push_back(piece.planes);
+      boxes.push_back(piece.box);
+    }
+    // Slack: a few ulps of the world's size, so a point of a component on its hull's boundary
+    // is never rounded outside the hull (the hull test must stay conservative).
+    const double slack = 1e-12 * (1 + obstacles_->bounds.sizes().norm() +
+                                  obstacles_->bounds.max().cwiseAbs().maxCoeff() +
+                                  obstacles_->bounds.min().cwiseAbs().maxCoeff());
+    impl_->hulls = internal::HullTree(planes, boxes, slack);
+  }
+}
+
+PointLocator::~PointLocator() = default;
+PointLocator::PointLocator(PointLocator&&) noexcept = default;
+PointLocator& PointLocator::operator=(PointLocator&&) noexcept = default;
+
+bool PointLocator::Inside(const Eigen::Vector3d& p) const {
+  if (method_ == LocateMethod::kExact) return impl_->exact->Inside(p);
+  return impl_->hulls.AnyContains(p);
+}
+
+}  // namespace acdplan::collision
