@@ -18,6 +18,7 @@
 #include "acd/input_error.h"
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
+#include "collision/bench_collision.h"
 
 namespace {
 
@@ -158,6 +159,19 @@ int RunDecompose(const DecomposeArguments& args) {
   return 0;
 }
 
+
+/// `acdplan bench-collision`: collision/bench_collision.h, a Markdown table on stdout.
+int RunBenchCollision(const acdplan::collision::BenchCollisionOptions& options,
+                      const std::string& json_path) {
+  const auto rows = acdplan::collision::BenchCollision(options, &std::cerr);
+  std::cout << acdplan::collision::BenchCollisionMarkdown(rows);
+  if (!json_path.empty()) {
+    acd::WriteFileAtomically(json_path, acdplan::collision::BenchCollisionJson(rows, options));
+    std::printf("wrote %s\n", json_path.c_str());
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -204,6 +218,24 @@ int main(int argc, char** argv) {
                       "Check the result (coverage, disjointness, concavity); on failure "
                       "list the problems, write nothing and exit 1");
 
+  acdplan::collision::BenchCollisionOptions bench_options;
+  bench_options.mesh_dir = ACDPLAN_BENCH_MESH_DIR;
+  std::string bench_json;
+  CLI::App* bench_collision = app.add_subcommand(
+      "bench-collision",
+      "Collision checks per second for bvh, hulls and hulls+exact and point location exact vs "
+      "hulls, on the built-in 2D worlds and the meshes of --mesh-dir (collision/bench_collision.h)");
+  bench_collision->add_option("--json", bench_json, "Write the results as JSON here");
+  bench_collision->add_option("--poses", bench_options.poses, "Random poses per world and robot")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  bench_collision->add_option("--points", bench_options.points, "Random points per world")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  bench_collision->add_option("--seed", bench_options.seed, "Seed of worlds and poses")
+      ->capture_default_str();
+  bench_collision->add_option("--mesh-dir", bench_options.mesh_dir,
+                              "Folder of .obj meshes used as 3D obstacles; '' to skip 3D")
+      ->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -216,6 +248,7 @@ int main(int argc, char** argv) {
 
   try {
     if (decompose->parsed()) return RunDecompose(args);
+    if (bench_collision->parsed()) return RunBenchCollision(bench_options, bench_json);
     return 0;
   } catch (const acd::InputError& error) {
     std::cerr << "acdplan: error: " << error.what() << "\n";

@@ -1,0 +1,264 @@
+#include "collision/bench_collision.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <random>
+
+#include "acd/input_error.h"
+#include "collision/collision_world.h"
+#include "collision/point_locator.h"
+#include "envs/generators.h"
+#include "envs/mesh_loader.h"
+
+namespace acdplan::collision {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+template <class Pose>
+void TimeModes(const CollisionWorld& world, const std::vector<Pose>& poses,
+               BenchCollisionRow* row) {
+  std::vector<char> bvh(poses.size()), hulls(poses.size()), exact(poses.size());
+  auto run = [&](CollisionMode mode, std::vector<char>* out) {
+    const Clock::time_point start = Clock::now();
+    for (size_t i = 0; i < poses.size(); ++i) (*out)[i] = world.IsValid(poses[i], mode);
+    return static_cast<double>(poses.size()) / Seconds(start);
+  };
+  row->poses = static_cast<int>(poses.size());
+  row->bvh_checks_per_s = run(CollisionMode::kBvh, &bvh);
+  row->hulls_checks_per_s = run(CollisionMode::kHulls, &hulls);
+  row->hulls_exact_checks_per_s = run(CollisionMode::kHullsExact, &exact);
+  int free = 0, rejected = 0, collisions = 0;
+  for (size_t i = 0; i < poses.size(); ++i) {
+    collisions += !bvh[i];
+    free += bvh[i];
+    rejected += bvh[i] && !hulls[i];
+    row->hulls_misses += hulls[i] && !bvh[i];
+    row->hulls_exact_mismatches += exact[i] != bvh[i];
+  }
+  row->collision_rate = static_cast<double>(collisions) / static_cast<double>(poses.size());
+  row->hulls_false_positive_rate = free > 0 ? static_cast<double>(rejected) / free : 0.0;
+}
+
+// Fills the locate_* fields; exact may be unavailable (open mesh): NaN and a note.
+void TimeLocation(const std::shared_ptr<const ObstacleSet>& set,
+                  const std::vector<Eigen::Vector3d>& points, BenchCollisionRow* row) {
+  const PointLocator hulls(set, LocateMethod::kHulls);
+  std::vector<char> h(points.size()), e(points.size());
+  Clock::time_point start = Clock::now();
+  for (size_t i = 0; i < points.size(); ++i) h[i] = hulls.Inside(points[i]);
+  row->locate_hulls_points_per_s = static_cast<double>(points.size()) / Seconds(start);
+  std::unique_ptr<PointLocator> exact;
+  try {
+    exact = std::make_unique<PointLocator>(set, LocateMethod::kExact);
+  } catch (const acd::InputError& error) {
+    row->locate_exact_points_per_s = kNaN;
+    row->locate_hulls_error_rate = kNaN;
+    row->note = error.what();
+    return;
+  }
+  start = Clock::now();
+  for (size_t i = 0; i < points.size(); ++i) e[i] = exact->Inside(points[i]);
+  row->locate_exact_points_per_s = static_cast<double>(points.size()) / Seconds(start);
+  int wrong = 0;
+  for (size_t i = 0; i < points.size(); ++i) wrong += h[i] != e[i];
+  row->locate_hulls_error_rate = static_cast<double>(wrong) / static_cast<double>(points.size());
+}
+
+std::vector<Eigen::Vector3d> RandomPoints(const Eigen::AlignedBox3d& box, int count, bool flat,
+                                          std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(static_cast<size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    Eigen::Vector3d p = box.min() + (box.sizes().array() *
+                                     Eigen::Array3d(u(rng), u(rng), u(rng))).matrix();
+    if (flat) p.z() = 0;
+    points.push_back(p);
+  }
+  return points;
+}
+
+envs::TriangleMesh Cube(double side) {
+  envs::TriangleMesh mesh;
+  mesh.vertices.resize(8, 3);
+  for (int i = 0; i < 8; ++i) {
+    mesh.vertices.row(i) << ((i & 1) ? 0.5 : -0.5) * side, ((i & 2) ? 0.5 : -0.5) * side,
+        ((i & 4) ? 0.5 : -0.5) * side;
+  }
+  mesh.triangles.resize(12, 3);
+  mesh.triangles << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4,
+      2, 2, 4, 6, 1, 3, 5, 3, 7, 5;
+  return mesh;
+}
+
+std::string Format(double value, const char* format) {
+  if (std::isnan(value)) return "n/a";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, value);
+  return buffer;
+}
+
+}  // namespace
+
+std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& options,
+                                              std::ostream* progress) {
+  if (options.poses <= 0 || options.points <= 0) {
+    throw acd::InputError("BenchCollision(): poses and points must be > 0");
+  }
+  std::vector<std::string> mesh_files;
+  if (!options.mesh_dir.empty()) {
+    namespace fs = std::filesystem;
+    if (!fs::is_directory(options.mesh_dir)) {
+      throw acd::InputError("BenchCollision(): " + options.mesh_dir + ": not a folder");
+    }
+    if (options.meshes.empty()) {
+      for (const auto& entry : fs::directory_iterator(options.mesh_dir)) {
+        if (entry.path().extension() == ".obj") mesh_files.push_back(entry.path().filename());
+      }
+      std::sort(mesh_files.begin(), mesh_files.end());
+    } else {
+      mesh_files = options.meshes;
+    }
+  }
+
+  std::vector<BenchCollisionRow> rows;
+  std::mt19937_64 rng(options.seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  ObstacleSetOptions set_options;
+  set_options.tau = options.tau;
+
+  for (const std::string& name : envs::GeneratorNames()) {
+    const envs::Workspace2d workspace = envs::GenerateWorkspace2d(name, options.seed);
+    auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace, set_options));
+    std::vector<Eigen::Isometry2d> poses;
+    for (int i = 0; i < options.poses; ++i) {
+      Eigen::Isometry2d pose = Eigen::Isometry2d::Identity();
+      pose.translation() = workspace.bounds.min() +
+                           (workspace.bounds.sizes().array() * Eigen::Array2d(u(rng), u(rng)))
+                               .matrix();
+      pose.linear() = Eigen::Rotation2Dd(2 * M_PI * u(rng) - M_PI).toRotationMatrix();
+      poses.push_back(pose);
+    }
+    BenchCollisionRow location;
+    TimeLocation(set, RandomPoints(set->bounds, options.points, true, rng), &location);
+    acd::Polygon2d outline;
+    outline.outer = {{-0.3, -0.2}, {0.3, -0.2}, {0.3, 0.0}, {-0.1, 0.0}, {-0.1, 0.2}, {-0.3, 0.2}};
+    for (const envs::Robot& robot : {envs::Robot::Disc(0.2), envs::Robot::Polygon(outline)}) {
+      BenchCollisionRow row = location;
+      row.world = name + "/" + envs::ShapeName(robot.shape);
+      row.hulls_source = set->hulls_source;
+      row.triangles = TriangleCount(*set);
+      row.hulls = static_cast<int>(set->pieces.size());
+      const CollisionWorld world(set, robot);
+      TimeModes(world, poses, &row);
+      if (progress) *progress << "bench-collision: " << row.world << " done\n" << std::flush;
+      rows.push_back(row);
+    }
+  }
+
+  for (const std::string& file : mesh_files) {
+    BenchCollisionRow row;
+    const std::string path = (std::filesystem::path(options.mesh_dir) / file).string();
+    envs::Workspace3d workspace;
+    workspace.obstacles.push_back(envs::ReadMesh(path));
+    const Eigen::AlignedBox3d box = envs::BoundingBox(workspace.obstacles[0]);
+    workspace.bounds =
+        Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
+    auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));
+    row.world = std::filesystem::path(file).stem().string() + "/mesh";
+    row.hulls_source = set->hulls_source;
+    row.triangles = TriangleCount(*set);
+    row.hulls = static_cast<int>(set->pieces.size());
+    std::normal_distribution<double> n(0.0, 1.0);
+    std::vector<Eigen::Isometry3d> poses;
+    for (int i = 0; i < options.poses; ++i) {
+      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+      pose.translation() = workspace.bounds.min() +
+                           (workspace.bounds.sizes().array() *
+                            Eigen::Array3d(u(rng), u(rng), u(rng)))
+                               .matrix();
+      pose.linear() = Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized()
+                          .toRotationMatrix();
+      poses.push_back(pose);
+    }
+    const CollisionWorld world(set, envs::Robot::Mesh(Cube(0.05 * box.sizes().norm())));
+    TimeModes(world, poses, &row);
+    TimeLocation(set, RandomPoints(workspace.bounds, options.points, false, rng), &row);
+    if (progress) *progress << "bench-collision: " << row.world << " done\n" << std::flush;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows) {
+  std::string out =
+      "| world | hulls | bvh checks/s | hulls checks/s | (x bvh) | hulls+exact checks/s | (x bvh) "
+      "| hulls FP rate | mismatches | exact pts/s | hull pts/s | (x exact) | hull error |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const BenchCollisionRow& r : rows) {
+    out += "| " + r.world + " | " + std::to_string(r.hulls) + " | " +
+           Format(r.bvh_checks_per_s, "%.0f") + " | " + Format(r.hulls_checks_per_s, "%.0f") +
+           " | " + Format(r.hulls_checks_per_s / r.bvh_checks_per_s, "%.2f") + " | " +
+           Format(r.hulls_exact_checks_per_s, "%.0f") + " | " +
+           Format(r.hulls_exact_checks_per_s / r.bvh_checks_per_s, "%.2f") + " | " +
+           Format(100 * r.hulls_false_positive_rate, "%.2f%%") + " | " +
+           std::to_string(r.hulls_exact_mismatches) + " | " +
+           Format(r.locate_exact_points_per_s, "%.0f") + " | " +
+           Format(r.locate_hulls_points_per_s, "%.0f") + " | " +
+           Format(r.locate_hulls_points_per_s / r.locate_exact_points_per_s, "%.1f") + " | " +
+           Format(100 * r.locate_hulls_error_rate, "%.2f%%") + " |\n";
+  }
+  out +=
+      "\nTargets: hulls >= 3x bvh; hulls+exact >= 1.5x bvh with 0 mismatches; hull point "
+      "location >= 10x exact with <= 1% error. n/a: exact point location needs a closed mesh.\n";
+  return out;
+}
+
+std::string BenchCollisionJson(const std::vector<BenchCollisionRow>& rows,
+                               const BenchCollisionOptions& options) {
+  auto number = [](double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); };
+  nlohmann::json worlds = nlohmann::json::array();
+  for (const BenchCollisionRow& r : rows) {
+    nlohmann::json w;
+    w["world"] = r.world;
+    w["hulls_source"] = r.hulls_source;
+    w["triangles"] = r.triangles;
+    w["hulls"] = r.hulls;
+    w["poses"] = r.poses;
+    w["bvh_checks_per_s"] = number(r.bvh_checks_per_s);
+    w["hulls_checks_per_s"] = number(r.hulls_checks_per_s);
+    w["hulls_exact_checks_per_s"] = number(r.hulls_exact_checks_per_s);
+    w["collision_rate"] = number(r.collision_rate);
+    w["hulls_false_positive_rate"] = number(r.hulls_false_positive_rate);
+    w["hulls_misses"] = r.hulls_misses;
+    w["hulls_exact_mismatches"] = r.hulls_exact_mismatches;
+    w["locate_exact_points_per_s"] = number(r.locate_exact_points_per_s);
+    w["locate_hulls_points_per_s"] = number(r.locate_hulls_points_per_s);
+    w["locate_hulls_error_rate"] = number(r.locate_hulls_error_rate);
+    if (!r.note.empty()) w["note"] = r.note;
+    worlds.push_back(w);
+  }
+  nlohmann::json doc;
+  doc["format"] = "acdplan.bench_collision/1";
+  doc["options"] = {{"poses", options.poses},   {"points", options.points},
+                    {"seed", options.seed},     {"tau", options.tau},
+                    {"mesh_dir", options.mesh_dir}};
+  doc["worlds"] = worlds;
+  return doc.dump(2) + "\n";
+}
+
+}  // namespace acdplan::collision
