@@ -1,0 +1,51 @@
+#pragma once
+// AcdValidStateSampler: PRM_ACD's sampling (dissertation Ch. VI.C, Algorithm 10) as an OMPL
+// valid-state sampler -- the robot placed around ACD component centroids and openings, kept
+// if collision free.
+
+#include <cstdint>
+#include <memory>
+#include <ompl/base/ValidStateSampler.h>
+
+#include "acd/decomposition2d.h"
+#include "planning/acd_sampler_options.h"
+#include "planning/acd_state_sampler.h"
+
+namespace acdplan::planning {
+
+/// Draws candidates from AcdStateSampler's distribution and returns the first valid one
+/// (at most `options.max_attempts` candidates per call; OMPL's setNrAttempts() changes it).
+///
+/// Algorithm 10 generates k samples around every centroid and opening in turn; this sampler
+/// draws the target at random with the weights of AcdSamplerOptions instead, so any sample
+/// budget works, the distribution does not depend on how many samples were taken before, and
+/// the uniform share keeps it probabilistically complete.
+///
+/// Thread safety and spaces: as AcdStateSampler (own seeded engine, no global random state).
+class AcdValidStateSampler : public ompl::base::ValidStateSampler {
+ public:
+  /// @throws acd::InputError if `options` are out of range; std::invalid_argument if the
+  ///         space of `si` is not supported.
+  AcdValidStateSampler(const ompl::base::SpaceInformation* si,
+                       const acd::Decomposition2d& decomposition,
+                       const AcdSamplerOptions& options = {});
+  /// Shares precomputed targets (used by InstallAcdSamplers()); `seed` seeds this instance.
+  AcdValidStateSampler(const ompl::base::SpaceInformation* si,
+                       std::shared_ptr<const internal::AcdTargets> targets, std::uint64_t seed,
+                       int max_attempts);
+
+  /// A valid state from the ACD distribution; false if none was found in the attempts.
+  bool sample(ompl::base::State* state) override;
+  /// A valid state within `distance` of `near` (see AcdStateSampler::sampleUniformNear()).
+  bool sampleNear(ompl::base::State* state, const ompl::base::State* near,
+                  double distance) override;
+
+  /// Candidates drawn so far (valid or not).
+  std::uint64_t candidates() const { return candidates_; }
+
+ private:
+  AcdStateSampler sampler_;
+  std::uint64_t candidates_ = 0;
+};
+
+}  // namespace acdplan::planning

@@ -1,0 +1,105 @@
+#include "planning/internal/acd_targets.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "acd/input_error.h"
+
+namespace acdplan::planning::internal {
+
+AcdTargets::AcdTargets(const acd::Decomposition2d& decomposition, const AcdSamplerOptions& options)
+    : options_(options) {
+  CheckAcdSamplerOptions(options);
+  for (const acd::Component2d& component : decomposition.components) {
+    const double area = std::abs(acd::Area(component.polygon));
+    if (!(area > 0)) continue;
+    AcdTarget target;
+    target.position = component.centroid;
+    target.sigma = options.centroid_spread * std::sqrt(area);
+    target.weight = 1.0;
+    targets_.push_back(target);
+  }
+  double total_length = 0;
+  int count = 0;
+  for (const acd::Opening2d& opening : decomposition.openings) {
+    const double length = (opening.b - opening.a).norm();
+    if (length > 0) {
+      total_length += length;
+      ++count;
+    }
+  }
+  const double mean_length = count > 0 ? total_length / count : 0.0;
+  for (const acd::Opening2d& opening : decomposition.openings) {
+    const Eigen::Vector2d d = opening.b - opening.a;
+    const double length = d.norm();
+    if (!(length > 0) || options.opening_weight == 0) continue;
+    AcdTarget target;
+    target.position = 0.5 * (opening.a + opening.b);
+    target.sigma = options.opening_spread * length;
+    // Narrowness: a short opening (relative to the others) is a narrow passage, where uniform
+    // sampling is weakest (Ch. VI.C); capped so a sliver cut cannot take every sample.
+    target.weight = options.opening_weight * std::min(mean_length / length, options.max_narrowness);
+    target.opening = true;
+    target.across = std::atan2(d.y(), d.x()) + M_PI / 2;
+    targets_.push_back(target);
+  }
+  double sum = 0;
+  for (const AcdTarget& target : targets_) {
+    sum += target.weight;
+    cumulative_.push_back(sum);
+  }
+}
+
+AcdDraw AcdTargets::DrawAround(std::mt19937_64& rng, const AcdTarget& target) const {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  AcdDraw draw;
+  draw.uniform = false;
+  draw.position = target.position + target.sigma * Eigen::Vector2d(normal(rng), normal(rng));
+  if (target.opening && options_.orientation == AcdOrientation::kAligned) {
+    std::uniform_int_distribution<int> flip(0, 1);
+    draw.has_yaw = true;
+    double yaw = target.across - options_.long_axis + (flip(rng) ? M_PI : 0.0) +
+                 options_.aligned_jitter * normal(rng);
+    draw.yaw = std::remainder(yaw, 2 * M_PI);
+  }
+  return draw;
+}
+
+AcdDraw AcdTargets::Draw(std::mt19937_64& rng) const {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  if (targets_.empty() || unit(rng) < options_.uniform_share) return AcdDraw{};
+  const double u = unit(rng) * cumulative_.back();
+  const size_t index = std::min<size_t>(
+      std::upper_bound(cumulative_.begin(), cumulative_.end(), u) - cumulative_.begin(),
+      targets_.size() - 1);
+  return DrawAround(rng, targets_[index]);
+}
+
+AcdDraw AcdTargets::DrawNear(std::mt19937_64& rng, const Eigen::Vector2d& near,
+                             double radius) const {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  if (targets_.empty() || unit(rng) < options_.uniform_share) return AcdDraw{};
+  double sum = 0;
+  std::vector<std::pair<double, size_t>> candidates;
+  for (size_t i = 0; i < targets_.size(); ++i) {
+    if ((targets_[i].position - near).norm() <= radius) {
+      sum += targets_[i].weight;
+      candidates.emplace_back(sum, i);
+    }
+  }
+  if (candidates.empty() || !(sum > 0)) return AcdDraw{};
+  const double u = unit(rng) * sum;
+  for (const auto& [prefix, i] : candidates) {
+    if (u < prefix) return DrawAround(rng, targets_[i]);
+  }
+  return DrawAround(rng, targets_[candidates.back().second]);
+}
+
+std::uint64_t DeriveSeed(std::uint64_t seed, std::uint64_t index) {
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ULL * (index + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+}  // namespace acdplan::planning::internal
