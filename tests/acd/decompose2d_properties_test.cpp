@@ -1,0 +1,433 @@
+// Property tests of Decompose2d() on the whole acd2d corpus: every .poly file under
+// ACDPLAN_SHARED_DATA/polygons/acd2d (found at run time) x the four concavity measures x
+// tau_rel in {0, 0.005, 0.01, 0.05, 0.1}; each decomposition must pass CheckDecomposition()
+// (components tile the input, are simple, and are tau-convex under the measure used).
+// The two files the corpus ships broken must be rejected with their documented messages.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "acd/check_decomposition.h"
+#include "acd/concavity.h"
+#include "acd/decompose2d.h"
+#include "acd/input_error.h"
+#include "acd/prepare_polygon.h"
+#include "acd/read_polygons.h"
+
+namespace acdplan::acd {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+const fs::path kAcd2d = fs::path(ACDPLAN_SHARED_DATA) / "polygons" / "acd2d";
+
+constexpr double kTauRel[] = {0.0, 0.005, 0.01, 0.05, 0.1};
+constexpr ConcavityMeasure kMeasures[] = {ConcavityMeasure::kStraightLine,
+                                          ConcavityMeasure::kShortestPath,
+                                          ConcavityMeasure::kHybrid1, ConcavityMeasure::kHybrid2};
+
+// Files the corpus ships with a defect; each has its own test below, not a property case.
+bool IsKnownBroken(const std::string& name) {
+  return name == "bird.poly" || name == "simple5.poly";
+}
+
+struct PropertyCase {
+  std::string path;      // Absolute path of the .poly file.
+  std::string relative;  // Path under acd2d, for messages.
+  ConcavityMeasure measure;
+  double tau_rel;
+};
+
+// GoogleTest prints the parameter of a failed case with this.
+void PrintTo(const PropertyCase& c, std::ostream* os) {
+  *os << c.relative << " " << ToString(c.measure) << " tau_rel " << c.tau_rel;
+}
+
+std::vector<std::string> CorpusFiles() {
+  std::vector<std::string> files;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(kAcd2d)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".poly") {
+      files.push_back(entry.path().string());
+    }
+  }
+  std::sort(files.begin(), files.end());  // Directory order is unspecified; names must be stable.
+  return files;
+}
+
+// Every corpus file (but the two broken ones) x measure x tau_rel: 52 x 4 x 5 = 1040 cases.
+// All of them run under the sanitizers too: the 28 slowest (the 5,000-10,000-vertex files at
+// tau_rel 0) take 35 s together with ASan+UBSan, the whole suite about 2.5 minutes.
+std::vector<PropertyCase> Cases() {
+  std::vector<PropertyCase> cases;
+  for (const std::string& path : CorpusFiles()) {
+    if (IsKnownBroken(fs::path(path).filename().string())) continue;
+    for (ConcavityMeasure measure : kMeasures) {
+      for (double tau_rel : kTauRel) {
+        cases.push_back({path, fs::relative(path, kAcd2d).string(), measure, tau_rel});
+      }
+    }
+  }
+  return cases;
+}
+
+// "nazca_nazca_monkey_sp_tau0_005": letters, digits and '_' only (GoogleTest's rule).
+std::string CaseName(const ::testing::TestParamInfo<PropertyCase>& info) {
+  std::string name = info.param.relative;
+  name = name.substr(0, name.size() - std::string(".poly").size());
+  char tau[32];
+  std::snprintf(tau, sizeof(tau), "%g", info.param.tau_rel);
+  name += "_" + ToString(info.param.measure) + "_tau" + tau;
+  for (char& ch : name) {
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  }
+  return name;
+}
+
+class Decompose2dPropertyTest : public ::testing::TestWithParam<PropertyCase> {};
+
+TEST_P(Decompose2dPropertyTest, SucceedsAndPassesCheckDecomposition) {
+  const PropertyCase& c = GetParam();
+  std::vector<double> radii;
+  const std::vector<Polygon2d> polygons = ReadPolygons(c.path, &radii);
+  ASSERT_FALSE(polygons.empty());
+  // One tau for the whole file, relative to its largest polygon (as `acdplan decompose
+  // --tau-rel` does), so a small island next to a large polygon is judged on the same scale.
+  const double radius = *std::max_element(radii.begin(), radii.end());
+  Decompose2dOptions options;
+  options.measure = c.measure;
+  options.tau = c.tau_rel * radius;
+  SCOPED_TRACE(c.relative + " measure " + ToString(c.measure) + " tau_rel " +
+               std::to_string(c.tau_rel) + " tau " + std::to_string(options.tau));
+
+  Decomposition2d decomposition;
+  try {
+    decomposition = Decompose2d(polygons, options);
+  } catch (const std::exception& error) {
+    FAIL() << "Decompose2d threw: " << error.what();
+  }
+  ASSERT_FALSE(decomposition.components.empty());
+  EXPECT_EQ(decomposition.stats.components, static_cast<int>(decomposition.components.size()));
+  EXPECT_EQ(decomposition.roots.size(), polygons.size());
+  if (c.tau_rel == 0.0) {
+    EXPECT_EQ(decomposition.stats.max_concavity, 0.0);
+  }
+
+  const DecompositionCheck check = CheckDecomposition(polygons, decomposition);
+  std::string problems;
+  for (const std::string& line : check.problems) problems += "\n  " + line;
+  EXPECT_TRUE(check.ok()) << check.problems.size() << " problem(s):" << problems;
+}
+
+INSTANTIATE_TEST_SUITE_P(Acd2dCorpus, Decompose2dPropertyTest, ::testing::ValuesIn(Cases()),
+                         CaseName);
+
+TEST(Decompose2dCorpusTest, CorpusIsComplete) {
+  // 54 files, two of them broken: 52 x 4 measures x 5 tau values = 1040 property cases.
+  EXPECT_EQ(CorpusFiles().size(), 54u);
+  EXPECT_EQ(Cases().size(), 1040u);
+}
+
+std::string ErrorOf(const std::string& path) {
+  try {
+    ReadPolygons(path);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(Decompose2dCorpusTest, BirdIsRejectedAtLine47) {
+  // Line 47 holds "-6.64248.788605": two numbers run together.
+  EXPECT_THAT(ErrorOf((kAcd2d / "bird.poly").string()),
+              HasSubstr("bird.poly:47: malformed number '-6.64248.788605'"));
+}
+
+TEST(Decompose2dCorpusTest, Simple5IsRejectedForItsChainCount) {
+  // Declares 1 chain but holds 4 (hole3.poly's outer ring and holes).
+  EXPECT_THAT(ErrorOf((kAcd2d / "simple5.poly").string()),
+              HasSubstr("simple5.poly:380: unexpected '40' after the 1 chain(s) declared on "
+                        "line 1"));
+}
+
+// --- Behaviour of Decompose2d() on small inline fixtures and the tree it returns. ---
+
+std::string Problems(const DecompositionCheck& check) {
+  std::string all;
+  for (const std::string& line : check.problems) all += "\n  " + line;
+  return all;
+}
+
+Polygon2d Prepared(const Polygon2d& raw) { return PreparePolygon(raw, "fixture"); }
+
+// A comb: five teeth, four notches.
+Polygon2d Comb() {
+  return Prepared({{{0, 0}, {9, 0}, {9, 3}, {8, 3}, {8, 1}, {7, 1}, {7, 3}, {6, 3}, {6, 1}, {5, 1},
+                    {5, 3}, {4, 3}, {4, 1}, {3, 1}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}},
+                   {}});
+}
+
+Polygon2d LShape() { return Prepared({{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {}}); }
+
+Polygon2d SquareWithHole() {
+  return Prepared({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{{1, 1}, {1, 3}, {3, 3}, {3, 1}}}});
+}
+
+std::string OptionsError(const Decompose2dOptions& options) {
+  try {
+    Decompose2d(LShape(), options);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(Decompose2dTest, DefaultOptionsGiveConvexPieces) {
+  const Polygon2d comb = Comb();
+  const Decomposition2d d = Decompose2d(comb);
+  EXPECT_EQ(d.tau, 0.0);
+  EXPECT_EQ(d.measure, ConcavityMeasure::kShortestPath);
+  EXPECT_GE(d.components.size(), 5u);  // At least one piece per tooth.
+  for (const Component2d& c : d.components) {
+    EXPECT_EQ(CountNotches(c.polygon), 0);
+    EXPECT_EQ(c.concavity, 0.0);
+    EXPECT_TRUE(c.polygon.holes.empty());
+  }
+  EXPECT_EQ(d.stats.notches, 8);  // Two per gap between teeth.
+  EXPECT_EQ(d.stats.max_concavity, 0.0);
+  const DecompositionCheck check = CheckDecomposition({comb}, d);
+  EXPECT_TRUE(check.ok()) << Problems(check);
+}
+
+TEST(Decompose2dTest, LShapeAtTauZeroGivesTwoPiecesAndOneOpening) {
+  const Decomposition2d d = Decompose2d(LShape());
+  ASSERT_EQ(d.components.size(), 2u);
+  ASSERT_EQ(d.openings.size(), 1u);
+  const Opening2d& opening = d.openings[0];
+  EXPECT_EQ(opening.component_a, 0);
+  EXPECT_EQ(opening.component_b, 1);
+  // The opening runs from the notch (1, 1) across the piece.
+  EXPECT_TRUE(opening.a.isApprox(Point2d(1, 1)) || opening.b.isApprox(Point2d(1, 1)))
+      << opening.a.transpose() << " - " << opening.b.transpose();
+  EXPECT_NEAR(Area(d.components[0].polygon) + Area(d.components[1].polygon), 3.0, 1e-12);
+  EXPECT_TRUE(CheckDecomposition({LShape()}, d).ok());
+}
+
+TEST(Decompose2dTest, SquareIsOneComponent) {
+  const Polygon2d square = Prepared({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}});
+  const Decomposition2d d = Decompose2d(square);
+  ASSERT_EQ(d.components.size(), 1u);
+  EXPECT_EQ(d.components[0].concavity, 0.0);
+  EXPECT_TRUE(d.openings.empty());
+  EXPECT_EQ(d.tree.size(), 1u);
+  EXPECT_EQ(d.stats.convexity, 1.0);
+  EXPECT_TRUE(d.components[0].centroid.isApprox(Point2d(0.5, 0.5)));
+}
+
+TEST(Decompose2dTest, HoleAtTauZeroIsResolvedIntoConvexPieces) {
+  const Polygon2d polygon = SquareWithHole();
+  const Decomposition2d d = Decompose2d(polygon);
+  EXPECT_GE(d.components.size(), 2u);  // A ring cannot be one convex piece.
+  for (const Component2d& c : d.components) {
+    EXPECT_TRUE(c.polygon.holes.empty());
+    EXPECT_EQ(CountNotches(c.polygon), 0);
+  }
+  // The first split cuts the hole open with two cuts (p and cw(p), Eqn. 4.2).
+  ASSERT_FALSE(d.tree.empty());
+  EXPECT_EQ(d.tree[d.roots[0]].cuts.size(), 2u);
+  const DecompositionCheck check = CheckDecomposition({polygon}, d);
+  EXPECT_TRUE(check.ok()) << Problems(check);
+}
+
+TEST(Decompose2dTest, LargeTauKeepsTheHoleInOneComponent) {
+  const Polygon2d polygon = SquareWithHole();
+  Decompose2dOptions options;
+  options.tau = 1e3;  // Far above any concavity of a 4 x 4 square.
+  const Decomposition2d d = Decompose2d(polygon, options);
+  ASSERT_EQ(d.components.size(), 1u);
+  ASSERT_EQ(d.components[0].polygon.holes.size(), 1u);
+  EXPECT_GT(d.components[0].concavity, 0.0);  // A hole has positive concavity (Eqn. 4.2).
+  EXPECT_LE(d.components[0].concavity, options.tau);
+  EXPECT_NEAR(Area(d.components[0].polygon), 12.0, 1e-12);
+  EXPECT_TRUE(d.openings.empty());
+  const DecompositionCheck check = CheckDecomposition({polygon}, d);
+  EXPECT_TRUE(check.ok()) << Problems(check);
+}
+
+TEST(Decompose2dTest, MinConvexityBoundsEveryComponentsAreaRatio) {
+  const std::vector<Polygon2d> monkey =
+      ReadPolygons((kAcd2d / "nazca" / "nazca_monkey.poly").string());
+  Decompose2dOptions options;
+  options.min_convexity = 0.9;  // Algorithm 9 (shape decomposition).
+  const Decomposition2d d = Decompose2d(monkey, options);
+  EXPECT_EQ(d.min_convexity, 0.9);
+  ASSERT_GT(d.components.size(), 1u);
+  for (size_t k = 0; k < d.components.size(); ++k) {
+    const Component2d& c = d.components[k];
+    EXPECT_GE(Area(c.polygon) / std::abs(SignedArea(c.hull)), 0.9 * (1.0 - 1e-12))
+        << "component " << k;
+  }
+  EXPECT_GE(d.stats.convexity, 0.9);
+  const DecompositionCheck check = CheckDecomposition(monkey, d);
+  EXPECT_TRUE(check.ok()) << Problems(check);
+  // Coarser than the exact convex decomposition.
+  EXPECT_LT(d.components.size(), Decompose2d(monkey).components.size());
+}
+
+TEST(Decompose2dTest, InvalidOptionsThrowInputErrorNamingTheRule) {
+  Decompose2dOptions negative_tau;
+  negative_tau.tau = -1.0;
+  EXPECT_THAT(OptionsError(negative_tau),
+              HasSubstr("Decompose2d(): tau must be a finite number >= 0, got -1"));
+  Decompose2dOptions nan_tau;
+  nan_tau.tau = std::nan("");
+  EXPECT_THAT(OptionsError(nan_tau), HasSubstr("Decompose2d(): tau must be a finite number"));
+  Decompose2dOptions convexity;
+  convexity.min_convexity = 1.5;
+  EXPECT_THAT(OptionsError(convexity),
+              HasSubstr("Decompose2d(): min_convexity must be in [0, 1], got 1.5"));
+  Decompose2dOptions distance;
+  distance.score_distance = 0.0;
+  EXPECT_THAT(OptionsError(distance), HasSubstr("Decompose2d(): score_distance must be > 0"));
+  Decompose2dOptions concavity;
+  concavity.score_concavity = -0.1;
+  EXPECT_THAT(OptionsError(concavity), HasSubstr("Decompose2d(): score_concavity must be >= 0"));
+}
+
+// The hierarchy of Ch. III (Fig. 9(b)): one root per input polygon, consistent links, every
+// leaf a component and every component a leaf, internal nodes split by one cut (a notch) or
+// two (a hole).
+void ExpectConsistentTree(const std::vector<Polygon2d>& input, const Decomposition2d& d) {
+  ASSERT_EQ(d.roots.size(), input.size());
+  const int nodes = static_cast<int>(d.tree.size());
+  std::vector<int> leaf_of(d.components.size(), -1);
+  for (size_t r = 0; r < d.roots.size(); ++r) {
+    ASSERT_GE(d.roots[r], 0);
+    ASSERT_LT(d.roots[r], nodes);
+    EXPECT_EQ(d.tree[d.roots[r]].parent, -1);
+    EXPECT_EQ(d.tree[d.roots[r]].depth, 0);
+    EXPECT_NEAR(Area(d.tree[d.roots[r]].piece), Area(input[r]), 1e-12 * Area(input[r]));
+  }
+  int roots_seen = 0;
+  for (int n = 0; n < nodes; ++n) {
+    const HierarchyNode2d& node = d.tree[n];
+    if (node.parent < 0) {
+      ++roots_seen;
+    } else {
+      ASSERT_LT(node.parent, nodes);
+      const HierarchyNode2d& parent = d.tree[node.parent];
+      EXPECT_TRUE(parent.children[0] == n || parent.children[1] == n) << "node " << n;
+      EXPECT_EQ(node.depth, parent.depth + 1) << "node " << n;
+    }
+    const bool leaf = node.children[0] < 0;
+    EXPECT_EQ(leaf, node.children[1] < 0) << "node " << n << " has one child";
+    if (leaf) {
+      ASSERT_GE(node.component, 0) << "leaf " << n;
+      ASSERT_LT(node.component, static_cast<int>(d.components.size())) << "leaf " << n;
+      EXPECT_EQ(leaf_of[node.component], -1) << "component " << node.component << " twice";
+      leaf_of[node.component] = n;
+      EXPECT_TRUE(node.cuts.empty());
+      EXPECT_EQ(VertexCount(node.piece), VertexCount(d.components[node.component].polygon));
+    } else {
+      EXPECT_EQ(node.component, -1) << "internal node " << n;
+      EXPECT_TRUE(node.cuts.size() == 1 || node.cuts.size() == 2)
+          << "internal node " << n << " has " << node.cuts.size() << " cuts";
+      for (int child : node.children) {
+        ASSERT_LT(child, nodes);
+        EXPECT_EQ(d.tree[child].parent, n);
+      }
+      // The children tile their parent.
+      const double area = Area(node.piece);
+      EXPECT_NEAR(Area(d.tree[node.children[0]].piece) + Area(d.tree[node.children[1]].piece), area,
+                  1e-9 * area)
+          << "node " << n;
+    }
+  }
+  EXPECT_EQ(roots_seen, static_cast<int>(d.roots.size()));
+  for (size_t k = 0; k < leaf_of.size(); ++k) {
+    EXPECT_NE(leaf_of[k], -1) << "component " << k << " is no leaf";
+    EXPECT_GE(d.components[k].source, 0);
+    EXPECT_LT(d.components[k].source, static_cast<int>(input.size()));
+  }
+}
+
+TEST(Decompose2dTest, TreeIsConsistent) {
+  const std::vector<Polygon2d> monkey =
+      ReadPolygons((kAcd2d / "nazca" / "nazca_monkey.poly").string());
+  ExpectConsistentTree(monkey, Decompose2d(monkey));
+  const std::vector<Polygon2d> neuron = ReadPolygons((kAcd2d / "neuron" / "neuron.poly").string());
+  Decompose2dOptions sl;
+  sl.measure = ConcavityMeasure::kStraightLine;
+  ExpectConsistentTree(neuron, Decompose2d(neuron, sl));
+  // 234 polygons in one call: one root each, components keep their source.
+  const std::vector<Polygon2d> nacd = ReadPolygons((kAcd2d / "neuron" / "nacd.poly").string());
+  ExpectConsistentTree(nacd, Decompose2d(nacd));
+  ExpectConsistentTree({LShape()}, Decompose2d(LShape()));
+}
+
+// Reproduction, found on star6.poly (SL/SP/H1/H2, tau 0) at commit 06938f8: the quadrilateral
+// a b c d below (exactly simple; c is a notch) split by its diagonal c-a into the triangles
+// c d a and a b c. The second is a needle of area 5e-17 (c lies 1.6e-15 from the line ab), and
+// the two are interior-disjoint in exact arithmetic, yet CheckDecomposition() (then) reported
+// "components 0 and 1 overlap near (16.00195, -17.0039)".
+TEST(Decompose2dRepro, CheckDecompositionAcceptsNeedleNextToItsNeighbour) {
+  const Point2d a(15.9922, -16.984400000000001), b(16.0215, -17.042999999999999),
+      c(16.011700000000001, -17.023399999999999), d(16.001999999999999, -17.003900000000002);
+  const Polygon2d input{{a, b, c, d}, {}};
+  Decomposition2d decomposition;
+  for (const Ring2d& ring : {Ring2d{c, d, a}, Ring2d{a, b, c}}) {
+    Component2d component;
+    component.polygon.outer = ring;
+    component.hull = ConvexHull(ring);
+    component.centroid = Centroid(component.polygon);
+    component.concavity = 0.0;
+    decomposition.components.push_back(component);
+  }
+  decomposition.openings.push_back({c, a, 0, 1});
+  decomposition.roots = {0};
+  decomposition.stats.components = 2;
+  double area = 0.0, hull_area = 0.0;
+  for (const Component2d& component : decomposition.components) {
+    area += Area(component.polygon);
+    hull_area += SignedArea(component.hull);
+  }
+  decomposition.stats.convexity = area / hull_area;
+  const DecompositionCheck check = CheckDecomposition({input}, decomposition);
+  EXPECT_TRUE(check.ok()) << Problems(check);
+}
+
+TEST(Decompose2dTest, ComponentGraphIsSymmetric) {
+  const std::vector<Polygon2d> monkey =
+      ReadPolygons((kAcd2d / "nazca" / "nazca_monkey.poly").string());
+  const Decomposition2d d = Decompose2d(monkey);
+  const std::vector<std::vector<int>> graph = ComponentGraph(d);
+  ASSERT_EQ(graph.size(), d.components.size());
+  size_t links = 0;
+  for (int a = 0; a < static_cast<int>(graph.size()); ++a) {
+    EXPECT_TRUE(std::is_sorted(graph[a].begin(), graph[a].end()));
+    EXPECT_FALSE(graph[a].empty()) << "component " << a << " is isolated";
+    for (int b : graph[a]) {
+      EXPECT_NE(a, b);
+      EXPECT_TRUE(std::binary_search(graph[b].begin(), graph[b].end(), a))
+          << a << " -> " << b << " without " << b << " -> " << a;
+      ++links;
+    }
+  }
+  // A decomposition of a simple polygon by diagonals is a tree of pieces: m - 1 adjacencies
+  // at least (more where a Steiner cut end meets a piece further along an edge).
+  EXPECT_GE(links / 2, d.components.size() - 1);
+  for (const Opening2d& opening : d.openings) EXPECT_LT(opening.component_a, opening.component_b);
+}
+
+}  // namespace
+}  // namespace acdplan::acd
