@@ -63,8 +63,11 @@ ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace) {
   set.hulls_source = "connected components (no 3D ACD yet)";
   const double thickness = 1e-6 * std::max(workspace.bounds.sizes().norm(), 1e-300);
   for (size_t k = 0; k < workspace.obstacles.size(); ++k) {
-    const envs::TriangleMesh& mesh = workspace.obstacles[k];
-    envs::CheckTriangleMesh(mesh, "BuildObstacleSet(): obstacle " + std::to_string(k));
+    envs::CheckTriangleMesh(workspace.obstacles[k],
+                            "BuildObstacleSet(): obstacle " + std::to_string(k));
+    // Welded, so that copies of a vertex split at a normal or UV seam do not cut the surface
+    // into open pieces.
+    const envs::TriangleMesh mesh = internal::WeldVertices(workspace.obstacles[k]);
     set.meshes.push_back(mesh);
     for (envs::TriangleMesh& component : internal::ConnectedComponents(mesh)) {
       ObstaclePiece piece;

@@ -59,8 +59,8 @@ struct ObstacleSet {
 ObstacleSet BuildObstacleSet(const envs::Workspace2d& workspace,
                              const ObstacleSetOptions& options = {});
 
-/// Builds the pieces of a 3D workspace: one piece per connected component (shared vertices) of
-/// each obstacle mesh, with its 3D convex hull (CGAL convex_hull_3). Open meshes are accepted
+/// Builds the pieces of a 3D workspace: one piece per connected component (shared vertices,
+/// after merging vertices at identical positions) of each obstacle mesh, with its 3D convex hull (CGAL convex_hull_3). Open meshes are accepted
 /// here (`closed` is false); exact point location on them is refused later.
 /// @throws acd::InputError if a mesh fails envs::CheckTriangleMesh().
 ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace);

@@ -14,6 +14,7 @@
 #include <list>
 #include <map>
 #include <numeric>
+#include <tuple>
 #include <stdexcept>
 #include <utility>
 
@@ -208,6 +209,26 @@ Eigen::Matrix<double, Eigen::Dynamic, 4> HullPlanes(const envs::TriangleMesh& hu
   Eigen::Matrix<double, Eigen::Dynamic, 4> out(static_cast<Eigen::Index>(planes.size()), 4);
   for (size_t i = 0; i < planes.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = planes[i];
   return out;
+}
+
+envs::TriangleMesh WeldVertices(const envs::TriangleMesh& mesh) {
+  std::map<std::tuple<double, double, double>, int> index;
+  std::vector<Eigen::Vector3d> v;
+  std::vector<int> remap(static_cast<size_t>(mesh.vertices.rows()));
+  for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
+    const auto key = std::make_tuple(mesh.vertices(i, 0), mesh.vertices(i, 1), mesh.vertices(i, 2));
+    auto [it, inserted] = index.emplace(key, static_cast<int>(v.size()));
+    if (inserted) v.push_back(mesh.vertices.row(i).transpose());
+    remap[static_cast<size_t>(i)] = it->second;
+  }
+  std::vector<Eigen::Vector3i> t;
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    const Eigen::Vector3i tri(remap[static_cast<size_t>(mesh.triangles(f, 0))],
+                              remap[static_cast<size_t>(mesh.triangles(f, 1))],
+                              remap[static_cast<size_t>(mesh.triangles(f, 2))]);
+    if (tri(0) != tri(1) && tri(1) != tri(2) && tri(0) != tri(2)) t.push_back(tri);
+  }
+  return ToMesh(v, t);
 }
 
 std::vector<envs::TriangleMesh> ConnectedComponents(const envs::TriangleMesh& mesh) {

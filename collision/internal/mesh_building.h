@@ -27,6 +27,11 @@ envs::TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, doubl
 /// (coplanar faces merged).
 Eigen::Matrix<double, Eigen::Dynamic, 4> HullPlanes(const envs::TriangleMesh& hull);
 
+/// `mesh` with vertices at identical positions merged (exact comparison) and triangles that
+/// collapse to fewer than three distinct vertices dropped. Mesh files split a vertex wherever
+/// its normal or texture coordinate changes; for geometry those copies are one vertex.
+envs::TriangleMesh WeldVertices(const envs::TriangleMesh& mesh);
+
 /// The connected components of `mesh` (triangles sharing a vertex), each with its own
 /// compacted vertex list, in order of their first triangle.
 std::vector<envs::TriangleMesh> ConnectedComponents(const envs::TriangleMesh& mesh);

@@ -92,6 +92,27 @@ TEST(ObstacleSet3d, OnePiecePerConnectedComponentAndSaysSo) {
   EXPECT_EQ(set.hulls_source, "connected components (no 3D ACD yet)");
 }
 
+TEST(ObstacleSet3d, VerticesSplitAtSeamsAreWelded) {
+  // Each triangle with its own three vertices, as a file with per-face normals reads.
+  const envs::TriangleMesh cube = testing::CubeMesh(1.0);
+  envs::TriangleMesh split;
+  split.vertices.resize(36, 3);
+  split.triangles.resize(12, 3);
+  for (int f = 0; f < 12; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      split.vertices.row(3 * f + k) = cube.vertices.row(cube.triangles(f, k));
+      split.triangles(f, k) = 3 * f + k;
+    }
+  }
+  envs::Workspace3d world;
+  world.bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1));
+  world.obstacles.push_back(split);
+  const ObstacleSet set = BuildObstacleSet(world);
+  ASSERT_EQ(set.pieces.size(), 1u);
+  EXPECT_TRUE(set.pieces[0].closed);
+  EXPECT_EQ(set.meshes[0].vertices.rows(), 8);
+}
+
 TEST(ObstacleSet3d, FlatComponentGetsAThinSolidHull) {
   envs::Workspace3d world;
   world.bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1));
