@@ -39,10 +39,16 @@ OccupancyGrid ReadOccupancyMap(const std::string& yaml_path, const OccupancyMapO
     file.Fail("free_thresh", "must be less than occupied_thresh");
   }
   bool negate = false;
-  if (root["negate"]) {
-    const double value = internal::Number(file, root["negate"], "negate");
-    if (value != 0.0 && value != 1.0) file.Fail("negate", "expected 0 or 1");
-    negate = value == 1.0;
+  if (const YAML::Node node = root["negate"]) {
+    // map_server writes 0 / 1; YAML booleans are accepted too.
+    bool flag = false;
+    if (node.IsScalar() && YAML::convert<bool>::decode(node, flag)) {
+      negate = flag;
+    } else {
+      const double value = internal::Number(file, node, "negate");
+      if (value != 0.0 && value != 1.0) file.Fail("negate", "expected 0 or 1");
+      negate = value == 1.0;
+    }
   }
   if (root["mode"]) {
     const std::string mode = internal::String(file, root["mode"], "mode");

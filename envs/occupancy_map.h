@@ -26,7 +26,8 @@ struct OccupancyMapOptions {
 ///   origin: [x, y, yaw] of the lower-left pixel's corner; yaw must be 0
 ///   occupied_thresh, free_thresh: in [0, 1], free_thresh < occupied_thresh (free_thresh
 ///     defaults to 0.196 and occupied_thresh to 0.65 when absent)
-///   negate: 0 or 1 (default 0); mode: trinary | scale | raw (accepted; only the thresholds
+///   negate: 0 or 1, or a YAML boolean (default 0); mode: trinary | scale | raw (accepted; only the
+///   thresholds
 ///     are used, as map_server's trinary mode)
 /// A pixel of value v (maxval m) has occupancy p = (m - v) / m (or v / m when negate is 1);
 /// p > occupied_thresh is blocked, p < free_thresh is free, anything else unknown. Colour

@@ -37,7 +37,8 @@ class PgmHeader {
       ++digits;
     }
     if (digits == 0 || value > 1000000000) {
-      throw acd::InputError(path_ + ": malformed PGM header: expected " + what);
+      throw acd::InputError(path_ + ": malformed PGM " + (in_header_ ? "header" : "data") +
+                            ": expected " + what);
     }
     return static_cast<int>(value);
   }
@@ -55,6 +56,7 @@ class PgmHeader {
   }
 
   size_t pos_ = 2;
+  bool in_header_ = true;
 
  private:
   const std::string& path_;
@@ -96,6 +98,7 @@ GrayImage ReadPgm(const std::string& path) {
       image.pixels[i] = static_cast<std::uint16_t>(value);
     }
   } else {
+    header.in_header_ = false;
     for (size_t i = 0; i < n; ++i) {
       header.SkipSpaceAndComments();
       if (header.pos_ >= bytes.size()) {

@@ -81,6 +81,8 @@ TEST(OccupancyMapTest, NegateAndUnknownCells) {
   const OccupancyGrid negated = ReadOccupancyMap(dir.Write("map.yaml", yaml));
   // White is now occupied, black free; grey (205/255 = 0.80) is occupied too.
   EXPECT_EQ(negated.blocked, (std::vector<std::uint8_t>{0, 1, 1, 1, 0, 1, 1, 1, 0, 0, 1, 1}));
+  yaml.replace(yaml.find("negate: 1"), 9, "negate: true");
+  EXPECT_EQ(ReadOccupancyMap(dir.Write("map.yaml", yaml)).blocked, negated.blocked);
   const OccupancyGrid optimistic =
       ReadOccupancyMap(dir.Write("map.yaml", kYaml), {UnknownCells::kFree});
   EXPECT_EQ(optimistic.blocked[3], 0);
@@ -155,6 +157,8 @@ TEST(OccupancyMapTest, ImageErrors) {
               HasSubstr("d.pgm: PGM pixel 1 value 16 exceeds maxval 15"));
   EXPECT_THAT(error("e.pgm", "P2 2 1 0\n0 0\n"),
               HasSubstr("e.pgm: malformed PGM header: maxval must be in [1, 65535]"));
+  EXPECT_THAT(error("g.pgm", "P2 2 1 255\n3 x\n"),
+              HasSubstr("g.pgm: malformed PGM data: expected a pixel value"));
   EXPECT_THAT(error("f.png", std::string("\x89PNG\r\n\x1a\n", 8) + "garbage"),
               HasSubstr("f.png: cannot read PNG: "));
 }

@@ -126,8 +126,10 @@ TEST(Workspace3dYamlTest, Errors) {
               HasSubstr("world.yaml: obstacles[0].scale: expected a number > 0"));
   EXPECT_THAT(error(b + "obstacles:\n  - {mesh: missing.obj}\n"),
               HasSubstr("missing.obj: cannot read mesh: No such file or directory"));
-  dir.Write("broken.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n");
-  EXPECT_THAT(error(b + "obstacles:\n  - {mesh: broken.stl}\n"), HasSubstr("broken.stl: "));
+  // (A PLY: assimp 5.2 leaks memory on some malformed STL files, which LeakSanitizer reports.)
+  dir.Write("broken.ply", "ply\nformat nonsense\n");
+  EXPECT_THAT(error(b + "obstacles:\n  - {mesh: broken.ply}\n"),
+              HasSubstr("broken.ply: cannot read mesh: Invalid .ply file"));
 }
 
 }  // namespace
