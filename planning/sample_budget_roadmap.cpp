@@ -74,6 +74,7 @@ SampleBudgetRoadmap BuildSampleBudgetRoadmap(
   if (result.solved) {
     ompl::base::PathPtr path = prm.constructSolution(vs, vg);
     if (auto* geometric = dynamic_cast<ompl::geometric::PathGeometric*>(path.get())) {
+      result.path_length = geometric->length();
       for (const ompl::base::State* state : geometric->getStates()) {
         std::vector<double> reals;
         si->getStateSpace()->copyToReals(reals, state);

@@ -31,6 +31,7 @@ struct SampleBudgetRoadmap {
                                               ///< start, goal and the samples.
   std::vector<std::pair<int, int>> edges;     ///< Roadmap edges (indices into `vertices`).
   std::vector<std::vector<double>> path;      ///< Start to goal through the roadmap when solved.
+  double path_length = 0.0;                   ///< Length of `path` in the space's metric.
 };
 
 /// Draws exactly `options.samples` collision-free states from si->allocValidStateSampler(),

@@ -19,6 +19,8 @@
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
 #include "collision/bench_collision.h"
+#include "planning/plan_scenario.h"
+#include "planning/scenario.h"
 
 namespace {
 
@@ -172,6 +174,62 @@ int RunBenchCollision(const acdplan::collision::BenchCollisionOptions& options,
   return 0;
 }
 
+/// What `acdplan plan` was asked to do (each override < 0 or empty: keep the scenario's).
+struct PlanArguments {
+  std::string scenario;
+  std::string sampler, planner;
+  long long seed = -1;
+  double time = -1;
+  int samples = -1;
+  std::string json_path, svg_path;
+};
+
+/// `acdplan plan`: exit 0 solved, 3 not solved within the budget, 2 bad input.
+int RunPlan(const PlanArguments& args) {
+  namespace planning = acdplan::planning;
+  planning::Scenario scenario = planning::LoadScenario(args.scenario);
+  if (!args.sampler.empty()) scenario.sampler = args.sampler;
+  if (!args.planner.empty()) scenario.planner = args.planner;
+  if (args.seed >= 0) scenario.seed = static_cast<std::uint64_t>(args.seed);
+  if (args.time > 0) scenario.time_limit = args.time, scenario.samples = 0;
+  if (args.samples > 0) scenario.samples = args.samples;
+  planning::CheckScenario(scenario);
+  CheckOutputPath("--json", args.json_path);
+  CheckOutputPath("--svg", args.svg_path);
+  planning::ConfigureOmpl(scenario.seed, true);
+
+  const planning::PlanResult result = planning::PlanScenario(scenario);
+  try {
+    if (!args.json_path.empty()) {
+      acd::WriteFileAtomically(args.json_path, planning::PlanResultToJson(scenario, result));
+    }
+    if (!args.svg_path.empty()) {
+      acd::WriteFileAtomically(args.svg_path, planning::PlanResultToSvg(scenario, result));
+    }
+  } catch (const std::runtime_error& error) {
+    throw acd::InputError(error.what());
+  }
+  std::printf("scenario          %s\n", args.scenario.c_str());
+  if (!scenario.description.empty()) std::printf("description       %s\n", scenario.description.c_str());
+  std::printf("workspace         %s\n", scenario.workspace_label.c_str());
+  std::printf("robot             %s\n", acdplan::envs::ShapeName(scenario.robot.shape).c_str());
+  std::printf("sampler           %s\n", result.sampler.c_str());
+  std::printf("planner           %s (%s, seed %llu)\n", result.planner.c_str(), result.budget.c_str(),
+              static_cast<unsigned long long>(scenario.seed));
+  std::printf("acd               %d components, %d openings, %.3f ms\n", result.components,
+              result.openings, result.decomposition_ms);
+  std::printf("samples           %llu\n", static_cast<unsigned long long>(result.samples));
+  std::printf("collision checks  %llu\n", static_cast<unsigned long long>(result.collision_checks));
+  std::printf("solved            %s\n", result.solved ? "yes" : "no");
+  if (result.solved) {
+    std::printf("path              %zu states, length %.6g\n", result.path.size(), result.path_length);
+  }
+  std::printf("time              %.3f s\n", result.time_s);
+  if (!args.json_path.empty()) std::printf("wrote             %s\n", args.json_path.c_str());
+  if (!args.svg_path.empty()) std::printf("wrote             %s\n", args.svg_path.c_str());
+  return result.solved ? 0 : 3;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -236,6 +294,30 @@ int main(int argc, char** argv) {
                               "Folder of .obj meshes used as 3D obstacles; '' to skip 3D")
       ->capture_default_str();
 
+  PlanArguments plan_args;
+  CLI::App* plan = app.add_subcommand(
+      "plan",
+      "Plan the scenario of SCENARIO.yaml (planning/scenario.h) with an OMPL planner and a "
+      "sampler (acd: around the ACD's centroids and openings, Algorithm 10) and print a "
+      "summary. Exit status: 0 solved, 3 no solution within the budget, 2 bad input or usage, "
+      "1 internal error.");
+  plan->add_option("SCENARIO", plan_args.scenario, "Scenario YAML file")->required();
+  plan->add_option("--sampler", plan_args.sampler,
+                   "uniform, gaussian, bridge, obstacle_based, max_clearance or acd");
+  plan->add_option("--planner", plan_args.planner,
+                   "PRM, PRMstar, LazyPRM, RRT, RRTConnect, RRTstar, EST, KPIECE1, BKPIECE1 or SBL");
+  plan->add_option("--seed", plan_args.seed, "Seed (samplers and OMPL)")
+      ->check(CLI::NonNegativeNumber);
+  CLI::Option* plan_time =
+      plan->add_option("--time", plan_args.time, "Time budget [s]")->check(CLI::PositiveNumber);
+  CLI::Option* plan_samples = plan->add_option(
+      "--samples", plan_args.samples,
+      "Sample budget: a PRM roadmap of exactly N collision-free samples, solved iff start and "
+      "goal are connected (dissertation Fig. 4)")->check(CLI::PositiveNumber);
+  plan_time->excludes(plan_samples);
+  plan->add_option("--json", plan_args.json_path, "Write the result as JSON here");
+  plan->add_option("--svg", plan_args.svg_path, "Write an SVG picture here (2D)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -248,6 +330,7 @@ int main(int argc, char** argv) {
 
   try {
     if (decompose->parsed()) return RunDecompose(args);
+    if (plan->parsed()) return RunPlan(plan_args);
     if (bench_collision->parsed()) return RunBenchCollision(bench_options, bench_json);
     return 0;
   } catch (const acd::InputError& error) {

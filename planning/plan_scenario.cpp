@@ -1,0 +1,329 @@
+#include "planning/plan_scenario.h"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <ompl/base/Planner.h>
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+#include <sstream>
+
+#include "acd/decompose2d.h"
+#include "acd/input_error.h"
+#include "collision/collision_mode.h"
+#include "collision/collision_world.h"
+#include "collision/obstacle_set.h"
+#include "envs/free_space2d.h"
+#include "planning/counting_validity_checker.h"
+#include "planning/registry.h"
+#include "planning/sample_budget_roadmap.h"
+
+namespace acdplan::planning {
+
+namespace ob = ompl::base;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point from) {
+  return std::chrono::duration<double>(Clock::now() - from).count();
+}
+
+Eigen::Isometry2d Pose(bool se2, const ob::State* state) {
+  Eigen::Isometry2d pose = Eigen::Isometry2d::Identity();
+  if (se2) {
+    const auto* s = state->as<ob::SE2StateSpace::StateType>();
+    pose.translate(Eigen::Vector2d(s->getX(), s->getY()));
+    pose.rotate(s->getYaw());
+  } else {
+    const double* v = state->as<ob::RealVectorStateSpace::StateType>()->values;
+    pose.translate(Eigen::Vector2d(v[0], v[1]));
+  }
+  return pose;
+}
+
+/// True if the robot's geometry at `pose` lies inside the bounds (the obstacles do not
+/// include the world's edges; the state space only bounds the reference point).
+bool InsideBounds(const envs::Robot& robot, const Eigen::AlignedBox2d& bounds,
+                  const Eigen::Isometry2d& pose) {
+  switch (robot.shape) {
+    case envs::RobotShape::kPoint:
+      return bounds.contains(pose.translation());
+    case envs::RobotShape::kDisc: {
+      const Eigen::Vector2d r(robot.radius, robot.radius);
+      return bounds.contains(Eigen::AlignedBox2d(pose.translation() - r, pose.translation() + r));
+    }
+    case envs::RobotShape::kPolygon:
+      for (const acd::Point2d& p : robot.polygon.outer) {
+        if (!bounds.contains(pose * p)) return false;
+      }
+      return true;
+    case envs::RobotShape::kMesh:
+      return false;
+  }
+  return false;
+}
+
+std::string Number(double x) {
+  std::ostringstream out;
+  out.precision(6);
+  out << x;
+  return out.str();
+}
+
+}  // namespace
+
+PlanResult PlanScenario(const Scenario& scenario) {
+  CheckScenario(scenario);
+  const Clock::time_point started = Clock::now();
+  const std::string where = scenario.path.empty() ? "scenario" : scenario.path;
+  PlanResult result;
+  result.sampler = scenario.sampler;
+  result.planner = scenario.planner;
+  result.budget = scenario.samples > 0 ? std::to_string(scenario.samples) + " samples"
+                                       : Number(scenario.time_limit) + " s";
+
+  // Free space and its ACD (the sampler's targets; decomposed for every sampler, so time_s
+  // compares like with like).
+  const envs::Workspace2d& workspace = scenario.workspace;
+  const std::vector<acd::Polygon2d> free_space = envs::FreeSpace2d(workspace);
+  acd::Decompose2dOptions acd_options;
+  acd_options.tau = scenario.tau_rel * workspace.bounds.sizes().norm();
+  acd_options.measure = scenario.measure;
+  result.decomposition = acd::Decompose2d(free_space, acd_options);
+  result.decomposition_ms = 1e3 * Seconds(started);
+  result.components = static_cast<int>(result.decomposition.components.size());
+  result.openings = static_cast<int>(result.decomposition.openings.size());
+
+  // Collision world and the state space.
+  auto obstacles =
+      std::make_shared<const collision::ObstacleSet>(collision::BuildObstacleSet(workspace));
+  collision::CollisionWorldOptions world_options;
+  world_options.mode = collision::ParseCollisionMode(scenario.collision_mode);
+  auto world =
+      std::make_shared<const collision::CollisionWorld>(obstacles, scenario.robot, world_options);
+  const bool se2 = scenario.robot.shape == envs::RobotShape::kPolygon;
+  ob::RealVectorBounds bounds(2);
+  for (int i = 0; i < 2; ++i) {
+    bounds.setLow(i, workspace.bounds.min()[i]);
+    bounds.setHigh(i, workspace.bounds.max()[i]);
+  }
+  ob::StateSpacePtr space;
+  if (se2) {
+    auto s = std::make_shared<ob::SE2StateSpace>();
+    s->setBounds(bounds);
+    space = s;
+  } else {
+    auto s = std::make_shared<ob::RealVectorStateSpace>(2);
+    s->setBounds(bounds);
+    space = s;
+  }
+  auto si = std::make_shared<ob::SpaceInformation>(space);
+  const envs::Robot robot = scenario.robot;
+  const Eigen::AlignedBox2d box = workspace.bounds;
+  auto checker = std::make_shared<CountingValidityChecker>(
+      si.get(), [world, robot, box, se2](const ob::State* state) {
+        const Eigen::Isometry2d pose = Pose(se2, state);
+        return InsideBounds(robot, box, pose) && world->IsValid(pose);
+      });
+  si->setStateValidityChecker(checker);
+  // Motions are checked every 0.2% of the space's extent (OMPL's default is 1%): fine enough
+  // for the thinnest walls of the built-in worlds (0.25 in a 10-unit maze).
+  si->setStateValidityCheckingResolution(0.002);
+  si->setup();
+
+  ob::ScopedState<> start(si), goal(si);
+  for (size_t i = 0; i < scenario.start.size(); ++i) {
+    start[i] = scenario.start[i];
+    goal[i] = scenario.goal[i];
+  }
+  if (!si->isValid(start.get())) {
+    throw acd::InputError(where + ": start: the robot is in collision or out of bounds there");
+  }
+  if (!si->isValid(goal.get())) {
+    throw acd::InputError(where + ": goal: the robot is in collision or out of bounds there");
+  }
+  checker->ResetChecks();
+
+  AcdSamplerOptions sampler_options = scenario.sampler_options;
+  sampler_options.seed = scenario.seed;
+  InstallSampler(scenario.sampler, si, result.decomposition, sampler_options);
+
+  if (scenario.samples > 0) {
+    SampleBudgetOptions options;
+    options.samples = scenario.samples;
+    options.star = scenario.planner == "PRMstar";
+    SampleBudgetRoadmap roadmap = BuildSampleBudgetRoadmap(si, start.get(), goal.get(), options);
+    result.solved = roadmap.solved;
+    result.samples = static_cast<std::uint64_t>(roadmap.samples);
+    result.path = std::move(roadmap.path);
+    result.path_length = roadmap.path_length;
+    result.vertices = std::move(roadmap.vertices);
+    result.edges = std::move(roadmap.edges);
+  } else {
+    auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+    pdef->setStartAndGoalStates(start, goal);
+    ob::PlannerPtr planner = MakePlanner(scenario.planner, si);
+    planner->setProblemDefinition(pdef);
+    planner->setup();
+    const ob::PlannerStatus status = planner->solve(scenario.time_limit);
+    result.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
+    if (result.solved) {
+      auto* path = pdef->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+      result.path_length = path->length();
+      for (const ob::State* state : path->getStates()) {
+        std::vector<double> reals;
+        space->copyToReals(reals, state);
+        result.path.push_back(reals);
+      }
+    }
+    ob::PlannerData data(si);
+    planner->getPlannerData(data);
+    result.samples = data.numVertices();
+    for (unsigned int i = 0; i < data.numVertices(); ++i) {
+      std::vector<double> reals;
+      space->copyToReals(reals, data.getVertex(i).getState());
+      result.vertices.push_back(reals);
+      std::vector<unsigned int> out;
+      data.getEdges(i, out);
+      for (unsigned int j : out) result.edges.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    }
+  }
+  result.collision_checks = checker->checks();
+  result.time_s = Seconds(started);
+  return result;
+}
+
+void ConfigureOmpl(std::uint64_t seed, bool quiet) {
+  if (quiet) ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+  // OMPL's seed is 32 bits; 0 would mean "pick one".
+  ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(seed % 4294967295ULL) + 1);
+}
+
+std::string PlanResultToJson(const Scenario& scenario, const PlanResult& result) {
+  nlohmann::json j;
+  j["format"] = "acdplan.plan/1";
+  j["scenario"] = scenario.path;
+  j["solved"] = result.solved;
+  j["sampler"] = result.sampler;
+  j["planner"] = result.planner;
+  j["budget"] = result.budget;
+  j["seed"] = scenario.seed;
+  j["time_s"] = result.time_s;
+  j["decomposition_ms"] = result.decomposition_ms;
+  j["samples"] = result.samples;
+  j["collision_checks"] = result.collision_checks;
+  j["path_length"] = result.path_length;
+  j["components"] = result.components;
+  j["openings"] = result.openings;
+  j["path"] = result.path;
+  return j.dump(2) + "\n";
+}
+
+namespace {
+
+/// Maps workspace coordinates to SVG pixels (y up in the world, down in SVG).
+struct Frame {
+  Eigen::AlignedBox2d bounds;
+  double scale = 1.0;
+  double margin = 10.0;
+  std::string X(double x) const { return Number(margin + (x - bounds.min().x()) * scale); }
+  std::string Y(double y) const { return Number(margin + (bounds.max().y() - y) * scale); }
+  std::string Point(const Eigen::Vector2d& p) const { return X(p.x()) + "," + Y(p.y()); }
+  std::string Ring(const acd::Ring2d& ring) const {
+    std::string d = "M";
+    for (const acd::Point2d& p : ring) d += Point(p) + " ";
+    return d + "Z ";
+  }
+};
+
+}  // namespace
+
+std::string PlanResultToSvg(const Scenario& scenario, const PlanResult& result) {
+  Frame f;
+  f.bounds = scenario.workspace.bounds;
+  const Eigen::Vector2d size = f.bounds.sizes();
+  f.scale = 800.0 / std::max(size.x(), size.y());
+  const double width = size.x() * f.scale + 2 * f.margin;
+  const double height = size.y() * f.scale + 2 * f.margin + 24;
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << Number(width)
+      << "\" height=\"" << Number(height) << "\" viewBox=\"0 0 " << Number(width) << " "
+      << Number(height) << "\">\n";
+  svg << "<rect x=\"" << f.X(f.bounds.min().x()) << "\" y=\"" << f.Y(f.bounds.max().y())
+      << "\" width=\"" << Number(size.x() * f.scale) << "\" height=\""
+      << Number(size.y() * f.scale) << "\" fill=\"white\" stroke=\"black\"/>\n";
+  svg << "<g id=\"components\" fill=\"#cfe3f7\" fill-opacity=\"0.6\" stroke=\"#7a9cc6\" "
+         "stroke-width=\"0.8\" fill-rule=\"evenodd\">\n";
+  for (const acd::Component2d& c : result.decomposition.components) {
+    std::string d = f.Ring(c.polygon.outer);
+    for (const acd::Ring2d& hole : c.polygon.holes) d += f.Ring(hole);
+    svg << "<path d=\"" << d << "\"/>\n";
+  }
+  svg << "</g>\n<g id=\"obstacles\" fill=\"#555\" fill-rule=\"evenodd\">\n";
+  for (const acd::Polygon2d& o : scenario.workspace.obstacles) {
+    std::string d = f.Ring(o.outer);
+    for (const acd::Ring2d& hole : o.holes) d += f.Ring(hole);
+    svg << "<path d=\"" << d << "\"/>\n";
+  }
+  svg << "</g>\n<g id=\"openings\" stroke=\"#f08c00\" stroke-width=\"3\">\n";
+  for (const acd::Opening2d& o : result.decomposition.openings) {
+    svg << "<line x1=\"" << f.X(o.a.x()) << "\" y1=\"" << f.Y(o.a.y()) << "\" x2=\""
+        << f.X(o.b.x()) << "\" y2=\"" << f.Y(o.b.y()) << "\"/>\n";
+  }
+  svg << "</g>\n<g id=\"roadmap-edges\" stroke=\"#4a7bd0\" stroke-width=\"0.6\" "
+         "stroke-opacity=\"0.7\">\n";
+  for (const auto& [a, b] : result.edges) {
+    const auto& p = result.vertices[a];
+    const auto& q = result.vertices[b];
+    svg << "<line x1=\"" << f.X(p[0]) << "\" y1=\"" << f.Y(p[1]) << "\" x2=\"" << f.X(q[0])
+        << "\" y2=\"" << f.Y(q[1]) << "\"/>\n";
+  }
+  svg << "</g>\n<g id=\"roadmap-vertices\" fill=\"#1f4fa0\">\n";
+  for (const auto& v : result.vertices) {
+    svg << "<circle cx=\"" << f.X(v[0]) << "\" cy=\"" << f.Y(v[1]) << "\" r=\"2\"/>\n";
+  }
+  svg << "</g>\n";
+  const bool se2 = scenario.robot.shape == envs::RobotShape::kPolygon;
+  auto robot_at = [&](const std::vector<double>& q, const char* colour) {
+    if (!se2) return;
+    Eigen::Isometry2d pose = Eigen::Isometry2d::Identity();
+    pose.translate(Eigen::Vector2d(q[0], q[1]));
+    pose.rotate(q[2]);
+    acd::Ring2d ring;
+    for (const acd::Point2d& p : scenario.robot.polygon.outer) ring.push_back(pose * p);
+    svg << "<path d=\"" << f.Ring(ring) << "\" fill=\"" << colour
+        << "\" fill-opacity=\"0.35\" stroke=\"" << colour << "\"/>\n";
+  };
+  if (!result.path.empty()) {
+    svg << "<g id=\"path\">\n";
+    for (const auto& q : result.path) robot_at(q, "#c92a2a");
+    svg << "<polyline fill=\"none\" stroke=\"#e03131\" stroke-width=\"2.5\" points=\"";
+    for (const auto& q : result.path) svg << f.X(q[0]) << "," << f.Y(q[1]) << " ";
+    svg << "\"/>\n</g>\n";
+  }
+  robot_at(scenario.start, "#2b8a3e");
+  robot_at(scenario.goal, "#862e9c");
+  svg << "<circle id=\"start\" cx=\"" << f.X(scenario.start[0]) << "\" cy=\""
+      << f.Y(scenario.start[1]) << "\" r=\"6\" fill=\"#2b8a3e\"/>\n";
+  svg << "<circle id=\"goal\" cx=\"" << f.X(scenario.goal[0]) << "\" cy=\""
+      << f.Y(scenario.goal[1]) << "\" r=\"6\" fill=\"#862e9c\"/>\n";
+  svg << "<text x=\"" << Number(f.margin) << "\" y=\"" << Number(height - 8)
+      << "\" font-family=\"sans-serif\" font-size=\"14\">" << result.sampler << " + "
+      << result.planner << ", " << result.budget << ": "
+      << (result.solved ? "solved" : "not solved") << " (" << result.samples << " samples, "
+      << result.components << " components, " << result.openings << " openings)</text>\n";
+  svg << "</svg>\n";
+  return svg.str();
+}
+
+}  // namespace acdplan::planning

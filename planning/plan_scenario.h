@@ -1,0 +1,57 @@
+#pragma once
+// Runs a Scenario: free space, ACD, collision world, OMPL planner and sampler; reports.
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "acd/decomposition2d.h"
+#include "planning/scenario.h"
+
+namespace acdplan::planning {
+
+/// What PlanScenario() did and found.
+struct PlanResult {
+  bool solved = false;         ///< Exact solution (time budget) / start and goal connected
+                               ///< (sample budget).
+  std::string sampler, planner;
+  std::string budget;          ///< "200 samples" or "5 s".
+  double time_s = 0.0;         ///< Wall time of the whole run, decomposition included [s].
+  double decomposition_ms = 0.0;  ///< Free space + ACD [ms].
+  std::uint64_t samples = 0;   ///< Sample budget: collision-free samples placed; time budget:
+                               ///< vertices of the planner's roadmap or tree(s).
+  std::uint64_t collision_checks = 0;  ///< State validity checks (samples and motions).
+  double path_length = 0.0;    ///< In the state space's metric (SE(2): OMPL's weighted sum); 0
+                               ///< without a solution.
+  int components = 0, openings = 0;
+  std::vector<std::vector<double>> path;      ///< States from start to goal (x, y[, yaw]).
+  std::vector<std::vector<double>> vertices;  ///< Roadmap / tree vertices (for pictures).
+  std::vector<std::pair<int, int>> edges;     ///< Roadmap / tree edges.
+  acd::Decomposition2d decomposition;         ///< The ACD of the free space.
+};
+
+/// Plans `scenario`: free space (envs::FreeSpace2d), its ACD (tau = tau_rel x bounds diagonal),
+/// a collision::CollisionWorld (robot kept inside the bounds too), the state space (R^2 for a
+/// point or disc robot, SE(2) for a polygon robot), the sampler installed with the scenario's
+/// seed, then either the Figure-4 protocol (scenario.samples > 0:
+/// BuildSampleBudgetRoadmap()) or the planner on the time limit (path simplified? no: raw,
+/// so lengths compare planners, not the simplifier).
+/// Expected failures (no solution) are results; only bad input throws.
+/// @throws acd::InputError if the start or the goal is in collision or out of bounds.
+PlanResult PlanScenario(const Scenario& scenario);
+
+/// Seeds OMPL's global random generator (used by the planners themselves, e.g. PRM's
+/// expansion step, RRT's goal bias) and sets OMPL's log level to warnings (`quiet`) -- for a
+/// command-line process; call once, before any planner exists. The samplers never use it.
+void ConfigureOmpl(std::uint64_t seed, bool quiet);
+
+/// The result as JSON: solved, sampler, planner, budget, time_s, decomposition_ms, samples,
+/// collision_checks, path_length, components, openings, path, and the scenario's file.
+std::string PlanResultToJson(const Scenario& scenario, const PlanResult& result);
+
+/// An SVG picture (2D): obstacles, ACD components and openings, roadmap vertices and edges,
+/// the path, start and goal.
+std::string PlanResultToSvg(const Scenario& scenario, const PlanResult& result);
+
+}  // namespace acdplan::planning

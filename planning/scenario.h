@@ -1,0 +1,66 @@
+#pragma once
+// Planning scenarios: a YAML file naming the world, the robot, the query and how to plan.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "acd/concavity_measure.h"
+#include "envs/robot.h"
+#include "envs/workspace2d.h"
+#include "planning/acd_sampler_options.h"
+
+namespace acdplan::planning {
+
+/// A loaded, validated scenario. The file format (every key optional unless marked):
+///
+///   description: "one line"
+///   workspace: world.yaml            # required: any file envs::LoadWorkspace2d() reads
+///                                    # (relative to this file), or a generator:
+///   workspace: {generator: wall_gap, seed: 1, passage_width: 0.05, wall_thickness: 1.0}
+///                                    # generators: envs::GeneratorNames(); wall_thickness
+///                                    # for wall_gap, bug_trap, two_rooms, spiral and maze
+///   robot: {shape: point}            # point (default) | disc (radius) | polygon (polygon:
+///                                    # [[x, y], ...] in the body frame; plans in SE(2))
+///   start: [x, y]                    # required; [x, y, yaw] for a polygon robot [rad]
+///   goal: [x, y]                     # required; as start
+///   acd: {tau_rel: 0.02, measure: sp}  # tau = tau_rel x the bounds' diagonal; measure
+///                                    # sl | sp | h1 | h2
+///   planner: {name: PRM, samples: 200}   # name: registry.h PlannerNames(); exactly one of
+///                                    # time_limit [s] > 0 or samples (integer >= 1, the
+///                                    # Figure-4 protocol: PRM and PRMstar only); default
+///                                    # time_limit 5
+///   sampler: {name: acd, uniform_share: 0.1, orientation: random, opening_weight: 4,
+///             centroid_spread: 0.3, opening_spread: 0.5}   # name: registry.h SamplerNames()
+///   collision: {mode: hulls+exact}   # bvh | hulls | hulls+exact
+///   seed: 1                          # integer >= 0: samplers (and the CLI's OMPL seed)
+struct Scenario {
+  std::string path;         ///< The file it was read from ("" if built in code).
+  std::string description;
+  std::string workspace_label;  ///< The workspace file, or "generator <name> (seed s)".
+  envs::Workspace2d workspace;
+  envs::Robot robot;
+  std::vector<double> start, goal;  ///< 2 numbers (point, disc) or 3 (polygon: x, y, yaw).
+  double tau_rel = 0.02;            ///< ACD tolerance / bounds diagonal; >= 0.
+  acd::ConcavityMeasure measure = acd::ConcavityMeasure::kShortestPath;
+  std::string planner = "PRM";
+  double time_limit = 5.0;  ///< [s]; used when samples == 0.
+  int samples = 0;          ///< > 0: Figure-4 protocol with this many collision-free samples.
+  std::string sampler = "acd";
+  AcdSamplerOptions sampler_options;  ///< Its seed is overwritten by `seed` when planning.
+  std::string collision_mode = "hulls+exact";
+  std::uint64_t seed = 1;
+};
+
+/// Reads and validates a scenario file; loads its workspace.
+/// @throws acd::InputError "<file>: <key path>: <rule>", e.g. "demo.yaml: planner.time_limit:
+///         expected a positive number, got 'fast'", for syntax errors (with the line), unknown
+///         keys, wrong types, out-of-range values, unknown names, and errors of the workspace.
+Scenario LoadScenario(const std::string& path);
+
+/// Checks the cross-field rules (planner/sampler names, budget, start/goal dimensions for the
+/// robot); called by LoadScenario() and again after command-line overrides.
+/// @throws acd::InputError naming the key ("<file>: planner.samples: ...").
+void CheckScenario(const Scenario& scenario);
+
+}  // namespace acdplan::planning

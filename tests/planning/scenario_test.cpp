@@ -1,0 +1,143 @@
+// Scenario YAML: every error names the file and the key path; the shipped configs load; the
+// demo scenario gives the Figure-4 outcome through the whole runner (collision world included).
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "acd/input_error.h"
+#include "planning/plan_scenario.h"
+#include "planning/scenario.h"
+
+namespace acdplan::planning {
+namespace {
+
+const std::string kConfigs = std::string(ACDPLAN_SOURCE_DIR) + "/configs";
+
+/// Writes `text` to a scenario file in a scratch folder next to configs/ (so relative
+/// workspace paths like ../envs/2d/wall_gap.yaml resolve) and returns its path.
+std::string Write(const std::string& name, const std::string& text) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "acdplan_scenario_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+const std::string kWorld = "workspace: {generator: wall_gap, seed: 1}\n";
+const std::string kQuery = "start: [2.5, 5]\ngoal: [7.5, 5]\n";
+
+/// The message LoadScenario() throws for `text`; "" if it does not throw.
+std::string ErrorOf(const std::string& text) {
+  try {
+    LoadScenario(Write("bad.yaml", text));
+  } catch (const acd::InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(Scenario, ErrorsNameTheKeyPath) {
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "planner: {name: PRM, time_limit: fast}\n")
+                .find("bad.yaml: planner.time_limit: expected a positive number, got 'fast'"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "planner: {name: PRM, time_limt: 3}\n")
+                .find("planner.time_limt: unknown key"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "colour: red\n").find("bad.yaml: colour: unknown key"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "planner: {name: PRN}\n")
+                .find("planner.name: unknown planner 'PRN'"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "sampler: {name: acd, uniform_share: 2}\n")
+                .find("sampler.uniform_share: expected a number in [0, 1], got '2'"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "sampler: {name: magic}\n")
+                .find("sampler.name: unknown sampler 'magic'"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "sampler: {orientation: sideways}\n")
+                .find("sampler.orientation: unknown orientation 'sideways'"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "planner: {name: RRTConnect, samples: 200}\n")
+                .find("planner.samples: a sample budget"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "planner: {samples: 0}\n")
+                .find("planner.samples: expected an integer >= 1, got '0'"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + "start: [2.5, x]\ngoal: [7.5, 5]\n")
+                .find("start[1]: expected a number, got 'x'"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + "start: [2.5, 5, 0]\ngoal: [7.5, 5]\n").find("start: expected [x, y]"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kQuery).find("workspace: required"), std::string::npos);
+  EXPECT_NE(ErrorOf("workspace: {generator: wall_gap, passage_width: -1}\n" + kQuery)
+                .find("workspace.passage_width: expected a positive number, got '-1'"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "robot: {shape: disc}\n")
+                .find("robot.radius: required for shape disc"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "acd: {measure: xx}\n").find("acd.measure:"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "seed: -3\n").find("seed: expected an integer >= 0"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "planner: [PRM\n").find("bad.yaml:"), std::string::npos);
+}
+
+TEST(Scenario, StartInCollisionIsAnInputError) {
+  const Scenario s = LoadScenario(Write("wall.yaml", kWorld + "start: [5.0, 8.0]\ngoal: [7.5, 5]\n"
+                                                              "planner: {samples: 10}\n"));
+  try {
+    PlanScenario(s);
+    FAIL() << "expected InputError";
+  } catch (const acd::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("start: the robot is in collision"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(Scenario, ShippedConfigsLoad) {
+  for (const char* name : {"demo.yaml", "wall_gap.yaml", "wall_gap_se2.yaml", "bug_trap.yaml",
+                           "maze.yaml", "spiral.yaml", "two_rooms.yaml", "zigzag.yaml",
+                           "occupancy_map.yaml"}) {
+    SCOPED_TRACE(name);
+    EXPECT_NO_THROW(LoadScenario(kConfigs + "/" + name));
+  }
+}
+
+TEST(Scenario, DemoFigure4OutcomeThroughTheRunner) {
+  Scenario s = LoadScenario(kConfigs + "/demo.yaml");
+  ASSERT_EQ(s.samples, 200);
+  int acd = 0, uniform = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    s.seed = seed;
+    s.sampler = "acd";
+    const PlanResult a = PlanScenario(s);
+    EXPECT_EQ(a.samples, 200u);
+    if (a.solved) {
+      ++acd;
+      EXPECT_GT(a.path.size(), 2u);
+      EXPECT_GT(a.path_length, 5.0 - 1e-9);
+    }
+    s.sampler = "uniform";
+    uniform += PlanScenario(s).solved;
+  }
+  EXPECT_GE(acd, 9);
+  EXPECT_LE(uniform, 1);
+}
+
+TEST(Scenario, SameSeedSameResult) {
+  Scenario s = LoadScenario(kConfigs + "/demo.yaml");
+  s.seed = 4;
+  const PlanResult a = PlanScenario(s);
+  const PlanResult b = PlanScenario(s);
+  EXPECT_EQ(a.solved, b.solved);
+  EXPECT_EQ(a.collision_checks, b.collision_checks);
+  EXPECT_EQ(a.path, b.path);
+}
+
+}  // namespace
+}  // namespace acdplan::planning
