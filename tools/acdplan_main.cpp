@@ -2,8 +2,14 @@
 // one line "acdplan: error: <message>" on stderr; 1 internal error.
 
 #include <CLI/CLI.hpp>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <ctime>
+#include <thread>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -19,6 +25,10 @@
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
 #include "collision/bench_collision.h"
+#include "planning/bench_record.h"
+#include "planning/bench_report.h"
+#include "planning/bench_runner.h"
+#include "planning/bench_spec.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
 
@@ -230,6 +240,135 @@ int RunPlan(const PlanArguments& args) {
   return result.solved ? 0 : 3;
 }
 
+
+/// What `acdplan bench` / `bench-merge` were asked to do.
+struct BenchArguments {
+  std::string spec;
+  int runs = 0;  ///< 0: the spec's.
+  std::string out;
+  std::string shard = "1/1";
+  int jobs = 1;
+  bool no_plots = false;
+  std::vector<std::string> merge_dirs;
+};
+
+volatile std::sig_atomic_t g_bench_stop = 0;
+
+extern "C" void OnBenchInterrupt(int) { g_bench_stop = 1; }
+
+/// The output folder must be a folder (or not exist yet).
+void CheckOutputDir(const std::string& dir) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
+    throw acd::InputError("--out " + dir + ": exists and is not a folder");
+  }
+}
+
+std::string UtcNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buffer[32];
+  std::strftime(buffer, sizeof(buffer), "%Y-%m-%d %H:%M:%S", &tm);
+  return buffer;
+}
+
+void ListOutputs(const std::string& dir) {
+  std::printf("wrote %s/{runs.csv,bench.json,results.json,summary.md,ompl_*.log", dir.c_str());
+  std::error_code ec;
+  if (std::filesystem::exists(std::filesystem::path(dir) / "success_vs_width.png", ec)) {
+    std::printf(",*.png");
+  }
+  std::printf("}\n");
+}
+
+/// `acdplan bench`: exit 0 when the runs are done (whatever they found), 130 after Ctrl-C
+/// (the outputs then hold the finished runs), 2 bad input.
+int RunBench(const BenchArguments& args) {
+  namespace planning = acdplan::planning;
+  const planning::BenchSpec spec = planning::LoadBenchSpec(args.spec);
+  const planning::BenchShard shard = planning::ParseBenchShard(args.shard);
+  const std::string out = args.out.empty() ? "bench-out/" + spec.name : args.out;
+  CheckOutputDir(out);
+
+  planning::BenchManifest manifest;
+  manifest.name = spec.name;
+  manifest.description = spec.description;
+  manifest.spec = args.spec;
+  manifest.seed = spec.seed;
+  manifest.runs = args.runs > 0 ? args.runs : spec.runs;
+  manifest.cases = static_cast<int>(spec.cases.size());
+  manifest.shards = {args.shard};
+  manifest.planned_runs = planning::BenchRunsOfShard(spec, manifest.runs, shard).size();
+  char host[256] = {};
+  if (gethostname(host, sizeof(host) - 1) == 0) manifest.hostname = host;
+  manifest.cpus = static_cast<int>(std::thread::hardware_concurrency());
+  double load[1] = {0.0};
+  if (getloadavg(load, 1) == 1) manifest.load_average = load[0];
+  manifest.jobs = args.jobs;
+  manifest.started = UtcNow();
+
+  // Ctrl-C: stop starting runs, drop the ones in flight, write what finished, exit 130. A
+  // second Ctrl-C kills at once (the files already written stay whole: atomic writes).
+  struct sigaction action {};
+  action.sa_handler = OnBenchInterrupt;
+  action.sa_flags = SA_RESETHAND;  // No SA_RESTART: a waiting poll() returns at once.
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+
+  const auto started = std::chrono::steady_clock::now();
+  planning::BenchRunOptions options;
+  options.runs = manifest.runs;
+  options.shard = shard;
+  options.jobs = args.jobs;
+  options.progress = &std::cerr;
+  options.stop = &g_bench_stop;
+  options.checkpoint = [&](const std::vector<planning::BenchRecord>& records) {
+    planning::BenchManifest partial = manifest;
+    partial.wall_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    partial.interrupted = true;  // Until the final write says otherwise.
+    planning::WriteBenchRecord(out, partial, records);
+  };
+  std::fprintf(stderr, "bench %s: %zu cases x %d runs, shard %s: %llu runs, %d in parallel -> %s\n",
+               spec.name.c_str(), spec.cases.size(), manifest.runs, args.shard.c_str(),
+               static_cast<unsigned long long>(manifest.planned_runs), args.jobs, out.c_str());
+  const planning::BenchRunOutcome outcome = planning::RunBench(spec, options);
+  manifest.wall_s = outcome.wall_s;
+  manifest.interrupted = outcome.interrupted;
+  try {
+    planning::WriteBenchOutputs(out, manifest, outcome.records, !args.no_plots, &std::cerr);
+  } catch (const std::runtime_error& error) {
+    throw acd::InputError(error.what());
+  }
+  ListOutputs(out);
+  if (outcome.interrupted) {
+    std::fprintf(stderr, "bench: interrupted: %zu of %llu runs written\n", outcome.records.size(),
+                 static_cast<unsigned long long>(outcome.planned));
+    return 130;
+  }
+  return 0;
+}
+
+/// `acdplan bench-merge`: joins shard folders into the outputs one unsharded run writes.
+int RunBenchMerge(const BenchArguments& args) {
+  namespace planning = acdplan::planning;
+  planning::BenchManifest manifest;
+  std::vector<planning::BenchRecord> records;
+  planning::MergeBenchRecords(args.merge_dirs, &manifest, &records);
+  const std::string out = args.out.empty() ? "bench-out/" + manifest.name + "-merged" : args.out;
+  CheckOutputDir(out);
+  try {
+    planning::WriteBenchOutputs(out, manifest, records, !args.no_plots, &std::cerr);
+  } catch (const std::runtime_error& error) {
+    throw acd::InputError(error.what());
+  }
+  std::printf("merged %zu runs from %zu folders\n", records.size(), args.merge_dirs.size());
+  ListOutputs(out);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -318,6 +457,39 @@ int main(int argc, char** argv) {
   plan->add_option("--json", plan_args.json_path, "Write the result as JSON here");
   plan->add_option("--svg", plan_args.svg_path, "Write an SVG picture here (2D)");
 
+
+  BenchArguments bench_args;
+  CLI::App* bench = app.add_subcommand(
+      "bench",
+      "Run the benchmark BENCH.yaml (planning/bench_spec.h: worlds x robots x samplers x "
+      "planners x budgets) and write runs.csv, results.json, summary.md, one OMPL benchmark log "
+      "per world and PNG plots into --out. Exit status: 0 done, 130 interrupted (the finished "
+      "runs are written), 2 bad input or usage, 1 internal error.");
+  bench->add_option("BENCH", bench_args.spec, "Benchmark YAML file")->required();
+  bench->add_option("--runs", bench_args.runs, "Runs per case (default: the file's)")
+      ->check(CLI::PositiveNumber);
+  bench->add_option("--out", bench_args.out, "Output folder (default bench-out/<name>)");
+  bench->add_option("--shard", bench_args.shard,
+                    "I/N: run only the runs k (global order) with k % N == I - 1; join the "
+                    "shards' folders with bench-merge")
+      ->capture_default_str()
+      ->check(ParsedBy(acdplan::planning::ParseBenchShard));
+  bench->add_option("--jobs", bench_args.jobs,
+                    "Runs in parallel (child processes); more than free cores inflates times")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  bench->add_flag("--no-plots", bench_args.no_plots, "Skip tools/plot_bench.py");
+
+  CLI::App* bench_merge = app.add_subcommand(
+      "bench-merge",
+      "Join the output folders of `bench --shard` runs into the files one unsharded run "
+      "writes. Exit status: 0 ok, 2 bad input (folders of different benchmarks, a run in two "
+      "folders), 1 internal error.");
+  bench_merge->add_option("DIR", bench_args.merge_dirs, "Shard output folders")->required();
+  bench_merge->add_option("--out", bench_args.out,
+                          "Output folder (default bench-out/<name>-merged)");
+  bench_merge->add_flag("--no-plots", bench_args.no_plots, "Skip tools/plot_bench.py");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -332,6 +504,8 @@ int main(int argc, char** argv) {
     if (decompose->parsed()) return RunDecompose(args);
     if (plan->parsed()) return RunPlan(plan_args);
     if (bench_collision->parsed()) return RunBenchCollision(bench_options, bench_json);
+    if (bench->parsed()) return RunBench(bench_args);
+    if (bench_merge->parsed()) return RunBenchMerge(bench_args);
     return 0;
   } catch (const acd::InputError& error) {
     std::cerr << "acdplan: error: " << error.what() << "\n";

@@ -1,0 +1,203 @@
+#include "planning/bench_record.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <tuple>
+
+#include "acd/input_error.h"
+
+namespace acdplan::planning {
+
+namespace {
+
+const char* const kColumns[] = {
+    "case",    "world",  "family", "passage_width", "workspace_width", "robot",
+    "sampler", "planner", "budget", "time_limit",   "sample_budget",   "run",
+    "seed",    "status", "solved", "time_s",        "decomposition_s", "samples",
+    "collision_checks", "path_length", "components", "openings"};
+constexpr size_t kColumnCount = sizeof(kColumns) / sizeof(kColumns[0]);
+
+std::string Real(double x) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.17g", x);
+  return buffer;
+}
+
+std::vector<std::string> Split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::istringstream in(line);
+  while (std::getline(in, field, ',')) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.emplace_back();
+  return fields;
+}
+
+}  // namespace
+
+std::string BenchCsvHeader() {
+  std::string header;
+  for (const char* c : kColumns) header += (header.empty() ? "" : ",") + std::string(c);
+  return header;
+}
+
+std::string BenchRecordsToCsv(const std::vector<BenchRecord>& records) {
+  std::ostringstream out;
+  out << BenchCsvHeader() << "\n";
+  for (const BenchRecord& r : records) {
+    out << r.case_index << "," << r.world << "," << r.family << "," << Real(r.passage_width) << ","
+        << Real(r.workspace_width) << "," << r.robot << "," << r.sampler << "," << r.planner << ","
+        << r.budget << "," << Real(r.time_limit) << "," << r.sample_budget << "," << r.run << ","
+        << r.seed << "," << r.status << "," << (r.solved ? 1 : 0) << "," << Real(r.time_s) << ","
+        << Real(r.decomposition_s) << "," << r.samples << "," << r.collision_checks << ","
+        << Real(r.path_length) << "," << r.components << "," << r.openings << "\n";
+  }
+  return out.str();
+}
+
+std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw acd::InputError(path + ": cannot read the file");
+  std::string line;
+  if (!std::getline(in, line) || line != BenchCsvHeader()) {
+    throw acd::InputError(path + ":1: expected the header " + BenchCsvHeader());
+  }
+  std::vector<BenchRecord> records;
+  int number = 1;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.empty()) continue;
+    const std::vector<std::string> f = Split(line);
+    const std::string where = path + ":" + std::to_string(number);
+    if (f.size() != kColumnCount) {
+      throw acd::InputError(where + ": expected " + std::to_string(kColumnCount) +
+                            " fields, got " + std::to_string(f.size()));
+    }
+    size_t column = 0;
+    try {
+      BenchRecord r;
+      auto integer = [&](size_t i) {
+        column = i;
+        size_t used = 0;
+        const long long v = std::stoll(f[i], &used);
+        if (used != f[i].size()) throw std::invalid_argument("trailing");
+        return v;
+      };
+      auto unsigned_integer = [&](size_t i) {
+        column = i;
+        size_t used = 0;
+        if (!f[i].empty() && f[i][0] == '-') throw std::invalid_argument("negative");
+        const unsigned long long v = std::stoull(f[i], &used);
+        if (used != f[i].size()) throw std::invalid_argument("trailing");
+        return static_cast<std::uint64_t>(v);
+      };
+      auto real = [&](size_t i) {
+        column = i;
+        size_t used = 0;
+        const double v = std::stod(f[i], &used);
+        if (used != f[i].size()) throw std::invalid_argument("trailing");
+        return v;
+      };
+      r.case_index = static_cast<int>(integer(0));
+      r.world = f[1];
+      r.family = f[2];
+      r.passage_width = real(3);
+      r.workspace_width = real(4);
+      r.robot = f[5];
+      r.sampler = f[6];
+      r.planner = f[7];
+      r.budget = f[8];
+      r.time_limit = real(9);
+      r.sample_budget = static_cast<int>(integer(10));
+      r.run = static_cast<int>(integer(11));
+      r.seed = unsigned_integer(12);
+      r.status = f[13];
+      column = 13;
+      if (r.status != "solved" && r.status != "unsolved" && r.status != "crashed" &&
+          r.status != "timeout") {
+        throw std::invalid_argument("status");
+      }
+      r.solved = integer(14) != 0;
+      r.time_s = real(15);
+      r.decomposition_s = real(16);
+      r.samples = unsigned_integer(17);
+      r.collision_checks = unsigned_integer(18);
+      r.path_length = real(19);
+      r.components = static_cast<int>(integer(20));
+      r.openings = static_cast<int>(integer(21));
+      records.push_back(r);
+    } catch (const std::exception&) {
+      throw acd::InputError(where + ": column " + kColumns[column] + ": cannot read '" +
+                            f[column] + "'");
+    }
+  }
+  return records;
+}
+
+void SortBenchRecords(std::vector<BenchRecord>* records) {
+  std::stable_sort(records->begin(), records->end(),
+                   [](const BenchRecord& a, const BenchRecord& b) {
+                     return std::tie(a.case_index, a.run) < std::tie(b.case_index, b.run);
+                   });
+}
+
+std::string BenchManifestToJson(const BenchManifest& m) {
+  nlohmann::json j;
+  j["format"] = "acdplan.bench/1";
+  j["name"] = m.name;
+  j["description"] = m.description;
+  j["spec"] = m.spec;
+  j["seed"] = m.seed;
+  j["runs"] = m.runs;
+  j["cases"] = m.cases;
+  j["shards"] = m.shards;
+  j["planned_runs"] = m.planned_runs;
+  j["interrupted"] = m.interrupted;
+  j["hostname"] = m.hostname;
+  j["cpus"] = m.cpus;
+  j["load_average"] = m.load_average;
+  j["jobs"] = m.jobs;
+  j["started"] = m.started;
+  j["wall_s"] = m.wall_s;
+  return j.dump(2) + "\n";
+}
+
+BenchManifest ReadBenchManifest(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw acd::InputError(path + ": cannot read the file");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& error) {
+    throw acd::InputError(path + ": not valid JSON: " + error.what());
+  }
+  if (!j.is_object() || j.value("format", "") != "acdplan.bench/1") {
+    throw acd::InputError(path + ": format: expected \"acdplan.bench/1\"");
+  }
+  BenchManifest m;
+  const char* key = "";
+  try {
+    key = "name", m.name = j.at("name").get<std::string>();
+    key = "description", m.description = j.at("description").get<std::string>();
+    key = "spec", m.spec = j.at("spec").get<std::string>();
+    key = "seed", m.seed = j.at("seed").get<std::uint64_t>();
+    key = "runs", m.runs = j.at("runs").get<int>();
+    key = "cases", m.cases = j.at("cases").get<int>();
+    key = "shards", m.shards = j.at("shards").get<std::vector<std::string>>();
+    key = "planned_runs", m.planned_runs = j.at("planned_runs").get<std::uint64_t>();
+    key = "interrupted", m.interrupted = j.at("interrupted").get<bool>();
+    key = "hostname", m.hostname = j.at("hostname").get<std::string>();
+    key = "cpus", m.cpus = j.at("cpus").get<int>();
+    key = "load_average", m.load_average = j.at("load_average").get<double>();
+    key = "jobs", m.jobs = j.at("jobs").get<int>();
+    key = "started", m.started = j.at("started").get<std::string>();
+    key = "wall_s", m.wall_s = j.at("wall_s").get<double>();
+  } catch (const nlohmann::json::exception&) {
+    throw acd::InputError(path + ": " + key + ": missing or of the wrong type");
+  }
+  return m;
+}
+
+}  // namespace acdplan::planning

@@ -1,0 +1,73 @@
+#pragma once
+// The raw record of a benchmark: one row per run (runs.csv) and the manifest (bench.json) of
+// an output folder. Every other output is regenerated from these two, so a merge of shards
+// and an unsharded run give the same files (apart from the measured times).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace acdplan::planning {
+
+/// One finished run, self-describing (a merge needs no BENCH.yaml).
+struct BenchRecord {
+  int case_index = 0;       ///< Position of the case in the benchmark's global order.
+  std::string world;        ///< World name (unique in the benchmark).
+  std::string family;       ///< The sweep the world belongs to (its name if none).
+  double passage_width = 0.0;    ///< [units]; 0 if unknown.
+  double workspace_width = 0.0;  ///< [units]
+  std::string robot, sampler, planner;
+  std::string budget;       ///< "200 samples" or "2 s".
+  double time_limit = 0.0;  ///< [s]; 0 for a sample budget.
+  int sample_budget = 0;    ///< 0 for a time budget.
+  int run = 0;              ///< 0-based run index within the case.
+  std::uint64_t seed = 0;   ///< The run's seed (samplers and OMPL).
+  /// "solved", "unsolved", "crashed" (the run died: its message is lost) or "timeout" (killed
+  /// by the watchdog at 10 x the time limit + 60 s).
+  std::string status;
+  bool solved = false;
+  double time_s = 0.0;           ///< Wall time of the run [s]; acd: decomposition included.
+  double decomposition_s = 0.0;  ///< Free space + ACD [s]; acd runs only (0 otherwise).
+  std::uint64_t samples = 0;     ///< Samples placed / roadmap or tree vertices.
+  std::uint64_t collision_checks = 0;
+  double path_length = 0.0;      ///< 0 without a solution.
+  int components = 0, openings = 0;  ///< Of the world's ACD.
+};
+
+/// The header line of runs.csv (no newline).
+std::string BenchCsvHeader();
+
+/// runs.csv: the header and one line per record, in the given order. Reals are written with
+/// 17 significant digits so a read gives back the same numbers.
+std::string BenchRecordsToCsv(const std::vector<BenchRecord>& records);
+
+/// Reads runs.csv. @throws acd::InputError "<path>:<line>: <rule>" for a wrong header, a
+/// wrong column count or an unparsable field.
+std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path);
+
+/// Sorts by (case_index, run) -- the global order.
+void SortBenchRecords(std::vector<BenchRecord>* records);
+
+/// What an output folder holds (bench.json).
+struct BenchManifest {
+  std::string name, description;
+  std::string spec;              ///< The BENCH.yaml it came from.
+  std::uint64_t seed = 1;        ///< Base seed.
+  int runs = 0;                  ///< Runs per case.
+  int cases = 0;                 ///< Cases in the whole benchmark.
+  std::vector<std::string> shards;  ///< "I/N" of each part in this folder ("1/1" unsharded).
+  std::uint64_t planned_runs = 0;   ///< Runs the parts in this folder were to do.
+  bool interrupted = false;      ///< A part stopped early (Ctrl-C).
+  std::string hostname;          ///< Machine(s), comma-separated after a merge.
+  int cpus = 0;                  ///< std::thread::hardware_concurrency() (max over parts).
+  double load_average = 0.0;     ///< 1-minute load average when the (first) part started.
+  int jobs = 1;                  ///< Runs in parallel.
+  std::string started;           ///< "YYYY-MM-DD HH:MM:SS" UTC of the (earliest) start.
+  double wall_s = 0.0;           ///< Wall time (sum over parts) [s].
+};
+
+std::string BenchManifestToJson(const BenchManifest& manifest);
+/// @throws acd::InputError "<path>: <key>: <rule>" for a missing or malformed field.
+BenchManifest ReadBenchManifest(const std::string& path);
+
+}  // namespace acdplan::planning

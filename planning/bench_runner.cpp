@@ -1,0 +1,331 @@
+#include "planning/bench_runner.h"
+
+#include <poll.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <ompl/util/Console.h>
+#include <ostream>
+#include <set>
+#include <sstream>
+
+#include "acd/input_error.h"
+#include "collision/collision_mode.h"
+#include "collision/collision_world.h"
+#include "collision/obstacle_set.h"
+#include "planning/plan_scenario.h"
+
+namespace acdplan::planning {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point from) {
+  return std::chrono::duration<double>(Clock::now() - from).count();
+}
+
+/// `q` with the dimension `robot` plans in: [x, y, yaw] for a polygon (yaw 0 if absent),
+/// [x, y] otherwise.
+std::vector<double> Fitted(std::vector<double> q, const envs::Robot& robot) {
+  if (robot.shape == envs::RobotShape::kPolygon) {
+    if (q.size() == 2) q.push_back(0.0);
+  } else {
+    q.resize(2);
+  }
+  return q;
+}
+
+Scenario RunScenario(const BenchSpec& spec, const BenchCase& c, std::uint64_t seed) {
+  const BenchWorld& world = spec.worlds[c.world];
+  const BenchRobot& robot = spec.robots[c.robot];
+  Scenario s = world.scenario;
+  s.path = spec.path;
+  s.robot = robot.robot;
+  s.start = Fitted(s.start, robot.robot);
+  s.goal = Fitted(s.goal, robot.robot);
+  s.sampler = c.sampler;
+  s.planner = c.planner;
+  s.samples = c.budget.samples;
+  if (c.budget.samples == 0) s.time_limit = c.budget.time_limit;
+  s.sampler_options = robot.acd_options;
+  s.seed = seed;
+  return s;
+}
+
+/// The pose of configuration `q` ([x, y] or [x, y, yaw]).
+Eigen::Isometry2d Pose(const std::vector<double>& q) {
+  Eigen::Isometry2d pose = Eigen::Isometry2d::Identity();
+  pose.translate(Eigen::Vector2d(q[0], q[1]));
+  if (q.size() == 3) pose.rotate(q[2]);
+  return pose;
+}
+
+/// As PlanScenario's validity checker: the robot inside the bounds and free of obstacles.
+bool Fits(const collision::CollisionWorld& world, const envs::Robot& robot,
+          const Eigen::AlignedBox2d& bounds, const Eigen::Isometry2d& pose) {
+  switch (robot.shape) {
+    case envs::RobotShape::kPoint:
+      if (!bounds.contains(pose.translation())) return false;
+      break;
+    case envs::RobotShape::kDisc: {
+      const Eigen::Vector2d r(robot.radius, robot.radius);
+      if (!bounds.contains(Eigen::AlignedBox2d(pose.translation() - r, pose.translation() + r))) {
+        return false;
+      }
+      break;
+    }
+    case envs::RobotShape::kPolygon:
+      for (const acd::Point2d& p : robot.polygon.outer) {
+        if (!bounds.contains(pose * p)) return false;
+      }
+      break;
+    case envs::RobotShape::kMesh:
+      return false;
+  }
+  return world.IsValid(pose);
+}
+
+/// Fails before any run if a robot does not fit at a world's start or goal.
+void CheckQueries(const BenchSpec& spec) {
+  std::set<std::pair<int, int>> pairs;
+  for (const BenchCase& c : spec.cases) pairs.insert({c.world, c.robot});
+  std::map<int, std::shared_ptr<const collision::ObstacleSet>> obstacles;
+  for (const auto& [w, r] : pairs) {
+    const BenchWorld& world = spec.worlds[w];
+    const BenchRobot& robot = spec.robots[r];
+    if (!obstacles.count(w)) {
+      obstacles[w] = std::make_shared<const collision::ObstacleSet>(
+          collision::BuildObstacleSet(world.scenario.workspace));
+    }
+    collision::CollisionWorldOptions options;
+    options.mode = collision::ParseCollisionMode(world.scenario.collision_mode);
+    const collision::CollisionWorld check(obstacles[w], robot.robot, options);
+    const Eigen::AlignedBox2d& bounds = world.scenario.workspace.bounds;
+    for (const char* which : {"start", "goal"}) {
+      const std::vector<double> q = Fitted(
+          which[0] == 's' ? world.scenario.start : world.scenario.goal, robot.robot);
+      if (!Fits(check, robot.robot, bounds, Pose(q))) {
+        throw acd::InputError(spec.path + ": worlds: " + world.name + ": robot " + robot.name +
+                              ": " + which +
+                              ": the robot is in collision or out of bounds there");
+      }
+    }
+  }
+}
+
+/// The child's side: plan, report one line on `fd`, exit. Never returns.
+[[noreturn]] void RunChild(const Scenario& scenario, double watchdog_s, int fd) {
+  std::signal(SIGINT, SIG_IGN);  // The parent decides what a Ctrl-C does to a run.
+  std::signal(SIGTERM, SIG_DFL);
+  alarm(static_cast<unsigned>(std::ceil(watchdog_s)));
+  std::string line;
+  int status = 0;
+  try {
+    ConfigureOmpl(scenario.seed, true);
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);  // Keep the progress line readable.
+    const PlanResult result = PlanScenario(scenario);
+    const bool acd = scenario.sampler == "acd";
+    const double decomposition_s = result.decomposition_ms / 1e3;
+    char buffer[512];
+    std::snprintf(buffer, sizeof(buffer), "OK %d %.17g %.17g %llu %llu %.17g %d %d\n",
+                  result.solved ? 1 : 0,
+                  acd ? result.time_s : std::max(0.0, result.time_s - decomposition_s),
+                  acd ? decomposition_s : 0.0, static_cast<unsigned long long>(result.samples),
+                  static_cast<unsigned long long>(result.collision_checks), result.path_length,
+                  result.components, result.openings);
+    line = buffer;
+  } catch (const acd::InputError& error) {
+    line = std::string("E ") + error.what() + "\n";
+    status = 2;
+  } catch (const std::exception& error) {
+    line = std::string("X ") + error.what() + "\n";
+    status = 1;
+  } catch (...) {
+    line = "X unknown exception\n";
+    status = 1;
+  }
+  size_t written = 0;
+  while (written < line.size()) {
+    const ssize_t n = write(fd, line.data() + written, line.size() - written);
+    if (n <= 0) break;
+    written += static_cast<size_t>(n);
+  }
+  close(fd);
+  _exit(status);  // No destructors or atexit handlers of the parent's objects.
+}
+
+std::string Duration(double s) {
+  char buffer[32];
+  const long t = std::lround(s);
+  if (t >= 3600) {
+    std::snprintf(buffer, sizeof(buffer), "%ldh%02ldm", t / 3600, t / 60 % 60);
+  } else {
+    std::snprintf(buffer, sizeof(buffer), "%ldm%02lds", t / 60, t % 60);
+  }
+  return buffer;
+}
+
+struct Child {
+  int fd = -1;
+  BenchRunId id;
+  std::string output;
+};
+
+}  // namespace
+
+BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) {
+  const int runs = options.runs > 0 ? options.runs : spec.runs;
+  const int jobs = std::max(1, options.jobs);
+  CheckQueries(spec);
+  const std::vector<BenchRunId> ids = BenchRunsOfShard(spec, runs, options.shard);
+  BenchRunOutcome outcome;
+  outcome.planned = ids.size();
+  const Clock::time_point started = Clock::now();
+  Clock::time_point last_checkpoint = started, last_progress = started;
+  const bool tty = options.progress && isatty(STDERR_FILENO);
+  std::map<pid_t, Child> running;
+  size_t next = 0;
+  auto stopping = [&] { return options.stop && *options.stop; };
+
+  auto show_progress = [&](bool final) {
+    if (!options.progress) return;
+    const double elapsed = Seconds(started);
+    if (!final && !tty && Seconds(last_progress) < 10.0) return;
+    last_progress = Clock::now();
+    const size_t done = outcome.records.size();
+    std::ostringstream line;
+    line << "bench " << spec.name << ": " << done << "/" << ids.size() << " runs, elapsed "
+         << Duration(elapsed);
+    if (done > 0 && done < ids.size()) {
+      line << ", about " << Duration(elapsed / done * (ids.size() - done)) << " left";
+    }
+    *options.progress << (tty ? "\r" : "") << line.str() << (tty && !final ? "   " : "\n")
+                      << std::flush;
+  };
+
+  auto kill_all = [&] {
+    for (auto& [pid, child] : running) {
+      kill(pid, SIGKILL);
+      waitpid(pid, nullptr, 0);
+      close(child.fd);
+    }
+    running.clear();
+  };
+
+  while (next < ids.size() || !running.empty()) {
+    if (stopping()) {
+      kill_all();
+      outcome.interrupted = true;
+      break;
+    }
+    while (static_cast<int>(running.size()) < jobs && next < ids.size()) {
+      const BenchRunId id = ids[next++];
+      const BenchCase& c = spec.cases[id.case_index];
+      const Scenario scenario = RunScenario(spec, c, id.seed);
+      const double watchdog = c.budget.samples > 0 ? 600.0 : 10.0 * c.budget.time_limit + 60.0;
+      int fds[2];
+      if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe(): ") + std::strerror(errno));
+      std::fflush(nullptr);
+      const pid_t pid = fork();
+      if (pid < 0) throw std::runtime_error(std::string("fork(): ") + std::strerror(errno));
+      if (pid == 0) {
+        close(fds[0]);
+        RunChild(scenario, watchdog, fds[1]);
+      }
+      close(fds[1]);
+      running[pid] = Child{fds[0], id, ""};
+    }
+    // Drain the pipes (a child blocks if its pipe is full) and reap what has finished.
+    std::vector<pollfd> polls;
+    for (const auto& [pid, child] : running) polls.push_back({child.fd, POLLIN, 0});
+    if (poll(polls.data(), polls.size(), 200) < 0 && errno != EINTR) {
+      throw std::runtime_error(std::string("poll(): ") + std::strerror(errno));
+    }
+    for (auto& [pid, child] : running) {
+      for (const pollfd& p : polls) {
+        if (p.fd != child.fd || !(p.revents & (POLLIN | POLLHUP))) continue;
+        char buffer[4096];
+        const ssize_t n = read(child.fd, buffer, sizeof(buffer));
+        if (n > 0) child.output.append(buffer, static_cast<size_t>(n));
+      }
+    }
+    int status = 0;
+    pid_t pid;
+    while ((pid = waitpid(-1, &status, WNOHANG)) > 0) {
+      auto it = running.find(pid);
+      if (it == running.end()) continue;
+      Child child = std::move(it->second);
+      running.erase(it);
+      char buffer[4096];
+      ssize_t n;
+      while ((n = read(child.fd, buffer, sizeof(buffer))) > 0) {
+        child.output.append(buffer, static_cast<size_t>(n));
+      }
+      close(child.fd);
+      const BenchCase& c = spec.cases[child.id.case_index];
+      const BenchWorld& world = spec.worlds[c.world];
+      BenchRecord r;
+      r.case_index = c.index;
+      r.world = world.name;
+      r.family = world.family;
+      r.passage_width = world.passage_width;
+      r.workspace_width = world.workspace_width;
+      r.robot = spec.robots[c.robot].name;
+      r.sampler = c.sampler;
+      r.planner = c.planner;
+      r.budget = c.budget.Label();
+      r.time_limit = c.budget.samples > 0 ? 0.0 : c.budget.time_limit;
+      r.sample_budget = c.budget.samples;
+      r.run = child.id.run;
+      r.seed = child.id.seed;
+      if (child.output.rfind("E ", 0) == 0) {
+        kill_all();
+        std::string message = child.output.substr(2);
+        while (!message.empty() && message.back() == '\n') message.pop_back();
+        throw acd::InputError(message);
+      }
+      int solved = 0;
+      unsigned long long samples = 0, checks = 0;
+      if (WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
+          std::sscanf(child.output.c_str(), "OK %d %lf %lf %llu %llu %lf %d %d", &solved,
+                      &r.time_s, &r.decomposition_s, &samples, &checks, &r.path_length,
+                      &r.components, &r.openings) == 8) {
+        r.solved = solved != 0;
+        r.status = r.solved ? "solved" : "unsolved";
+        r.samples = samples;
+        r.collision_checks = checks;
+      } else {
+        r.status = WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM ? "timeout" : "crashed";
+        if (options.progress) {
+          *options.progress << (tty ? "\n" : "") << "bench: run " << r.run << " of "
+                            << c.Key(spec) << " (seed " << r.seed << ") " << r.status
+                            << (child.output.rfind("X ", 0) == 0 ? ": " + child.output.substr(2)
+                                                                 : std::string("\n"));
+        }
+      }
+      outcome.records.push_back(r);
+      show_progress(false);
+    }
+    if (options.checkpoint && Seconds(last_checkpoint) >= options.checkpoint_s) {
+      last_checkpoint = Clock::now();
+      std::vector<BenchRecord> sorted = outcome.records;
+      SortBenchRecords(&sorted);
+      options.checkpoint(sorted);
+    }
+  }
+  SortBenchRecords(&outcome.records);
+  outcome.wall_s = Seconds(started);
+  show_progress(true);
+  return outcome;
+}
+
+}  // namespace acdplan::planning

@@ -1,0 +1,122 @@
+#pragma once
+// Benchmark definitions: the BENCH.yaml file of `acdplan bench` and its expansion into cases
+// and runs (a fixed global order, so shards and seeds are reproducible).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "planning/scenario.h"
+
+namespace acdplan::planning {
+
+struct BenchSpec;
+
+/// One world of a benchmark: a workspace with a start and a goal (for every robot).
+struct BenchWorld {
+  std::string name;            ///< Unique; used in file names (letters, digits, '_', '-', '.').
+  std::string family;          ///< Worlds of one sweep share it (plots: success vs width).
+  double passage_width = 0.0;  ///< [units]; 0 if unknown. Taken from the generator.
+  double workspace_width = 0.0;  ///< Bounds' extent along x [units].
+  /// Workspace, start and goal ([x, y] or [x, y, yaw]; point and disc robots use x, y, a
+  /// polygon robot yaw 0 when absent), ACD tolerance and measure, collision mode.
+  Scenario scenario;
+};
+
+/// One robot of a benchmark.
+struct BenchRobot {
+  std::string name;
+  envs::Robot robot;
+  AcdSamplerOptions acd_options;  ///< The bench's acd_sampler options, orientation per robot.
+};
+
+/// A budget: exactly one of `time_limit` (> 0) and `samples` (>= 1, the Figure-4 protocol).
+struct BenchBudget {
+  double time_limit = 0.0;  ///< [s]
+  int samples = 0;
+  /// "200 samples" or "2 s" (as PlanResult::budget).
+  std::string Label() const;
+};
+
+/// One cell of the benchmark: world x robot x sampler x planner x budget.
+struct BenchCase {
+  int index = 0;  ///< Position in BenchSpec::cases.
+  int world = 0, robot = 0;  ///< Indices into BenchSpec::worlds / robots.
+  std::string sampler, planner;
+  BenchBudget budget;
+  /// "world/robot/sampler/planner/budget": stable, seeds are derived from it.
+  std::string Key(const BenchSpec& spec) const;
+};
+
+/// A loaded, validated benchmark. The file format (see configs/bench/*.yaml):
+///
+///   name: narrow_passages           # required: letters, digits, '_', '-'
+///   description: "one line"
+///   seed: 1                         # base seed, integer >= 0 (default 1)
+///   runs: 20                        # runs per case, integer >= 1 (default 10)
+///   acd: {tau_rel: 0.02, measure: sp}   # defaults for worlds without their own
+///   acd_sampler: {uniform_share: 0.1, opening_weight: 4, centroid_spread: 0.3,
+///                 opening_spread: 0.5}
+///   worlds:                         # required, non-empty
+///     - name: demo                  # required unless `scenario` gives one (its file stem)
+///       scenario: ../demo.yaml      # a scenario file: workspace, start, goal, acd, collision
+///     - name: gap                   # or inline:
+///       workspace: {generator: wall_gap, seed: 1, wall_thickness: 1.0}   # or a file name
+///       start: [2.5, 5.0]
+///       goal: [7.5, 5.0]
+///       passage_widths: [0.5, 0.2, 0.05]  # optional sweep: one world per width, named
+///                                   # "<name>_w<width>", family <name>
+///   robots:                         # default [{name: point, shape: point}]
+///     - {name: disc, shape: disc, radius: 0.05}
+///     - {name: bar, shape: polygon, polygon: [[x, y], ...], orientation: aligned}
+///   cases:                          # required, non-empty; each a cross product
+///     - worlds: [demo]              # optional subsets by name (default: all)
+///       robots: [disc]
+///       samplers: [uniform, acd]    # registry.h SamplerNames()
+///       planners: [PRM]             # registry.h PlannerNames()
+///       budgets: [{samples: 200}, {time_limit: 2}]   # samples: PRM and PRMstar only
+struct BenchSpec {
+  std::string path;  ///< The file it was read from.
+  std::string name, description;
+  std::uint64_t seed = 1;
+  int runs = 10;
+  std::vector<BenchWorld> worlds;
+  std::vector<BenchRobot> robots;
+  std::vector<BenchCase> cases;  ///< In file order: groups, then worlds, robots, samplers,
+                                 ///< planners, budgets.
+};
+
+/// Reads and validates a benchmark file; loads (generates) its worlds.
+/// @throws acd::InputError "<file>: <key path>: <rule>", e.g. "b.yaml: cases[0].planners[1]:
+///         unknown planner 'PRN' (known: ...)", for syntax errors (with the line), unknown keys,
+///         wrong types, out-of-range values, unknown or duplicate names, a sample budget with a
+///         planner other than PRM / PRMstar, and errors of a world or scenario file.
+BenchSpec LoadBenchSpec(const std::string& path);
+
+/// Which part of the runs to do: runs k (global index) with k % count == index - 1.
+struct BenchShard {
+  int index = 1;  ///< 1-based; in [1, count].
+  int count = 1;  ///< >= 1.
+};
+
+/// Parses "I/N" (1 <= I <= N). @throws acd::InputError otherwise.
+BenchShard ParseBenchShard(const std::string& text);
+
+/// One run to do: its place in the global order and its seed.
+struct BenchRunId {
+  int case_index = 0;
+  int run = 0;               ///< 0-based within the case.
+  std::uint64_t global = 0;  ///< case_index * runs + run.
+  std::uint64_t seed = 0;
+};
+
+/// The seed of run `run` of the case with key `case_key`: a 64-bit mix (splitmix64 over an
+/// FNV-1a hash of the key) of the base seed, the key and the run index. The same inputs give
+/// the same seed on every machine, whatever the shard.
+std::uint64_t BenchRunSeed(std::uint64_t base_seed, const std::string& case_key, int run);
+
+/// The runs of `shard` in the global order (case-major, then run index), with `runs` runs per
+/// case.
+std::vector<BenchRunId> BenchRunsOfShard(const BenchSpec& spec, int runs, const BenchShard& shard);
+
+}  // namespace acdplan::planning
