@@ -68,6 +68,8 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   internal::ResolveOptions resolve;
   resolve.score_concavity = options.score_concavity;
   resolve.score_distance = options.score_distance;
+  const double radius = ReferenceRadius(polygon);
+  if (radius > 0.0) resolve.concavity_unit = radius / 100.0;
   resolve.steiner_cuts = options.steiner_cuts;
   resolve.tau = options.min_convexity > 0.0 ? 0.0 : options.tau;
   const int root = static_cast<int>(out->tree.size());

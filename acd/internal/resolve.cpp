@@ -134,13 +134,19 @@ double ConcavityAt(const Concavity2d& concavity, const Ring2d& outer, const Endp
   return (1.0 - s) * concavity.outer[e.index] + s * concavity.outer[Next(e.index, n)];
 }
 
+// Whether a cut from notch v (between a and b) to x resolves v: x lies in the cone where both
+// angles at v are at most 180 degrees. A side counts as straight within rounding noise, the
+// tolerance IsNotch() uses, so that a rotated copy of a collinear configuration keeps its cuts.
+bool InCone(const Point2d& a, const Point2d& v, const Point2d& b, const Point2d& x) {
+  return !IsNotch(a, v, x) && !IsNotch(x, v, b);
+}
+
 // Whether a cut from `r` also resolves outer vertex `x`: x is a notch and r lies in its cone.
 bool ResolvesBoth(const Ring2d& outer, int x, const Point2d& r) {
   const int n = static_cast<int>(outer.size());
   const Point2d& a = outer[Prev(x, n)];
   const Point2d& b = outer[Next(x, n)];
-  return IsNotch(a, outer[x], b) && Orientation(a, outer[x], r) >= 0 &&
-         Orientation(outer[x], b, r) >= 0;
+  return IsNotch(a, outer[x], b) && InCone(a, outer[x], b, r);
 }
 
 // Candidate end points on the outer ring for a cut from `from` (vertex `index` of ring
@@ -156,10 +162,11 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
   const Ring2d& outer = polygon.outer;
   std::vector<Candidate> candidates;
   auto add = [&](const Endpoint& x) {
-    if (Orientation(a, r, x.point) < 0 || Orientation(r, b, x.point) < 0) return;
+    if (!InCone(a, r, b, x.point)) return;
     const double distance = (x.point - r).norm();
     if (distance == 0.0) return;
-    double score = (1.0 + options.score_concavity * ConcavityAt(concavity, outer, x)) /
+    const double relative_concavity = ConcavityAt(concavity, outer, x) / options.concavity_unit;
+    double score = (1.0 + options.score_concavity * relative_concavity) /
                    (options.score_distance * distance);
     if (!x.on_edge && concavity.outer[x.index] > options.tau && ResolvesBoth(outer, x.index, r)) {
       score *= options.double_resolve_bonus;

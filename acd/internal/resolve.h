@@ -14,6 +14,8 @@ namespace acdplan::acd::internal {
 struct ResolveOptions {
   double score_concavity = 0.1;  ///< s_c.
   double score_distance = 1.0;   ///< s_d.
+  /// The length the score divides concavity by, so that ranking cuts is scale invariant.
+  double concavity_unit = 1.0;
   bool steiner_cuts = true;      ///< Allow a cut to end on an edge (a new vertex).
   double tau = 0.0;              ///< Notches deeper than tau still need a cut of their own.
   /// Score factor for a diagonal that also resolves its other end, a notch deeper than tau: such
