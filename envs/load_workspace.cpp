@@ -7,16 +7,46 @@
 #include "acd/input_error.h"
 #include "acd/read_polygons.h"
 #include "envs/internal/yaml_util.h"
+#include "envs/mesh_loader.h"
 #include "envs/moving_ai_map.h"
 #include "envs/occupancy_map.h"
 #include "envs/workspace_yaml.h"
 
 namespace acdplan::envs {
 
-Workspace2d LoadWorkspace2d(const std::string& path) {
+namespace {
+
+std::string LowerExtension(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+bool IsMeshExtension(const std::string& extension) {
+  for (const char* known : {".obj", ".stl", ".ply", ".off", ".dae", ".gltf", ".glb"}) {
+    if (extension == known) return true;
+  }
+  return false;
+}
+
+// A workspace YAML is 3D when its bounds have six numbers or an obstacle names a mesh; the 3D
+// loader then reports any other mistake with its key path.
+bool IsWorkspace3dYaml(const internal::YamlFile& file) {
+  const YAML::Node bounds = file.root["bounds"];
+  if (bounds && bounds.IsSequence() && bounds.size() == 6) return true;
+  const YAML::Node obstacles = file.root["obstacles"];
+  if (!obstacles || !obstacles.IsSequence()) return false;
+  for (const YAML::Node& entry : obstacles) {
+    if (entry.IsMap() && entry["mesh"]) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+Workspace2d LoadWorkspace2d(const std::string& path) {
+  const std::string extension = LowerExtension(path);
   if (extension == ".yaml" || extension == ".yml") {
     if (internal::LoadYamlFile(path).root["image"]) return LoadOccupancyMap(path);
     return LoadWorkspace2dYaml(path);
@@ -37,6 +67,42 @@ Workspace2d LoadWorkspace2d(const std::string& path) {
   }
   throw acd::InputError(path + ": unknown world file extension '" + extension +
                         "' (expected .yaml, .yml, .map, .poly, .wkt, .geojson or .json)");
+}
+
+World LoadWorld(const std::string& path) {
+  const std::string extension = LowerExtension(path);
+  World world;
+  if (IsMeshExtension(extension)) {
+    world.dimension = 3;
+    world.kind = "mesh";
+    TriangleMesh mesh = ReadMesh(path);
+    Eigen::AlignedBox3d box = BoundingBox(mesh);
+    const double margin = 0.1 * box.sizes().maxCoeff();
+    box.min().array() -= margin;
+    box.max().array() += margin;
+    world.workspace3d.bounds = box;
+    world.workspace3d.obstacles.push_back(std::move(mesh));
+    world.workspace3d.description = "the mesh " + path;
+    return world;
+  }
+  if (extension == ".yaml" || extension == ".yml") {
+    const internal::YamlFile file = internal::LoadYamlFile(path);
+    if (file.root["image"]) {
+      world.kind = "occupancy map";
+      world.workspace2d = LoadOccupancyMap(path);
+    } else if (IsWorkspace3dYaml(file)) {
+      world.dimension = 3;
+      world.kind = "3D workspace";
+      world.workspace3d = LoadWorkspace3dYaml(path);
+    } else {
+      world.kind = "workspace";
+      world.workspace2d = LoadWorkspace2dYaml(path);
+    }
+    return world;
+  }
+  world.kind = extension == ".map" ? "Moving AI map" : "polygon file";
+  world.workspace2d = LoadWorkspace2d(path);
+  return world;
 }
 
 }  // namespace acdplan::envs

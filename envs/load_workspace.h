@@ -4,6 +4,7 @@
 #include <string>
 
 #include "envs/workspace2d.h"
+#include "envs/workspace3d.h"
 
 namespace acdplan::envs {
 
@@ -15,5 +16,21 @@ namespace acdplan::envs {
 ///    bounding box grown by 10% of its larger side on every side.
 /// @throws acd::InputError from the loader, or for an unknown extension.
 Workspace2d LoadWorkspace2d(const std::string& path);
+
+/// A world of either dimension, and what kind of file it came from.
+struct World {
+  int dimension = 2;          ///< 2: `workspace2d` holds it; 3: `workspace3d`.
+  std::string kind;           ///< "workspace", "occupancy map", "Moving AI map",
+                              ///< "polygon file", "3D workspace" or "mesh".
+  Workspace2d workspace2d;
+  Workspace3d workspace3d;
+};
+
+/// Loads any world file: everything LoadWorkspace2d() reads, a 3D workspace YAML (six bounds
+/// numbers or `mesh` obstacles, envs/workspace_yaml.h), or a single mesh that ReadMesh() reads
+/// (.obj, .stl, .ply, .off, .dae, .gltf, .glb) as the one obstacle inside its bounding box grown
+/// by 10% of its larger side.
+/// @throws acd::InputError from the loader, or for an unknown extension.
+World LoadWorld(const std::string& path);
 
 }  // namespace acdplan::envs

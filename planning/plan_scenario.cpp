@@ -22,6 +22,7 @@
 #include "collision/collision_world.h"
 #include "collision/obstacle_set.h"
 #include "envs/free_space2d.h"
+#include "envs/world_svg.h"
 #include "planning/counting_validity_checker.h"
 #include "planning/registry.h"
 #include "planning/sample_budget_roadmap.h"
@@ -229,58 +230,13 @@ std::string PlanResultToJson(const Scenario& scenario, const PlanResult& result)
   return j.dump(2) + "\n";
 }
 
-namespace {
-
-/// Maps workspace coordinates to SVG pixels (y up in the world, down in SVG).
-struct Frame {
-  Eigen::AlignedBox2d bounds;
-  double scale = 1.0;
-  double margin = 10.0;
-  std::string X(double x) const { return Number(margin + (x - bounds.min().x()) * scale); }
-  std::string Y(double y) const { return Number(margin + (bounds.max().y() - y) * scale); }
-  std::string Point(const Eigen::Vector2d& p) const { return X(p.x()) + "," + Y(p.y()); }
-  std::string Ring(const acd::Ring2d& ring) const {
-    std::string d = "M";
-    for (const acd::Point2d& p : ring) d += Point(p) + " ";
-    return d + "Z ";
-  }
-};
-
-}  // namespace
-
 std::string PlanResultToSvg(const Scenario& scenario, const PlanResult& result) {
-  Frame f;
-  f.bounds = scenario.workspace.bounds;
-  const Eigen::Vector2d size = f.bounds.sizes();
-  f.scale = 800.0 / std::max(size.x(), size.y());
-  const double width = size.x() * f.scale + 2 * f.margin;
-  const double height = size.y() * f.scale + 2 * f.margin + 24;
+  envs::WorldSvg f(scenario.workspace.bounds);
+  f.AddComponents(result.decomposition, /*distinct=*/false);
+  f.AddObstacles(scenario.workspace.obstacles);
+  f.AddOpenings(result.decomposition);
   std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << Number(width)
-      << "\" height=\"" << Number(height) << "\" viewBox=\"0 0 " << Number(width) << " "
-      << Number(height) << "\">\n";
-  svg << "<rect x=\"" << f.X(f.bounds.min().x()) << "\" y=\"" << f.Y(f.bounds.max().y())
-      << "\" width=\"" << Number(size.x() * f.scale) << "\" height=\""
-      << Number(size.y() * f.scale) << "\" fill=\"white\" stroke=\"black\"/>\n";
-  svg << "<g id=\"components\" fill=\"#cfe3f7\" fill-opacity=\"0.6\" stroke=\"#7a9cc6\" "
-         "stroke-width=\"0.8\" fill-rule=\"evenodd\">\n";
-  for (const acd::Component2d& c : result.decomposition.components) {
-    std::string d = f.Ring(c.polygon.outer);
-    for (const acd::Ring2d& hole : c.polygon.holes) d += f.Ring(hole);
-    svg << "<path d=\"" << d << "\"/>\n";
-  }
-  svg << "</g>\n<g id=\"obstacles\" fill=\"#555\" fill-rule=\"evenodd\">\n";
-  for (const acd::Polygon2d& o : scenario.workspace.obstacles) {
-    std::string d = f.Ring(o.outer);
-    for (const acd::Ring2d& hole : o.holes) d += f.Ring(hole);
-    svg << "<path d=\"" << d << "\"/>\n";
-  }
-  svg << "</g>\n<g id=\"openings\" stroke=\"#f08c00\" stroke-width=\"3\">\n";
-  for (const acd::Opening2d& o : result.decomposition.openings) {
-    svg << "<line x1=\"" << f.X(o.a.x()) << "\" y1=\"" << f.Y(o.a.y()) << "\" x2=\""
-        << f.X(o.b.x()) << "\" y2=\"" << f.Y(o.b.y()) << "\"/>\n";
-  }
-  svg << "</g>\n<g id=\"roadmap-edges\" stroke=\"#4a7bd0\" stroke-width=\"0.6\" "
+  svg << "<g id=\"roadmap-edges\" stroke=\"#4a7bd0\" stroke-width=\"0.6\" "
          "stroke-opacity=\"0.7\">\n";
   for (const auto& [a, b] : result.edges) {
     const auto& p = result.vertices[a];
@@ -301,7 +257,7 @@ std::string PlanResultToSvg(const Scenario& scenario, const PlanResult& result) 
     pose.rotate(q[2]);
     acd::Ring2d ring;
     for (const acd::Point2d& p : scenario.robot.polygon.outer) ring.push_back(pose * p);
-    svg << "<path d=\"" << f.Ring(ring) << "\" fill=\"" << colour
+    svg << "<path d=\"" << f.PathData(acd::Polygon2d{ring, {}}) << "\" fill=\"" << colour
         << "\" fill-opacity=\"0.35\" stroke=\"" << colour << "\"/>\n";
   };
   if (!result.path.empty()) {
@@ -317,13 +273,12 @@ std::string PlanResultToSvg(const Scenario& scenario, const PlanResult& result) 
       << f.Y(scenario.start[1]) << "\" r=\"6\" fill=\"#2b8a3e\"/>\n";
   svg << "<circle id=\"goal\" cx=\"" << f.X(scenario.goal[0]) << "\" cy=\""
       << f.Y(scenario.goal[1]) << "\" r=\"6\" fill=\"#862e9c\"/>\n";
-  svg << "<text x=\"" << Number(f.margin) << "\" y=\"" << Number(height - 8)
-      << "\" font-family=\"sans-serif\" font-size=\"14\">" << result.sampler << " + "
-      << result.planner << ", " << result.budget << ": "
-      << (result.solved ? "solved" : "not solved") << " (" << result.samples << " samples, "
-      << result.components << " components, " << result.openings << " openings)</text>\n";
-  svg << "</svg>\n";
-  return svg.str();
+  f.Add(svg.str());
+  return f.Finish(result.sampler + " + " + result.planner + ", " + result.budget + ": " +
+                  (result.solved ? "solved" : "not solved") + " (" +
+                  std::to_string(result.samples) + " samples, " +
+                  std::to_string(result.components) + " components, " +
+                  std::to_string(result.openings) + " openings)");
 }
 
 }  // namespace acdplan::planning

@@ -30,9 +30,7 @@
 #include <utility>
 #include <vector>
 
-#if ACDPLAN_BENCH_HAVE_CHECK
 #include "acd/check_decomposition.h"
-#endif
 #include "acd/concavity_measure.h"
 #include "acd/decompose2d.h"
 #include "acd/decomposition2d.h"
@@ -281,7 +279,6 @@ bool BenchOurs(const BenchInput& input, double tau_rel, const BenchArguments& ar
       row.convexity = Convexity(timed.result);
       row.median_ms = timed.median_ms;
       row.runs = timed.runs;
-#if ACDPLAN_BENCH_HAVE_CHECK
       if (args.check) {
         const acd::DecompositionCheck check = acd::CheckDecomposition(input.polygons, timed.result);
         if (check.ok()) {
@@ -295,7 +292,6 @@ bool BenchOurs(const BenchInput& input, double tau_rel, const BenchArguments& ar
           }
         }
       }
-#endif
     } catch (const std::exception& error) {
       ok = false;
       row.note = std::string("failed: ") + error.what();
@@ -739,10 +735,8 @@ int main(int argc, char** argv) {
   app.add_option("--json", args.json_path, "Also write the table as JSON (a list of rows)");
   app.add_option("--data", args.data_dir, "Folder of the default polygon list")
       ->capture_default_str();
-#if ACDPLAN_BENCH_HAVE_CHECK
   app.add_flag("--check", args.check,
                "Run CheckDecomposition on each of our decompositions and report failures");
-#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -31,6 +31,7 @@
 #include "planning/bench_spec.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
+#include "tools/env_command.h"
 
 namespace {
 
@@ -457,6 +458,8 @@ int main(int argc, char** argv) {
   plan->add_option("--json", plan_args.json_path, "Write the result as JSON here");
   plan->add_option("--svg", plan_args.svg_path, "Write an SVG picture here (2D)");
 
+  acdplan::tools::EnvArguments env_args;
+  CLI::App* env = acdplan::tools::AddEnvCommand(&app, &env_args);
 
   BenchArguments bench_args;
   CLI::App* bench = app.add_subcommand(
@@ -503,6 +506,7 @@ int main(int argc, char** argv) {
   try {
     if (decompose->parsed()) return RunDecompose(args);
     if (plan->parsed()) return RunPlan(plan_args);
+    if (env->parsed()) return acdplan::tools::RunEnv(env_args);
     if (bench_collision->parsed()) return RunBenchCollision(bench_options, bench_json);
     if (bench->parsed()) return RunBench(bench_args);
     if (bench_merge->parsed()) return RunBenchMerge(bench_args);

@@ -1,5 +1,5 @@
 // Runs the built `acdplan` binary (ACDPLAN_BINARY) and checks exit statuses, messages and
-// outputs of `acdplan decompose`.
+// outputs of `acdplan decompose` and `acdplan env`.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -17,6 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kPolygons = std::string(ACDPLAN_SHARED_DATA) + "/polygons/acd2d/";
+const std::string kMeshes = std::string(ACDPLAN_SHARED_DATA) + "/meshes/vhacd/";
+const std::string kSource = std::string(ACDPLAN_SOURCE_DIR) + "/";
 
 struct RunResult {
   int status = -1;
@@ -68,6 +70,12 @@ class CliTest : public ::testing::Test {
     int n = 0;
     for (const auto& entry : fs::recursive_directory_iterator(dir_)) n += entry.is_regular_file();
     return n;
+  }
+
+  fs::path Write(const std::string& name, const std::string& text) const {
+    const fs::path path = dir_ / name;
+    std::ofstream(path) << text;
+    return path;
   }
 
   fs::path dir_;
@@ -155,6 +163,81 @@ TEST_F(CliTest, DecomposesAndWritesJsonAndSvg) {
   const std::string svg = Read(svg_path);
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_NE(svg.find("simple1.poly"), std::string::npos);
+}
+
+TEST_F(CliTest, EnvReportsA2dWorldAndDrawsItsDecomposition) {
+  const fs::path json_path = dir_ / "wall_gap.json", svg_path = dir_ / "wall_gap.svg";
+  const RunResult run = Acdplan("env " + Quote(kSource + "envs/2d/wall_gap.yaml") + " --json " +
+                                Quote(json_path.string()) + " --svg " + Quote(svg_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("(workspace)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("narrowest gap"), std::string::npos) << run.out;
+  const nlohmann::json j = nlohmann::json::parse(Read(json_path));
+  EXPECT_EQ(j.at("format"), "acdplan.env/1");
+  EXPECT_EQ(j.at("dimension"), 2);
+  EXPECT_EQ(j.at("free_regions"), 1);
+  // The wall splits the free space in two sides joined through the gap: at least two
+  // components and an opening in the gap, narrower than the world.
+  EXPECT_GE(j.at("components").get<int>(), 2);
+  EXPECT_GE(j.at("openings").get<int>(), 1);
+  EXPECT_LT(j.at("narrowest_opening").get<double>(), 0.5 * j.at("bounds")[2].get<double>());
+  const std::string svg = Read(svg_path);
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("id=\"openings\""), std::string::npos);
+  EXPECT_NE(svg.find("<line"), std::string::npos);
+  EXPECT_NE(svg.find("id=\"obstacles\""), std::string::npos);
+}
+
+TEST_F(CliTest, EnvLoadsEveryKindOfWorld) {
+  const fs::path grid = Write("grid.map", "type octile\nheight 3\nwidth 5\nmap\n.....\n.@@@.\n.....\n");
+  const fs::path world3d = Write("world3d.yaml", "bounds: [-2, -2, -2, 2, 2, 2]\nobstacles:\n"
+                                                 "  - mesh: " + kMeshes + "box-thick.obj\n"
+                                                 "    scale: 0.01\n    translation: [-3.7, -0.34, 0]\n");
+  const struct {
+    std::string file, kind;
+    int dimension;
+  } worlds[] = {
+      {kSource + "envs/2d/maze.yaml", "(workspace)", 2},
+      {kSource + "configs/maps/room_door.yaml", "(occupancy map)", 2},
+      {grid.string(), "(Moving AI map)", 2},
+      {kPolygons + "simple1.poly", "(polygon file)", 2},
+      {kSource + "configs/wall_gap_se2.yaml", "(scenario", 2},
+      {kMeshes + "box-thick.obj", "(mesh)", 3},
+      {world3d.string(), "(3D workspace)", 3},
+  };
+  for (const auto& world : worlds) {
+    const fs::path json_path = dir_ / "report.json";
+    const RunResult run = Acdplan("env " + Quote(world.file) + " --json " + Quote(json_path.string()));
+    ASSERT_EQ(run.status, 0) << world.file << "\n" << run.err;
+    EXPECT_NE(run.out.find(world.kind), std::string::npos) << run.out;
+    const nlohmann::json j = nlohmann::json::parse(Read(json_path));
+    EXPECT_EQ(j.at("dimension"), world.dimension) << world.file;
+    EXPECT_GE(j.at("obstacles").get<int>(), 1) << world.file;
+    EXPECT_GE(j.at("obstacle_hulls").get<int>(), 1) << world.file;
+    if (world.dimension == 2) {
+      EXPECT_GE(j.at("components").get<int>(), 1) << world.file;
+    }
+  }
+}
+
+TEST_F(CliTest, EnvErrorsNameTheFileAndTheRule) {
+  const std::string missing = (dir_ / "no_such_world.yaml").string();
+  RunResult run = Acdplan("env " + Quote(missing));
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find(missing), std::string::npos) << run.err;
+
+  const fs::path bad_key = Write("bad.yaml", "bounds: [0, 0, 1, 1]\nobstacle: []\n");
+  run = Acdplan("env " + Quote(bad_key.string()));
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find("obstacle"), std::string::npos) << run.err;
+
+  run = Acdplan("env " + Quote(kMeshes + "box-thick.obj") + " --svg " +
+                Quote((dir_ / "box.svg").string()));
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find("2D worlds only"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(dir_ / "box.svg"));
+
+  ExpectUsageError(Acdplan("env " + Quote(kSource + "envs/2d/maze.yaml") + " --measure xyz"));
 }
 
 }  // namespace

@@ -1,0 +1,262 @@
+#include "tools/env_command.h"
+
+#include <chrono>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include "acd/concavity_measure.h"
+#include "acd/decompose2d.h"
+#include "acd/decomposition_io.h"
+#include "acd/input_error.h"
+#include "collision/obstacle_set.h"
+#include "envs/free_space2d.h"
+#include "envs/load_workspace.h"
+#include "envs/robot.h"
+#include "envs/world_svg.h"
+#include "planning/scenario.h"
+
+namespace acdplan::tools {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr double kDefaultTauRel = 0.02;  // As planning::Scenario's default.
+
+// A scenario names its world under `workspace`; world files never have that key.
+bool IsScenarioFile(const std::string& path) {
+  const std::string extension = path.size() > 5 ? path.substr(path.rfind('.') + 1) : "";
+  if (extension != "yaml" && extension != "yml") return false;
+  try {
+    const YAML::Node root = YAML::LoadFile(path);
+    return root.IsMap() && root["workspace"];
+  } catch (const YAML::Exception&) {
+    return false;  // The world loader reports the syntax error with its line.
+  }
+}
+
+std::string Short(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
+
+std::string Milliseconds(double ms) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g ms", ms);
+  return buffer;
+}
+
+// "1 hole", "2 holes".
+std::string Count(size_t n, const std::string& noun, const std::string& plural = "") {
+  return std::to_string(n) + " " + (n == 1 ? noun : plural.empty() ? noun + "s" : plural);
+}
+
+void WriteOutput(const std::string& path, const std::string& text) {
+  try {
+    acd::WriteFileAtomically(path, text);
+  } catch (const std::runtime_error& error) {
+    throw acd::InputError(error.what());  // The user's path to fix: exit status 2.
+  }
+}
+
+// One "name  value" line of the report.
+void Line(const char* name, const std::string& value) {
+  std::printf("%-16s %s\n", name, value.c_str());
+}
+
+Json Box(const Eigen::VectorXd& min, const Eigen::VectorXd& max) {
+  Json box = Json::array();
+  for (Eigen::Index i = 0; i < min.size(); ++i) box.push_back(min[i]);
+  for (Eigen::Index i = 0; i < max.size(); ++i) box.push_back(max[i]);
+  return box;
+}
+
+int Report2d(const EnvArguments& args, const std::string& kind, const envs::Workspace2d& workspace,
+             const planning::Scenario* scenario) {
+  const double tau_rel =
+      args.tau_rel >= 0 ? args.tau_rel : scenario ? scenario->tau_rel : kDefaultTauRel;
+  const acd::ConcavityMeasure measure =
+      !args.measure.empty() ? acd::ParseConcavityMeasure(args.measure)
+      : scenario            ? scenario->measure
+                            : acd::ConcavityMeasure::kShortestPath;
+  const double diagonal = workspace.bounds.sizes().norm();
+
+  const auto started = std::chrono::steady_clock::now();
+  const std::vector<acd::Polygon2d> free_space = envs::FreeSpace2d(workspace);
+  const auto freed = std::chrono::steady_clock::now();
+  acd::Decompose2dOptions options;
+  options.tau = tau_rel * diagonal;
+  options.measure = measure;
+  const acd::Decomposition2d decomposition = acd::Decompose2d(free_space, options);
+  const auto decomposed = std::chrono::steady_clock::now();
+  const collision::ObstacleSet obstacles = collision::BuildObstacleSet(workspace);
+  auto ms = [](auto from, auto to) {
+    return std::chrono::duration<double, std::milli>(to - from).count();
+  };
+
+  int obstacle_vertices = 0, obstacle_holes = 0;
+  for (const acd::Polygon2d& o : workspace.obstacles) {
+    obstacle_vertices += acd::VertexCount(o);
+    obstacle_holes += static_cast<int>(o.holes.size());
+  }
+  double free_area = 0.0;
+  int free_holes = 0;
+  for (const acd::Polygon2d& region : free_space) {
+    free_area += acd::Area(region);
+    free_holes += static_cast<int>(region.holes.size());
+  }
+  const double bounds_area = workspace.bounds.volume();
+  double narrowest = INFINITY;
+  for (const acd::Opening2d& o : decomposition.openings) {
+    narrowest = std::min(narrowest, (o.b - o.a).norm());
+  }
+
+  const Eigen::Vector2d lo = workspace.bounds.min(), hi = workspace.bounds.max();
+  Line("world", args.input + " (" + kind + ")");
+  if (!workspace.description.empty()) Line("description", workspace.description);
+  Line("bounds", "[" + Short(lo.x()) + ", " + Short(lo.y()) + "] to [" + Short(hi.x()) + ", " +
+                     Short(hi.y()) + "]");
+  Line("obstacles", Count(workspace.obstacles.size(), "polygon") + ", " +
+                        std::to_string(obstacle_vertices) + " vertices, " +
+                        Count(obstacle_holes, "hole"));
+  Line("free space", Count(free_space.size(), "region") + ", " + Count(free_holes, "hole") +
+                         ", " + Short(100.0 * free_area / bounds_area) + "% of the bounds (" +
+                         Milliseconds(ms(started, freed)) + ")");
+  Line("decomposition", "tau " + Short(options.tau) + " (tau_rel " + Short(tau_rel) +
+                            " x bounds diagonal " + Short(diagonal) + "), measure " +
+                            acd::ToString(measure) + ": " +
+                            std::to_string(decomposition.components.size()) + " components, " +
+                            std::to_string(decomposition.openings.size()) + " openings (" +
+                            Milliseconds(ms(freed, decomposed)) + ")");
+  if (!decomposition.openings.empty()) Line("narrowest gap", Short(narrowest));
+  Line("obstacle hulls", std::to_string(obstacles.pieces.size()) + " from " +
+                             obstacles.hulls_source);
+  if (scenario) {
+    const envs::Robot& robot = scenario->robot;
+    std::string text = envs::ShapeName(robot.shape);
+    if (robot.shape == envs::RobotShape::kDisc) text += ", radius " + Short(robot.radius);
+    if (robot.shape == envs::RobotShape::kPolygon) {
+      text += ", " + std::to_string(robot.polygon.outer.size()) + " vertices, bounding radius " +
+              Short(robot.BoundingRadius());
+    }
+    Line("robot", text);
+    Line("planner", scenario->planner + " with the " + scenario->sampler + " sampler");
+  }
+
+  if (!args.svg_path.empty()) {
+    const std::string caption = args.input + ": " +
+                                std::to_string(decomposition.components.size()) +
+                                " components, " + std::to_string(decomposition.openings.size()) +
+                                " openings (orange), tau_rel " + Short(tau_rel) + ", " +
+                                acd::ToString(measure);
+    WriteOutput(args.svg_path, envs::WorldToSvg(workspace, decomposition, caption));
+    Line("wrote", args.svg_path);
+  }
+  if (!args.json_path.empty()) {
+    Json j;
+    j["format"] = "acdplan.env/1";
+    j["input"] = args.input;
+    j["kind"] = kind;
+    j["dimension"] = 2;
+    j["description"] = workspace.description;
+    j["bounds"] = Box(lo, hi);
+    j["obstacles"] = workspace.obstacles.size();
+    j["obstacle_vertices"] = obstacle_vertices;
+    j["free_regions"] = free_space.size();
+    j["free_area"] = free_area;
+    j["tau"] = options.tau;
+    j["tau_rel"] = tau_rel;
+    j["measure"] = acd::ToString(measure);
+    j["components"] = decomposition.components.size();
+    j["openings"] = decomposition.openings.size();
+    j["narrowest_opening"] = decomposition.openings.empty() ? Json(nullptr) : Json(narrowest);
+    j["obstacle_hulls"] = obstacles.pieces.size();
+    j["hulls_source"] = obstacles.hulls_source;
+    if (scenario) j["robot"] = envs::ShapeName(scenario->robot.shape);
+    WriteOutput(args.json_path, j.dump(2) + "\n");
+    Line("wrote", args.json_path);
+  }
+  return 0;
+}
+
+int Report3d(const EnvArguments& args, const std::string& kind, const envs::Workspace3d& workspace) {
+  if (!args.svg_path.empty()) {
+    throw acd::InputError("--svg " + args.svg_path + ": " + args.input +
+                          " is a 3D world; pictures are drawn for 2D worlds only");
+  }
+  const collision::ObstacleSet obstacles = collision::BuildObstacleSet(workspace);
+  long vertices = 0;
+  for (const envs::TriangleMesh& mesh : workspace.obstacles) vertices += mesh.vertices.rows();
+  int open_pieces = 0;
+  for (const collision::ObstaclePiece& piece : obstacles.pieces) open_pieces += !piece.closed;
+
+  const Eigen::Vector3d lo = workspace.bounds.min(), hi = workspace.bounds.max();
+  Line("world", args.input + " (" + kind + ")");
+  if (!workspace.description.empty()) Line("description", workspace.description);
+  Line("bounds", "[" + Short(lo.x()) + ", " + Short(lo.y()) + ", " + Short(lo.z()) + "] to [" +
+                     Short(hi.x()) + ", " + Short(hi.y()) + ", " + Short(hi.z()) + "]");
+  Line("obstacles", Count(workspace.obstacles.size(), "mesh", "meshes") + ", " +
+                        std::to_string(collision::TriangleCount(obstacles)) + " triangles, " +
+                        std::to_string(vertices) + " vertices");
+  Line("obstacle hulls", std::to_string(obstacles.pieces.size()) + " from " +
+                             obstacles.hulls_source + "; " + std::to_string(open_pieces) +
+                             " open (no exact point location inside those)");
+  if (!args.json_path.empty()) {
+    Json j;
+    j["format"] = "acdplan.env/1";
+    j["input"] = args.input;
+    j["kind"] = kind;
+    j["dimension"] = 3;
+    j["description"] = workspace.description;
+    j["bounds"] = Box(lo, hi);
+    j["obstacles"] = workspace.obstacles.size();
+    j["triangles"] = collision::TriangleCount(obstacles);
+    j["obstacle_hulls"] = obstacles.pieces.size();
+    j["open_pieces"] = open_pieces;
+    j["hulls_source"] = obstacles.hulls_source;
+    WriteOutput(args.json_path, j.dump(2) + "\n");
+    Line("wrote", args.json_path);
+  }
+  return 0;
+}
+
+}  // namespace
+
+CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
+  CLI::App* env = app->add_subcommand(
+      "env",
+      "Load a world (workspace YAML 2D or 3D, occupancy map.yaml, Moving AI .map, .poly/.wkt/"
+      ".geojson obstacles, a mesh) or a scenario's world, report what was loaded, its free "
+      "space and ACD; --svg draws a 2D world and its decomposition. Exit status: 0 ok, 2 bad "
+      "input or usage, 1 internal error.");
+  env->add_option("FILE", args->input, "World file or scenario YAML")->required();
+  env->add_option("--tau-rel", args->tau_rel,
+                  "ACD tau relative to the bounds' diagonal (default: the scenario's, else 0.02)")
+      ->check(CLI::NonNegativeNumber);
+  env->add_option("--measure", args->measure, "Concavity measure: sl, sp, h1 or h2")
+      ->check([](const std::string& name) {
+        try {
+          acd::ParseConcavityMeasure(name);
+          return std::string();
+        } catch (const acd::InputError& error) {
+          return std::string(error.what());
+        }
+      });
+  env->add_option("--svg", args->svg_path, "Write a picture of the 2D world and its ACD here");
+  env->add_option("--json", args->json_path, "Write the report as JSON here");
+  return env;
+}
+
+int RunEnv(const EnvArguments& args) {
+  if (IsScenarioFile(args.input)) {
+    const planning::Scenario scenario = planning::LoadScenario(args.input);
+    return Report2d(args, "scenario; world " + scenario.workspace_label, scenario.workspace,
+                    &scenario);
+  }
+  const envs::World world = envs::LoadWorld(args.input);
+  if (world.dimension == 3) return Report3d(args, world.kind, world.workspace3d);
+  return Report2d(args, world.kind, world.workspace2d, nullptr);
+}
+
+}  // namespace acdplan::tools

@@ -1,0 +1,25 @@
+#pragma once
+// `acdplan env`: load any world (or a scenario's world) and report what was loaded.
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace acdplan::tools {
+
+/// What `acdplan env` was asked.
+struct EnvArguments {
+  std::string input;       ///< A world file of any kind, or a scenario YAML.
+  double tau_rel = -1.0;   ///< ACD tau / bounds diagonal; < 0: the scenario's, else 0.02.
+  std::string measure;     ///< "" : the scenario's, else sp.
+  std::string svg_path;    ///< 2D: the world and its free-space decomposition.
+  std::string json_path;   ///< The report as JSON.
+};
+
+/// Adds the `env` subcommand to `app`, filling `args`; returns it.
+CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args);
+
+/// Runs `acdplan env`; returns the exit status.
+/// @throws acd::InputError for a world that cannot be loaded or an unwritable output.
+int RunEnv(const EnvArguments& args);
+
+}  // namespace acdplan::tools
