@@ -22,8 +22,9 @@ namespace acdplan::planning {
 /// (acd::Decompose2d(envs::FreeSpace2d(workspace))); it is copied where needed.
 ///
 ///   auto si = setup.getSpaceInformation();                    // any OMPL SimpleSetup
-///   acd::Decomposition2d acd = acd::Decompose2d(envs::FreeSpace2d(world), {.tau = 0.1});
-///   planning::InstallAcdSamplers(si, acd, {.seed = 42});
+///   acd::Decomposition2d acd = acd::Decompose2d(envs::FreeSpace2d(world), {/*tau=*/0.1});
+///   planning::AcdSamplerOptions options;  options.seed = 42;
+///   planning::InstallAcdSamplers(si, acd, options);
 ///   setup.setPlanner(std::make_shared<ompl::geometric::PRM>(si));
 ///   setup.solve(1.0);
 ///

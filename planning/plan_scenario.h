@@ -35,8 +35,8 @@ struct PlanResult {
 /// a collision::CollisionWorld (robot kept inside the bounds too), the state space (R^2 for a
 /// point or disc robot, SE(2) for a polygon robot), the sampler installed with the scenario's
 /// seed, then either the Figure-4 protocol (scenario.samples > 0:
-/// BuildSampleBudgetRoadmap()) or the planner on the time limit (path simplified? no: raw,
-/// so lengths compare planners, not the simplifier).
+/// BuildSampleBudgetRoadmap()) or the planner on the time limit. The path is reported raw,
+/// not simplified, so lengths compare planners rather than the simplifier.
 /// Expected failures (no solution) are results; only bad input throws.
 /// @throws acd::InputError if the start or the goal is in collision or out of bounds.
 PlanResult PlanScenario(const Scenario& scenario);
