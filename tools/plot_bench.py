@@ -62,8 +62,8 @@ def success_vs_width(runs, out):
             xs = sorted(points)
             ys = [points[x][0] / points[x][1] for x in xs]
             cis = [wilson(*points[x]) for x in xs]
-            lo = [y - c[0] for y, c in zip(ys, cis)]
-            hi = [c[1] - y for y, c in zip(ys, cis)]
+            lo = [max(0.0, y - c[0]) for y, c in zip(ys, cis)]
+            hi = [max(0.0, c[1] - y) for y, c in zip(ys, cis)]
             label = f"{key[2]} {key[3]} {key[1]} ({key[4]})"
             ax.errorbar(xs, ys, yerr=[lo, hi], marker="o", capsize=3, label=label,
                         color=COLOURS.get(key[2]), linestyle="-" if len(xs) > 1 else "none",

@@ -1,0 +1,408 @@
+// The benchmark: BENCH.yaml errors name the file and the key path; Wilson intervals; shards
+// merged equal the unsharded run; the OMPL log loads in ompl_benchmark_statistics; a small
+// Figure-4 bench where acd beats uniform; the CLI's exit statuses (2 bad input, 130 Ctrl-C).
+// Budgets are sample counts (results depend on the seeds only) and small; no wall-clock limits.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "acd/input_error.h"
+#include "planning/bench_record.h"
+#include "planning/bench_report.h"
+#include "planning/bench_runner.h"
+#include "planning/bench_spec.h"
+#include "planning/bench_stats.h"
+
+namespace acdplan::planning {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kConfigs = std::string(ACDPLAN_SOURCE_DIR) + "/configs";
+
+fs::path Scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("acdplan_bench_test_" + std::to_string(getpid())) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// Writes a bench file into configs/bench's sibling scratch folder, so "../demo.yaml"-style
+/// paths are not needed: worlds use absolute scenario paths or generators.
+std::string WriteBench(const std::string& name, const std::string& text) {
+  const fs::path path = Scratch("specs_" + name) / (name + ".yaml");
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+std::string ReadText(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+/// The message LoadBenchSpec() throws for `text`; "" if it does not throw.
+std::string ErrorOf(const std::string& text) {
+  try {
+    LoadBenchSpec(WriteBench("bad", text));
+  } catch (const acd::InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+const std::string kWorlds =
+    "name: t\n"
+    "worlds:\n"
+    "  - name: gap\n"
+    "    workspace: {generator: wall_gap, seed: 1, passage_width: 0.05, wall_thickness: 1.0}\n"
+    "    start: [2.5, 5.0]\n"
+    "    goal: [7.5, 5.0]\n";
+
+#define EXPECT_HAS(haystack, needle) \
+  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << (haystack)
+
+TEST(BenchSpec, ErrorsNameTheFileAndKeyPath) {
+  const std::string cases = "cases:\n  - {samplers: [acd], planners: [PRM], budgets: [{samples: 50}]}\n";
+  EXPECT_EQ(ErrorOf(kWorlds + cases), "");
+  EXPECT_HAS(ErrorOf(kWorlds), "bad.yaml: cases: required");
+  EXPECT_HAS(ErrorOf("name: t\n" + cases), "bad.yaml: worlds: required");
+  EXPECT_HAS(ErrorOf(kWorlds + cases + "colour: red\n"), "bad.yaml: colour: unknown key");
+  EXPECT_HAS(ErrorOf(kWorlds + cases + "runs: 0\n"),
+             "bad.yaml: runs: expected an integer >= 1, got '0'");
+  EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [PRM, PRN], budgets: "
+                               "[{samples: 5}]}\n"),
+             "bad.yaml: cases[0].planners[1]: unknown planner 'PRN' (known: PRM,");
+  EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [magic], planners: [PRM], budgets: "
+                               "[{samples: 5}]}\n"),
+             "bad.yaml: cases[0].samplers[0]: unknown sampler 'magic'");
+  EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [RRTConnect], budgets: "
+                               "[{samples: 5}]}\n"),
+             "bad.yaml: cases[0].budgets[0].samples: a sample budget (the Figure-4 protocol) "
+             "needs PRM or PRMstar, not RRTConnect");
+  EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [PRM], budgets: "
+                               "[{time_limit: -1}]}\n"),
+             "bad.yaml: cases[0].budgets[0].time_limit: expected a positive number, got '-1'");
+  EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {worlds: [nowhere], samplers: [acd], planners: "
+                               "[PRM], budgets: [{samples: 5}]}\n"),
+             "bad.yaml: cases[0].worlds[0]: unknown name 'nowhere' (known: gap)");
+  EXPECT_HAS(ErrorOf(kWorlds + "robots:\n  - {name: d, shape: disc}\n" + cases),
+             "bad.yaml: robots[0].radius: required for shape disc");
+  EXPECT_HAS(ErrorOf(kWorlds + "robots:\n  - {name: d, shape: point, wheels: 4}\n" + cases),
+             "bad.yaml: robots[0].wheels: unknown key");
+  EXPECT_HAS(ErrorOf("name: t\nworlds:\n  - {name: w, workspace: {generator: wall_gap, "
+                     "passage_width: -1}, start: [1, 1], goal: [2, 2]}\n" + cases),
+             "bad.yaml: worlds[0].workspace.passage_width: expected a positive number, got '-1'");
+  EXPECT_HAS(ErrorOf("name: t\nworlds:\n  - {scenario: missing.yaml}\n" + cases),
+             "bad.yaml: worlds[0].scenario: ");
+  EXPECT_HAS(ErrorOf("name: t\nworlds:\n  - {name: w, workspace: {generator: wall_gap}, "
+                     "start: [1, 1]}\n" + cases),
+             "bad.yaml: worlds[0].goal: required");
+  EXPECT_HAS(ErrorOf(kWorlds + "  - name: gap\n    scenario: " + kConfigs + "/demo.yaml\n" + cases),
+             "bad.yaml: worlds[1].name: duplicate world name 'gap'");
+  EXPECT_HAS(ErrorOf(kWorlds + "cases: [\n"), "bad.yaml:");  // Syntax error with a line.
+}
+
+TEST(BenchSpec, ExpandsCasesSweepsAndShards) {
+  const BenchSpec spec = LoadBenchSpec(WriteBench(
+      "sweep",
+      "name: sweep\nruns: 3\nworlds:\n"
+      "  - name: gap\n    workspace: {generator: wall_gap, seed: 1}\n"
+      "    start: [2.5, 5.0]\n    goal: [7.5, 5.0]\n    passage_widths: [0.5, 0.05]\n"
+      "robots:\n  - {name: p}\n  - {name: d, shape: disc, radius: 0.01}\n"
+      "cases:\n  - {samplers: [uniform, acd], planners: [PRM], budgets: [{samples: 10}]}\n"
+      "  - {robots: [d], samplers: [acd], planners: [RRTConnect], budgets: [{time_limit: 1}]}\n"));
+  ASSERT_EQ(spec.worlds.size(), 2u);
+  EXPECT_EQ(spec.worlds[0].name, "gap_w0.5");
+  EXPECT_EQ(spec.worlds[1].name, "gap_w0.05");
+  EXPECT_EQ(spec.worlds[1].family, "gap");
+  EXPECT_DOUBLE_EQ(spec.worlds[1].passage_width, 0.05);
+  EXPECT_EQ(spec.cases.size(), 2u * 2u * 2u + 2u);
+  EXPECT_EQ(spec.cases[0].Key(spec), "gap_w0.5/p/uniform/PRM/10 samples");
+
+  // Shards partition the runs; seeds do not depend on the shard.
+  const std::vector<BenchRunId> all = BenchRunsOfShard(spec, 3, {1, 1});
+  EXPECT_EQ(all.size(), spec.cases.size() * 3);
+  std::vector<BenchRunId> joined;
+  for (int i = 1; i <= 3; ++i) {
+    for (const BenchRunId& id : BenchRunsOfShard(spec, 3, {i, 3})) {
+      EXPECT_EQ(id.global % 3, static_cast<std::uint64_t>(i - 1));
+      joined.push_back(id);
+    }
+  }
+  ASSERT_EQ(joined.size(), all.size());
+  for (const BenchRunId& a : all) {
+    bool found = false;
+    for (const BenchRunId& b : joined) found |= a.global == b.global && a.seed == b.seed;
+    EXPECT_TRUE(found) << a.global;
+  }
+  EXPECT_NE(BenchRunSeed(1, "a", 0), BenchRunSeed(1, "a", 1));
+  EXPECT_NE(BenchRunSeed(1, "a", 0), BenchRunSeed(2, "a", 0));
+  EXPECT_NE(BenchRunSeed(1, "a", 0), BenchRunSeed(1, "b", 0));
+  EXPECT_EQ(BenchRunSeed(7, "x/y", 3), BenchRunSeed(7, "x/y", 3));
+}
+
+TEST(BenchSpec, ShardSyntax) {
+  EXPECT_EQ(ParseBenchShard("2/8").index, 2);
+  EXPECT_EQ(ParseBenchShard("2/8").count, 8);
+  for (const char* bad : {"0/2", "3/2", "1", "a/b", "1/2x", "1/0"}) {
+    try {
+      ParseBenchShard(bad);
+      ADD_FAILURE() << bad;
+    } catch (const acd::InputError& error) {
+      EXPECT_HAS(error.what(), "--shard");
+    }
+  }
+}
+
+TEST(BenchStats, WilsonIntervalKnownValues) {
+  // Newcombe (1998), Statistics in Medicine 17, 857-872, Table I (method 3) and direct
+  // evaluation of Wilson's formula at z = 1.959964.
+  const struct {
+    int k, n;
+    double lo, hi;
+  } known[] = {{0, 10, 0.0, 0.277533}, {5, 10, 0.236593, 0.763407}, {10, 10, 0.722467, 1.0},
+               {1, 20, 0.008881, 0.236131}, {19, 20, 0.763869, 0.991119},
+               {7, 100, 0.034319, 0.137495}};
+  for (const auto& c : known) {
+    const auto [lo, hi] = WilsonInterval(c.k, c.n);
+    EXPECT_NEAR(lo, c.lo, 1e-6) << c.k << "/" << c.n;
+    EXPECT_NEAR(hi, c.hi, 1e-6) << c.k << "/" << c.n;
+  }
+  EXPECT_EQ(WilsonInterval(0, 0), std::make_pair(0.0, 1.0));
+  EXPECT_THROW(WilsonInterval(3, 2), std::invalid_argument);
+  EXPECT_DOUBLE_EQ(Quantile({3, 1, 2}, 0.5), 2.0);
+  EXPECT_DOUBLE_EQ(Quantile({1, 2, 3, 4}, 0.9), 3.7);
+}
+
+/// A small Figure-4 bench: the demo world, sample budgets only (seed-determined results).
+std::string SmallFigure4(int runs) {
+  return "name: small\nseed: 5\nruns: " + std::to_string(runs) +
+         "\nworlds:\n  - scenario: " + kConfigs +
+         "/demo.yaml\nrobots:\n  - {name: point}\n"
+         "cases:\n  - {samplers: [uniform, gaussian, acd], planners: [PRM], budgets: "
+         "[{samples: 200}]}\n";
+}
+
+BenchManifest ManifestOf(const BenchSpec& spec, const std::string& shard) {
+  BenchManifest m;
+  m.name = spec.name;
+  m.spec = spec.path;
+  m.seed = spec.seed;
+  m.runs = spec.runs;
+  m.cases = static_cast<int>(spec.cases.size());
+  m.shards = {shard};
+  m.hostname = "test";
+  m.started = "2026-01-01 00:00:00";
+  return m;
+}
+
+/// `text` without what depends on the clock: the named JSON keys, or in a log the time and
+/// decomposition-time fields of the runs and the total time.
+nlohmann::json WithoutTimes(nlohmann::json j) {
+  for (auto& c : j["cases"]) {
+    c.erase("median_time_s");
+    c.erase("p90_time_s");
+    c.erase("median_decomposition_s");
+  }
+  return j;
+}
+
+void LogWithoutTimes(const std::string& log, std::vector<std::string>* out) {
+  std::vector<std::string>& lines = *out;
+  std::istringstream in(log);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.find("seconds spent to collect") != std::string::npos) continue;
+    size_t separators = 0;
+    for (size_t at = line.find("; "); at != std::string::npos; at = line.find("; ", at + 1)) {
+      ++separators;
+    }
+    if (separators >= 12) {  // A run's measurements.
+      std::vector<std::string> fields;
+      std::istringstream fs(line);
+      std::string f;
+      while (std::getline(fs, f, ';')) fields.push_back(f);
+      ASSERT_GE(fields.size(), 13u) << line;
+      fields[0] = "";  // time
+      fields[7] = "";  // decomposition time
+      line.clear();
+      for (const std::string& x : fields) line += x + ";";
+    }
+    lines.push_back(line);
+  }
+}
+
+TEST(BenchRunner, ShardsMergedEqualTheUnshardedRun) {
+  const BenchSpec spec = LoadBenchSpec(WriteBench("shards", SmallFigure4(3)));
+  const fs::path whole = Scratch("whole"), s1 = Scratch("s1"), s2 = Scratch("s2"),
+                 merged = Scratch("merged");
+  const BenchRunOutcome all = RunBench(spec);
+  ASSERT_EQ(all.records.size(), 9u);
+  EXPECT_FALSE(all.interrupted);
+  WriteBenchOutputs(whole.string(), ManifestOf(spec, "1/1"), all.records, false, nullptr);
+  BenchRunOptions o1, o2;
+  o1.shard = {1, 2};
+  o2.shard = {2, 2};
+  const BenchRunOutcome r1 = RunBench(spec, o1), r2 = RunBench(spec, o2);
+  EXPECT_EQ(r1.records.size(), 5u);
+  EXPECT_EQ(r2.records.size(), 4u);
+  WriteBenchOutputs(s1.string(), ManifestOf(spec, "1/2"), r1.records, false, nullptr);
+  WriteBenchOutputs(s2.string(), ManifestOf(spec, "2/2"), r2.records, false, nullptr);
+
+  BenchManifest manifest;
+  std::vector<BenchRecord> records;
+  MergeBenchRecords({s1.string(), s2.string()}, &manifest, &records);
+  EXPECT_EQ(manifest.shards, (std::vector<std::string>{"1/2", "2/2"}));
+  WriteBenchOutputs(merged.string(), manifest, records, false, nullptr);
+
+  // runs.csv: every field but the two times.
+  const std::vector<BenchRecord> a = ReadBenchRecordsCsv((whole / "runs.csv").string());
+  const std::vector<BenchRecord> b = ReadBenchRecordsCsv((merged / "runs.csv").string());
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    BenchRecord x = a[i], y = b[i];
+    x.time_s = y.time_s = 0;
+    x.decomposition_s = y.decomposition_s = 0;
+    EXPECT_EQ(BenchRecordsToCsv({x}), BenchRecordsToCsv({y})) << i;
+  }
+  EXPECT_EQ(WithoutTimes(nlohmann::json::parse(ReadText(whole / "results.json"))),
+            WithoutTimes(nlohmann::json::parse(ReadText(merged / "results.json"))));
+  const std::string log = BenchOmplLogName("demo");
+  std::vector<std::string> whole_log, merged_log;
+  LogWithoutTimes(ReadText(whole / log), &whole_log);
+  LogWithoutTimes(ReadText(merged / log), &merged_log);
+  EXPECT_EQ(whole_log, merged_log);
+
+  // A run in two folders is refused.
+  try {
+    MergeBenchRecords({s1.string(), s1.string()}, &manifest, &records);
+    ADD_FAILURE() << "merged a shard with itself";
+  } catch (const acd::InputError& error) {
+    EXPECT_HAS(error.what(), "is also in");
+  }
+}
+
+TEST(BenchRunner, AcdBeatsUniformOnFigure4) {
+  const BenchSpec spec = LoadBenchSpec(WriteBench("figure4", SmallFigure4(10)));
+  const BenchRunOutcome outcome = RunBench(spec);
+  int acd = 0, uniform = 0;
+  for (const BenchCaseSummary& c : SummarizeBenchCases(outcome.records)) {
+    if (c.sampler == "acd") acd = c.successes;
+    if (c.sampler == "uniform") uniform = c.successes;
+    EXPECT_EQ(c.runs, 10);
+  }
+  EXPECT_GE(acd, 9);
+  EXPECT_LE(uniform, 3);
+  for (const BenchRecord& r : outcome.records) {
+    EXPECT_EQ(r.samples, 200u);
+    EXPECT_GT(r.collision_checks, 0u);
+    EXPECT_EQ(r.decomposition_s > 0, r.sampler == "acd");
+  }
+}
+
+TEST(BenchReport, OmplLogLoadsInOmplBenchmarkStatistics) {
+  const BenchSpec spec = LoadBenchSpec(WriteBench("log", SmallFigure4(2)));
+  const fs::path dir = Scratch("log");
+  const BenchRunOutcome outcome = RunBench(spec);
+  WriteBenchOutputs(dir.string(), ManifestOf(spec, "1/1"), outcome.records, false, nullptr);
+  const std::string log = ReadText(dir / BenchOmplLogName("demo"));
+
+  // Structure (OMPL's benchmark log grammar): header lines, 3 planners of 2 runs.
+  EXPECT_EQ(log.rfind("OMPL version ", 0), 0u);
+  EXPECT_HAS(log, "\nExperiment small.demo\n");
+  EXPECT_HAS(log, "\n3 planners\n");
+  EXPECT_HAS(log, "\nPRM [acd] point, 200 samples\n");
+  EXPECT_HAS(log, "\ncollision checks INTEGER\n");
+  EXPECT_HAS(log, "\ndecomposition time REAL\n");
+  EXPECT_HAS(log, "\n2 runs\n");
+
+  const char* tool = "/usr/bin/ompl_benchmark_statistics";
+  if (access(tool, X_OK) != 0) {
+    GTEST_SKIP() << tool << " is missing (Debian package ompl-demos); checked the structure only";
+  }
+  const fs::path db = dir / "bench.db";
+  const std::string command = std::string(tool) + " '" + (dir / BenchOmplLogName("demo")).string() +
+                              "' -d '" + db.string() + "' > '" + (dir / "stats.txt").string() +
+                              "' 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << ReadText(dir / "stats.txt");
+  const std::string query =
+      "/usr/bin/python3 -c \"import sqlite3; c = sqlite3.connect('" + db.string() +
+      "'); print(c.execute('select count(*), sum(solved), min(collision_checks) > 0, "
+      "count(decomposition_time) from runs').fetchone())\" > '" + (dir / "query.txt").string() + "'";
+  ASSERT_EQ(std::system(query.c_str()), 0);
+  EXPECT_HAS(ReadText(dir / "query.txt"), "(6, ");
+}
+
+/// Runs the acdplan binary; its exit status.
+int Acdplan(const std::string& arguments, const fs::path& output) {
+  const std::string command = std::string(ACDPLAN_BINARY) + " " + arguments + " > '" +
+                              output.string() + "' 2>&1";
+  const int raw = std::system(command.c_str());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+TEST(BenchCli, BadInputExitsTwoWithTheKeyPath) {
+  const fs::path dir = Scratch("cli_bad");
+  const std::string bad = WriteBench(
+      "cli_bad", kWorlds + "cases:\n  - {samplers: [acd], planners: [EST], budgets: [{samples: 5}]}\n");
+  EXPECT_EQ(Acdplan("bench '" + bad + "' --out '" + (dir / "out").string() + "'", dir / "o.txt"), 2);
+  EXPECT_HAS(ReadText(dir / "o.txt"), "cli_bad.yaml: cases[0].budgets[0].samples:");
+  EXPECT_FALSE(fs::exists(dir / "out" / "runs.csv"));
+  EXPECT_EQ(Acdplan("bench '" + bad + "' --shard 3/2", dir / "o2.txt"), 2);
+  EXPECT_EQ(Acdplan("bench-merge '" + (dir / "nowhere").string() + "'", dir / "o3.txt"), 2);
+  EXPECT_HAS(ReadText(dir / "o3.txt"), "bench.json: cannot read the file");
+}
+
+TEST(BenchCli, CtrlCWritesTheFinishedRunsAndExits130) {
+  // Time budgets on a world where uniform rarely solves: each run lasts about its budget, so the
+  // bench is still running when the signal comes (the outcome checks hold either way).
+  const fs::path dir = Scratch("cli_sigint");
+  const std::string spec = WriteBench(
+      "cli_sigint", "name: sigint\nruns: 40\nworlds:\n  - scenario: " + kConfigs +
+                        "/demo.yaml\ncases:\n  - {samplers: [bridge], planners: [RRT], budgets: "
+                        "[{time_limit: 0.5}]}\n");
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string out = (dir / "out").string();
+    const std::string log = (dir / "log.txt").string();
+    freopen(log.c_str(), "w", stderr);
+    freopen(log.c_str(), "a", stdout);
+    execl(ACDPLAN_BINARY, ACDPLAN_BINARY, "bench", spec.c_str(), "--out", out.c_str(),
+          "--no-plots", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  sleep(2);
+  kill(pid, SIGINT);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  const int code = WEXITSTATUS(status);
+  EXPECT_TRUE(code == 130 || code == 0) << code << "\n" << ReadText(dir / "log.txt");
+  // Whatever finished is written, and every output agrees on it.
+  const std::vector<BenchRecord> records = ReadBenchRecordsCsv((dir / "out" / "runs.csv").string());
+  const nlohmann::json results = nlohmann::json::parse(ReadText(dir / "out" / "results.json"));
+  int runs = 0;
+  for (const auto& c : results["cases"]) runs += c["runs"].get<int>();
+  EXPECT_EQ(static_cast<size_t>(runs), records.size());
+  const BenchManifest manifest = ReadBenchManifest((dir / "out" / "bench.json").string());
+  EXPECT_EQ(manifest.interrupted, code == 130);
+  if (code == 130) {
+    EXPECT_LT(records.size(), 40u);
+  }
+  EXPECT_HAS(ReadText(dir / "out" / "summary.md"), "# Benchmark `sigint`");
+}
+
+}  // namespace
+}  // namespace acdplan::planning
