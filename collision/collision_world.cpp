@@ -312,7 +312,9 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
       const fcl::Transform3d identity = fcl::Transform3d::Identity();
       ++q.hull_tests;
       if (!Collide(m.robot_hull.get(), q.pose, m.piece_hulls[i].get(), identity)) return false;
-      if (!q.exact) {
+      // A convex piece is its own hull, so the hull tests below are exact for it: only a
+      // concave piece needs its own triangles to confirm a hull hit.
+      if (!q.exact || q.set->pieces[i].convex) {
         if (m.robot_pieces.empty()) {
           q.hit = true;
         } else {

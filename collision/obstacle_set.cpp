@@ -44,6 +44,8 @@ ObstacleSet BuildObstacleSet(const envs::Workspace2d& workspace,
       piece.polygon = component.polygon;
       piece.solid = internal::ExtrudePolygon(component.polygon, -h / 2, h / 2);
       piece.closed = true;
+      piece.convex = component.polygon.holes.empty() &&
+                     component.hull.size() == component.polygon.outer.size();
       piece.hull = internal::ExtrudeConvexRing(component.hull, -h / 2, h / 2);
       piece.planes = internal::HullPlanes(piece.hull);
       for (Eigen::Index i = 0; i < piece.hull.vertices.rows(); ++i) {

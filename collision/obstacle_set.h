@@ -31,6 +31,9 @@ struct ObstaclePiece {
   envs::TriangleMesh solid;   ///< The piece's own surface: 2D the extruded component polygon
                               ///< (closed), 3D the component's triangles.
   bool closed = true;         ///< `solid` is a closed 2-manifold (inside/outside is defined).
+  /// `solid` is convex, so it equals `hull` (2D: every vertex of the component is a strict
+  /// vertex of its hull, decided with exact predicates; 3D: never claimed).
+  bool convex = false;
   envs::TriangleMesh hull;    ///< Convex hull of `solid`, closed, faces counter-clockwise
                               ///< seen from outside.
   /// #H by 4 half-spaces (n, d) with unit outward n: the hull is { x : n . x <= d for all rows }.

@@ -23,6 +23,17 @@ std::shared_ptr<const ObstacleSet> SquareSet() {
   return std::make_shared<const ObstacleSet>(BuildObstacleSet(w));
 }
 
+// The square with a dent 0.01 deep in its top edge: shallower than BuildObstacleSet's default
+// tau (0.02), so it stays one piece, and that piece is not convex.
+std::shared_ptr<const ObstacleSet> DentedSquareSet() {
+  envs::Workspace2d w;
+  w.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(-5, -5), Eigen::Vector2d(5, 5));
+  acd::Polygon2d dented;
+  dented.outer = {{0, 0}, {2, 0}, {2, 2}, {1.2, 2}, {1, 1.99}, {0.8, 2}, {0, 2}};
+  w.obstacles.push_back(dented);
+  return std::make_shared<const ObstacleSet>(BuildObstacleSet(w));
+}
+
 Eigen::Isometry2d At(double x, double y, double theta = 0) {
   Eigen::Isometry2d pose = Eigen::Isometry2d::Identity();
   pose.translation() << x, y;
@@ -84,8 +95,30 @@ TEST(CollisionWorld, PointRobotIsLocatedExactly) {
   }
 }
 
+TEST(CollisionWorld, OnlyConcavePiecesAreConfirmedOnTheirTriangles) {
+  const auto convex = SquareSet();
+  const auto dented = DentedSquareSet();
+  ASSERT_EQ(convex->pieces.size(), 1u);
+  ASSERT_EQ(dented->pieces.size(), 1u);
+  EXPECT_TRUE(convex->pieces[0].convex);
+  EXPECT_FALSE(dented->pieces[0].convex);
+  const auto poses = testing::RandomPoses2d(
+      Eigen::AlignedBox2d(Eigen::Vector2d(-1, -1), Eigen::Vector2d(3, 3)), 500, 11);
+  const CollisionWorld square_world(convex, envs::Robot::Disc(0.25));
+  const CollisionWorld dented_world(dented, envs::Robot::Disc(0.25));
+  for (const auto& pose : poses) {
+    EXPECT_EQ(square_world.IsValid(pose, CollisionMode::kHullsExact),
+              square_world.IsValid(pose, CollisionMode::kBvh));
+    EXPECT_EQ(dented_world.IsValid(pose, CollisionMode::kHullsExact),
+              dented_world.IsValid(pose, CollisionMode::kBvh));
+  }
+  EXPECT_GT(square_world.counters().hull_tests, 0u);
+  EXPECT_EQ(square_world.counters().exact_confirmations, 0u);
+  EXPECT_GT(dented_world.counters().exact_confirmations, 0u);
+}
+
 TEST(CollisionWorld, CountersAreThreadSafe) {
-  const CollisionWorld world(SquareSet(), envs::Robot::Disc(0.25));
+  const CollisionWorld world(DentedSquareSet(), envs::Robot::Disc(0.25));
   const auto poses = testing::RandomPoses2d(
       Eigen::AlignedBox2d(Eigen::Vector2d(-5, -5), Eigen::Vector2d(5, 5)), 2000, 7);
   int invalid[2] = {0, 0};
