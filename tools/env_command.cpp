@@ -65,11 +65,20 @@ void Line(const char* name, const std::string& value) {
   std::printf("%-16s %s\n", name, value.c_str());
 }
 
-Json Box(const Eigen::VectorXd& min, const Eigen::VectorXd& max) {
+// The report's first fields, common to 2D and 3D worlds: bounds as [min..., max...].
+Json ReportHeader(const EnvArguments& args, const std::string& kind, const std::string& description,
+                  const Eigen::VectorXd& min, const Eigen::VectorXd& max) {
+  Json j;
+  j["format"] = "acdplan.env/1";
+  j["input"] = args.input;
+  j["kind"] = kind;
+  j["dimension"] = min.size();
+  j["description"] = description;
   Json box = Json::array();
   for (Eigen::Index i = 0; i < min.size(); ++i) box.push_back(min[i]);
   for (Eigen::Index i = 0; i < max.size(); ++i) box.push_back(max[i]);
-  return box;
+  j["bounds"] = std::move(box);
+  return j;
 }
 
 int Report2d(const EnvArguments& args, const std::string& kind, const envs::Workspace2d& workspace,
@@ -154,13 +163,7 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
     Line("wrote", args.svg_path);
   }
   if (!args.json_path.empty()) {
-    Json j;
-    j["format"] = "acdplan.env/1";
-    j["input"] = args.input;
-    j["kind"] = kind;
-    j["dimension"] = 2;
-    j["description"] = workspace.description;
-    j["bounds"] = Box(lo, hi);
+    Json j = ReportHeader(args, kind, workspace.description, lo, hi);
     j["obstacles"] = workspace.obstacles.size();
     j["obstacle_vertices"] = obstacle_vertices;
     j["free_regions"] = free_space.size();
@@ -203,13 +206,7 @@ int Report3d(const EnvArguments& args, const std::string& kind, const envs::Work
                              obstacles.hulls_source + "; " + std::to_string(open_pieces) +
                              " open (no exact point location inside those)");
   if (!args.json_path.empty()) {
-    Json j;
-    j["format"] = "acdplan.env/1";
-    j["input"] = args.input;
-    j["kind"] = kind;
-    j["dimension"] = 3;
-    j["description"] = workspace.description;
-    j["bounds"] = Box(lo, hi);
+    Json j = ReportHeader(args, kind, workspace.description, lo, hi);
     j["obstacles"] = workspace.obstacles.size();
     j["triangles"] = collision::TriangleCount(obstacles);
     j["obstacle_hulls"] = obstacles.pieces.size();
