@@ -213,6 +213,10 @@ std::string BenchSummaryMarkdown(const BenchManifest& m,
 
   // The issue's targets, checked on this run's data.
   md << "## Targets\n\n";
+  md << "The issue-5 targets where they apply: success where uniform PRM succeeds in <= 20% "
+        "of the runs; median time to solve against uniform (where it solves) and against the "
+        "fastest other sampler, on time budgets. (The Figure-4 target, acd >= 90% and uniform "
+        "<= 10% of seeds, is read off configs/bench/figure4.yaml's table.)\n\n";
   int pass = 0, miss = 0;
   std::ostringstream rows;
   auto row = [&](const Group& g, const std::string& target, const std::string& measured, bool ok) {
@@ -230,19 +234,15 @@ std::string BenchSummaryMarkdown(const BenchManifest& m,
           "uniform " + Percent(uniform->success_rate) + ", acd " + Percent(acd->success_rate),
           acd->success_rate >= 0.95);
     }
-    if (g.sample_budget > 0 && g.planner == "PRM") {
-      row(g, "Figure-4 protocol: acd >= 90%, uniform <= 10%",
-          "acd " + Percent(acd->success_rate) + ", uniform " + Percent(uniform->success_rate),
-          acd->success_rate >= 0.9 && uniform->success_rate <= 0.1);
-    }
     if (g.time_limit > 0 && uniform->successes > 0) {
       const double ratio = uniform->median_time_s / acd->median_time_s;
       row(g, "median time: uniform / acd >= 10",
           acd->successes ? Ratio(uniform->median_time_s, acd->median_time_s) : "acd never solved",
           acd->successes > 0 && ratio >= 10.0);
     }
+    // Against OMPL's built-in samplers only where more than uniform ran (else the row above).
     const BenchCaseSummary* fastest = g.FastestOther();
-    if (g.time_limit > 0 && fastest) {
+    if (g.time_limit > 0 && fastest && g.by_sampler.size() > 2) {
       const double ratio = fastest->median_time_s / acd->median_time_s;
       row(g, "median time: fastest other (" + fastest->sampler + ") / acd >= 3",
           acd->successes ? Ratio(fastest->median_time_s, acd->median_time_s) : "acd never solved",
