@@ -11,7 +11,8 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" --target acdplan -j "$jobs"
 benches=("$@")
 [[ ${#benches[@]} -eq 0 ]] && benches=(figure4 narrow_passages)
+cd "$root"  # Paths in the outputs stay relative to the repository.
 for bench in "${benches[@]}"; do
-  /usr/bin/time -f "%e s wall" "$build/tools/acdplan" bench "$root/configs/bench/$bench.yaml" \
-    --jobs "$jobs" --out "$root/docs/bench/$bench"
+  /usr/bin/time -f "%e s wall" "$build/tools/acdplan" bench "configs/bench/$bench.yaml" \
+    --jobs "$jobs" --out "docs/bench/$bench"
 done
