@@ -13,11 +13,28 @@ namespace acdplan::planning {
 
 namespace {
 
-const char* const kColumns[] = {
-    "case",    "world",  "family", "passage_width", "workspace_width", "robot",
-    "sampler", "planner", "budget", "time_limit",   "sample_budget",   "run",
-    "seed",    "status", "solved", "time_s",        "decomposition_s", "samples",
-    "collision_checks", "path_length", "components", "openings"};
+const char* const kColumns[] = {"case",
+                                "world",
+                                "family",
+                                "passage_width",
+                                "workspace_width",
+                                "robot",
+                                "sampler",
+                                "planner",
+                                "budget",
+                                "time_limit",
+                                "sample_budget",
+                                "run",
+                                "seed",
+                                "status",
+                                "solved",
+                                "time_s",
+                                "decomposition_s",
+                                "samples",
+                                "collision_checks",
+                                "path_length",
+                                "components",
+                                "openings"};
 constexpr size_t kColumnCount = sizeof(kColumns) / sizeof(kColumns[0]);
 
 std::string Real(double x) {
@@ -72,8 +89,8 @@ std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path) {
     const std::vector<std::string> f = Split(line);
     const std::string where = path + ":" + std::to_string(number);
     if (f.size() != kColumnCount) {
-      throw acd::InputError(where + ": expected " + std::to_string(kColumnCount) +
-                            " fields, got " + std::to_string(f.size()));
+      throw acd::InputError(where + ": expected " + std::to_string(kColumnCount) + " fields, got " +
+                            std::to_string(f.size()));
     }
     size_t column = 0;
     try {
@@ -129,8 +146,8 @@ std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path) {
       r.openings = static_cast<int>(integer(21));
       records.push_back(r);
     } catch (const std::exception&) {
-      throw acd::InputError(where + ": column " + kColumns[column] + ": cannot read '" +
-                            f[column] + "'");
+      throw acd::InputError(where + ": column " + kColumns[column] + ": cannot read '" + f[column] +
+                            "'");
     }
   }
   return records;

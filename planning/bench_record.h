@@ -11,9 +11,9 @@ namespace acdplan::planning {
 
 /// One finished run, self-describing (a merge needs no BENCH.yaml).
 struct BenchRecord {
-  int case_index = 0;       ///< Position of the case in the benchmark's global order.
-  std::string world;        ///< World name (unique in the benchmark).
-  std::string family;       ///< The sweep the world belongs to (its name if none).
+  int case_index = 0;            ///< Position of the case in the benchmark's global order.
+  std::string world;             ///< World name (unique in the benchmark).
+  std::string family;            ///< The sweep the world belongs to (its name if none).
   double passage_width = 0.0;    ///< [units]; 0 if unknown.
   double workspace_width = 0.0;  ///< [units]
   std::string robot, sampler, planner;
@@ -30,7 +30,7 @@ struct BenchRecord {
   double decomposition_s = 0.0;  ///< Free space + ACD [s]; acd runs only (0 otherwise).
   std::uint64_t samples = 0;     ///< Samples placed / roadmap or tree vertices.
   std::uint64_t collision_checks = 0;
-  double path_length = 0.0;      ///< 0 without a solution.
+  double path_length = 0.0;          ///< 0 without a solution.
   int components = 0, openings = 0;  ///< Of the world's ACD.
 };
 
@@ -51,19 +51,19 @@ void SortBenchRecords(std::vector<BenchRecord>* records);
 /// What an output folder holds (bench.json).
 struct BenchManifest {
   std::string name, description;
-  std::string spec;              ///< The BENCH.yaml it came from.
-  std::uint64_t seed = 1;        ///< Base seed.
-  int runs = 0;                  ///< Runs per case.
-  int cases = 0;                 ///< Cases in the whole benchmark.
+  std::string spec;                 ///< The BENCH.yaml it came from.
+  std::uint64_t seed = 1;           ///< Base seed.
+  int runs = 0;                     ///< Runs per case.
+  int cases = 0;                    ///< Cases in the whole benchmark.
   std::vector<std::string> shards;  ///< "I/N" of each part in this folder ("1/1" unsharded).
   std::uint64_t planned_runs = 0;   ///< Runs the parts in this folder were to do.
-  bool interrupted = false;      ///< A part stopped early (Ctrl-C).
-  std::string hostname;          ///< Machine(s), comma-separated after a merge.
-  int cpus = 0;                  ///< std::thread::hardware_concurrency() (max over parts).
-  double load_average = 0.0;     ///< 1-minute load average when the (first) part started.
-  int jobs = 1;                  ///< Runs in parallel.
-  std::string started;           ///< "YYYY-MM-DD HH:MM:SS" UTC of the (earliest) start.
-  double wall_s = 0.0;           ///< Wall time (sum over parts) [s].
+  bool interrupted = false;         ///< A part stopped early (Ctrl-C).
+  std::string hostname;             ///< Machine(s), comma-separated after a merge.
+  int cpus = 0;                     ///< std::thread::hardware_concurrency() (max over parts).
+  double load_average = 0.0;        ///< 1-minute load average when the (first) part started.
+  int jobs = 1;                     ///< Runs in parallel.
+  std::string started;              ///< "YYYY-MM-DD HH:MM:SS" UTC of the (earliest) start.
+  double wall_s = 0.0;              ///< Wall time (sum over parts) [s].
 };
 
 std::string BenchManifestToJson(const BenchManifest& manifest);

@@ -46,7 +46,9 @@ std::string Ratio(double numerator, double denominator) {
   return buffer;
 }
 
-nlohmann::json NumberOrNull(double x) { return std::isnan(x) ? nlohmann::json() : nlohmann::json(x); }
+nlohmann::json NumberOrNull(double x) {
+  return std::isnan(x) ? nlohmann::json() : nlohmann::json(x);
+}
 
 /// Cases of one world, robot, planner and budget: the samplers compared with each other.
 struct Group {
@@ -155,10 +157,10 @@ std::string BenchSummaryMarkdown(const BenchManifest& m,
   if (!m.description.empty()) md << m.description << "\n\n";
   std::uint64_t done = 0;
   for (const BenchCaseSummary& c : cases) done += static_cast<std::uint64_t>(c.runs);
-  md << "- spec: `" << m.spec << "`, base seed " << m.seed << ", " << m.runs
-     << " runs per case, " << m.cases << " cases\n";
-  md << "- runs finished: " << done << " of " << m.planned_runs << " planned (shards "
-     << Shards(m) << ")" << (m.interrupted ? " — **interrupted (Ctrl-C)**" : "") << "\n";
+  md << "- spec: `" << m.spec << "`, base seed " << m.seed << ", " << m.runs << " runs per case, "
+     << m.cases << " cases\n";
+  md << "- runs finished: " << done << " of " << m.planned_runs << " planned (shards " << Shards(m)
+     << ")" << (m.interrupted ? " — **interrupted (Ctrl-C)**" : "") << "\n";
   md << "- machine: " << m.hostname << ", " << m.cpus << " CPUs, load average "
      << Fixed(m.load_average, 2) << " at the start, " << m.jobs << " run(s) in parallel\n";
   md << "- started " << m.started << " UTC, wall time " << Fixed(m.wall_s, 1) << " s ("
@@ -202,9 +204,8 @@ std::string BenchSummaryMarkdown(const BenchManifest& m,
     const BenchCaseSummary* best = g.BestOther();
     if (!acd || !best) continue;
     md << "| " << g.world << " | " << g.robot << " | " << g.planner << " | " << g.budget << " | "
-       << Percent(acd->success_rate) << " | "
-       << (uniform ? Percent(uniform->success_rate) : "—") << " | " << best->sampler << " "
-       << Percent(best->success_rate) << " | "
+       << Percent(acd->success_rate) << " | " << (uniform ? Percent(uniform->success_rate) : "—")
+       << " | " << best->sampler << " " << Percent(best->success_rate) << " | "
        << (uniform ? Ratio(acd->success_rate, uniform->success_rate) : "—") << " | "
        << (uniform ? Ratio(uniform->median_time_s, acd->median_time_s) : "—") << " | "
        << Ratio(best->median_time_s, acd->median_time_s) << " |\n";
@@ -221,9 +222,8 @@ std::string BenchSummaryMarkdown(const BenchManifest& m,
   std::ostringstream rows;
   auto row = [&](const Group& g, const std::string& target, const std::string& measured, bool ok) {
     (ok ? pass : miss)++;
-    rows << "| " << g.world << " | " << g.robot << " | " << g.planner << " | " << g.budget
-         << " | " << target << " | " << measured << " | " << (ok ? "holds" : "**missed**")
-         << " |\n";
+    rows << "| " << g.world << " | " << g.robot << " | " << g.planner << " | " << g.budget << " | "
+         << target << " | " << measured << " | " << (ok ? "holds" : "**missed**") << " |\n";
   };
   for (const Group& g : groups) {
     const BenchCaseSummary* acd = g.Get("acd");
@@ -252,7 +252,8 @@ std::string BenchSummaryMarkdown(const BenchManifest& m,
   md << "| world | robot | planner | budget | target | measured | |\n";
   md << "|---|---|---|---|---|---|---|\n";
   md << rows.str();
-  md << "\n" << pass << " target checks hold, " << miss << " missed. Wall time "
+  md << "\n"
+     << pass << " target checks hold, " << miss << " missed. Wall time "
      << Fixed(m.wall_s / 60.0, 1) << " min (the narrow_passages target: < 20 min on 2 cores).\n";
   return md.str();
 }
@@ -323,12 +324,14 @@ std::string BenchOmplLog(const BenchManifest& m, const std::vector<BenchRecord>&
     for (const BenchRecord* r : rs) {
       const bool finished = r->status == "solved" || r->status == "unsolved";
       // OMPL's PlannerStatus: 4 timeout (budget used up), 6 exact solution, 7 crash, 8 abort.
-      const int status = r->solved ? 6 : r->status == "unsolved" ? 4 : r->status == "crashed" ? 7 : 8;
+      const int status = r->solved                 ? 6
+                         : r->status == "unsolved" ? 4
+                         : r->status == "crashed"  ? 7
+                                                   : 8;
       log << (finished ? real(r->time_s) : "nan") << "; " << (r->solved ? 1 : 0) << "; " << status
           << "; " << r->samples << "; " << (r->solved ? real(r->path_length) : "") << "; "
-          << r->collision_checks << "; " << r->samples << "; " << real(r->decomposition_s)
-          << "; " << r->components << "; " << r->openings << "; " << r->seed << "; " << r->run
-          << "; 0; \n";
+          << r->collision_checks << "; " << r->samples << "; " << real(r->decomposition_s) << "; "
+          << r->components << "; " << r->openings << "; " << r->seed << "; " << r->run << "; 0; \n";
     }
     log << ".\n";
   }
@@ -381,7 +384,8 @@ void Plot(const std::string& dir, std::ostream* log) {
   if (std::system(probe.c_str()) != 0) {
     say(std::string("bench: no plots: ") + python +
         " with matplotlib is not available (Debian: apt-get install python3-matplotlib); "
-        "run tools/plot_bench.py " + dir + " later");
+        "run tools/plot_bench.py " +
+        dir + " later");
     return;
   }
   const std::string command = std::string(python) + " " + Quoted(script) + " " + Quoted(dir);

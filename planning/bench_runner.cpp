@@ -1,5 +1,6 @@
 #include "planning/bench_runner.h"
 
+#include <ompl/util/Console.h>
 #include <poll.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -12,7 +13,6 @@
 #include <cstring>
 #include <map>
 #include <memory>
-#include <ompl/util/Console.h>
 #include <ostream>
 #include <set>
 #include <sstream>
@@ -111,12 +111,11 @@ void CheckQueries(const BenchSpec& spec) {
     const collision::CollisionWorld check(obstacles[w], robot.robot, options);
     const Eigen::AlignedBox2d& bounds = world.scenario.workspace.bounds;
     for (const char* which : {"start", "goal"}) {
-      const std::vector<double> q = Fitted(
-          which[0] == 's' ? world.scenario.start : world.scenario.goal, robot.robot);
+      const std::vector<double> q =
+          Fitted(which[0] == 's' ? world.scenario.start : world.scenario.goal, robot.robot);
       if (!Fits(check, robot.robot, bounds, Pose(q))) {
         throw acd::InputError(spec.path + ": worlds: " + world.name + ": robot " + robot.name +
-                              ": " + which +
-                              ": the robot is in collision or out of bounds there");
+                              ": " + which + ": the robot is in collision or out of bounds there");
       }
     }
   }
@@ -296,9 +295,9 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
       int solved = 0;
       unsigned long long samples = 0, checks = 0;
       if (WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
-          std::sscanf(child.output.c_str(), "OK %d %lf %lf %llu %llu %lf %d %d", &solved,
-                      &r.time_s, &r.decomposition_s, &samples, &checks, &r.path_length,
-                      &r.components, &r.openings) == 8) {
+          std::sscanf(child.output.c_str(), "OK %d %lf %lf %llu %llu %lf %d %d", &solved, &r.time_s,
+                      &r.decomposition_s, &samples, &checks, &r.path_length, &r.components,
+                      &r.openings) == 8) {
         r.solved = solved != 0;
         r.status = r.solved ? "solved" : "unsolved";
         r.samples = samples;
@@ -306,8 +305,8 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
       } else {
         r.status = WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM ? "timeout" : "crashed";
         if (options.progress) {
-          *options.progress << (tty ? "\n" : "") << "bench: run " << r.run << " of "
-                            << c.Key(spec) << " (seed " << r.seed << ") " << r.status
+          *options.progress << (tty ? "\n" : "") << "bench: run " << r.run << " of " << c.Key(spec)
+                            << " (seed " << r.seed << ") " << r.status
                             << (child.output.rfind("X ", 0) == 0 ? ": " + child.output.substr(2)
                                                                  : std::string("\n"));
         }

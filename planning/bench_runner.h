@@ -13,10 +13,10 @@ namespace acdplan::planning {
 
 /// Options for RunBench(); `{}` is valid.
 struct BenchRunOptions {
-  int runs = 0;          ///< Runs per case; 0: the spec's.
-  BenchShard shard;      ///< Which runs to do (default: all).
-  int jobs = 1;          ///< Runs in parallel (child processes); >= 1. Times are measured per
-                         ///< run; more jobs than free cores inflate them.
+  int runs = 0;      ///< Runs per case; 0: the spec's.
+  BenchShard shard;  ///< Which runs to do (default: all).
+  int jobs = 1;      ///< Runs in parallel (child processes); >= 1. Times are measured per
+                     ///< run; more jobs than free cores inflate them.
   std::ostream* progress = nullptr;  ///< A progress line (runs done / total, elapsed, estimate
                                      ///< left) goes here if set.
   /// Polled between runs; when it becomes non-zero the running runs are killed (and

@@ -55,16 +55,17 @@ void ReadAcd(const Reader& r, const YAML::Node& node, const std::string& key, Sc
 /// Reads `acd_sampler: {...}` (also a robot's `orientation`).
 void ReadSamplerOptions(const Reader& r, const YAML::Node& node, const std::string& key,
                         AcdSamplerOptions* o) {
-  r.CheckKeys(node, key, {"uniform_share", "opening_weight", "centroid_spread", "opening_spread",
-                          "max_attempts", "orientation"});
+  r.CheckKeys(node, key,
+              {"uniform_share", "opening_weight", "centroid_spread", "opening_spread",
+               "max_attempts", "orientation"});
   auto child = [&](const char* name) { return Reader::Child(key, name); };
   if (node["uniform_share"]) {
-    o->uniform_share = r.Number(node["uniform_share"], child("uniform_share"),
-                                "a number in [0, 1]", internal::UnitInterval);
+    o->uniform_share = r.Number(node["uniform_share"], child("uniform_share"), "a number in [0, 1]",
+                                internal::UnitInterval);
   }
   if (node["opening_weight"]) {
-    o->opening_weight = r.Number(node["opening_weight"], child("opening_weight"),
-                                 "a number >= 0", internal::NonNegative);
+    o->opening_weight = r.Number(node["opening_weight"], child("opening_weight"), "a number >= 0",
+                                 internal::NonNegative);
   }
   if (node["centroid_spread"]) {
     o->centroid_spread = r.Number(node["centroid_spread"], child("centroid_spread"),
@@ -96,8 +97,9 @@ std::string Resolved(const std::string& base_file, const std::string& file) {
 /// Reads worlds[i] (one world, or several for a `passage_widths` sweep).
 void ReadWorld(const Reader& r, const YAML::Node& node, const std::string& key,
                const Scenario& defaults, std::vector<BenchWorld>* worlds) {
-  r.CheckKeys(node, key, {"name", "scenario", "workspace", "start", "goal", "acd", "collision",
-                          "passage_width", "passage_widths"});
+  r.CheckKeys(node, key,
+              {"name", "scenario", "workspace", "start", "goal", "acd", "collision",
+               "passage_width", "passage_widths"});
   auto child = [&](const char* name) { return Reader::Child(key, name); };
   BenchWorld world;
   world.scenario = defaults;
@@ -151,7 +153,8 @@ void ReadWorld(const Reader& r, const YAML::Node& node, const std::string& key,
     world.scenario.goal = r.Numbers(node["goal"], child("goal"), "[x, y] or [x, y, yaw]");
     for (const auto* q : {&world.scenario.start, &world.scenario.goal}) {
       if (q->size() != 2 && q->size() != 3) {
-        r.Fail(child(q == &world.scenario.start ? "start" : "goal"), "expected [x, y] or [x, y, yaw]");
+        r.Fail(child(q == &world.scenario.start ? "start" : "goal"),
+               "expected [x, y] or [x, y, yaw]");
       }
     }
   }
@@ -161,7 +164,8 @@ void ReadWorld(const Reader& r, const YAML::Node& node, const std::string& key,
     if (node["collision"]["mode"]) {
       const std::string mode = r.String(node["collision"]["mode"], child("collision") + ".mode");
       if (mode != "bvh" && mode != "hulls" && mode != "hulls+exact") {
-        r.Fail(child("collision") + ".mode", "expected bvh, hulls or hulls+exact, got '" + mode + "'");
+        r.Fail(child("collision") + ".mode",
+               "expected bvh, hulls or hulls+exact, got '" + mode + "'");
       }
       world.scenario.collision_mode = mode;
     }
@@ -233,7 +237,8 @@ std::vector<int> Subset(const Reader& r, const YAML::Node& node, const std::stri
     if (!found) {
       std::vector<std::string> known;
       for (const T& item : items) known.push_back(item.name);
-      r.Fail(Reader::Item(key, i), "unknown name '" + names[i] + "' (known: " + Joined(known) + ")");
+      r.Fail(Reader::Item(key, i),
+             "unknown name '" + names[i] + "' (known: " + Joined(known) + ")");
     }
   }
   return indices;
@@ -267,8 +272,9 @@ std::string BenchCase::Key(const BenchSpec& spec) const {
 BenchSpec LoadBenchSpec(const std::string& path) {
   const Reader r{path};
   const YAML::Node root = internal::LoadYamlFile(path);
-  r.CheckKeys(root, "", {"name", "description", "seed", "runs", "acd", "acd_sampler", "worlds",
-                         "robots", "cases"});
+  r.CheckKeys(
+      root, "",
+      {"name", "description", "seed", "runs", "acd", "acd_sampler", "worlds", "robots", "cases"});
   BenchSpec spec;
   spec.path = path;
   if (!root["name"]) r.Fail("name", "required");
@@ -285,7 +291,8 @@ BenchSpec LoadBenchSpec(const std::string& path) {
   Scenario defaults;
   if (root["acd"]) ReadAcd(r, root["acd"], "acd", &defaults);
   AcdSamplerOptions sampler_options;
-  if (root["acd_sampler"]) ReadSamplerOptions(r, root["acd_sampler"], "acd_sampler", &sampler_options);
+  if (root["acd_sampler"])
+    ReadSamplerOptions(r, root["acd_sampler"], "acd_sampler", &sampler_options);
 
   const YAML::Node& worlds = root["worlds"];
   if (!worlds) r.Fail("worlds", "required");
@@ -298,7 +305,8 @@ BenchSpec LoadBenchSpec(const std::string& path) {
     for (size_t j = before; j < spec.worlds.size(); ++j) {
       for (size_t k = 0; k < before; ++k) {
         if (spec.worlds[k].name == spec.worlds[j].name) {
-          r.Fail(Reader::Item("worlds", i) + ".name", "duplicate world name '" + spec.worlds[j].name + "'");
+          r.Fail(Reader::Item("worlds", i) + ".name",
+                 "duplicate world name '" + spec.worlds[j].name + "'");
         }
       }
     }
@@ -330,13 +338,16 @@ BenchSpec LoadBenchSpec(const std::string& path) {
         }
       }
       if (!SafeName(robot.name)) {
-        r.Fail(key + ".name", robot.name.empty() ? "required"
-                                                 : "expected letters, digits, '_', '-' or '.', got '" +
-                                                       robot.name + "'");
+        r.Fail(key + ".name",
+               robot.name.empty()
+                   ? "required"
+                   : "expected letters, digits, '_', '-' or '.', got '" + robot.name + "'");
       }
-      robot.robot = internal::ReadRobot(r, shape.IsNull() ? YAML::Node(YAML::NodeType::Map) : shape, key);
+      robot.robot =
+          internal::ReadRobot(r, shape.IsNull() ? YAML::Node(YAML::NodeType::Map) : shape, key);
       for (const BenchRobot& other : spec.robots) {
-        if (other.name == robot.name) r.Fail(key + ".name", "duplicate robot name '" + robot.name + "'");
+        if (other.name == robot.name)
+          r.Fail(key + ".name", "duplicate robot name '" + robot.name + "'");
       }
       spec.robots.push_back(robot);
     }

@@ -14,9 +14,9 @@ struct BenchSpec;
 
 /// One world of a benchmark: a workspace with a start and a goal (for every robot).
 struct BenchWorld {
-  std::string name;            ///< Unique; used in file names (letters, digits, '_', '-', '.').
-  std::string family;          ///< Worlds of one sweep share it (plots: success vs width).
-  double passage_width = 0.0;  ///< [units]; 0 if unknown. Taken from the generator.
+  std::string name;              ///< Unique; used in file names (letters, digits, '_', '-', '.').
+  std::string family;            ///< Worlds of one sweep share it (plots: success vs width).
+  double passage_width = 0.0;    ///< [units]; 0 if unknown. Taken from the generator.
   double workspace_width = 0.0;  ///< Bounds' extent along x [units].
   /// Workspace, start and goal ([x, y] or [x, y, yaw]; point and disc robots use x, y, a
   /// polygon robot yaw 0 when absent), ACD tolerance and measure, collision mode.
@@ -40,7 +40,7 @@ struct BenchBudget {
 
 /// One cell of the benchmark: world x robot x sampler x planner x budget.
 struct BenchCase {
-  int index = 0;  ///< Position in BenchSpec::cases.
+  int index = 0;             ///< Position in BenchSpec::cases.
   int world = 0, robot = 0;  ///< Indices into BenchSpec::worlds / robots.
   std::string sampler, planner;
   BenchBudget budget;

@@ -34,7 +34,7 @@ struct BenchCaseSummary {
   /// Over the solved runs (time to solve, decomposition included for acd); NaN if none.
   double median_time_s = 0.0, p90_time_s = 0.0;
   double median_collision_checks = 0.0;  ///< Over all runs.
-  double median_decomposition_s = 0.0;  ///< Over all runs (0 for samplers other than acd).
+  double median_decomposition_s = 0.0;   ///< Over all runs (0 for samplers other than acd).
 };
 
 /// One summary per case present in `records`, in case order.

@@ -33,8 +33,8 @@ void YamlReader::CheckKeys(const YAML::Node& node, const std::string& key,
   }
 }
 
-double YamlReader::Number(const YAML::Node& node, const std::string& key,
-                          const std::string& rule, bool (*accept)(double)) const {
+double YamlReader::Number(const YAML::Node& node, const std::string& key, const std::string& rule,
+                          bool (*accept)(double)) const {
   double value = 0;
   if (!node.IsScalar() || !YAML::convert<double>::decode(node, value) || !std::isfinite(value) ||
       !accept(value)) {
@@ -67,8 +67,7 @@ std::vector<double> YamlReader::Numbers(const YAML::Node& node, const std::strin
   return values;
 }
 
-std::vector<std::string> YamlReader::Strings(const YAML::Node& node,
-                                             const std::string& key) const {
+std::vector<std::string> YamlReader::Strings(const YAML::Node& node, const std::string& key) const {
   if (!node.IsSequence()) Fail(key, "expected a list of names, got " + Shown(node));
   std::vector<std::string> values;
   for (size_t i = 0; i < node.size(); ++i) values.push_back(String(node[i], Item(key, i)));
@@ -161,7 +160,8 @@ envs::Workspace2d ReadGeneratedWorkspace(const YamlReader& r, const YAML::Node& 
 envs::Robot ReadRobot(const YamlReader& r, const YAML::Node& node, const std::string& key) {
   using R = YamlReader;
   r.CheckKeys(node, key, {"shape", "radius", "polygon"});
-  const std::string shape = node["shape"] ? r.String(node["shape"], R::Child(key, "shape")) : "point";
+  const std::string shape =
+      node["shape"] ? r.String(node["shape"], R::Child(key, "shape")) : "point";
   const std::string radius_key = R::Child(key, "radius");
   const std::string polygon_key = R::Child(key, "polygon");
   try {
@@ -184,7 +184,8 @@ envs::Robot ReadRobot(const YamlReader& r, const YAML::Node& node, const std::st
       }
       acd::Polygon2d outline;
       for (size_t i = 0; i < list.size(); ++i) {
-        const std::vector<double> xy = r.Numbers(list[i], R::Item(polygon_key, i), "an [x, y] pair");
+        const std::vector<double> xy =
+            r.Numbers(list[i], R::Item(polygon_key, i), "an [x, y] pair");
         if (xy.size() != 2) r.Fail(R::Item(polygon_key, i), "expected an [x, y] pair");
         outline.outer.emplace_back(xy[0], xy[1]);
       }

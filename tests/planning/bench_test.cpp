@@ -30,7 +30,8 @@ namespace fs = std::filesystem;
 const std::string kConfigs = std::string(ACDPLAN_SOURCE_DIR) + "/configs";
 
 fs::path Scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("acdplan_bench_test_" + std::to_string(getpid())) / name;
+  const fs::path dir =
+      fs::temp_directory_path() / ("acdplan_bench_test_" + std::to_string(getpid())) / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -73,7 +74,8 @@ const std::string kWorlds =
   EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << (haystack)
 
 TEST(BenchSpec, ErrorsNameTheFileAndKeyPath) {
-  const std::string cases = "cases:\n  - {samplers: [acd], planners: [PRM], budgets: [{samples: 50}]}\n";
+  const std::string cases =
+      "cases:\n  - {samplers: [acd], planners: [PRM], budgets: [{samples: 50}]}\n";
   EXPECT_EQ(ErrorOf(kWorlds + cases), "");
   EXPECT_HAS(ErrorOf(kWorlds), "bad.yaml: cases: required");
   EXPECT_HAS(ErrorOf("name: t\n" + cases), "bad.yaml: worlds: required");
@@ -101,12 +103,14 @@ TEST(BenchSpec, ErrorsNameTheFileAndKeyPath) {
   EXPECT_HAS(ErrorOf(kWorlds + "robots:\n  - {name: d, shape: point, wheels: 4}\n" + cases),
              "bad.yaml: robots[0].wheels: unknown key");
   EXPECT_HAS(ErrorOf("name: t\nworlds:\n  - {name: w, workspace: {generator: wall_gap, "
-                     "passage_width: -1}, start: [1, 1], goal: [2, 2]}\n" + cases),
+                     "passage_width: -1}, start: [1, 1], goal: [2, 2]}\n" +
+                     cases),
              "bad.yaml: worlds[0].workspace.passage_width: expected a positive number, got '-1'");
   EXPECT_HAS(ErrorOf("name: t\nworlds:\n  - {scenario: missing.yaml}\n" + cases),
              "bad.yaml: worlds[0].scenario: ");
   EXPECT_HAS(ErrorOf("name: t\nworlds:\n  - {name: w, workspace: {generator: wall_gap}, "
-                     "start: [1, 1]}\n" + cases),
+                     "start: [1, 1]}\n" +
+                     cases),
              "bad.yaml: worlds[0].goal: required");
   EXPECT_HAS(ErrorOf(kWorlds + "  - name: gap\n    scenario: " + kConfigs + "/demo.yaml\n" + cases),
              "bad.yaml: worlds[1].name: duplicate world name 'gap'");
@@ -171,9 +175,9 @@ TEST(BenchStats, WilsonIntervalKnownValues) {
   const struct {
     int k, n;
     double lo, hi;
-  } known[] = {{0, 10, 0.0, 0.277533}, {5, 10, 0.236593, 0.763407}, {10, 10, 0.722467, 1.0},
-               {1, 20, 0.008881, 0.236131}, {19, 20, 0.763869, 0.991119},
-               {7, 100, 0.034319, 0.137495}};
+  } known[] = {{0, 10, 0.0, 0.277533},       {5, 10, 0.236593, 0.763407},
+               {10, 10, 0.722467, 1.0},      {1, 20, 0.008881, 0.236131},
+               {19, 20, 0.763869, 0.991119}, {7, 100, 0.034319, 0.137495}};
   for (const auto& c : known) {
     const auto [lo, hi] = WilsonInterval(c.k, c.n);
     EXPECT_NEAR(lo, c.lo, 1e-6) << c.k << "/" << c.n;
@@ -339,15 +343,16 @@ TEST(BenchReport, OmplLogLoadsInOmplBenchmarkStatistics) {
   const std::string query =
       "/usr/bin/python3 -c \"import sqlite3; c = sqlite3.connect('" + db.string() +
       "'); print(c.execute('select count(*), sum(solved), min(collision_checks) > 0, "
-      "count(decomposition_time) from runs').fetchone())\" > '" + (dir / "query.txt").string() + "'";
+      "count(decomposition_time) from runs').fetchone())\" > '" +
+      (dir / "query.txt").string() + "'";
   ASSERT_EQ(std::system(query.c_str()), 0);
   EXPECT_HAS(ReadText(dir / "query.txt"), "(6, ");
 }
 
 /// Runs the acdplan binary; its exit status.
 int Acdplan(const std::string& arguments, const fs::path& output) {
-  const std::string command = std::string(ACDPLAN_BINARY) + " " + arguments + " > '" +
-                              output.string() + "' 2>&1";
+  const std::string command =
+      std::string(ACDPLAN_BINARY) + " " + arguments + " > '" + output.string() + "' 2>&1";
   const int raw = std::system(command.c_str());
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
@@ -355,8 +360,10 @@ int Acdplan(const std::string& arguments, const fs::path& output) {
 TEST(BenchCli, BadInputExitsTwoWithTheKeyPath) {
   const fs::path dir = Scratch("cli_bad");
   const std::string bad = WriteBench(
-      "cli_bad", kWorlds + "cases:\n  - {samplers: [acd], planners: [EST], budgets: [{samples: 5}]}\n");
-  EXPECT_EQ(Acdplan("bench '" + bad + "' --out '" + (dir / "out").string() + "'", dir / "o.txt"), 2);
+      "cli_bad",
+      kWorlds + "cases:\n  - {samplers: [acd], planners: [EST], budgets: [{samples: 5}]}\n");
+  EXPECT_EQ(Acdplan("bench '" + bad + "' --out '" + (dir / "out").string() + "'", dir / "o.txt"),
+            2);
   EXPECT_HAS(ReadText(dir / "o.txt"), "cli_bad.yaml: cases[0].budgets[0].samples:");
   EXPECT_FALSE(fs::exists(dir / "out" / "runs.csv"));
   EXPECT_EQ(Acdplan("bench '" + bad + "' --shard 3/2", dir / "o2.txt"), 2);
@@ -379,8 +386,8 @@ TEST(BenchCli, CtrlCWritesTheFinishedRunsAndExits130) {
     const std::string log = (dir / "log.txt").string();
     freopen(log.c_str(), "w", stderr);
     freopen(log.c_str(), "a", stdout);
-    execl(ACDPLAN_BINARY, ACDPLAN_BINARY, "bench", spec.c_str(), "--out", out.c_str(),
-          "--no-plots", static_cast<char*>(nullptr));
+    execl(ACDPLAN_BINARY, ACDPLAN_BINARY, "bench", spec.c_str(), "--out", out.c_str(), "--no-plots",
+          static_cast<char*>(nullptr));
     _exit(127);
   }
   sleep(2);
