@@ -410,6 +410,17 @@ void WriteBenchOutputs(const std::string& dir, const BenchManifest& manifest,
     acd::WriteFileAtomically((d / BenchOmplLogName(world)).string(),
                              BenchOmplLog(manifest, records, world));
   }
+  // Logs of worlds this run does not have (an earlier run into the same folder) would be
+  // mistaken for its results.
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(d, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("ompl_", 0) != 0 || entry.path().extension() != ".log") continue;
+    const bool current = std::any_of(worlds.begin(), worlds.end(), [&](const std::string& w) {
+      return BenchOmplLogName(w) == name;
+    });
+    if (!current) std::filesystem::remove(entry.path(), ec);
+  }
   if (plot) Plot(dir, log);
 }
 

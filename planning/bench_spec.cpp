@@ -442,10 +442,10 @@ BenchShard ParseBenchShard(const std::string& text) {
     shard.count = std::stoi(rest, &used);
     if (used != rest.size()) throw std::invalid_argument("trailing");
   } catch (const std::exception&) {
-    throw acd::InputError("--shard: expected I/N (e.g. 2/8), got '" + text + "'");
+    throw acd::InputError("expected I/N (e.g. 2/8), got '" + text + "'");
   }
   if (shard.count < 1 || shard.index < 1 || shard.index > shard.count) {
-    throw acd::InputError("--shard: expected 1 <= I <= N, got '" + text + "'");
+    throw acd::InputError("expected I/N with 1 <= I <= N, got '" + text + "'");
   }
   return shard;
 }

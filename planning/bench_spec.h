@@ -99,7 +99,7 @@ struct BenchShard {
   int count = 1;  ///< >= 1.
 };
 
-/// Parses "I/N" (1 <= I <= N). @throws acd::InputError otherwise.
+/// Parses "I/N" (1 <= I <= N). @throws acd::InputError "expected I/N ..., got '<text>'" otherwise.
 BenchShard ParseBenchShard(const std::string& text);
 
 /// One run to do: its place in the global order and its seed.

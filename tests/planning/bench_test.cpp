@@ -164,7 +164,7 @@ TEST(BenchSpec, ShardSyntax) {
       ParseBenchShard(bad);
       ADD_FAILURE() << bad;
     } catch (const acd::InputError& error) {
-      EXPECT_HAS(error.what(), "--shard");
+      EXPECT_HAS(error.what(), "expected I/N");
     }
   }
 }
