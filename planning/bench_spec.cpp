@@ -58,34 +58,7 @@ void ReadSamplerOptions(const Reader& r, const YAML::Node& node, const std::stri
   r.CheckKeys(node, key,
               {"uniform_share", "opening_weight", "centroid_spread", "opening_spread",
                "max_attempts", "orientation"});
-  auto child = [&](const char* name) { return Reader::Child(key, name); };
-  if (node["uniform_share"]) {
-    o->uniform_share = r.Number(node["uniform_share"], child("uniform_share"), "a number in [0, 1]",
-                                internal::UnitInterval);
-  }
-  if (node["opening_weight"]) {
-    o->opening_weight = r.Number(node["opening_weight"], child("opening_weight"), "a number >= 0",
-                                 internal::NonNegative);
-  }
-  if (node["centroid_spread"]) {
-    o->centroid_spread = r.Number(node["centroid_spread"], child("centroid_spread"),
-                                  "a positive number", internal::Positive);
-  }
-  if (node["opening_spread"]) {
-    o->opening_spread = r.Number(node["opening_spread"], child("opening_spread"),
-                                 "a positive number", internal::Positive);
-  }
-  if (node["max_attempts"]) {
-    o->max_attempts = static_cast<int>(
-        r.Integer(node["max_attempts"], child("max_attempts"), "an integer >= 1", 1));
-  }
-  if (node["orientation"]) {
-    try {
-      o->orientation = ParseAcdOrientation(r.String(node["orientation"], child("orientation")));
-    } catch (const acd::InputError& error) {
-      r.Fail(child("orientation"), error.what());
-    }
-  }
+  internal::ReadAcdSamplerOptions(r, node, key, o);
 }
 
 std::string Resolved(const std::string& base_file, const std::string& file) {

@@ -120,36 +120,8 @@ Scenario LoadScenario(const std::string& path) {
     r.CheckKeys(sampler, "sampler",
                 {"name", "uniform_share", "orientation", "opening_weight", "centroid_spread",
                  "opening_spread", "max_attempts"});
-    AcdSamplerOptions& o = s.sampler_options;
     if (sampler["name"]) s.sampler = r.String(sampler["name"], "sampler.name");
-    if (sampler["uniform_share"]) {
-      o.uniform_share = r.Number(sampler["uniform_share"], "sampler.uniform_share",
-                                 "a number in [0, 1]", UnitInterval);
-    }
-    if (sampler["orientation"]) {
-      try {
-        o.orientation =
-            ParseAcdOrientation(r.String(sampler["orientation"], "sampler.orientation"));
-      } catch (const acd::InputError& error) {
-        r.Fail("sampler.orientation", error.what());
-      }
-    }
-    if (sampler["opening_weight"]) {
-      o.opening_weight = r.Number(sampler["opening_weight"], "sampler.opening_weight",
-                                  "a number >= 0", NonNegative);
-    }
-    if (sampler["centroid_spread"]) {
-      o.centroid_spread = r.Number(sampler["centroid_spread"], "sampler.centroid_spread",
-                                   "a positive number", Positive);
-    }
-    if (sampler["opening_spread"]) {
-      o.opening_spread = r.Number(sampler["opening_spread"], "sampler.opening_spread",
-                                  "a positive number", Positive);
-    }
-    if (sampler["max_attempts"]) {
-      o.max_attempts = static_cast<int>(
-          r.Integer(sampler["max_attempts"], "sampler.max_attempts", "an integer >= 1", 1));
-    }
+    internal::ReadAcdSamplerOptions(r, sampler, "sampler", &s.sampler_options);
   }
   if (const YAML::Node& collision = root["collision"]) {
     r.CheckKeys(collision, "collision", {"mode"});

@@ -157,6 +157,38 @@ envs::Workspace2d ReadGeneratedWorkspace(const YamlReader& r, const YAML::Node& 
   r.Fail(R::Child(key, "wall_thickness"), "not an option of generator '" + name + "'");
 }
 
+void ReadAcdSamplerOptions(const YamlReader& r, const YAML::Node& node, const std::string& key,
+                           AcdSamplerOptions* o) {
+  auto child = [&key](const char* name) { return YamlReader::Child(key, name); };
+  if (node["uniform_share"]) {
+    o->uniform_share = r.Number(node["uniform_share"], child("uniform_share"), "a number in [0, 1]",
+                                UnitInterval);
+  }
+  if (node["opening_weight"]) {
+    o->opening_weight = r.Number(node["opening_weight"], child("opening_weight"), "a number >= 0",
+                                 NonNegative);
+  }
+  if (node["centroid_spread"]) {
+    o->centroid_spread = r.Number(node["centroid_spread"], child("centroid_spread"),
+                                  "a positive number", Positive);
+  }
+  if (node["opening_spread"]) {
+    o->opening_spread = r.Number(node["opening_spread"], child("opening_spread"),
+                                 "a positive number", Positive);
+  }
+  if (node["max_attempts"]) {
+    o->max_attempts = static_cast<int>(
+        r.Integer(node["max_attempts"], child("max_attempts"), "an integer >= 1", 1));
+  }
+  if (node["orientation"]) {
+    try {
+      o->orientation = ParseAcdOrientation(r.String(node["orientation"], child("orientation")));
+    } catch (const acd::InputError& error) {
+      r.Fail(child("orientation"), error.what());
+    }
+  }
+}
+
 envs::Robot ReadRobot(const YamlReader& r, const YAML::Node& node, const std::string& key) {
   using R = YamlReader;
   r.CheckKeys(node, key, {"shape", "radius", "polygon"});

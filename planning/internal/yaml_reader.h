@@ -10,6 +10,7 @@
 
 #include "envs/robot.h"
 #include "envs/workspace2d.h"
+#include "planning/acd_sampler_options.h"
 
 namespace acdplan::planning::internal {
 
@@ -57,6 +58,12 @@ bool UnitInterval(double x);
 /// `*label` becomes "generator <name> (seed s)".
 envs::Workspace2d ReadGeneratedWorkspace(const YamlReader& r, const YAML::Node& node,
                                          const std::string& key, std::string* label);
+
+/// The ACD sampler options present in mapping `node` at `key` (uniform_share, opening_weight,
+/// centroid_spread, opening_spread, max_attempts, orientation) into `*o`; the
+/// caller checks which keys the mapping may hold.
+void ReadAcdSamplerOptions(const YamlReader& r, const YAML::Node& node, const std::string& key,
+                           AcdSamplerOptions* o);
 
 /// A robot from `{shape: point | disc (radius) | polygon (polygon: [[x, y], ...])}` at `key`.
 envs::Robot ReadRobot(const YamlReader& r, const YAML::Node& node, const std::string& key);
