@@ -163,6 +163,10 @@ PlanResult PlanScenario(const Scenario& scenario) {
     SampleBudgetOptions options;
     options.samples = scenario.samples;
     options.star = scenario.planner == "PRMstar";
+    if (scenario.planner == "PRM_ACD") {
+      options.acd_connections = &result.decomposition;
+      options.seed = scenario.seed;
+    }
     SampleBudgetRoadmap roadmap = BuildSampleBudgetRoadmap(si, start.get(), goal.get(), options);
     result.solved = roadmap.solved;
     result.samples = static_cast<std::uint64_t>(roadmap.samples);
@@ -173,7 +177,7 @@ PlanResult PlanScenario(const Scenario& scenario) {
   } else {
     auto pdef = std::make_shared<ob::ProblemDefinition>(si);
     pdef->setStartAndGoalStates(start, goal);
-    ob::PlannerPtr planner = MakePlanner(scenario.planner, si);
+    ob::PlannerPtr planner = MakePlanner(scenario.planner, si, &result.decomposition, scenario.seed);
     planner->setProblemDefinition(pdef);
     planner->setup();
     const ob::PlannerStatus status = planner->solve(scenario.time_limit);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <stdexcept>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/samplers/BridgeTestValidStateSampler.h>
 #include <ompl/base/samplers/GaussianValidStateSampler.h>
@@ -21,6 +22,7 @@
 #include <ompl/geometric/planners/sbl/SBL.h>
 
 #include "acd/input_error.h"
+#include "planning/acd_prm.h"
 #include "planning/install_acd_samplers.h"
 
 namespace acdplan::planning {
@@ -48,12 +50,12 @@ std::vector<std::string> SamplerNames() {
 }
 
 std::vector<std::string> PlannerNames() {
-  return {"PRM", "PRMstar", "LazyPRM", "RRT", "RRTConnect", "RRTstar", "EST", "KPIECE1",
+  return {"PRM", "PRM_ACD", "PRMstar", "LazyPRM", "RRT", "RRTConnect", "RRTstar", "EST", "KPIECE1",
           "BKPIECE1", "SBL"};
 }
 
 bool SupportsSampleBudget(const std::string& planner) {
-  return planner == "PRM" || planner == "PRMstar";
+  return planner == "PRM" || planner == "PRM_ACD" || planner == "PRMstar";
 }
 
 void InstallSampler(const std::string& name, const std::shared_ptr<ob::SpaceInformation>& si,
@@ -80,8 +82,14 @@ void InstallSampler(const std::string& name, const std::shared_ptr<ob::SpaceInfo
 }
 
 std::shared_ptr<ob::Planner> MakePlanner(const std::string& name,
-                                         const std::shared_ptr<ob::SpaceInformation>& si) {
+                                         const std::shared_ptr<ob::SpaceInformation>& si,
+                                         const acd::Decomposition2d* decomposition,
+                                         std::uint64_t seed) {
   if (name == "PRM") return std::make_shared<og::PRM>(si);
+  if (name == "PRM_ACD") {
+    if (!decomposition) throw std::invalid_argument("MakePlanner(): PRM_ACD needs a decomposition");
+    return std::make_shared<AcdPrm>(si, *decomposition, /*star=*/false, seed);
+  }
   if (name == "PRMstar") return std::make_shared<og::PRMstar>(si);
   if (name == "LazyPRM") return std::make_shared<og::LazyPRM>(si);
   if (name == "RRT") return std::make_shared<og::RRT>(si);

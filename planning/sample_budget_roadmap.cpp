@@ -7,41 +7,34 @@
 #include <ompl/geometric/planners/prm/PRM.h>
 #include <stdexcept>
 
+#include "planning/acd_prm.h"
+
 namespace acdplan::planning {
 
 namespace {
 
-/// PRM with its roadmap-building steps made callable one milestone at a time.
-class BudgetPrm : public ompl::geometric::PRM {
+/// PRM (or PRM_ACD) with its roadmap-building steps made callable one milestone at a time.
+template <typename Prm>
+class Budget : public Prm {
  public:
-  using PRM::PRM;
-  using PRM::addMilestone;
-  using PRM::constructSolution;
-  using PRM::sameComponent;
+  using Prm::Prm;
+  using Prm::addMilestone;
+  using Prm::constructSolution;
+  using Prm::sameComponent;
 };
 
-}  // namespace
-
-SampleBudgetRoadmap BuildSampleBudgetRoadmap(
-    const std::shared_ptr<ompl::base::SpaceInformation>& si, const ompl::base::State* start,
-    const ompl::base::State* goal, const SampleBudgetOptions& options) {
-  if (options.samples < 1) {
-    throw std::invalid_argument("BuildSampleBudgetRoadmap(): samples must be >= 1, got " +
-                                std::to_string(options.samples));
-  }
-  if (!si->isSetup()) si->setup();
-  if (!si->isValid(start) || !si->isValid(goal)) {
-    throw std::invalid_argument("BuildSampleBudgetRoadmap(): the start or the goal is invalid");
-  }
-  auto pdef = std::make_shared<ompl::base::ProblemDefinition>(si);
-  pdef->setStartAndGoalStates(start, goal);
-  BudgetPrm prm(si, options.star);
+// Places the samples into `prm` (set up on `pdef` here) and reads the roadmap back.
+template <typename Prm>
+SampleBudgetRoadmap BuildWith(Prm& prm, const std::shared_ptr<ompl::base::SpaceInformation>& si,
+                              const std::shared_ptr<ompl::base::ProblemDefinition>& pdef,
+                              const ompl::base::State* start, const ompl::base::State* goal,
+                              const SampleBudgetOptions& options) {
   prm.setProblemDefinition(pdef);
   prm.setup();
 
   SampleBudgetRoadmap result;
-  const BudgetPrm::Vertex vs = prm.addMilestone(si->cloneState(start));
-  const BudgetPrm::Vertex vg = prm.addMilestone(si->cloneState(goal));
+  const typename Prm::Vertex vs = prm.addMilestone(si->cloneState(start));
+  const typename Prm::Vertex vg = prm.addMilestone(si->cloneState(goal));
   ompl::base::ValidStateSamplerPtr sampler = si->allocValidStateSampler();
   ompl::base::State* work = si->allocState();
   const int give_up =
@@ -59,9 +52,9 @@ SampleBudgetRoadmap BuildSampleBudgetRoadmap(
   si->freeState(work);
   result.solved = prm.sameComponent(vs, vg);
 
-  const BudgetPrm::Graph& g = prm.getRoadmap();
-  auto state_of = boost::get(BudgetPrm::vertex_state_t(), g);
-  std::map<BudgetPrm::Vertex, int> index;
+  const typename Prm::Graph& g = prm.getRoadmap();
+  auto state_of = boost::get(typename Prm::vertex_state_t(), g);
+  std::map<typename Prm::Vertex, int> index;
   for (auto [it, end] = boost::vertices(g); it != end; ++it) {
     index[*it] = static_cast<int>(result.vertices.size());
     std::vector<double> reals;
@@ -83,6 +76,29 @@ SampleBudgetRoadmap BuildSampleBudgetRoadmap(
     }
   }
   return result;
+}
+
+}  // namespace
+
+SampleBudgetRoadmap BuildSampleBudgetRoadmap(
+    const std::shared_ptr<ompl::base::SpaceInformation>& si, const ompl::base::State* start,
+    const ompl::base::State* goal, const SampleBudgetOptions& options) {
+  if (options.samples < 1) {
+    throw std::invalid_argument("BuildSampleBudgetRoadmap(): samples must be >= 1, got " +
+                                std::to_string(options.samples));
+  }
+  if (!si->isSetup()) si->setup();
+  if (!si->isValid(start) || !si->isValid(goal)) {
+    throw std::invalid_argument("BuildSampleBudgetRoadmap(): the start or the goal is invalid");
+  }
+  auto pdef = std::make_shared<ompl::base::ProblemDefinition>(si);
+  pdef->setStartAndGoalStates(start, goal);
+  if (options.acd_connections) {
+    Budget<AcdPrm> prm(si, *options.acd_connections, options.star, options.seed);
+    return BuildWith(prm, si, pdef, start, goal, options);
+  }
+  Budget<ompl::geometric::PRM> prm(si, options.star);
+  return BuildWith(prm, si, pdef, start, goal, options);
 }
 
 }  // namespace acdplan::planning

@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "acd/decomposition2d.h"
+
 namespace ompl::base {
 class SpaceInformation;
 class State;
@@ -18,6 +20,9 @@ namespace acdplan::planning {
 struct SampleBudgetOptions {
   int samples = 200;           ///< Collision-free samples to place; >= 1.
   bool star = false;           ///< Connect with PRM*'s k = e(1 + 1/d) log n rule, else k = 10.
+  /// If set, connect as PRM_ACD (planning/acd_prm.h) with this decomposition of the workspace.
+  const acd::Decomposition2d* acd_connections = nullptr;
+  std::uint64_t seed = 1;      ///< Seed of PRM_ACD's random picks.
   int max_failed_calls = 0;    ///< Give up after this many failed sample() calls in a row;
                                ///< 0 = 10 * samples + 100.
 };
