@@ -240,6 +240,29 @@ std::string BenchSummaryMarkdown(const BenchManifest& m,
           acd->successes ? Ratio(uniform->median_time_s, acd->median_time_s) : "acd never solved",
           acd->successes > 0 && ratio >= 10.0);
     }
+    // PRM_ACD is the whole ACD method (its sampler and its connections): also held against
+    // the baseline, uniform samples with plain PRM, on the same budget.
+    if (g.planner == "PRM_ACD") {
+      const BenchCaseSummary* baseline = nullptr;
+      for (const Group& plain : groups) {
+        if (plain.planner == "PRM" && plain.world == g.world && plain.robot == g.robot &&
+            plain.budget == g.budget) {
+          baseline = plain.Get("uniform");
+        }
+      }
+      if (baseline && baseline->success_rate <= 0.2) {
+        row(g, "uniform PRM <= 20% → acd PRM_ACD >= 95%",
+            "uniform PRM " + Percent(baseline->success_rate) + ", acd PRM_ACD " +
+                Percent(acd->success_rate),
+            acd->success_rate >= 0.95);
+      }
+      if (baseline && g.time_limit > 0 && baseline->successes > 0) {
+        row(g, "median time: uniform PRM / acd PRM_ACD >= 10",
+            acd->successes ? Ratio(baseline->median_time_s, acd->median_time_s)
+                           : "acd never solved",
+            acd->successes > 0 && baseline->median_time_s / acd->median_time_s >= 10.0);
+      }
+    }
     // Against OMPL's built-in samplers only where more than uniform ran (else the row above).
     const BenchCaseSummary* fastest = g.FastestOther();
     if (g.time_limit > 0 && fastest && g.by_sampler.size() > 2) {

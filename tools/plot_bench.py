@@ -87,9 +87,12 @@ def success_vs_width(runs, out):
             hi = [max(0.0, c[1] - y) for y, c in zip(ys, cis)]
             b = budgets.index(budget) % len(BUDGET_STYLES)
             joined = group != "built-in worlds" and len(xs) > 1
-            ax.errorbar(xs, ys, yerr=[lo, hi], capsize=2, marker=MARKERS[b], markersize=4,
-                        linestyle=BUDGET_STYLES[b] if joined else "none",
+            # The planner is told by the marker fill: PRM_ACD hollow, the others solid.
+            hollow = planner.endswith("_ACD")
+            ax.errorbar(xs, ys, yerr=[lo, hi], capsize=2, marker=MARKERS[b], markersize=5,
+                        linestyle=(":" if hollow else BUDGET_STYLES[b]) if joined else "none",
                         color=COLOURS.get(sampler), alpha=0.8,
+                        markerfacecolor="white" if hollow else COLOURS.get(sampler),
                         label=f"{sampler} {planner} {budget}")
         if group == "built-in worlds":
             labels = {}
