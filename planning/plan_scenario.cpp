@@ -74,13 +74,6 @@ bool InsideBounds(const envs::Robot& robot, const Eigen::AlignedBox2d& bounds,
   return false;
 }
 
-std::string Number(double x) {
-  std::ostringstream out;
-  out.precision(6);
-  out << x;
-  return out.str();
-}
-
 }  // namespace
 
 PlanResult PlanScenario(const Scenario& scenario) {
@@ -91,7 +84,7 @@ PlanResult PlanScenario(const Scenario& scenario) {
   result.sampler = scenario.sampler;
   result.planner = scenario.planner;
   result.budget = scenario.samples > 0 ? std::to_string(scenario.samples) + " samples"
-                                       : Number(scenario.time_limit) + " s";
+                                       : (std::ostringstream() << scenario.time_limit).str() + " s";
 
   // Free space and its ACD (the sampler's targets; decomposed for every sampler, so time_s
   // compares like with like).
