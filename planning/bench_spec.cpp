@@ -368,8 +368,8 @@ BenchSpec LoadBenchSpec(const std::string& path) {
         for (const std::string& planner : planners) {
           if (!SupportsSampleBudget(planner)) {
             r.Fail(bkey + ".samples",
-                   "a sample budget (the Figure-4 protocol) needs PRM or PRMstar, not " + planner +
-                       "; use time_limit");
+                   "a sample budget (the Figure-4 protocol) needs PRM, PRM_ACD or PRMstar, "
+                   "not " + planner + "; use time_limit");
           }
         }
       } else {

@@ -74,7 +74,7 @@ struct BenchCase {
 ///       robots: [disc]
 ///       samplers: [uniform, acd]    # registry.h SamplerNames()
 ///       planners: [PRM]             # registry.h PlannerNames()
-///       budgets: [{samples: 200}, {time_limit: 2}]   # samples: PRM and PRMstar only
+///       budgets: [{samples: 200}, {time_limit: 2}]   # samples: PRM, PRM_ACD, PRMstar
 struct BenchSpec {
   std::string path;  ///< The file it was read from.
   std::string name, description;

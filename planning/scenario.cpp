@@ -39,8 +39,8 @@ void CheckScenario(const Scenario& s) {
   }
   if (s.samples > 0 && !SupportsSampleBudget(s.planner)) {
     r.Fail("planner.samples",
-           "a sample budget (the Figure-4 protocol) needs PRM or PRMstar, not " + s.planner +
-               "; use time_limit");
+           "a sample budget (the Figure-4 protocol) needs PRM, PRM_ACD or PRMstar, not " +
+               s.planner + "; use time_limit");
   }
   if (s.samples <= 0 && !(s.time_limit > 0)) {
     r.Fail("planner.time_limit", "expected a positive number");

@@ -28,7 +28,7 @@ namespace acdplan::planning {
 ///                                    # sl | sp | h1 | h2
 ///   planner: {name: PRM, samples: 200}   # name: registry.h PlannerNames(); exactly one of
 ///                                    # time_limit [s] > 0 or samples (integer >= 1, the
-///                                    # Figure-4 protocol: PRM and PRMstar only); default
+///                                    # Figure-4 protocol: PRM, PRM_ACD, PRMstar); default
 ///                                    # time_limit 5
 ///   sampler: {name: acd, uniform_share: 0.1, orientation: random, opening_weight: 4,
 ///             centroid_spread: 0.3, opening_spread: 0.5}   # name: registry.h SamplerNames()

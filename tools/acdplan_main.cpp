@@ -445,7 +445,8 @@ int main(int argc, char** argv) {
   plan->add_option("--sampler", plan_args.sampler,
                    "uniform, gaussian, bridge, obstacle_based, max_clearance or acd");
   plan->add_option("--planner", plan_args.planner,
-                   "PRM, PRMstar, LazyPRM, RRT, RRTConnect, RRTstar, EST, KPIECE1, BKPIECE1 or SBL");
+                   "PRM, PRM_ACD, PRMstar, LazyPRM, RRT, RRTConnect, RRTstar, EST, KPIECE1, "
+                   "BKPIECE1 or SBL");
   plan->add_option("--seed", plan_args.seed, "Seed (samplers and OMPL)")
       ->check(CLI::NonNegativeNumber);
   CLI::Option* plan_time =

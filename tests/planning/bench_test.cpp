@@ -91,7 +91,7 @@ TEST(BenchSpec, ErrorsNameTheFileAndKeyPath) {
   EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [RRTConnect], budgets: "
                                "[{samples: 5}]}\n"),
              "bad.yaml: cases[0].budgets[0].samples: a sample budget (the Figure-4 protocol) "
-             "needs PRM or PRMstar, not RRTConnect");
+             "needs PRM, PRM_ACD or PRMstar, not RRTConnect");
   EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [PRM], budgets: "
                                "[{time_limit: -1}]}\n"),
              "bad.yaml: cases[0].budgets[0].time_limit: expected a positive number, got '-1'");
