@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
@@ -25,8 +26,8 @@ constexpr double kDefaultTauRel = 0.02;  // As planning::Scenario's default.
 
 // A scenario names its world under `workspace`; world files never have that key.
 bool IsScenarioFile(const std::string& path) {
-  const std::string extension = path.size() > 5 ? path.substr(path.rfind('.') + 1) : "";
-  if (extension != "yaml" && extension != "yml") return false;
+  const std::string extension = std::filesystem::path(path).extension().string();
+  if (extension != ".yaml" && extension != ".yml") return false;
   try {
     const YAML::Node root = YAML::LoadFile(path);
     return root.IsMap() && root["workspace"];
