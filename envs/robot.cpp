@@ -87,4 +87,24 @@ TriangleMesh Transformed(const TriangleMesh& mesh, const Eigen::Isometry3d& pose
   return result;
 }
 
+bool InsideBounds(const Robot& robot, const Eigen::AlignedBox2d& bounds,
+                  const Eigen::Isometry2d& pose) {
+  switch (robot.shape) {
+    case RobotShape::kPoint:
+      return bounds.contains(pose.translation());
+    case RobotShape::kDisc: {
+      const Eigen::Vector2d r(robot.radius, robot.radius);
+      return bounds.contains(Eigen::AlignedBox2d(pose.translation() - r, pose.translation() + r));
+    }
+    case RobotShape::kPolygon:
+      for (const acd::Point2d& p : robot.polygon.outer) {
+        if (!bounds.contains(pose * p)) return false;
+      }
+      return true;
+    case RobotShape::kMesh:
+      return false;
+  }
+  return false;
+}
+
 }  // namespace acdplan::envs

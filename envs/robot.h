@@ -41,6 +41,11 @@ struct Robot {
 /// Name of a shape: "point", "disc", "polygon", "mesh".
 std::string ShapeName(RobotShape shape);
 
+/// True if the 2D robot's geometry at `pose` lies inside `bounds` (a planner's state space
+/// bounds only the reference point; the world's edges are no obstacles). False for a mesh.
+bool InsideBounds(const Robot& robot, const Eigen::AlignedBox2d& bounds,
+                  const Eigen::Isometry2d& pose);
+
 /// `polygon` moved by the SE(2) `pose` (rotation then translation), every ring.
 acd::Polygon2d Transformed(const acd::Polygon2d& polygon, const Eigen::Isometry2d& pose);
 

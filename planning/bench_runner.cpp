@@ -72,26 +72,7 @@ Eigen::Isometry2d Pose(const std::vector<double>& q) {
 /// As PlanScenario's validity checker: the robot inside the bounds and free of obstacles.
 bool Fits(const collision::CollisionWorld& world, const envs::Robot& robot,
           const Eigen::AlignedBox2d& bounds, const Eigen::Isometry2d& pose) {
-  switch (robot.shape) {
-    case envs::RobotShape::kPoint:
-      if (!bounds.contains(pose.translation())) return false;
-      break;
-    case envs::RobotShape::kDisc: {
-      const Eigen::Vector2d r(robot.radius, robot.radius);
-      if (!bounds.contains(Eigen::AlignedBox2d(pose.translation() - r, pose.translation() + r))) {
-        return false;
-      }
-      break;
-    }
-    case envs::RobotShape::kPolygon:
-      for (const acd::Point2d& p : robot.polygon.outer) {
-        if (!bounds.contains(pose * p)) return false;
-      }
-      break;
-    case envs::RobotShape::kMesh:
-      return false;
-  }
-  return world.IsValid(pose);
+  return envs::InsideBounds(robot, bounds, pose) && world.IsValid(pose);
 }
 
 /// Fails before any run if a robot does not fit at a world's start or goal.

@@ -52,28 +52,6 @@ Eigen::Isometry2d Pose(bool se2, const ob::State* state) {
   return pose;
 }
 
-/// True if the robot's geometry at `pose` lies inside the bounds (the obstacles do not
-/// include the world's edges; the state space only bounds the reference point).
-bool InsideBounds(const envs::Robot& robot, const Eigen::AlignedBox2d& bounds,
-                  const Eigen::Isometry2d& pose) {
-  switch (robot.shape) {
-    case envs::RobotShape::kPoint:
-      return bounds.contains(pose.translation());
-    case envs::RobotShape::kDisc: {
-      const Eigen::Vector2d r(robot.radius, robot.radius);
-      return bounds.contains(Eigen::AlignedBox2d(pose.translation() - r, pose.translation() + r));
-    }
-    case envs::RobotShape::kPolygon:
-      for (const acd::Point2d& p : robot.polygon.outer) {
-        if (!bounds.contains(pose * p)) return false;
-      }
-      return true;
-    case envs::RobotShape::kMesh:
-      return false;
-  }
-  return false;
-}
-
 }  // namespace
 
 PlanResult PlanScenario(const Scenario& scenario) {
@@ -127,7 +105,7 @@ PlanResult PlanScenario(const Scenario& scenario) {
   auto checker = std::make_shared<CountingValidityChecker>(
       si.get(), [world, robot, box, se2](const ob::State* state) {
         const Eigen::Isometry2d pose = Pose(se2, state);
-        return InsideBounds(robot, box, pose) && world->IsValid(pose);
+        return envs::InsideBounds(robot, box, pose) && world->IsValid(pose);
       });
   si->setStateValidityChecker(checker);
   // Motions are checked every 0.2% of the space's extent (OMPL's default is 1%): fine enough
