@@ -319,7 +319,7 @@ TEST(CheckDecompositionTest, ProblemListIsCapped) {
 
 TEST(CheckDecompositionTest, NazcaMonkeyConvexDecomposition) {
   const std::vector<Polygon2d> input =
-      ReadPolygons(std::string(ACDPLAN_SHARED_DATA) + "/polygons/acd2d/nazca/nazca_monkey.poly");
+      ReadPolygons(std::string(ACDPLAN_DATA_DIR) + "/polygons/acd2d/nazca/nazca_monkey.poly");
   ASSERT_FALSE(input.empty());
   Decomposition2d d = Decompose2d(input, Decompose2dOptions{});
   ASSERT_GT(d.components.size(), 1u);

@@ -30,7 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kAcd2d = fs::path(ACDPLAN_SHARED_DATA) / "polygons" / "acd2d";
+const fs::path kAcd2d = fs::path(ACDPLAN_DATA_DIR) / "polygons" / "acd2d";
 constexpr double kPi = 3.14159265358979323846;
 
 // A transform of the plane p -> scale * R(angle) * M p + offset, M = diag(-1, 1) if mirrored,

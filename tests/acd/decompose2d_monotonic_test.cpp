@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kAcd2d = fs::path(ACDPLAN_SHARED_DATA) / "polygons" / "acd2d";
+const fs::path kAcd2d = fs::path(ACDPLAN_DATA_DIR) / "polygons" / "acd2d";
 
 struct MonotonicCase {
   std::string file;  // Under acd2d.

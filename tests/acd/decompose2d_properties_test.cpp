@@ -1,5 +1,5 @@
 // Property tests of Decompose2d() on the whole acd2d corpus: every .poly file under
-// ACDPLAN_SHARED_DATA/polygons/acd2d (found at run time) x the four concavity measures x
+// ACDPLAN_DATA_DIR/polygons/acd2d (found at run time) x the four concavity measures x
 // tau_rel in {0, 0.005, 0.01, 0.05, 0.1}; each decomposition must pass CheckDecomposition()
 // (components tile the input, are simple, and are tau-convex under the measure used).
 // The two files the corpus ships broken must be rejected with their documented messages.
@@ -30,7 +30,7 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-const fs::path kAcd2d = fs::path(ACDPLAN_SHARED_DATA) / "polygons" / "acd2d";
+const fs::path kAcd2d = fs::path(ACDPLAN_DATA_DIR) / "polygons" / "acd2d";
 
 constexpr double kTauRel[] = {0.0, 0.005, 0.01, 0.05, 0.1};
 constexpr ConcavityMeasure kMeasures[] = {ConcavityMeasure::kStraightLine,

@@ -60,7 +60,7 @@ TEST(PolyReaderTest, MalformedNumberNamesFileLineAndToken) {
 }
 
 TEST(PolyReaderTest, BirdPolyLine47IsAMalformedNumber) {
-  const std::string path = std::string(ACDPLAN_SHARED_DATA) + "/polygons/acd2d/bird.poly";
+  const std::string path = std::string(ACDPLAN_DATA_DIR) + "/polygons/acd2d/bird.poly";
   std::ifstream in(path);
   ASSERT_TRUE(in) << path;
   try {

@@ -205,13 +205,13 @@ TEST(BuiltInWorlds, ClearanceOfHullsExactMatchesBvh) {
   }
 }
 
-// 3D: meshes of ../shared/data/meshes/vhacd as obstacles, a small cube robot.
+// 3D: meshes of data/meshes/vhacd as obstacles, a small cube robot.
 class VhacdMeshes : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(VhacdMeshes, HullsExactEqualsBvhAndHullsAreConservative) {
   envs::Workspace3d workspace;
   workspace.obstacles.push_back(
-      envs::ReadMesh(std::string(ACDPLAN_SHARED_DATA) + "/meshes/vhacd/" + GetParam() + ".obj"));
+      envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + GetParam() + ".obj"));
   const Eigen::AlignedBox3d box = envs::BoundingBox(workspace.obstacles[0]);
   workspace.bounds = Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(),
                                          box.max() + 0.1 * box.sizes());

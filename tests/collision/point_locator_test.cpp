@@ -150,7 +150,7 @@ class VhacdMeshes : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(VhacdMeshes, HullsNeverSayOutsideWhereExactSaysInside) {
   const envs::Workspace3d workspace = MeshWorld(
-      envs::ReadMesh(std::string(ACDPLAN_SHARED_DATA) + "/meshes/vhacd/" + GetParam() + ".obj"));
+      envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + GetParam() + ".obj"));
   auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));
   const PointLocator exact(set, LocateMethod::kExact), hulls(set, LocateMethod::kHulls);
   int missed = 0, inside = 0;

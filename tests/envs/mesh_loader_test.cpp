@@ -83,7 +83,7 @@ TEST(ReadMeshTest, ReadsGltfAndCollada) {
 }
 
 TEST(ReadMeshTest, ReadsSharedMeshes) {
-  const TriangleMesh cup = ReadMesh(std::string(ACDPLAN_SHARED_DATA) + "/meshes/vhacd/cup.obj");
+  const TriangleMesh cup = ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/cup.obj");
   EXPECT_GT(cup.triangles.rows(), 100);
   CheckTriangleMesh(cup, "cup.obj");
 }

@@ -16,8 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kPolygons = std::string(ACDPLAN_SHARED_DATA) + "/polygons/acd2d/";
-const std::string kMeshes = std::string(ACDPLAN_SHARED_DATA) + "/meshes/vhacd/";
+const std::string kPolygons = std::string(ACDPLAN_DATA_DIR) + "/polygons/acd2d/";
+const std::string kMeshes = std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/";
 const std::string kSource = std::string(ACDPLAN_SOURCE_DIR) + "/";
 
 struct RunResult {
