@@ -2,32 +2,42 @@
 
 #include <cctype>
 
-#include "acd/input_error.h"
+#include "base/enum_names.h"
 
 namespace acdplan::acd {
+namespace {
 
-std::string ToString(ConcavityMeasure measure) {
-  switch (measure) {
-    case ConcavityMeasure::kStraightLine:
-      return "sl";
-    case ConcavityMeasure::kShortestPath:
-      return "sp";
-    case ConcavityMeasure::kHybrid1:
-      return "h1";
-    case ConcavityMeasure::kHybrid2:
-      return "h2";
-  }
-  return "unknown";  // Unreachable for a valid enumerator.
-}
+constexpr std::array<EnumName<ConcavityMeasure>, 4> kMeasures = {{
+    {ConcavityMeasure::kStraightLine, "sl"},
+    {ConcavityMeasure::kShortestPath, "sp"},
+    {ConcavityMeasure::kHybrid1, "h1"},
+    {ConcavityMeasure::kHybrid2, "h2"},
+}};
+
+constexpr std::array<EnumName<HoleDiameter>, 3> kHoleDiameters = {{
+    {HoleDiameter::kAuto, "auto"},
+    {HoleDiameter::kPrincipalAxis, "pa"},
+    {HoleDiameter::kGeodesic, "geodesic"},
+}};
+
+}  // namespace
+
+std::string ToString(ConcavityMeasure measure) { return NameOf(kMeasures, measure); }
 
 ConcavityMeasure ParseConcavityMeasure(const std::string& name) {
   std::string lower = name;
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (ConcavityMeasure measure : {ConcavityMeasure::kStraightLine, ConcavityMeasure::kShortestPath,
-                                   ConcavityMeasure::kHybrid1, ConcavityMeasure::kHybrid2}) {
-    if (lower == ToString(measure)) return measure;
+  try {
+    return ValueOf(kMeasures, lower, "concavity measure");
+  } catch (const InputError&) {
+    throw InputError(UnknownName("concavity measure", name, NamesOf(kMeasures)));
   }
-  throw InputError("unknown concavity measure '" + name + "' (expected sl, sp, h1 or h2)");
+}
+
+std::string ToString(HoleDiameter diameter) { return NameOf(kHoleDiameters, diameter); }
+
+HoleDiameter ParseHoleDiameter(const std::string& name) {
+  return ValueOf(kHoleDiameters, name, "hole diameter");
 }
 
 }  // namespace acdplan::acd

@@ -25,7 +25,14 @@ enum class HoleDiameter {
 std::string ToString(ConcavityMeasure measure);
 
 /// Parses "sl" | "sp" | "h1" | "h2" (case-insensitive).
-/// @throws InputError naming the value and the accepted names.
+/// @throws InputError "unknown concavity measure '<name>' (expected one of: sl, sp, h1, h2)".
 ConcavityMeasure ParseConcavityMeasure(const std::string& name);
+
+/// "auto", "pa", "geodesic".
+std::string ToString(HoleDiameter diameter);
+
+/// Parses "auto" | "pa" | "geodesic".
+/// @throws InputError "unknown hole diameter '<name>' (expected one of: auto, pa, geodesic)".
+HoleDiameter ParseHoleDiameter(const std::string& name);
 
 }  // namespace acdplan::acd

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "acd/concavity.h"
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "acd/internal/openings.h"
 #include "acd/internal/pocket_cache.h"
 #include "acd/internal/resolve.h"

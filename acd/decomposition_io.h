@@ -22,9 +22,4 @@ std::string DecompositionToJson(const Decomposition2d& decomposition,
 std::string DecompositionToSvg(const Decomposition2d& decomposition,
                                const DecompositionLabels& labels);
 
-/// Writes `text` to `path` atomically (a temporary file renamed into place), so a failed run
-/// never leaves a partial file that looks complete.
-/// @throws std::runtime_error naming the path if it cannot be written.
-void WriteFileAtomically(const std::string& path, const std::string& text);
-
 }  // namespace acdplan::acd

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "acd/internal/text_parsing.h"
 
 namespace acdplan::acd {

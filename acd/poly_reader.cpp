@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "acd/internal/text_parsing.h"
 
 namespace acdplan::acd {

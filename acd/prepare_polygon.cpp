@@ -13,7 +13,7 @@
 #include <tuple>
 #include <vector>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "acd/internal/text_parsing.h"
 
 namespace acdplan::acd {

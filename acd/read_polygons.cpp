@@ -1,16 +1,15 @@
 #include "acd/read_polygons.h"
 
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 #include "acd/geojson_reader.h"
-#include "acd/input_error.h"
 #include "acd/internal/text_parsing.h"
 #include "acd/poly_reader.h"
 #include "acd/prepare_polygon.h"
 #include "acd/wkt_reader.h"
+#include "base/file_io.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 
@@ -28,15 +27,8 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
     throw InputError(path + ": unknown polygon file extension '" + extension +
                      "' (expected .poly, .wkt, .geojson or .json)");
   }
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError(path + ": cannot read file: it is a directory");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot read file: " + std::strerror(errno));
-
+  std::istringstream in(ReadFile(path));
   std::vector<Polygon2d> polygons = reader(in, path);
-  if (in.bad()) throw InputError(path + ": cannot read file: read error");
   if (polygons.empty()) throw InputError(path + ": no polygon in file");
   if (reference_radii != nullptr) {
     reference_radii->clear();

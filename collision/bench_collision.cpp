@@ -11,7 +11,7 @@
 #include <ostream>
 #include <random>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "collision/collision_world.h"
 #include "collision/point_locator.h"
 #include "envs/generators.h"
@@ -64,7 +64,7 @@ void TimeLocation(const std::shared_ptr<const ObstacleSet>& set,
   std::unique_ptr<PointLocator> exact;
   try {
     exact = std::make_unique<PointLocator>(set, LocateMethod::kExact);
-  } catch (const acd::InputError& error) {
+  } catch (const InputError& error) {
     row->locate_exact_points_per_s = kNaN;
     row->locate_hulls_error_rate = kNaN;
     row->note = error.what();
@@ -117,13 +117,13 @@ std::string Format(double value, const char* format) {
 std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& options,
                                               std::ostream* progress) {
   if (options.poses <= 0 || options.points <= 0) {
-    throw acd::InputError("BenchCollision(): poses and points must be > 0");
+    throw InputError("BenchCollision(): poses and points must be > 0");
   }
   std::vector<std::string> mesh_files;
   if (!options.mesh_dir.empty()) {
     namespace fs = std::filesystem;
     if (!fs::is_directory(options.mesh_dir)) {
-      throw acd::InputError("BenchCollision(): " + options.mesh_dir + ": not a folder");
+      throw InputError("BenchCollision(): " + options.mesh_dir + ": not a folder");
     }
     if (options.meshes.empty()) {
       for (const auto& entry : fs::directory_iterator(options.mesh_dir)) {
@@ -159,7 +159,7 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
     outline.outer = {{-0.3, -0.2}, {0.3, -0.2}, {0.3, 0.0}, {-0.1, 0.0}, {-0.1, 0.2}, {-0.3, 0.2}};
     for (const envs::Robot& robot : {envs::Robot::Disc(0.2), envs::Robot::Polygon(outline)}) {
       BenchCollisionRow row = location;
-      row.world = name + "/" + envs::ShapeName(robot.shape);
+      row.world = name + "/" + ToString(robot.shape);
       row.hulls_source = set->hulls_source;
       row.triangles = TriangleCount(*set);
       row.hulls = static_cast<int>(set->pieces.size());

@@ -47,7 +47,7 @@ struct BenchCollisionRow {
 /// robot of side 5% of the mesh's box diagonal. Each mode is timed on one thread over the same
 /// poses; point location over the same random points in the bounds. Progress lines go to
 /// `progress` when not null.
-/// @throws acd::InputError for out-of-range options or an unreadable mesh folder.
+/// @throws InputError for out-of-range options or an unreadable mesh folder.
 std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& options,
                                               std::ostream* progress = nullptr);
 

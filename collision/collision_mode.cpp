@@ -1,31 +1,28 @@
 #include "collision/collision_mode.h"
 
-#include "acd/input_error.h"
+#include "base/enum_names.h"
 
 namespace acdplan::collision {
+namespace {
 
-std::string ModeName(CollisionMode mode) {
-  switch (mode) {
-    case CollisionMode::kBvh:
-      return "bvh";
-    case CollisionMode::kHulls:
-      return "hulls";
-    case CollisionMode::kHullsExact:
-      return "hulls+exact";
-  }
-  return "unknown";
-}
+constexpr std::array<EnumName<CollisionMode>, 3> kModes = {{
+    {CollisionMode::kBvh, "bvh"},
+    {CollisionMode::kHulls, "hulls"},
+    {CollisionMode::kHullsExact, "hulls+exact"},
+}};
+
+}  // namespace
+
+std::string ToString(CollisionMode mode) { return NameOf(kModes, mode); }
 
 CollisionMode ParseCollisionMode(const std::string& name) {
-  for (CollisionMode mode : AllCollisionModes()) {
-    if (ModeName(mode) == name) return mode;
-  }
-  throw acd::InputError("ParseCollisionMode(): unknown collision mode '" + name +
-                        "'; expected bvh, hulls or hulls+exact");
+  return ValueOf(kModes, name, "collision mode");
 }
 
 std::vector<CollisionMode> AllCollisionModes() {
-  return {CollisionMode::kBvh, CollisionMode::kHulls, CollisionMode::kHullsExact};
+  std::vector<CollisionMode> modes;
+  for (const auto& entry : kModes) modes.push_back(entry.value);
+  return modes;
 }
 
 }  // namespace acdplan::collision

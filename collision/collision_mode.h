@@ -21,10 +21,11 @@ enum class CollisionMode {
 };
 
 /// "bvh", "hulls" or "hulls+exact".
-std::string ModeName(CollisionMode mode);
+std::string ToString(CollisionMode mode);
 
-/// Inverse of ModeName().
-/// @throws acd::InputError naming the known modes for any other string.
+/// Inverse of ToString().
+/// @throws InputError "unknown collision mode '<name>' (expected one of: bvh, hulls,
+///         hulls+exact)" for any other string.
 CollisionMode ParseCollisionMode(const std::string& name);
 
 /// Every mode, in declaration order.

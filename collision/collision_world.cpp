@@ -16,7 +16,7 @@
 
 #include "acd/concavity.h"
 #include "acd/decompose2d.h"
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "collision/internal/hull_tree.h"
 #include "collision/internal/mesh_building.h"
 #include "collision/internal/solid_locator.h"
@@ -152,14 +152,14 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
   Impl& m = *impl_;
   const ObstacleSet& set = *obstacles_;
   m.dimension = set.dimension;
-  const std::string shape = envs::ShapeName(robot.shape);
+  const std::string shape = ToString(robot.shape);
   if (set.dimension == 3 &&
       (robot.shape == envs::RobotShape::kDisc || robot.shape == envs::RobotShape::kPolygon)) {
-    throw acd::InputError("CollisionWorld(): a " + shape +
+    throw InputError("CollisionWorld(): a " + shape +
                           " robot moves in the plane; this world is 3D (use a mesh or a point)");
   }
   if (set.dimension == 2 && robot.shape == envs::RobotShape::kMesh) {
-    throw acd::InputError(
+    throw InputError(
         "CollisionWorld(): a mesh robot moves in 3D; this world is 2D (use a point, a disc or "
         "a polygon)");
   }
@@ -172,7 +172,7 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
       m.point_probe->computeLocalAABB();
       break;
     case envs::RobotShape::kDisc:
-      if (!(robot.radius > 0)) throw acd::InputError("CollisionWorld(): disc radius must be > 0");
+      if (!(robot.radius > 0)) throw InputError("CollisionWorld(): disc radius must be > 0");
       m.robot_exact = std::make_shared<fcl::Cylinderd>(robot.radius, h / 2);
       m.robot_exact->computeLocalAABB();
       m.robot_hull = m.robot_exact;

@@ -51,7 +51,7 @@ struct CollisionCounters {
 /// Queries are const and thread-safe; the counters are atomic.
 class CollisionWorld {
  public:
-  /// @throws acd::InputError if the robot does not fit the world (a disc or polygon robot in a
+  /// @throws InputError if the robot does not fit the world (a disc or polygon robot in a
   ///         3D world, a mesh robot in a 2D world) or is invalid.
   CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles, const envs::Robot& robot,
                  const CollisionWorldOptions& options = {});

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "acd/decompose2d.h"
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "collision/internal/mesh_building.h"
 
 namespace acdplan::collision {
@@ -12,11 +12,11 @@ namespace acdplan::collision {
 ObstacleSet BuildObstacleSet(const envs::Workspace2d& workspace,
                              const ObstacleSetOptions& options) {
   if (!(options.tau >= 0) || !std::isfinite(options.tau)) {
-    throw acd::InputError("BuildObstacleSet(): tau must be finite and >= 0, got " +
+    throw InputError("BuildObstacleSet(): tau must be finite and >= 0, got " +
                           std::to_string(options.tau));
   }
   if (!(options.extrusion_height > 0) || !std::isfinite(options.extrusion_height)) {
-    throw acd::InputError("BuildObstacleSet(): extrusion_height must be finite and > 0, got " +
+    throw InputError("BuildObstacleSet(): extrusion_height must be finite and > 0, got " +
                           std::to_string(options.extrusion_height));
   }
   const double h = options.extrusion_height;

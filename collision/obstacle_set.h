@@ -58,14 +58,14 @@ struct ObstacleSet {
 /// Builds the pieces of a 2D workspace: each obstacle polygon (the solid) is decomposed with
 /// acd::Decompose2d(tau) and every component and its hull are extruded to a prism.
 /// O(sum of the decomposition costs).
-/// @throws acd::InputError if an option is out of range or an obstacle is invalid.
+/// @throws InputError if an option is out of range or an obstacle is invalid.
 ObstacleSet BuildObstacleSet(const envs::Workspace2d& workspace,
                              const ObstacleSetOptions& options = {});
 
 /// Builds the pieces of a 3D workspace: one piece per connected component (shared vertices,
 /// after merging vertices at identical positions) of each obstacle mesh, with its 3D convex hull (CGAL convex_hull_3). Open meshes are accepted
 /// here (`closed` is false); exact point location on them is refused later.
-/// @throws acd::InputError if a mesh fails envs::CheckTriangleMesh().
+/// @throws InputError if a mesh fails envs::CheckTriangleMesh().
 ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace);
 
 /// The number of obstacle triangles (sum over `meshes`).

@@ -2,13 +2,26 @@
 
 #include <optional>
 
+#include "base/enum_names.h"
+
 #include "collision/internal/hull_tree.h"
 #include "collision/internal/solid_locator.h"
 
 namespace acdplan::collision {
 
-std::string LocateMethodName(LocateMethod method) {
-  return method == LocateMethod::kExact ? "exact" : "hulls";
+namespace {
+
+constexpr std::array<EnumName<LocateMethod>, 2> kMethods = {{
+    {LocateMethod::kExact, "exact"},
+    {LocateMethod::kHulls, "hulls"},
+}};
+
+}  // namespace
+
+std::string ToString(LocateMethod method) { return NameOf(kMethods, method); }
+
+LocateMethod ParseLocateMethod(const std::string& name) {
+  return ValueOf(kMethods, name, "locate method");
 }
 
 struct PointLocator::Impl {

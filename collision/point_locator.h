@@ -23,13 +23,16 @@ enum class LocateMethod {
 };
 
 /// "exact" or "hulls".
-std::string LocateMethodName(LocateMethod method);
+std::string ToString(LocateMethod method);
+
+/// Inverse of ToString(). @throws InputError for any other name.
+LocateMethod ParseLocateMethod(const std::string& name);
 
 /// Answers Inside(p) for the obstacles of an ObstacleSet. Boundary points count as inside.
 /// Thread-safe: queries are const and share no mutable state.
 class PointLocator {
  public:
-  /// @throws acd::InputError for kExact on a 3D set with an open piece (the message names the
+  /// @throws InputError for kExact on a 3D set with an open piece (the message names the
   ///         obstacle and the number of edges not shared by exactly two triangles).
   PointLocator(std::shared_ptr<const ObstacleSet> obstacles, LocateMethod method);
   ~PointLocator();

@@ -30,7 +30,7 @@ struct FreeSpace2dOptions {
 ///    half-diagonal `pinch_gap` * diagonal to the obstacles there; the free space only shrinks
 ///    (collision stays conservative) and the pinch point was not traversable anyway.
 /// The result may be empty (obstacles cover the bounds).
-/// @throws acd::InputError if the bounds are empty or an obstacle is invalid, or
+/// @throws InputError if the bounds are empty or an obstacle is invalid, or
 ///         `options.pinch_gap` <= 0.
 std::vector<acd::Polygon2d> FreeSpace2d(const Workspace2d& workspace,
                                         const FreeSpace2dOptions& options = {});

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <random>
-#include <sstream>
+#include <type_traits>
 
-#include "acd/input_error.h"
+#include "base/format.h"
+#include "base/input_error.h"
+#include "base/random.h"
 #include "envs/internal/trace_cells.h"
 
 namespace acdplan::envs {
@@ -17,7 +18,7 @@ using acd::Polygon2d;
 using acd::Ring2d;
 
 void Require(bool ok, const char* where, const std::string& rule) {
-  if (!ok) throw acd::InputError(std::string(where) + ": " + rule);
+  if (!ok) throw InputError(std::string(where) + ": " + rule);
 }
 
 bool Positive(double value) { return std::isfinite(value) && value > 0.0; }
@@ -26,21 +27,12 @@ Polygon2d Box(double x0, double y0, double x1, double y1) {
   return Polygon2d{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
 }
 
-double Uniform(std::mt19937_64& rng, double lo, double hi) {
-  // std::uniform_real_distribution's output is implementation-defined; this mapping of the
-  // 64-bit engine (whose sequence the standard fixes) keeps worlds identical across libraries.
-  return lo + (hi - lo) * (static_cast<double>(rng() >> 11) * 0x1.0p-53);
+int UniformInt(RandomEngine& rng, int n) {  // In [0, n).
+  return static_cast<int>(UniformIndex(rng, static_cast<std::uint64_t>(n)));
 }
 
-int UniformInt(std::mt19937_64& rng, int n) {  // In [0, n).
-  return static_cast<int>(rng() % static_cast<std::uint64_t>(n));
-}
-
-std::string Format(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
+/// Lengths in descriptions, as a stream prints them ("0.5", "1e-05").
+std::string Format(double value) { return FormatSignificant(value, 6); }
 
 // One side of an open polyline offset by `h` to its left (h < 0: right), with miter joins.
 Ring2d OffsetPolyline(const std::vector<Point2d>& points, double h) {
@@ -81,8 +73,8 @@ Workspace2d MakeWallWithGap(std::uint64_t seed, const WallGapOptions& o) {
   Require(Positive(o.passage_width) && o.passage_width <= o.height / 2, where,
           "passage_width must be in (0, height / 2]");
   Require(o.wall_thickness < o.width, where, "wall_thickness must be < width");
-  std::mt19937_64 rng(seed);
-  const double y0 = Uniform(rng, 0.1 * o.height, 0.9 * o.height - o.passage_width);
+  RandomEngine rng(seed);
+  const double y0 = UniformReal(rng, 0.1 * o.height, 0.9 * o.height - o.passage_width);
   const double x0 = (o.width - o.wall_thickness) / 2, x1 = x0 + o.wall_thickness;
   Workspace2d w;
   w.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(o.width, o.height));
@@ -97,14 +89,14 @@ Workspace2d MakeZigZagCorridor(std::uint64_t seed, const ZigZagOptions& o) {
   Require(Positive(o.width) && Positive(o.height) && Positive(o.passage_width), where,
           "width, height and passage_width must be > 0");
   Require(o.turns >= 1, where, "turns must be >= 1");
-  std::mt19937_64 rng(seed);
+  RandomEngine rng(seed);
   const double stub = 0.1 * o.width;
   const double spacing = (o.width - 2 * stub) / o.turns;
   std::vector<Point2d> centre = {{0, o.height / 2}, {stub, o.height / 2}};
   double sign = UniformInt(rng, 2) == 0 ? 1.0 : -1.0;
   for (int k = 0; k < o.turns; ++k) {
-    const double x = stub + (k + 0.5) * spacing + Uniform(rng, -0.15, 0.15) * spacing;
-    const double amplitude = Uniform(rng, 0.15, 0.3) * o.height;
+    const double x = stub + (k + 0.5) * spacing + UniformReal(rng, -0.15, 0.15) * spacing;
+    const double amplitude = UniformReal(rng, 0.15, 0.3) * o.height;
     centre.emplace_back(x, o.height / 2 + sign * amplitude);
     sign = -sign;
   }
@@ -143,10 +135,10 @@ Workspace2d MakeBugTrap(std::uint64_t seed, const BugTrapOptions& o) {
   const double lip = s / 4;
   Require(s - 2 * t - lip > t && s > 4 * t + m + 2 * t, where,
           "the mouth and the walls do not fit in trap_size");
-  std::mt19937_64 rng(seed);
+  RandomEngine rng(seed);
   const double l = (o.width - s) / 2, b = (o.height - s) / 2, r = l + s, top = b + s;
   // The mouth [m0, m0 + m] keeps a wall's thickness of clearance from the corners.
-  const double m0 = Uniform(rng, b + 3 * t, top - 3 * t - m), m1 = m0 + m;
+  const double m0 = UniformReal(rng, b + 3 * t, top - 3 * t - m), m1 = m0 + m;
   const double li = r - t - lip;  // Where the lips end inside the cage.
   const Ring2d ring = {{r, b},           {r, m0},         {li, m0},       {li, m0 - t},
                        {r - t, m0 - t},  {r - t, b + t},  {l + t, b + t}, {l + t, top - t},
@@ -168,8 +160,8 @@ Workspace2d MakeTwoRooms(std::uint64_t seed, const TwoRoomsOptions& o) {
   Require(o.furniture >= 0, where, "furniture must be >= 0");
   const double W = o.width, H = o.height, t = o.wall_thickness, d = o.passage_width;
   Require(d + 2 * t + 1.0 < H && 6 * t + 2.0 < W, where, "the rooms are too small for the door");
-  std::mt19937_64 rng(seed);
-  const double y0 = Uniform(rng, t + 0.5, H - t - 0.5 - d), y1 = y0 + d;
+  RandomEngine rng(seed);
+  const double y0 = UniformReal(rng, t + 0.5, H - t - 0.5 - d), y1 = y0 + d;
   const double xm = W / 2;
   Workspace2d w;
   w.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(W, H));
@@ -186,8 +178,8 @@ Workspace2d MakeTwoRooms(std::uint64_t seed, const TwoRoomsOptions& o) {
   for (int room = 0; room < 2; ++room) {
     const double lo = room == 0 ? t : xm + t / 2, hi = room == 0 ? xm - t / 2 : W - t;
     for (int placed = 0, tries = 0; placed < o.furniture && tries < 1000; ++tries) {
-      const double sx = Uniform(rng, 0.4, 1.2), sy = Uniform(rng, 0.4, 1.2);
-      const double cx = Uniform(rng, lo, hi), cy = Uniform(rng, t, H - t);
+      const double sx = UniformReal(rng, 0.4, 1.2), sy = UniformReal(rng, 0.4, 1.2);
+      const double cx = UniformReal(rng, lo, hi), cy = UniformReal(rng, t, H - t);
       const double x0 = cx - sx / 2, x1 = cx + sx / 2, ya = cy - sy / 2, yb = cy + sy / 2;
       const bool near_door =
           x1 > xm - approach && x0 < xm + approach && yb > y0 - approach && ya < y1 + approach;
@@ -207,7 +199,7 @@ Workspace2d MakeSpiral(std::uint64_t seed, const SpiralOptions& o) {
   Require(Positive(o.wall_thickness) && Positive(o.passage_width), where,
           "wall_thickness and passage_width must be > 0");
   Require(std::isfinite(o.margin) && o.margin >= 0, where, "margin must be >= 0");
-  std::mt19937_64 rng(seed);
+  RandomEngine rng(seed);
   const int start = UniformInt(rng, 4);
   const int sense = UniformInt(rng, 2) == 0 ? 1 : 3;  // Counter-clockwise or clockwise.
   static constexpr std::array<std::array<int, 2>, 4> kDirections = {
@@ -243,7 +235,7 @@ Workspace2d MakeMaze(std::uint64_t seed, const MazeOptions& o) {
   const int w = 2 * o.columns + 1, h = 2 * o.rows + 1;
   std::vector<std::uint8_t> blocked(static_cast<size_t>(w) * h, 1);
   std::vector<char> seen(static_cast<size_t>(o.columns) * o.rows, 0);
-  std::mt19937_64 rng(seed);
+  RandomEngine rng(seed);
   const int first = UniformInt(rng, o.columns * o.rows);
   std::vector<int> stack = {first};
   seen[first] = 1;
@@ -284,51 +276,74 @@ Workspace2d MakeMaze(std::uint64_t seed, const MazeOptions& o) {
   return Finish(result, where);
 }
 
-std::vector<std::string> GeneratorNames() {
-  return {"wall_gap", "zigzag", "bug_trap", "two_rooms", "spiral", "maze"};
+namespace {
+
+/// One generator: its name and how to make it with the common parameters applied.
+struct Generator {
+  const char* name;
+  bool has_wall_thickness;
+  Workspace2d (*make)(std::uint64_t seed, const GeneratorParameters& p);
+};
+
+/// `options` with the parameters that are set (> 0) applied.
+template <typename Options>
+Options With(Options options, const GeneratorParameters& p) {
+  if (p.passage_width > 0.0) options.passage_width = p.passage_width;
+  if constexpr (!std::is_same_v<Options, ZigZagOptions>) {
+    if (p.wall_thickness > 0.0) options.wall_thickness = p.wall_thickness;
+  }
+  return options;
 }
 
-Workspace2d GenerateWorkspace2d(const std::string& name, std::uint64_t seed, double passage_width) {
-  if (!(passage_width >= 0.0) || !std::isfinite(passage_width)) {
-    throw acd::InputError("GenerateWorkspace2d(): passage_width must be >= 0 (0 = default)");
+const std::array<Generator, 6> kGenerators = {{
+    {"wall_gap", true,
+     [](std::uint64_t seed, const GeneratorParameters& p) {
+       return MakeWallWithGap(seed, With(WallGapOptions{}, p));
+     }},
+    {"zigzag", false,
+     [](std::uint64_t seed, const GeneratorParameters& p) {
+       return MakeZigZagCorridor(seed, With(ZigZagOptions{}, p));
+     }},
+    {"bug_trap", true,
+     [](std::uint64_t seed, const GeneratorParameters& p) {
+       return MakeBugTrap(seed, With(BugTrapOptions{}, p));
+     }},
+    {"two_rooms", true,
+     [](std::uint64_t seed, const GeneratorParameters& p) {
+       return MakeTwoRooms(seed, With(TwoRoomsOptions{}, p));
+     }},
+    {"spiral", true,
+     [](std::uint64_t seed, const GeneratorParameters& p) {
+       return MakeSpiral(seed, With(SpiralOptions{}, p));
+     }},
+    {"maze", true,
+     [](std::uint64_t seed, const GeneratorParameters& p) {
+       return MakeMaze(seed, With(MazeOptions{}, p));
+     }},
+}};
+
+}  // namespace
+
+std::vector<std::string> GeneratorNames() {
+  std::vector<std::string> names;
+  for (const Generator& g : kGenerators) names.push_back(g.name);
+  return names;
+}
+
+Workspace2d GenerateWorkspace2d(const std::string& name, std::uint64_t seed,
+                                const GeneratorParameters& parameters) {
+  const char* where = "GenerateWorkspace2d()";
+  Require(parameters.passage_width >= 0.0 && std::isfinite(parameters.passage_width), where,
+          "passage_width must be >= 0 (0 = default)");
+  Require(parameters.wall_thickness >= 0.0 && std::isfinite(parameters.wall_thickness), where,
+          "wall_thickness must be >= 0 (0 = default)");
+  for (const Generator& g : kGenerators) {
+    if (name != g.name) continue;
+    Require(g.has_wall_thickness || parameters.wall_thickness == 0.0, where,
+            "wall_thickness is not an option of generator '" + name + "'");
+    return g.make(seed, parameters);
   }
-  auto width = [passage_width](double fallback) {
-    return passage_width > 0.0 ? passage_width : fallback;
-  };
-  if (name == "wall_gap") {
-    WallGapOptions o;
-    o.passage_width = width(o.passage_width);
-    return MakeWallWithGap(seed, o);
-  }
-  if (name == "zigzag") {
-    ZigZagOptions o;
-    o.passage_width = width(o.passage_width);
-    return MakeZigZagCorridor(seed, o);
-  }
-  if (name == "bug_trap") {
-    BugTrapOptions o;
-    o.passage_width = width(o.passage_width);
-    return MakeBugTrap(seed, o);
-  }
-  if (name == "two_rooms") {
-    TwoRoomsOptions o;
-    o.passage_width = width(o.passage_width);
-    return MakeTwoRooms(seed, o);
-  }
-  if (name == "spiral") {
-    SpiralOptions o;
-    o.passage_width = width(o.passage_width);
-    return MakeSpiral(seed, o);
-  }
-  if (name == "maze") {
-    MazeOptions o;
-    o.passage_width = width(o.passage_width);
-    return MakeMaze(seed, o);
-  }
-  std::string known;
-  for (const std::string& n : GeneratorNames()) known += (known.empty() ? "" : ", ") + n;
-  throw acd::InputError("GenerateWorkspace2d(): unknown generator '" + name + "' (known: " + known +
-                        ")");
+  throw InputError(std::string(where) + ": " + UnknownName("generator", name, GeneratorNames()));
 }
 
 }  // namespace acdplan::envs

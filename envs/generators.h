@@ -1,5 +1,5 @@
 #pragma once
-// Procedural narrow-passage worlds. Every generator takes an explicit seed (std::mt19937_64):
+// Procedural narrow-passage worlds. Every generator takes an explicit seed (base/random.h):
 // the same seed and options give the same world.
 
 #include <cstdint>
@@ -76,9 +76,17 @@ Workspace2d MakeMaze(std::uint64_t seed, const MazeOptions& options = {});
 /// "spiral", "maze".
 std::vector<std::string> GeneratorNames();
 
-/// The generator `name` with its default options, except `passage_width` when > 0.
-/// @throws acd::InputError for an unknown name (listing the known ones) or bad width.
+/// The parameters every generator shares; 0 keeps the generator's default.
+struct GeneratorParameters {
+  double passage_width = 0.0;   ///< [units]; >= 0.
+  double wall_thickness = 0.0;  ///< [units]; >= 0; not an option of "zigzag".
+};
+
+/// The generator `name` with its default options, except the parameters that are set.
+/// @throws InputError "GenerateWorkspace2d(): <rule>" for an unknown name (listing the known
+///         ones), a negative or non-finite parameter, wall_thickness for "zigzag", or a
+///         parameter the generator's own checks reject.
 Workspace2d GenerateWorkspace2d(const std::string& name, std::uint64_t seed,
-                                double passage_width = 0.0);
+                                const GeneratorParameters& parameters = {});
 
 }  // namespace acdplan::envs

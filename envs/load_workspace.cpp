@@ -4,9 +4,9 @@
 #include <cctype>
 #include <filesystem>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "acd/read_polygons.h"
-#include "envs/internal/yaml_util.h"
+#include "base/yaml_file.h"
 #include "envs/mesh_loader.h"
 #include "envs/moving_ai_map.h"
 #include "envs/occupancy_map.h"
@@ -32,10 +32,10 @@ bool IsMeshExtension(const std::string& extension) {
 
 // A workspace YAML is 3D when its bounds have six numbers or an obstacle names a mesh; the 3D
 // loader then reports any other mistake with its key path.
-bool IsWorkspace3dYaml(const internal::YamlFile& file) {
-  const YAML::Node bounds = file.root["bounds"];
+bool IsWorkspace3dYaml(const YamlFile& file) {
+  const YAML::Node bounds = file.root()["bounds"];
   if (bounds && bounds.IsSequence() && bounds.size() == 6) return true;
-  const YAML::Node obstacles = file.root["obstacles"];
+  const YAML::Node obstacles = file.root()["obstacles"];
   if (!obstacles || !obstacles.IsSequence()) return false;
   for (const YAML::Node& entry : obstacles) {
     if (entry.IsMap() && entry["mesh"]) return true;
@@ -48,7 +48,7 @@ bool IsWorkspace3dYaml(const internal::YamlFile& file) {
 Workspace2d LoadWorkspace2d(const std::string& path) {
   const std::string extension = LowerExtension(path);
   if (extension == ".yaml" || extension == ".yml") {
-    if (internal::LoadYamlFile(path).root["image"]) return LoadOccupancyMap(path);
+    if (YamlFile::Load(path).root()["image"]) return LoadOccupancyMap(path);
     return LoadWorkspace2dYaml(path);
   }
   if (extension == ".map") return LoadMovingAiMap(path);
@@ -65,7 +65,7 @@ Workspace2d LoadWorkspace2d(const std::string& path) {
     workspace.description = "obstacles from " + path;
     return workspace;
   }
-  throw acd::InputError(path + ": unknown world file extension '" + extension +
+  throw InputError(path + ": unknown world file extension '" + extension +
                         "' (expected .yaml, .yml, .map, .poly, .wkt, .geojson or .json)");
 }
 
@@ -86,8 +86,8 @@ World LoadWorld(const std::string& path) {
     return world;
   }
   if (extension == ".yaml" || extension == ".yml") {
-    const internal::YamlFile file = internal::LoadYamlFile(path);
-    if (file.root["image"]) {
+    const YamlFile file = YamlFile::Load(path);
+    if (file.root()["image"]) {
       world.kind = "occupancy map";
       world.workspace2d = LoadOccupancyMap(path);
     } else if (IsWorkspace3dYaml(file)) {

@@ -14,7 +14,7 @@ namespace acdplan::envs {
 ///  - `.map`: a Moving AI grid (envs/moving_ai_map.h);
 ///  - `.poly`, `.wkt`, `.geojson`, `.json`: the file's polygons as obstacles inside their
 ///    bounding box grown by 10% of its larger side on every side.
-/// @throws acd::InputError from the loader, or for an unknown extension.
+/// @throws InputError from the loader, or for an unknown extension.
 Workspace2d LoadWorkspace2d(const std::string& path);
 
 /// A world of either dimension, and what kind of file it came from.
@@ -30,7 +30,7 @@ struct World {
 /// numbers or `mesh` obstacles, envs/workspace_yaml.h), or a single mesh that ReadMesh() reads
 /// (.obj, .stl, .ply, .off, .dae, .gltf, .glb) as the one obstacle inside its bounding box grown
 /// by 10% of its larger side.
-/// @throws acd::InputError from the loader, or for an unknown extension.
+/// @throws InputError from the loader, or for an unknown extension.
 World LoadWorld(const std::string& path);
 
 }  // namespace acdplan::envs

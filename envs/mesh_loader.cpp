@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 
 namespace acdplan::envs {
 
@@ -17,8 +17,8 @@ TriangleMesh ReadMesh(const std::string& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) {
     const bool exists = std::filesystem::exists(path, error);
-    throw acd::InputError(path + ": cannot read mesh: " +
-                          (exists ? std::string("not a regular file") : std::strerror(ENOENT)));
+    throw InputError(path + ": cannot read the file: " +
+                     (exists ? std::string("not a regular file") : std::strerror(ENOENT)));
   }
   Assimp::Importer importer;
   // Points and lines are not surfaces: drop them instead of failing on mixed files.
@@ -30,7 +30,7 @@ TriangleMesh ReadMesh(const std::string& path) {
   if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) {
     std::string reason = importer.GetErrorString();
     if (reason.empty()) reason = "unsupported or malformed file";
-    throw acd::InputError(path + ": cannot read mesh: " + reason);
+    throw InputError(path + ": cannot read mesh: " + reason);
   }
   std::vector<Eigen::Vector3d> vertices;
   std::vector<Eigen::Vector3i> triangles;
@@ -49,7 +49,7 @@ TriangleMesh ReadMesh(const std::string& path) {
                              base + static_cast<int>(face.mIndices[2]));
     }
   }
-  if (triangles.empty()) throw acd::InputError(path + ": no triangles in file");
+  if (triangles.empty()) throw InputError(path + ": no triangles in file");
   TriangleMesh result;
   result.vertices.resize(static_cast<Eigen::Index>(vertices.size()), 3);
   result.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);

@@ -6,13 +6,14 @@
 #include <fstream>
 #include <sstream>
 
-#include "acd/input_error.h"
+#include "base/file_io.h"
+#include "base/input_error.h"
 
 namespace acdplan::envs {
 namespace {
 
 [[noreturn]] void Fail(const std::string& path, int line, const std::string& rule) {
-  throw acd::InputError(path + ":" + std::to_string(line) + ": " + rule);
+  throw InputError(path + ":" + std::to_string(line) + ": " + rule);
 }
 
 // Removes a trailing '\r' (maps written on Windows).
@@ -23,11 +24,7 @@ void Chomp(std::string& text) {
 }  // namespace
 
 OccupancyGrid ReadMovingAiMap(const std::string& path) {
-  if (std::filesystem::is_directory(path)) {
-    throw acd::InputError(path + ": cannot read file: it is a directory");
-  }
-  std::ifstream in(path);
-  if (!in) throw acd::InputError(path + ": cannot read file: " + std::strerror(errno));
+  std::istringstream in(ReadFile(path));
   int width = -1, height = -1;
   bool has_type = false;
   int line_number = 0;

@@ -18,7 +18,7 @@ namespace acdplan::envs {
 /// (water) are blocked. The header lines may come in any order before `map`. Cells are one
 /// unit wide with the origin at (0, 0); the first map line is the top row (largest y), so the
 /// world looks like the text.
-/// @throws acd::InputError "<file>:<line>: <rule>", e.g. "maze.map:7: row 3 has 9 cells,
+/// @throws InputError "<file>:<line>: <rule>", e.g. "maze.map:7: row 3 has 9 cells,
 ///         expected 10" or "maze.map:5: unknown terrain 'x' in column 4".
 OccupancyGrid ReadMovingAiMap(const std::string& path);
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "envs/internal/trace_cells.h"
 
 namespace acdplan::envs {
@@ -10,12 +10,12 @@ namespace acdplan::envs {
 std::vector<acd::Polygon2d> TraceObstacles(const OccupancyGrid& grid) {
   const int w = grid.width, h = grid.height;
   if (w < 0 || h < 0 || grid.blocked.size() != static_cast<size_t>(w) * h) {
-    throw acd::InputError(
+    throw InputError(
         "TraceObstacles(): blocked has " + std::to_string(grid.blocked.size()) +
         " cells, expected width * height = " + std::to_string(static_cast<long long>(w) * h));
   }
   if (!std::isfinite(grid.resolution) || !(grid.resolution > 0.0) || !grid.origin.allFinite()) {
-    throw acd::InputError("TraceObstacles(): resolution must be finite and > 0, origin finite");
+    throw InputError("TraceObstacles(): resolution must be finite and > 0, origin finite");
   }
   // Flip to y up: grid row r is cell row h - 1 - r.
   std::vector<std::uint8_t> blocked(grid.blocked.size());

@@ -4,32 +4,32 @@
 #include <cstring>
 #include <filesystem>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "envs/internal/gray_image.h"
-#include "envs/internal/yaml_util.h"
+#include "base/yaml_file.h"
 
 namespace acdplan::envs {
 
 OccupancyGrid ReadOccupancyMap(const std::string& yaml_path, const OccupancyMapOptions& options) {
-  const internal::YamlFile file = internal::LoadYamlFile(yaml_path);
-  const YAML::Node& root = file.root;
-  internal::CheckKeys(
-      file, root, "",
+  const YamlFile file = YamlFile::Load(yaml_path);
+  const YAML::Node& root = file.root();
+  file.CheckKeys(
+      root, "",
       {"image", "resolution", "origin", "occupied_thresh", "free_thresh", "negate", "mode"});
   for (const char* key : {"image", "resolution", "origin"}) {
     if (!root[key]) file.Fail(key, "missing required key");
   }
-  const std::string image_name = internal::String(file, root["image"], "image");
-  const double resolution = internal::Number(file, root["resolution"], "resolution");
+  const std::string image_name = file.String(root["image"], "image");
+  const double resolution = file.Number(root["resolution"], "resolution");
   if (!(resolution > 0.0)) file.Fail("resolution", "expected a number > 0");
   const std::vector<double> origin =
-      internal::Numbers(file, root["origin"], "origin", 3, "[x, y, yaw]");
+      file.Numbers(root["origin"], "origin", 3, "[x, y, yaw]");
   if (origin[2] != 0.0) file.Fail("origin", "yaw must be 0 (rotated maps are not supported)");
   const double occupied_thresh =
-      root["occupied_thresh"] ? internal::Number(file, root["occupied_thresh"], "occupied_thresh")
+      root["occupied_thresh"] ? file.Number(root["occupied_thresh"], "occupied_thresh")
                               : 0.65;
   const double free_thresh =
-      root["free_thresh"] ? internal::Number(file, root["free_thresh"], "free_thresh") : 0.196;
+      root["free_thresh"] ? file.Number(root["free_thresh"], "free_thresh") : 0.196;
   if (occupied_thresh < 0.0 || occupied_thresh > 1.0) {
     file.Fail("occupied_thresh", "expected a number in [0, 1]");
   }
@@ -45,21 +45,21 @@ OccupancyGrid ReadOccupancyMap(const std::string& yaml_path, const OccupancyMapO
     if (node.IsScalar() && YAML::convert<bool>::decode(node, flag)) {
       negate = flag;
     } else {
-      const double value = internal::Number(file, node, "negate");
+      const double value = file.Number(node, "negate");
       if (value != 0.0 && value != 1.0) file.Fail("negate", "expected 0 or 1");
       negate = value == 1.0;
     }
   }
   if (root["mode"]) {
-    const std::string mode = internal::String(file, root["mode"], "mode");
+    const std::string mode = file.String(root["mode"], "mode");
     if (mode != "trinary" && mode != "scale" && mode != "raw") {
       file.Fail("mode", "expected trinary, scale or raw, got '" + mode + "'");
     }
   }
 
-  const std::string image_path = internal::ResolvePath(yaml_path, image_name);
+  const std::string image_path = file.ResolvePath(image_name);
   if (!std::filesystem::is_regular_file(image_path)) {
-    file.Fail("image", "cannot read '" + image_path + "': " +
+    file.Fail("image", image_path + ": cannot read the file: " +
                            (std::filesystem::exists(image_path) ? "not a regular file"
                                                                 : std::strerror(ENOENT)));
   }

@@ -32,7 +32,7 @@ struct OccupancyMapOptions {
 /// A pixel of value v (maxval m) has occupancy p = (m - v) / m (or v / m when negate is 1);
 /// p > occupied_thresh is blocked, p < free_thresh is free, anything else unknown. Colour
 /// PNGs are converted to grey by libpng (luminance); alpha is ignored.
-/// @throws acd::InputError naming the file, the key and the rule, e.g.
+/// @throws InputError naming the file, the key and the rule, e.g.
 ///   "map.yaml: resolution: expected a number > 0", "map.yaml: image: cannot read
 ///   'missing.pgm': No such file or directory", "map.pgm: malformed PGM header".
 OccupancyGrid ReadOccupancyMap(const std::string& yaml_path,

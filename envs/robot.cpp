@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "acd/input_error.h"
+#include "base/enum_names.h"
+#include "base/input_error.h"
 #include "acd/prepare_polygon.h"
 
 namespace acdplan::envs {
@@ -12,7 +13,7 @@ Robot Robot::Point() { return Robot{}; }
 
 Robot Robot::Disc(double radius) {
   if (!std::isfinite(radius) || !(radius > 0.0)) {
-    throw acd::InputError("Robot::Disc(): radius must be finite and > 0, got " +
+    throw InputError("Robot::Disc(): radius must be finite and > 0, got " +
                           std::to_string(radius));
   }
   Robot robot;
@@ -53,19 +54,20 @@ double Robot::BoundingRadius() const {
   return 0.0;
 }
 
-std::string ShapeName(RobotShape shape) {
-  switch (shape) {
-    case RobotShape::kPoint:
-      return "point";
-    case RobotShape::kDisc:
-      return "disc";
-    case RobotShape::kPolygon:
-      return "polygon";
-    case RobotShape::kMesh:
-      return "mesh";
-  }
-  return "?";
-}
+namespace {
+
+constexpr std::array<EnumName<RobotShape>, 4> kShapes = {{
+    {RobotShape::kPoint, "point"},
+    {RobotShape::kDisc, "disc"},
+    {RobotShape::kPolygon, "polygon"},
+    {RobotShape::kMesh, "mesh"},
+}};
+
+}  // namespace
+
+std::string ToString(RobotShape shape) { return NameOf(kShapes, shape); }
+
+RobotShape ParseRobotShape(const std::string& name) { return ValueOf(kShapes, name, "robot shape"); }
 
 acd::Polygon2d Transformed(const acd::Polygon2d& polygon, const Eigen::Isometry2d& pose) {
   auto move = [&pose](const acd::Ring2d& ring) {

@@ -26,12 +26,12 @@ struct Robot {
   TriangleMesh mesh;       ///< kMesh: body-frame surface.
 
   static Robot Point();
-  /// @throws acd::InputError unless `radius` is finite and > 0.
+  /// @throws InputError unless `radius` is finite and > 0.
   static Robot Disc(double radius);
   /// Prepares `outline` (acd::PreparePolygon).
-  /// @throws acd::InputError if it is not a valid polygon.
+  /// @throws InputError if it is not a valid polygon.
   static Robot Polygon(const acd::Polygon2d& outline);
-  /// @throws acd::InputError if CheckTriangleMesh() fails.
+  /// @throws InputError if CheckTriangleMesh() fails.
   static Robot Mesh(const TriangleMesh& surface);
 
   /// Largest distance from the body origin to the robot's geometry (0 for a point) [units].
@@ -39,7 +39,11 @@ struct Robot {
 };
 
 /// Name of a shape: "point", "disc", "polygon", "mesh".
-std::string ShapeName(RobotShape shape);
+std::string ToString(RobotShape shape);
+
+/// Inverse of ToString().
+/// @throws InputError "unknown robot shape '<name>' (expected one of: point, disc, polygon, mesh)".
+RobotShape ParseRobotShape(const std::string& name);
 
 /// True if the 2D robot's geometry at `pose` lies inside `bounds` (a planner's state space
 /// bounds only the reference point; the world's edges are no obstacles). False for a mesh.

@@ -1,6 +1,6 @@
 #include "envs/triangle_mesh.h"
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 
 namespace acdplan::envs {
 
@@ -13,16 +13,16 @@ Eigen::AlignedBox3d BoundingBox(const TriangleMesh& mesh) {
 }
 
 void CheckTriangleMesh(const TriangleMesh& mesh, const std::string& where) {
-  if (mesh.triangles.rows() == 0) throw acd::InputError(where + ": mesh has no triangles");
+  if (mesh.triangles.rows() == 0) throw InputError(where + ": mesh has no triangles");
   if (!mesh.vertices.allFinite()) {
-    throw acd::InputError(where + ": mesh has a NaN or infinite vertex coordinate");
+    throw InputError(where + ": mesh has a NaN or infinite vertex coordinate");
   }
   const Eigen::Index n = mesh.vertices.rows();
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
     for (int k = 0; k < 3; ++k) {
       const int index = mesh.triangles(f, k);
       if (index < 0 || index >= n) {
-        throw acd::InputError(where + ": triangle " + std::to_string(f) + ": index " +
+        throw InputError(where + ": triangle " + std::to_string(f) + ": index " +
                               std::to_string(index) + " out of range [0, " + std::to_string(n) +
                               ")");
       }

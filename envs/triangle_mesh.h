@@ -19,7 +19,7 @@ Eigen::AlignedBox3d BoundingBox(const TriangleMesh& mesh);
 
 /// Checks that `mesh` has at least one triangle, finite coordinates and every index in
 /// [0, #V).
-/// @throws acd::InputError "<where>: <rule>", e.g. "cup.obj: triangle 4: index 17 out of
+/// @throws InputError "<where>: <rule>", e.g. "cup.obj: triangle 4: index 17 out of
 ///         range [0, 12)".
 void CheckTriangleMesh(const TriangleMesh& mesh, const std::string& where);
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "acd/prepare_polygon.h"
 
 namespace acdplan::envs {
@@ -19,7 +19,7 @@ Workspace2d PrepareWorkspace2d(const Workspace2d& raw, const std::string& where)
     std::ostringstream message;
     message << where << ": bounds: expected finite xmin < xmax and ymin < ymax, got [" << lo.x()
             << ", " << lo.y() << ", " << hi.x() << ", " << hi.y() << "]";
-    throw acd::InputError(message.str());
+    throw InputError(message.str());
   }
   Workspace2d result;
   result.bounds = raw.bounds;

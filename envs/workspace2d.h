@@ -24,7 +24,7 @@ acd::Polygon2d BoundsPolygon(const Eigen::AlignedBox2d& bounds);
 /// Checks `bounds` (finite, xmin < xmax, ymin < ymax) and prepares every obstacle with
 /// acd::PreparePolygon(), naming it "<where>: obstacle k".
 /// @returns the workspace with cleaned obstacles.
-/// @throws acd::InputError naming `where` and the rule broken.
+/// @throws InputError naming `where` and the rule broken.
 Workspace2d PrepareWorkspace2d(const Workspace2d& raw, const std::string& where);
 
 }  // namespace acdplan::envs

@@ -1,23 +1,17 @@
 #include "envs/workspace_yaml.h"
 
-#include <cerrno>
-#include <charconv>
-#include <cstdio>
-#include <cstring>
-#include <fstream>
+#include <cmath>
 
-#include "acd/input_error.h"
 #include "acd/prepare_polygon.h"
 #include "acd/read_polygons.h"
-#include "envs/internal/yaml_util.h"
+#include "base/file_io.h"
+#include "base/format.h"
+#include "base/input_error.h"
+#include "base/yaml_file.h"
 #include "envs/mesh_loader.h"
 
 namespace acdplan::envs {
 namespace {
-
-using internal::Child;
-using internal::Item;
-using internal::YamlFile;
 
 acd::Ring2d ReadRing(const YamlFile& file, const YAML::Node& node, const std::string& key) {
   const std::string rule = "expected a list of [x, y] pairs";
@@ -36,16 +30,10 @@ acd::Ring2d ReadRing(const YamlFile& file, const YAML::Node& node, const std::st
   return ring;
 }
 
-std::string FormatNumber(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
 std::string FormatRing(const acd::Ring2d& ring) {
   std::string text = "[";
   for (size_t i = 0; i < ring.size(); ++i) {
-    text += (i ? ", [" : "[") + FormatNumber(ring[i].x()) + ", " + FormatNumber(ring[i].y()) + "]";
+    text += (i ? ", [" : "[") + FormatShortest(ring[i].x()) + ", " + FormatShortest(ring[i].y()) + "]";
   }
   return text + "]";
 }
@@ -60,12 +48,12 @@ std::string Quoted(const std::string& text) {
 }
 
 std::string Description(const YamlFile& file) {
-  return file.root["description"] ? internal::String(file, file.root["description"], "description")
+  return file.root()["description"] ? file.String(file.root()["description"], "description")
                                   : std::string();
 }
 
 const YAML::Node Obstacles(const YamlFile& file) {
-  const YAML::Node node = file.root["obstacles"];
+  const YAML::Node node = file.root()["obstacles"];
   if (node && !node.IsNull() && !node.IsSequence()) file.Fail("obstacles", "expected a list");
   return node;
 }
@@ -73,37 +61,37 @@ const YAML::Node Obstacles(const YamlFile& file) {
 }  // namespace
 
 Workspace2d LoadWorkspace2dYaml(const std::string& path) {
-  const YamlFile file = internal::LoadYamlFile(path);
-  internal::CheckKeys(file, file.root, "", {"description", "bounds", "obstacles"});
-  if (!file.root["bounds"]) file.Fail("bounds", "missing required key");
+  const YamlFile file = YamlFile::Load(path);
+  file.CheckKeys(file.root(), "", {"description", "bounds", "obstacles"});
+  if (!file.root()["bounds"]) file.Fail("bounds", "missing required key");
   const std::vector<double> b =
-      internal::Numbers(file, file.root["bounds"], "bounds", 4, "[xmin, ymin, xmax, ymax]");
+      file.Numbers(file.root()["bounds"], "bounds", 4, "[xmin, ymin, xmax, ymax]");
   if (!(b[0] < b[2]) || !(b[1] < b[3])) file.Fail("bounds", "expected xmin < xmax and ymin < ymax");
   Workspace2d workspace;
   workspace.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(b[0], b[1]), Eigen::Vector2d(b[2], b[3]));
   workspace.description = Description(file);
   const YAML::Node obstacles = Obstacles(file);
   for (size_t i = 0; obstacles && i < obstacles.size(); ++i) {
-    const std::string key = Item("obstacles", i);
+    const std::string key = YamlFile::Item("obstacles", i);
     const YAML::Node& entry = obstacles[i];
-    internal::ExpectMap(file, entry, key);
-    internal::CheckKeys(file, entry, key, {"file", "polygon", "holes"});
+    file.ExpectMap(entry, key);
+    file.CheckKeys(entry, key, {"file", "polygon", "holes"});
     if (!entry["file"] == !entry["polygon"]) {
       file.Fail(key, "expected exactly one of 'file' or 'polygon'");
     }
     if (entry["file"]) {
-      if (entry["holes"]) file.Fail(Child(key, "holes"), "only allowed with 'polygon'");
-      const std::string name = internal::String(file, entry["file"], Child(key, "file"));
-      for (acd::Polygon2d& polygon : acd::ReadPolygons(internal::ResolvePath(path, name))) {
+      if (entry["holes"]) file.Fail(YamlFile::Child(key, "holes"), "only allowed with 'polygon'");
+      const std::string name = file.String(entry["file"], YamlFile::Child(key, "file"));
+      for (acd::Polygon2d& polygon : acd::ReadPolygons(file.ResolvePath(name))) {
         workspace.obstacles.push_back(std::move(polygon));
       }
       continue;
     }
-    acd::Polygon2d polygon{ReadRing(file, entry["polygon"], Child(key, "polygon")), {}};
+    acd::Polygon2d polygon{ReadRing(file, entry["polygon"], YamlFile::Child(key, "polygon")), {}};
     if (const YAML::Node holes = entry["holes"]) {
-      if (!holes.IsSequence()) file.Fail(Child(key, "holes"), "expected a list of rings");
+      if (!holes.IsSequence()) file.Fail(YamlFile::Child(key, "holes"), "expected a list of rings");
       for (size_t h = 0; h < holes.size(); ++h) {
-        polygon.holes.push_back(ReadRing(file, holes[h], Item(Child(key, "holes"), h)));
+        polygon.holes.push_back(ReadRing(file, holes[h], YamlFile::Item(YamlFile::Child(key, "holes"), h)));
       }
     }
     workspace.obstacles.push_back(acd::PreparePolygon(polygon, path + ": " + key));
@@ -116,8 +104,8 @@ void WriteWorkspace2dYaml(const Workspace2d& workspace, const std::string& path)
   if (!workspace.description.empty())
     text += "description: " + Quoted(workspace.description) + "\n";
   const Eigen::Vector2d lo = workspace.bounds.min(), hi = workspace.bounds.max();
-  text += "bounds: [" + FormatNumber(lo.x()) + ", " + FormatNumber(lo.y()) + ", " +
-          FormatNumber(hi.x()) + ", " + FormatNumber(hi.y()) + "]\n";
+  text += "bounds: [" + FormatShortest(lo.x()) + ", " + FormatShortest(lo.y()) + ", " +
+          FormatShortest(hi.x()) + ", " + FormatShortest(hi.y()) + "]\n";
   text += workspace.obstacles.empty() ? "obstacles: []\n" : "obstacles:\n";
   for (const acd::Polygon2d& obstacle : workspace.obstacles) {
     text += "  - polygon: " + FormatRing(obstacle.outer) + "\n";
@@ -126,26 +114,14 @@ void WriteWorkspace2dYaml(const Workspace2d& workspace, const std::string& path)
       for (const acd::Ring2d& hole : obstacle.holes) text += "      - " + FormatRing(hole) + "\n";
     }
   }
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw acd::InputError(path + ": cannot write file: " + std::strerror(errno));
-    out << text;
-    out.close();
-    if (!out) throw acd::InputError(path + ": cannot write file: write error");
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw acd::InputError(path + ": cannot write file: " + reason);
-  }
+  WriteFileAtomically(path, text);
 }
 
 Workspace3d LoadWorkspace3dYaml(const std::string& path) {
-  const YamlFile file = internal::LoadYamlFile(path);
-  internal::CheckKeys(file, file.root, "", {"description", "bounds", "obstacles"});
-  if (!file.root["bounds"]) file.Fail("bounds", "missing required key");
-  const std::vector<double> b = internal::Numbers(file, file.root["bounds"], "bounds", 6,
+  const YamlFile file = YamlFile::Load(path);
+  file.CheckKeys(file.root(), "", {"description", "bounds", "obstacles"});
+  if (!file.root()["bounds"]) file.Fail("bounds", "missing required key");
+  const std::vector<double> b = file.Numbers(file.root()["bounds"], "bounds", 6,
                                                   "[xmin, ymin, zmin, xmax, ymax, zmax]");
   if (!(b[0] < b[3]) || !(b[1] < b[4]) || !(b[2] < b[5])) {
     file.Fail("bounds", "expected xmin < xmax, ymin < ymax and zmin < zmax");
@@ -156,24 +132,24 @@ Workspace3d LoadWorkspace3dYaml(const std::string& path) {
   workspace.description = Description(file);
   const YAML::Node obstacles = Obstacles(file);
   for (size_t i = 0; obstacles && i < obstacles.size(); ++i) {
-    const std::string key = Item("obstacles", i);
+    const std::string key = YamlFile::Item("obstacles", i);
     const YAML::Node& entry = obstacles[i];
-    internal::ExpectMap(file, entry, key);
-    internal::CheckKeys(file, entry, key, {"mesh", "translation", "scale"});
-    if (!entry["mesh"]) file.Fail(Child(key, "mesh"), "missing required key");
-    const std::string name = internal::String(file, entry["mesh"], Child(key, "mesh"));
+    file.ExpectMap(entry, key);
+    file.CheckKeys(entry, key, {"mesh", "translation", "scale"});
+    if (!entry["mesh"]) file.Fail(YamlFile::Child(key, "mesh"), "missing required key");
+    const std::string name = file.String(entry["mesh"], YamlFile::Child(key, "mesh"));
     double scale = 1.0;
     if (entry["scale"]) {
-      scale = internal::Number(file, entry["scale"], Child(key, "scale"));
-      if (!(scale > 0.0)) file.Fail(Child(key, "scale"), "expected a number > 0");
+      scale = file.Number(entry["scale"], YamlFile::Child(key, "scale"));
+      if (!(scale > 0.0)) file.Fail(YamlFile::Child(key, "scale"), "expected a number > 0");
     }
     Eigen::RowVector3d translation = Eigen::RowVector3d::Zero();
     if (entry["translation"]) {
       const std::vector<double> t =
-          internal::Numbers(file, entry["translation"], Child(key, "translation"), 3, "[x, y, z]");
+          file.Numbers(entry["translation"], YamlFile::Child(key, "translation"), 3, "[x, y, z]");
       translation << t[0], t[1], t[2];
     }
-    TriangleMesh mesh = ReadMesh(internal::ResolvePath(path, name));
+    TriangleMesh mesh = ReadMesh(file.ResolvePath(name));
     for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
       mesh.vertices.row(v) = mesh.vertices.row(v) * scale + translation;
     }

@@ -16,14 +16,14 @@ namespace acdplan::envs {
 ///     - polygon: [[x, y], [x, y], [x, y], ...]   # inline outer ring (either orientation)
 ///       holes: [[[x, y], ...], ...]              # optional
 /// Relative paths are resolved against the YAML file's folder.
-/// @throws acd::InputError naming the file and the key path, e.g. "world.yaml:
+/// @throws InputError naming the file and the key path, e.g. "world.yaml:
 ///         obstacles[2].polygon: expected a list of [x, y] pairs", for YAML syntax errors
 ///         (with the line), unknown keys, wrong types, empty bounds and invalid polygons.
 Workspace2d LoadWorkspace2dYaml(const std::string& path);
 
 /// Writes `workspace` in the format LoadWorkspace2dYaml() reads, inline polygons with
 /// shortest round-trip numbers; atomically (a temporary file renamed into place).
-/// @throws acd::InputError if the file cannot be written.
+/// @throws std::runtime_error "<path>: cannot write the file: <reason>" (base/file_io.h).
 void WriteWorkspace2dYaml(const Workspace2d& workspace, const std::string& path);
 
 /// Reads a 3D workspace file:
@@ -33,7 +33,7 @@ void WriteWorkspace2dYaml(const Workspace2d& workspace, const std::string& path)
 ///     - mesh: chair.obj                            # any format ReadMesh() reads
 ///       translation: [x, y, z]                     # optional, applied after scale
 ///       scale: 1.0                                 # optional, > 0
-/// @throws acd::InputError as LoadWorkspace2dYaml().
+/// @throws InputError as LoadWorkspace2dYaml().
 Workspace3d LoadWorkspace3dYaml(const std::string& path);
 
 }  // namespace acdplan::envs

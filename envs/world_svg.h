@@ -2,27 +2,28 @@
 // SVG pictures of 2D worlds: obstacles, the free space's ACD components and openings.
 
 #include <Eigen/Geometry>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "acd/decomposition2d.h"
 #include "acd/polygon2d.h"
+#include "base/svg.h"
 #include "envs/workspace2d.h"
 
 namespace acdplan::envs {
 
-/// A picture of a workspace, drawn in painting order. World coordinates (y up) map to a picture
-/// about 800 pixels across (y down) with a caption line below; callers add their own elements
-/// (roadmaps, paths) between the layers with Add() and the coordinate helpers.
+/// A picture of a workspace, drawn in painting order on an SvgCanvas (base/svg.h): world
+/// coordinates (y up) map to a picture 800 pixels across (y down) with a caption line below;
+/// callers add their own elements (roadmaps, paths) between the layers with Add() and the
+/// coordinate helpers.
 class WorldSvg {
  public:
   explicit WorldSvg(const Eigen::AlignedBox2d& bounds);
 
   /// Picture coordinates of world x, y, and a point "x,y".
-  std::string X(double x) const;
-  std::string Y(double y) const;
-  std::string Point(const Eigen::Vector2d& p) const;
+  std::string X(double x) const { return canvas_.X(x); }
+  std::string Y(double y) const { return canvas_.Y(y); }
+  std::string Point(const Eigen::Vector2d& p) const { return canvas_.Point(p); }
   /// Path data of a polygon with holes (use fill-rule="evenodd").
   std::string PathData(const acd::Polygon2d& polygon) const;
 
@@ -32,15 +33,13 @@ class WorldSvg {
   /// The openings between components, thick orange lines.
   void AddOpenings(const acd::Decomposition2d& decomposition);
   /// Any SVG element(s), in picture coordinates.
-  void Add(const std::string& elements);
+  void Add(const std::string& elements) { canvas_.Add(elements); }
 
   /// The finished document with `caption` (escaped) under the drawing.
-  std::string Finish(const std::string& caption) const;
+  std::string Finish(const std::string& caption) const { return canvas_.Finish({caption}); }
 
  private:
-  Eigen::AlignedBox2d bounds_;
-  double scale_ = 1.0;  ///< Pixels per world unit.
-  std::ostringstream body_;
+  SvgCanvas canvas_;
 };
 
 /// A workspace and its free-space decomposition: obstacles, components in distinct fills,

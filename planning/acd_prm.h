@@ -6,9 +6,11 @@
 
 #include <cstdint>
 #include <functional>
-#include <random>
 #include <vector>
 
+#include "base/random.h"
+
+#include "acd/component_locator2d.h"
 #include "acd/decomposition2d.h"
 
 namespace acdplan::planning {
@@ -39,20 +41,19 @@ class AcdPrm : public ompl::geometric::PRM {
   void setup() override;
   void clear() override;
 
-  /// Index of the component whose polygon holds `xy`, or -1.
+  /// Index of the component whose polygon holds `xy` (exact, acd::ComponentLocator2d), or -1.
   int Locate(const Eigen::Vector2d& xy) const;
 
  private:
   /// PRM's neighbours of `v` plus the component neighbours described above.
   const std::vector<Vertex>& Connections(Vertex v);
 
-  std::vector<acd::Polygon2d> components_;
-  std::vector<Eigen::AlignedBox2d> boxes_;
+  acd::ComponentLocator2d locator_;
   std::vector<std::vector<int>> adjacent_;
   std::vector<std::vector<Vertex>> members_;  ///< Milestones located in each component.
   ConnectionStrategy nearest_;                ///< PRM's own strategy.
   std::vector<Vertex> offered_;
-  std::mt19937_64 rng_;
+  RandomEngine rng_;
   std::function<Eigen::Vector2d(const ompl::base::State*)> xy_;  ///< A state's reference point.
 };
 

@@ -2,23 +2,29 @@
 
 #include <cmath>
 
-#include "acd/input_error.h"
+#include "base/enum_names.h"
+#include "base/input_error.h"
 
 namespace acdplan::planning {
 
+namespace {
+
+constexpr std::array<EnumName<AcdOrientation>, 2> kOrientations = {{
+    {AcdOrientation::kRandom, "random"},
+    {AcdOrientation::kAligned, "aligned"},
+}};
+
+}  // namespace
+
 AcdOrientation ParseAcdOrientation(const std::string& name) {
-  if (name == "random") return AcdOrientation::kRandom;
-  if (name == "aligned") return AcdOrientation::kAligned;
-  throw acd::InputError("unknown orientation '" + name + "' (expected random or aligned)");
+  return ValueOf(kOrientations, name, "orientation");
 }
 
-std::string ToString(AcdOrientation orientation) {
-  return orientation == AcdOrientation::kAligned ? "aligned" : "random";
-}
+std::string ToString(AcdOrientation orientation) { return NameOf(kOrientations, orientation); }
 
 void CheckAcdSamplerOptions(const AcdSamplerOptions& o) {
   auto fail = [](const std::string& field, const std::string& rule, double value) {
-    throw acd::InputError("AcdSamplerOptions: " + field + ": expected " + rule + ", got " +
+    throw InputError("AcdSamplerOptions: " + field + ": expected " + rule + ", got " +
                           std::to_string(value));
   };
   if (!(o.uniform_share >= 0 && o.uniform_share <= 1)) {

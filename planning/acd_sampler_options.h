@@ -13,7 +13,7 @@ enum class AcdOrientation {
              ///< the opening segment), either way round, plus Gaussian jitter. Elsewhere random.
 };
 
-/// "random" or "aligned". @throws acd::InputError otherwise.
+/// "random" or "aligned". @throws InputError otherwise.
 AcdOrientation ParseAcdOrientation(const std::string& name);
 std::string ToString(AcdOrientation orientation);
 
@@ -39,7 +39,7 @@ struct AcdSamplerOptions {
   std::uint64_t seed = 1;        ///< Seed of the first sampler; later ones get derived seeds.
 };
 
-/// @throws acd::InputError naming the field and the rule if an option is out of range.
+/// @throws InputError naming the field and the rule if an option is out of range.
 void CheckAcdSamplerOptions(const AcdSamplerOptions& options);
 
 }  // namespace acdplan::planning

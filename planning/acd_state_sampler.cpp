@@ -1,5 +1,6 @@
 #include "planning/acd_state_sampler.h"
 
+#include "base/random.h"
 #include "planning/internal/acd_targets.h"
 #include "planning/internal/space_access.h"
 
@@ -9,7 +10,7 @@ AcdStateSampler::AcdStateSampler(const ompl::base::StateSpace* space,
                                  const acd::Decomposition2d& decomposition,
                                  const AcdSamplerOptions& options)
     : AcdStateSampler(space, std::make_shared<internal::AcdTargets>(decomposition, options),
-                      internal::DeriveSeed(options.seed, 0)) {}
+                      DeriveSeed(options.seed, 0)) {}
 
 AcdStateSampler::AcdStateSampler(const ompl::base::StateSpace* space,
                                  std::shared_ptr<const internal::AcdTargets> targets,

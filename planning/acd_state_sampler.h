@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <ompl/base/StateSampler.h>
-#include <random>
+#include "base/random.h"
 
 #include "acd/decomposition2d.h"
 #include "planning/acd_sampler_options.h"
@@ -27,13 +27,13 @@ enum class SpaceKind;
 /// about z by the aligned yaw). Draws whose x, y fall outside the bounds are redrawn (up to 16
 /// times, then a uniform state is used), so the distribution is not piled on the boundary.
 ///
-/// Thread safety: each instance owns its random engine (std::mt19937_64, seeded at
+/// Thread safety: each instance owns its random engine (RandomEngine, seeded at
 /// construction); the targets are immutable and shared. No global random state is used, so
 /// the same seed gives the same samples. Instances are not themselves shared between threads
 /// (OMPL allocates one per planner thread).
 class AcdStateSampler : public ompl::base::StateSampler {
  public:
-  /// @throws acd::InputError if `options` are out of range; std::invalid_argument if `space`
+  /// @throws InputError if `options` are out of range; std::invalid_argument if `space`
   ///         is not supported.
   AcdStateSampler(const ompl::base::StateSpace* space, const acd::Decomposition2d& decomposition,
                   const AcdSamplerOptions& options = {});
@@ -58,7 +58,7 @@ class AcdStateSampler : public ompl::base::StateSampler {
  private:
   std::shared_ptr<const internal::AcdTargets> targets_;
   internal::SpaceKind kind_;
-  std::mt19937_64 rng_engine_;
+  RandomEngine rng_engine_;
   bool last_targeted_ = false;
 };
 

@@ -2,6 +2,7 @@
 
 #include <ompl/base/SpaceInformation.h>
 
+#include "base/random.h"
 #include "planning/internal/acd_targets.h"
 
 namespace acdplan::planning {
@@ -10,7 +11,7 @@ AcdValidStateSampler::AcdValidStateSampler(const ompl::base::SpaceInformation* s
                                            const acd::Decomposition2d& decomposition,
                                            const AcdSamplerOptions& options)
     : AcdValidStateSampler(si, std::make_shared<internal::AcdTargets>(decomposition, options),
-                           internal::DeriveSeed(options.seed, 0), options.max_attempts) {}
+                           DeriveSeed(options.seed, 0), options.max_attempts) {}
 
 AcdValidStateSampler::AcdValidStateSampler(const ompl::base::SpaceInformation* si,
                                            std::shared_ptr<const internal::AcdTargets> targets,

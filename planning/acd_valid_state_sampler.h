@@ -24,7 +24,7 @@ namespace acdplan::planning {
 /// Thread safety and spaces: as AcdStateSampler (own seeded engine, no global random state).
 class AcdValidStateSampler : public ompl::base::ValidStateSampler {
  public:
-  /// @throws acd::InputError if `options` are out of range; std::invalid_argument if the
+  /// @throws InputError if `options` are out of range; std::invalid_argument if the
   ///         space of `si` is not supported.
   AcdValidStateSampler(const ompl::base::SpaceInformation* si,
                        const acd::Decomposition2d& decomposition,

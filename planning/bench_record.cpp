@@ -7,7 +7,7 @@
 #include <sstream>
 #include <tuple>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 
 namespace acdplan::planning {
 
@@ -76,10 +76,10 @@ std::string BenchRecordsToCsv(const std::vector<BenchRecord>& records) {
 
 std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw acd::InputError(path + ": cannot read the file");
+  if (!in) throw InputError(path + ": cannot read the file");
   std::string line;
   if (!std::getline(in, line) || line != BenchCsvHeader()) {
-    throw acd::InputError(path + ":1: expected the header " + BenchCsvHeader());
+    throw InputError(path + ":1: expected the header " + BenchCsvHeader());
   }
   std::vector<BenchRecord> records;
   int number = 1;
@@ -89,7 +89,7 @@ std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path) {
     const std::vector<std::string> f = Split(line);
     const std::string where = path + ":" + std::to_string(number);
     if (f.size() != kColumnCount) {
-      throw acd::InputError(where + ": expected " + std::to_string(kColumnCount) + " fields, got " +
+      throw InputError(where + ": expected " + std::to_string(kColumnCount) + " fields, got " +
                             std::to_string(f.size()));
     }
     size_t column = 0;
@@ -146,7 +146,7 @@ std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path) {
       r.openings = static_cast<int>(integer(21));
       records.push_back(r);
     } catch (const std::exception&) {
-      throw acd::InputError(where + ": column " + kColumns[column] + ": cannot read '" + f[column] +
+      throw InputError(where + ": column " + kColumns[column] + ": cannot read '" + f[column] +
                             "'");
     }
   }
@@ -183,15 +183,15 @@ std::string BenchManifestToJson(const BenchManifest& m) {
 
 BenchManifest ReadBenchManifest(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw acd::InputError(path + ": cannot read the file");
+  if (!in) throw InputError(path + ": cannot read the file");
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
   } catch (const nlohmann::json::exception& error) {
-    throw acd::InputError(path + ": not valid JSON: " + error.what());
+    throw InputError(path + ": not valid JSON: " + error.what());
   }
   if (!j.is_object() || j.value("format", "") != "acdplan.bench/1") {
-    throw acd::InputError(path + ": format: expected \"acdplan.bench/1\"");
+    throw InputError(path + ": format: expected \"acdplan.bench/1\"");
   }
   BenchManifest m;
   const char* key = "";
@@ -212,7 +212,7 @@ BenchManifest ReadBenchManifest(const std::string& path) {
     key = "started", m.started = j.at("started").get<std::string>();
     key = "wall_s", m.wall_s = j.at("wall_s").get<double>();
   } catch (const nlohmann::json::exception&) {
-    throw acd::InputError(path + ": " + key + ": missing or of the wrong type");
+    throw InputError(path + ": " + key + ": missing or of the wrong type");
   }
   return m;
 }

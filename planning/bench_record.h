@@ -41,7 +41,7 @@ std::string BenchCsvHeader();
 /// 17 significant digits so a read gives back the same numbers.
 std::string BenchRecordsToCsv(const std::vector<BenchRecord>& records);
 
-/// Reads runs.csv. @throws acd::InputError "<path>:<line>: <rule>" for a wrong header, a
+/// Reads runs.csv. @throws InputError "<path>:<line>: <rule>" for a wrong header, a
 /// wrong column count or an unparsable field.
 std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path);
 
@@ -67,7 +67,7 @@ struct BenchManifest {
 };
 
 std::string BenchManifestToJson(const BenchManifest& manifest);
-/// @throws acd::InputError "<path>: <key>: <rule>" for a missing or malformed field.
+/// @throws InputError "<path>: <key>: <rule>" for a missing or malformed field.
 BenchManifest ReadBenchManifest(const std::string& path);
 
 }  // namespace acdplan::planning

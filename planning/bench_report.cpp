@@ -15,7 +15,7 @@
 #include <tuple>
 
 #include "acd/decomposition_io.h"
-#include "acd/input_error.h"
+#include "base/input_error.h"
 
 namespace acdplan::planning {
 
@@ -449,7 +449,7 @@ void WriteBenchOutputs(const std::string& dir, const BenchManifest& manifest,
 
 void MergeBenchRecords(const std::vector<std::string>& dirs, BenchManifest* manifest,
                        std::vector<BenchRecord>* records) {
-  if (dirs.empty()) throw acd::InputError("bench-merge: expected at least one folder");
+  if (dirs.empty()) throw InputError("bench-merge: expected at least one folder");
   std::map<std::pair<int, int>, std::string> seen;
   records->clear();
   for (size_t i = 0; i < dirs.size(); ++i) {
@@ -461,7 +461,7 @@ void MergeBenchRecords(const std::vector<std::string>& dirs, BenchManifest* mani
       *manifest = m;
     } else {
       auto differ = [&](const std::string& what, const std::string& a, const std::string& b) {
-        throw acd::InputError(manifest_path + ": " + what + ": '" + b + "' differs from '" + a +
+        throw InputError(manifest_path + ": " + what + ": '" + b + "' differs from '" + a +
                               "' in " + (std::filesystem::path(dirs[0]) / "bench.json").string());
       };
       if (m.name != manifest->name) differ("name", manifest->name, m.name);
@@ -492,7 +492,7 @@ void MergeBenchRecords(const std::vector<std::string>& dirs, BenchManifest* mani
       const auto key = std::make_pair(r.case_index, r.run);
       auto it = seen.find(key);
       if (it != seen.end()) {
-        throw acd::InputError(runs_path + ": run " + std::to_string(r.run) + " of case " +
+        throw InputError(runs_path + ": run " + std::to_string(r.run) + " of case " +
                               std::to_string(r.case_index) + " (" + r.world + "/" + r.robot + "/" +
                               r.sampler + "/" + r.planner + "/" + r.budget + ") is also in " +
                               it->second);

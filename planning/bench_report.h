@@ -49,7 +49,7 @@ void WriteBenchRecord(const std::string& dir, const BenchManifest& manifest,
 
 /// Joins the raw records of shard folders: the manifests must agree on name, seed, runs and
 /// cases; a run (case, run index) may appear in one folder only.
-/// @throws acd::InputError "<dir>/bench.json: ..." / "<dir>/runs.csv: run 3 of case 12 is
+/// @throws InputError "<dir>/bench.json: ..." / "<dir>/runs.csv: run 3 of case 12 is
 ///         also in <other dir>" otherwise.
 void MergeBenchRecords(const std::vector<std::string>& dirs, BenchManifest* manifest,
                        std::vector<BenchRecord>* records);

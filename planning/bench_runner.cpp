@@ -17,7 +17,7 @@
 #include <set>
 #include <sstream>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "collision/collision_mode.h"
 #include "collision/collision_world.h"
 #include "collision/obstacle_set.h"
@@ -95,7 +95,7 @@ void CheckQueries(const BenchSpec& spec) {
       const std::vector<double> q =
           Fitted(which[0] == 's' ? world.scenario.start : world.scenario.goal, robot.robot);
       if (!Fits(check, robot.robot, bounds, Pose(q))) {
-        throw acd::InputError(spec.path + ": worlds: " + world.name + ": robot " + robot.name +
+        throw InputError(spec.path + ": worlds: " + world.name + ": robot " + robot.name +
                               ": " + which + ": the robot is in collision or out of bounds there");
       }
     }
@@ -123,7 +123,7 @@ void CheckQueries(const BenchSpec& spec) {
                   static_cast<unsigned long long>(result.collision_checks), result.path_length,
                   result.components, result.openings);
     line = buffer;
-  } catch (const acd::InputError& error) {
+  } catch (const InputError& error) {
     line = std::string("E ") + error.what() + "\n";
     status = 2;
   } catch (const std::exception& error) {
@@ -271,7 +271,7 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
         kill_all();
         std::string message = child.output.substr(2);
         while (!message.empty() && message.back() == '\n') message.pop_back();
-        throw acd::InputError(message);
+        throw InputError(message);
       }
       int solved = 0;
       unsigned long long samples = 0, checks = 0;

@@ -42,7 +42,7 @@ struct BenchRunOutcome {
 /// watchdog (SIGALRM at 10 x the time limit + 60 s, or 600 s for a sample budget). acd runs
 /// keep the decomposition in their time; the other samplers do not use it, so it is taken out
 /// of theirs (and their decomposition_s is 0).
-/// @throws acd::InputError "<bench file>: worlds ...: robot <name>: start: ..." if a robot
+/// @throws InputError "<bench file>: worlds ...: robot <name>: start: ..." if a robot
 ///         collides at a start or goal, or if a run reports bad input.
 BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options = {});
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "envs/load_workspace.h"
 #include "planning/internal/yaml_reader.h"
 #include "planning/registry.h"
@@ -46,7 +46,7 @@ void ReadAcd(const Reader& r, const YAML::Node& node, const std::string& key, Sc
     const std::string name = r.String(node["measure"], Reader::Child(key, "measure"));
     try {
       s->measure = acd::ParseConcavityMeasure(name);
-    } catch (const acd::InputError& error) {
+    } catch (const InputError& error) {
       r.Fail(Reader::Child(key, "measure"), error.what());
     }
   }
@@ -84,7 +84,7 @@ void ReadWorld(const Reader& r, const YAML::Node& node, const std::string& key,
     const std::string file = Resolved(r.file, r.String(node["scenario"], child("scenario")));
     try {
       world.scenario = LoadScenario(file);
-    } catch (const acd::InputError& error) {
+    } catch (const InputError& error) {
       r.Fail(child("scenario"), error.what());
     }
     world.name = std::filesystem::path(file).stem().string();
@@ -107,7 +107,7 @@ void ReadWorld(const Reader& r, const YAML::Node& node, const std::string& key,
       world.scenario.workspace_label = file;
       try {
         world.scenario.workspace = envs::LoadWorkspace2d(file);
-      } catch (const acd::InputError& error) {
+      } catch (const InputError& error) {
         r.Fail(child("workspace"), error.what());
       }
     } else if (workspace_node.IsMap()) {
@@ -415,10 +415,10 @@ BenchShard ParseBenchShard(const std::string& text) {
     shard.count = std::stoi(rest, &used);
     if (used != rest.size()) throw std::invalid_argument("trailing");
   } catch (const std::exception&) {
-    throw acd::InputError("expected I/N (e.g. 2/8), got '" + text + "'");
+    throw InputError("expected I/N (e.g. 2/8), got '" + text + "'");
   }
   if (shard.count < 1 || shard.index < 1 || shard.index > shard.count) {
-    throw acd::InputError("expected I/N with 1 <= I <= N, got '" + text + "'");
+    throw InputError("expected I/N with 1 <= I <= N, got '" + text + "'");
   }
   return shard;
 }

@@ -87,7 +87,7 @@ struct BenchSpec {
 };
 
 /// Reads and validates a benchmark file; loads (generates) its worlds.
-/// @throws acd::InputError "<file>: <key path>: <rule>", e.g. "b.yaml: cases[0].planners[1]:
+/// @throws InputError "<file>: <key path>: <rule>", e.g. "b.yaml: cases[0].planners[1]:
 ///         unknown planner 'PRN' (known: ...)", for syntax errors (with the line), unknown keys,
 ///         wrong types, out-of-range values, unknown or duplicate names, a sample budget with a
 ///         planner other than PRM / PRMstar, and errors of a world or scenario file.
@@ -99,7 +99,7 @@ struct BenchShard {
   int count = 1;  ///< >= 1.
 };
 
-/// Parses "I/N" (1 <= I <= N). @throws acd::InputError "expected I/N ..., got '<text>'" otherwise.
+/// Parses "I/N" (1 <= I <= N). @throws InputError "expected I/N ..., got '<text>'" otherwise.
 BenchShard ParseBenchShard(const std::string& text);
 
 /// One run to do: its place in the global order and its seed.

@@ -5,6 +5,7 @@
 
 #include "planning/acd_state_sampler.h"
 #include "planning/acd_valid_state_sampler.h"
+#include "base/random.h"
 #include "planning/internal/acd_targets.h"
 #include "planning/internal/space_access.h"
 
@@ -22,13 +23,13 @@ void InstallTargets(const std::shared_ptr<ompl::base::SpaceInformation>& si,
   si->getStateSpace()->setStateSamplerAllocator(
       [targets, seed, counter](const ompl::base::StateSpace* space) {
         return std::make_shared<AcdStateSampler>(space, targets,
-                                                 internal::DeriveSeed(seed, (*counter)++));
+                                                 DeriveSeed(seed, (*counter)++));
       });
   if (valid_sampler) {
     si->setValidStateSamplerAllocator(
         [targets, seed, counter, attempts](const ompl::base::SpaceInformation* info) {
           return std::make_shared<AcdValidStateSampler>(
-              info, targets, internal::DeriveSeed(seed, (*counter)++), attempts);
+              info, targets, DeriveSeed(seed, (*counter)++), attempts);
         });
   }
 }

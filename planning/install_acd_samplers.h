@@ -28,7 +28,7 @@ namespace acdplan::planning {
 ///   setup.setPlanner(std::make_shared<ompl::geometric::PRM>(si));
 ///   setup.solve(1.0);
 ///
-/// @throws acd::InputError if `options` are out of range; std::invalid_argument if the state
+/// @throws InputError if `options` are out of range; std::invalid_argument if the state
 ///         space is not RealVector(2|3), SE2 or SE3.
 void InstallAcdSamplers(const std::shared_ptr<ompl::base::SpaceInformation>& si,
                         const acd::Decomposition2d& decomposition,

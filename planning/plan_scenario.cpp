@@ -17,11 +17,13 @@
 #include <sstream>
 
 #include "acd/decompose2d.h"
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "collision/collision_mode.h"
 #include "collision/collision_world.h"
 #include "collision/obstacle_set.h"
 #include "envs/free_space2d.h"
+#include "base/format.h"
+#include "base/stopwatch.h"
 #include "envs/world_svg.h"
 #include "planning/counting_validity_checker.h"
 #include "planning/registry.h"
@@ -32,12 +34,6 @@ namespace acdplan::planning {
 namespace ob = ompl::base;
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double Seconds(Clock::time_point from) {
-  return std::chrono::duration<double>(Clock::now() - from).count();
-}
 
 Eigen::Isometry2d Pose(bool se2, const ob::State* state) {
   Eigen::Isometry2d pose = Eigen::Isometry2d::Identity();
@@ -56,23 +52,23 @@ Eigen::Isometry2d Pose(bool se2, const ob::State* state) {
 
 PlanResult PlanScenario(const Scenario& scenario) {
   CheckScenario(scenario);
-  const Clock::time_point started = Clock::now();
+  const Stopwatch stopwatch;
   const std::string where = scenario.path.empty() ? "scenario" : scenario.path;
   PlanResult result;
   result.sampler = scenario.sampler;
   result.planner = scenario.planner;
   result.budget = scenario.samples > 0 ? std::to_string(scenario.samples) + " samples"
-                                       : (std::ostringstream() << scenario.time_limit).str() + " s";
+                                       : FormatSignificant(scenario.time_limit, 6) + " s";
 
   // Free space and its ACD (the sampler's targets; decomposed for every sampler, so time_s
   // compares like with like).
   const envs::Workspace2d& workspace = scenario.workspace;
   const std::vector<acd::Polygon2d> free_space = envs::FreeSpace2d(workspace);
   acd::Decompose2dOptions acd_options;
-  acd_options.tau = scenario.tau_rel * workspace.bounds.sizes().norm();
+  acd_options.tau = scenario.tau_diag * workspace.bounds.sizes().norm();
   acd_options.measure = scenario.measure;
   result.decomposition = acd::Decompose2d(free_space, acd_options);
-  result.decomposition_ms = 1e3 * Seconds(started);
+  result.decomposition_ms = stopwatch.Milliseconds();
   result.components = static_cast<int>(result.decomposition.components.size());
   result.openings = static_cast<int>(result.decomposition.openings.size());
 
@@ -80,7 +76,7 @@ PlanResult PlanScenario(const Scenario& scenario) {
   auto obstacles =
       std::make_shared<const collision::ObstacleSet>(collision::BuildObstacleSet(workspace));
   collision::CollisionWorldOptions world_options;
-  world_options.mode = collision::ParseCollisionMode(scenario.collision_mode);
+  world_options.mode = scenario.collision_mode;
   auto world =
       std::make_shared<const collision::CollisionWorld>(obstacles, scenario.robot, world_options);
   const bool se2 = scenario.robot.shape == envs::RobotShape::kPolygon;
@@ -119,10 +115,10 @@ PlanResult PlanScenario(const Scenario& scenario) {
     goal[i] = scenario.goal[i];
   }
   if (!si->isValid(start.get())) {
-    throw acd::InputError(where + ": start: the robot is in collision or out of bounds there");
+    throw InputError(where + ": start: the robot is in collision or out of bounds there");
   }
   if (!si->isValid(goal.get())) {
-    throw acd::InputError(where + ": goal: the robot is in collision or out of bounds there");
+    throw InputError(where + ": goal: the robot is in collision or out of bounds there");
   }
   checker->ResetChecks();
 
@@ -133,8 +129,8 @@ PlanResult PlanScenario(const Scenario& scenario) {
   if (scenario.samples > 0) {
     SampleBudgetOptions options;
     options.samples = scenario.samples;
-    options.star = scenario.planner == "PRMstar";
-    if (scenario.planner == "PRM_ACD") {
+    options.star = scenario.planner == PlannerType::kPrmStar;
+    if (scenario.planner == PlannerType::kPrmAcd) {
       options.acd_connections = &result.decomposition;
       options.seed = scenario.seed;
     }
@@ -175,7 +171,7 @@ PlanResult PlanScenario(const Scenario& scenario) {
     }
   }
   result.collision_checks = checker->checks();
-  result.time_s = Seconds(started);
+  result.time_s = stopwatch.Seconds();
   return result;
 }
 
@@ -190,8 +186,8 @@ std::string PlanResultToJson(const Scenario& scenario, const PlanResult& result)
   j["format"] = "acdplan.plan/1";
   j["scenario"] = scenario.path;
   j["solved"] = result.solved;
-  j["sampler"] = result.sampler;
-  j["planner"] = result.planner;
+  j["sampler"] = ToString(result.sampler);
+  j["planner"] = ToString(result.planner);
   j["budget"] = result.budget;
   j["seed"] = scenario.seed;
   j["time_s"] = result.time_s;
@@ -249,7 +245,7 @@ std::string PlanResultToSvg(const Scenario& scenario, const PlanResult& result) 
   svg << "<circle id=\"goal\" cx=\"" << f.X(scenario.goal[0]) << "\" cy=\""
       << f.Y(scenario.goal[1]) << "\" r=\"6\" fill=\"#862e9c\"/>\n";
   f.Add(svg.str());
-  return f.Finish(result.sampler + " + " + result.planner + ", " + result.budget + ": " +
+  return f.Finish(ToString(result.sampler) + " + " + ToString(result.planner) + ", " + result.budget + ": " +
                   (result.solved ? "solved" : "not solved") + " (" +
                   std::to_string(result.samples) + " samples, " +
                   std::to_string(result.components) + " components, " +

@@ -15,7 +15,8 @@ namespace acdplan::planning {
 struct PlanResult {
   bool solved = false;         ///< Exact solution (time budget) / start and goal connected
                                ///< (sample budget).
-  std::string sampler, planner;
+  SamplerType sampler = SamplerType::kAcd;
+  PlannerType planner = PlannerType::kPrm;
   std::string budget;          ///< "200 samples" or "5 s".
   double time_s = 0.0;         ///< Wall time of the whole run, decomposition included [s].
   double decomposition_ms = 0.0;  ///< Free space + ACD [ms].
@@ -31,14 +32,14 @@ struct PlanResult {
   acd::Decomposition2d decomposition;         ///< The ACD of the free space.
 };
 
-/// Plans `scenario`: free space (envs::FreeSpace2d), its ACD (tau = tau_rel x bounds diagonal),
+/// Plans `scenario`: free space (envs::FreeSpace2d), its ACD (tau = tau_diag x bounds diagonal),
 /// a collision::CollisionWorld (robot kept inside the bounds too), the state space (R^2 for a
 /// point or disc robot, SE(2) for a polygon robot), the sampler installed with the scenario's
 /// seed, then either the Figure-4 protocol (scenario.samples > 0:
 /// BuildSampleBudgetRoadmap()) or the planner on the time limit. The path is reported raw,
 /// not simplified, so lengths compare planners rather than the simplifier.
 /// Expected failures (no solution) are results; only bad input throws.
-/// @throws acd::InputError if the start or the goal is in collision or out of bounds.
+/// @throws InputError if the start or the goal is in collision or out of bounds.
 PlanResult PlanScenario(const Scenario& scenario);
 
 /// Seeds OMPL's global random generator (used by the planners themselves, e.g. PRM's

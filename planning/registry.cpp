@@ -1,8 +1,6 @@
 #include "planning/registry.h"
 
-#include <algorithm>
-#include <functional>
-#include <map>
+#include <array>
 #include <stdexcept>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/samplers/BridgeTestValidStateSampler.h>
@@ -21,7 +19,8 @@
 #include <ompl/geometric/planners/rrt/RRTstar.h>
 #include <ompl/geometric/planners/sbl/SBL.h>
 
-#include "acd/input_error.h"
+#include "base/enum_names.h"
+#include "base/input_error.h"
 #include "planning/acd_prm.h"
 #include "planning/install_acd_samplers.h"
 
@@ -32,75 +31,123 @@ namespace og = ompl::geometric;
 
 namespace {
 
-std::string Joined(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& name : names) out += (out.empty() ? "" : ", ") + name;
-  return out;
-}
+using SamplerAllocator = ob::ValidStateSamplerAllocator;
+using PlannerFactory = std::shared_ptr<ob::Planner> (*)(const ob::SpaceInformationPtr& si,
+                                                        const acd::Decomposition2d* decomposition,
+                                                        std::uint64_t seed);
 
 template <typename Sampler>
-ob::ValidStateSamplerAllocator Allocator() {
+SamplerAllocator Allocator() {
   return [](const ob::SpaceInformation* si) { return std::make_shared<Sampler>(si); };
+}
+
+template <typename Planner>
+std::shared_ptr<ob::Planner> Make(const ob::SpaceInformationPtr& si, const acd::Decomposition2d*,
+                                  std::uint64_t) {
+  return std::make_shared<Planner>(si);
+}
+
+std::shared_ptr<ob::Planner> MakeAcdPrm(const ob::SpaceInformationPtr& si,
+                                        const acd::Decomposition2d* decomposition,
+                                        std::uint64_t seed) {
+  if (!decomposition) throw std::invalid_argument("MakePlanner(): PRM_ACD needs a decomposition");
+  return std::make_shared<AcdPrm>(si, *decomposition, /*star=*/false, seed);
+}
+
+struct SamplerEntry {
+  SamplerType type;
+  const char* name;
+  SamplerAllocator (*allocator)();  ///< OMPL's sampler; null for kAcd.
+};
+
+struct PlannerEntry {
+  PlannerType type;
+  const char* name;
+  bool sample_budget;  ///< Honours the Figure-4 sample budget.
+  PlannerFactory make;
+};
+
+const std::array<SamplerEntry, 6> kSamplers = {{
+    {SamplerType::kUniform, "uniform", &Allocator<ob::UniformValidStateSampler>},
+    {SamplerType::kGaussian, "gaussian", &Allocator<ob::GaussianValidStateSampler>},
+    {SamplerType::kBridge, "bridge", &Allocator<ob::BridgeTestValidStateSampler>},
+    {SamplerType::kObstacleBased, "obstacle_based", &Allocator<ob::ObstacleBasedValidStateSampler>},
+    {SamplerType::kMaxClearance, "max_clearance",
+     &Allocator<ob::MaximizeClearanceValidStateSampler>},
+    {SamplerType::kAcd, "acd", nullptr},
+}};
+
+const std::array<PlannerEntry, 11> kPlanners = {{
+    {PlannerType::kPrm, "PRM", true, &Make<og::PRM>},
+    {PlannerType::kPrmAcd, "PRM_ACD", true, &MakeAcdPrm},
+    {PlannerType::kPrmStar, "PRMstar", true, &Make<og::PRMstar>},
+    {PlannerType::kLazyPrm, "LazyPRM", false, &Make<og::LazyPRM>},
+    {PlannerType::kRrt, "RRT", false, &Make<og::RRT>},
+    {PlannerType::kRrtConnect, "RRTConnect", false, &Make<og::RRTConnect>},
+    {PlannerType::kRrtStar, "RRTstar", false, &Make<og::RRTstar>},
+    {PlannerType::kEst, "EST", false, &Make<og::EST>},
+    {PlannerType::kKpiece1, "KPIECE1", false, &Make<og::KPIECE1>},
+    {PlannerType::kBkpiece1, "BKPIECE1", false, &Make<og::BKPIECE1>},
+    {PlannerType::kSbl, "SBL", false, &Make<og::SBL>},
+}};
+
+/// The (value, name) view of a table, for base/enum_names.h.
+template <typename Enum, typename Entry, std::size_t N>
+std::array<EnumName<Enum>, N> Names(const std::array<Entry, N>& table) {
+  std::array<EnumName<Enum>, N> names{};
+  for (std::size_t i = 0; i < N; ++i) names[i] = {table[i].type, table[i].name};
+  return names;
+}
+
+const std::array<EnumName<SamplerType>, 6> kSamplerNames = Names<SamplerType>(kSamplers);
+const std::array<EnumName<PlannerType>, 11> kPlannerNames = Names<PlannerType>(kPlanners);
+
+const PlannerEntry& Entry(PlannerType planner) {
+  for (const PlannerEntry& entry : kPlanners) {
+    if (entry.type == planner) return entry;
+  }
+  throw std::invalid_argument("planning registry: a planner without a table entry");
 }
 
 }  // namespace
 
-std::vector<std::string> SamplerNames() {
-  return {"uniform", "gaussian", "bridge", "obstacle_based", "max_clearance", "acd"};
+std::string ToString(SamplerType sampler) { return NameOf(kSamplerNames, sampler); }
+std::string ToString(PlannerType planner) { return NameOf(kPlannerNames, planner); }
+
+SamplerType ParseSamplerType(const std::string& name) {
+  return ValueOf(kSamplerNames, name, "sampler");
 }
 
-std::vector<std::string> PlannerNames() {
-  return {"PRM", "PRM_ACD", "PRMstar", "LazyPRM", "RRT", "RRTConnect", "RRTstar", "EST", "KPIECE1",
-          "BKPIECE1", "SBL"};
+PlannerType ParsePlannerType(const std::string& name) {
+  return ValueOf(kPlannerNames, name, "planner");
 }
 
-bool SupportsSampleBudget(const std::string& planner) {
-  return planner == "PRM" || planner == "PRM_ACD" || planner == "PRMstar";
-}
+std::vector<std::string> SamplerNames() { return NamesOf(kSamplerNames); }
+std::vector<std::string> PlannerNames() { return NamesOf(kPlannerNames); }
 
-void InstallSampler(const std::string& name, const std::shared_ptr<ob::SpaceInformation>& si,
+bool HonoursSampleBudget(PlannerType planner) { return Entry(planner).sample_budget; }
+
+void InstallSampler(SamplerType sampler, const std::shared_ptr<ob::SpaceInformation>& si,
                     const acd::Decomposition2d& decomposition,
                     const AcdSamplerOptions& options) {
-  if (name == "acd") {
+  if (sampler == SamplerType::kAcd) {
     InstallAcdSamplers(si, decomposition, options);
     return;
   }
-  static const std::map<std::string, ob::ValidStateSamplerAllocator> kOmpl = {
-      {"uniform", Allocator<ob::UniformValidStateSampler>()},
-      {"gaussian", Allocator<ob::GaussianValidStateSampler>()},
-      {"bridge", Allocator<ob::BridgeTestValidStateSampler>()},
-      {"obstacle_based", Allocator<ob::ObstacleBasedValidStateSampler>()},
-      {"max_clearance", Allocator<ob::MaximizeClearanceValidStateSampler>()},
-  };
-  const auto it = kOmpl.find(name);
-  if (it == kOmpl.end()) {
-    throw acd::InputError("unknown sampler '" + name + "' (known: " + Joined(SamplerNames()) +
-                          ")");
+  for (const SamplerEntry& entry : kSamplers) {
+    if (entry.type != sampler) continue;
+    InstallSeededUniformSampler(si, options.seed);
+    si->setValidStateSamplerAllocator(entry.allocator());
+    return;
   }
-  InstallSeededUniformSampler(si, options.seed);
-  si->setValidStateSamplerAllocator(it->second);
+  throw std::invalid_argument("InstallSampler(): a sampler without a table entry");
 }
 
-std::shared_ptr<ob::Planner> MakePlanner(const std::string& name,
+std::shared_ptr<ob::Planner> MakePlanner(PlannerType planner,
                                          const std::shared_ptr<ob::SpaceInformation>& si,
                                          const acd::Decomposition2d* decomposition,
                                          std::uint64_t seed) {
-  if (name == "PRM") return std::make_shared<og::PRM>(si);
-  if (name == "PRM_ACD") {
-    if (!decomposition) throw std::invalid_argument("MakePlanner(): PRM_ACD needs a decomposition");
-    return std::make_shared<AcdPrm>(si, *decomposition, /*star=*/false, seed);
-  }
-  if (name == "PRMstar") return std::make_shared<og::PRMstar>(si);
-  if (name == "LazyPRM") return std::make_shared<og::LazyPRM>(si);
-  if (name == "RRT") return std::make_shared<og::RRT>(si);
-  if (name == "RRTConnect") return std::make_shared<og::RRTConnect>(si);
-  if (name == "RRTstar") return std::make_shared<og::RRTstar>(si);
-  if (name == "EST") return std::make_shared<og::EST>(si);
-  if (name == "KPIECE1") return std::make_shared<og::KPIECE1>(si);
-  if (name == "BKPIECE1") return std::make_shared<og::BKPIECE1>(si);
-  if (name == "SBL") return std::make_shared<og::SBL>(si);
-  throw acd::InputError("unknown planner '" + name + "' (known: " + Joined(PlannerNames()) +
-                        ")");
+  return Entry(planner).make(si, decomposition, seed);
 }
 
 }  // namespace acdplan::planning

@@ -1,5 +1,6 @@
 #pragma once
-// Samplers and planners by name, for scenarios, the command line and benchmarks.
+// The samplers and planners acdplan can run, by enum and by name: one table of each drives
+// scenario validation, the command line's help, benchmarks and the factories below.
 
 #include <cstdint>
 #include <memory>
@@ -16,33 +17,61 @@ class SpaceInformation;
 
 namespace acdplan::planning {
 
-/// "uniform", "gaussian", "bridge", "obstacle_based", "max_clearance", "acd".
-std::vector<std::string> SamplerNames();
+/// The valid-state samplers: OMPL's five and acdplan's ACD sampler.
+enum class SamplerType {
+  kUniform,        ///< "uniform": ompl::base::UniformValidStateSampler.
+  kGaussian,       ///< "gaussian": GaussianValidStateSampler.
+  kBridge,         ///< "bridge": BridgeTestValidStateSampler.
+  kObstacleBased,  ///< "obstacle_based": ObstacleBasedValidStateSampler.
+  kMaxClearance,   ///< "max_clearance": MaximizeClearanceValidStateSampler.
+  kAcd,            ///< "acd": AcdValidStateSampler (planning/install_acd_samplers.h).
+};
 
-/// "PRM", "PRM_ACD" (planning/acd_prm.h), "PRMstar", "LazyPRM", "RRT", "RRTConnect",
-/// "RRTstar", "EST", "KPIECE1", "BKPIECE1", "SBL".
+/// The geometric planners.
+enum class PlannerType {
+  kPrm,         ///< "PRM"
+  kPrmAcd,      ///< "PRM_ACD": PRM connecting along the ACD (planning/acd_prm.h).
+  kPrmStar,     ///< "PRMstar"
+  kLazyPrm,     ///< "LazyPRM"
+  kRrt,         ///< "RRT"
+  kRrtConnect,  ///< "RRTConnect"
+  kRrtStar,     ///< "RRTstar"
+  kEst,         ///< "EST"
+  kKpiece1,     ///< "KPIECE1"
+  kBkpiece1,    ///< "BKPIECE1"
+  kSbl,         ///< "SBL"
+};
+
+/// The name of a sampler or planner, as scenarios, the command line and reports spell it.
+std::string ToString(SamplerType sampler);
+std::string ToString(PlannerType planner);
+
+/// Inverses of ToString().
+/// @throws InputError "unknown sampler '<name>' (expected one of: uniform, ...)" /
+///         "unknown planner '<name>' (expected one of: PRM, ...)".
+SamplerType ParseSamplerType(const std::string& name);
+PlannerType ParsePlannerType(const std::string& name);
+
+/// Every sampler / planner name, in the tables' order (for help texts and sweeps).
+std::vector<std::string> SamplerNames();
 std::vector<std::string> PlannerNames();
 
-/// Planners that accept a sample budget (the Figure-4 protocol): "PRM", "PRM_ACD", "PRMstar".
-bool SupportsSampleBudget(const std::string& planner);
+/// Whether `planner` grows a roadmap that the Figure-4 sample-budget protocol can drive
+/// (BuildSampleBudgetRoadmap()): PRM, PRM_ACD and PRMstar.
+bool HonoursSampleBudget(PlannerType planner);
 
-/// Installs the sampler `name` on `si`. "acd": InstallAcdSamplers(si, decomposition, options).
-/// Any other: seeded uniform state sampling (InstallSeededUniformSampler(si, options.seed))
-/// and OMPL's valid-state sampler of that name (UniformValidStateSampler,
-/// GaussianValidStateSampler, BridgeTestValidStateSampler, ObstacleBasedValidStateSampler,
-/// MaximizeClearanceValidStateSampler), so every sampler is reproducible from the seed.
-/// @throws acd::InputError for an unknown name (listing the known ones).
-void InstallSampler(const std::string& name,
-                    const std::shared_ptr<ompl::base::SpaceInformation>& si,
+/// Installs `sampler` on `si`. kAcd: InstallAcdSamplers(si, decomposition, options). Any
+/// other: seeded uniform state sampling (InstallSeededUniformSampler(si, options.seed)) and
+/// OMPL's valid-state sampler, so every sampler is reproducible from the seed.
+void InstallSampler(SamplerType sampler, const std::shared_ptr<ompl::base::SpaceInformation>& si,
                     const acd::Decomposition2d& decomposition, const AcdSamplerOptions& options);
 
-/// A new geometric planner `name` on `si` with OMPL's default parameters. "PRM_ACD" connects
-/// along `decomposition` (of the workspace the robot moves in) with random picks seeded by
-/// `seed`; the other planners ignore both.
-/// @throws acd::InputError for an unknown name (listing the known ones);
-///         std::invalid_argument for "PRM_ACD" without a decomposition.
+/// A new geometric planner on `si` with OMPL's default parameters. kPrmAcd connects along
+/// `decomposition` (of the workspace the robot moves in) with random picks seeded by `seed`;
+/// the other planners ignore both.
+/// @throws std::invalid_argument for kPrmAcd without a decomposition.
 std::shared_ptr<ompl::base::Planner> MakePlanner(
-    const std::string& name, const std::shared_ptr<ompl::base::SpaceInformation>& si,
+    PlannerType planner, const std::shared_ptr<ompl::base::SpaceInformation>& si,
     const acd::Decomposition2d* decomposition = nullptr, std::uint64_t seed = 1);
 
 }  // namespace acdplan::planning

@@ -6,9 +6,11 @@
 #include <vector>
 
 #include "acd/concavity_measure.h"
+#include "collision/collision_mode.h"
 #include "envs/robot.h"
 #include "envs/workspace2d.h"
 #include "planning/acd_sampler_options.h"
+#include "planning/registry.h"
 
 namespace acdplan::planning {
 
@@ -24,8 +26,10 @@ namespace acdplan::planning {
 ///                                    # [[x, y], ...] in the body frame; plans in SE(2))
 ///   start: [x, y]                    # required; [x, y, yaw] for a polygon robot [rad]
 ///   goal: [x, y]                     # required; as start
-///   acd: {tau_rel: 0.02, measure: sp}  # tau = tau_rel x the bounds' diagonal; measure
-///                                    # sl | sp | h1 | h2
+///   acd: {tau_diag: 0.02, measure: sp}  # tau = tau_diag x the bounds' diagonal; measure
+///                                    # sl | sp | h1 | h2. The old spelling tau_rel is read
+///                                    # as tau_diag with a warning (`acdplan decompose
+///                                    # --tau-rel` is relative to the reference radius)
 ///   planner: {name: PRM, samples: 200}   # name: registry.h PlannerNames(); exactly one of
 ///                                    # time_limit [s] > 0 or samples (integer >= 1, the
 ///                                    # Figure-4 protocol: PRM, PRM_ACD, PRMstar); default
@@ -41,26 +45,29 @@ struct Scenario {
   envs::Workspace2d workspace;
   envs::Robot robot;
   std::vector<double> start, goal;  ///< 2 numbers (point, disc) or 3 (polygon: x, y, yaw).
-  double tau_rel = 0.02;            ///< ACD tolerance / bounds diagonal; >= 0.
+  double tau_diag = 0.02;           ///< ACD tolerance / the bounds' diagonal; >= 0.
   acd::ConcavityMeasure measure = acd::ConcavityMeasure::kShortestPath;
-  std::string planner = "PRM";
+  PlannerType planner = PlannerType::kPrm;
   double time_limit = 5.0;  ///< [s]; used when samples == 0.
   int samples = 0;          ///< > 0: Figure-4 protocol with this many collision-free samples.
-  std::string sampler = "acd";
+  SamplerType sampler = SamplerType::kAcd;
   AcdSamplerOptions sampler_options;  ///< Its seed is overwritten by `seed` when planning.
-  std::string collision_mode = "hulls+exact";
+  collision::CollisionMode collision_mode = collision::CollisionMode::kHullsExact;
   std::uint64_t seed = 1;
+  /// Things the file says that were accepted but deserve a word ("<file>: acd.tau_rel: ...");
+  /// the command line prints them on stderr.
+  std::vector<std::string> warnings;
 };
 
 /// Reads and validates a scenario file; loads its workspace.
-/// @throws acd::InputError "<file>: <key path>: <rule>", e.g. "demo.yaml: planner.time_limit:
+/// @throws InputError "<file>: <key path>: <rule>", e.g. "demo.yaml: planner.time_limit:
 ///         expected a positive number, got 'fast'", for syntax errors (with the line), unknown
 ///         keys, wrong types, out-of-range values, unknown names, and errors of the workspace.
 Scenario LoadScenario(const std::string& path);
 
 /// Checks the cross-field rules (planner/sampler names, budget, start/goal dimensions for the
 /// robot); called by LoadScenario() and again after command-line overrides.
-/// @throws acd::InputError naming the key ("<file>: planner.samples: ...").
+/// @throws InputError naming the key ("<file>: planner.samples: ...").
 void CheckScenario(const Scenario& scenario);
 
 }  // namespace acdplan::planning

@@ -35,7 +35,7 @@
 #include "acd/decompose2d.h"
 #include "acd/decomposition2d.h"
 #include "acd/decomposition_io.h"
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
 
@@ -665,7 +665,7 @@ int Run(const BenchArguments& args) {
     const std::filesystem::path parent = std::filesystem::path(args.json_path).parent_path();
     std::error_code ec;
     if (!parent.empty() && !std::filesystem::is_directory(parent, ec)) {
-      throw acd::InputError("--json " + args.json_path + ": folder " + parent.string() +
+      throw acdplan::InputError("--json " + args.json_path + ": folder " + parent.string() +
                             " does not exist");
     }
   }
@@ -757,7 +757,7 @@ int main(int argc, char** argv) {
   }
   try {
     return Run(args);
-  } catch (const acd::InputError& error) {
+  } catch (const acdplan::InputError& error) {
     std::cerr << "acd_bench: error: " << error.what() << "\n";
     return 2;
   } catch (const std::exception& error) {

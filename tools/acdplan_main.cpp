@@ -21,7 +21,8 @@
 #include "acd/decompose2d.h"
 #include "acd/decomposition2d.h"
 #include "acd/decomposition_io.h"
-#include "acd/input_error.h"
+#include "base/file_io.h"
+#include "base/input_error.h"
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
 #include "collision/bench_collision.h"
@@ -51,14 +52,7 @@ struct DecomposeArguments {
   bool check = false;
 };
 
-acd::HoleDiameter ParseHoleDiameter(const std::string& name) {
-  if (name == "auto") return acd::HoleDiameter::kAuto;
-  if (name == "pa") return acd::HoleDiameter::kPrincipalAxis;
-  if (name == "geodesic") return acd::HoleDiameter::kGeodesic;
-  throw acd::InputError("unknown hole diameter '" + name + "' (expected auto, pa or geodesic)");
-}
-
-/// A CLI11 check from a parser that throws InputError, so the value is checked while parsing
+/// A CLI11 check from a parser that throws acdplan::InputError, so the value is checked while parsing
 /// and the message names the option ("--measure: unknown concavity measure 'x' ...").
 template <typename Parse>
 CLI::Validator ParsedBy(Parse parse) {
@@ -66,7 +60,7 @@ CLI::Validator ParsedBy(Parse parse) {
       [parse](std::string& value) -> std::string {
         try {
           parse(value);
-        } catch (const acd::InputError& error) {
+        } catch (const acdplan::InputError& error) {
           return error.what();
         }
         return "";
@@ -93,7 +87,7 @@ void CheckOutputPath(const std::string& option, const std::string& path) {
   if (path.empty()) return;
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
-    throw acd::InputError(option + " " + path + ": is a directory");
+    throw acdplan::InputError(option + " " + path + ": is a directory");
   }
 }
 
@@ -101,7 +95,7 @@ int RunDecompose(const DecomposeArguments& args) {
   // Everything the user typed is checked before the (possibly long) decomposition.
   acd::Decompose2dOptions options;
   options.measure = acd::ParseConcavityMeasure(args.measure);
-  options.hole_diameter = ParseHoleDiameter(args.hole_diameter);
+  options.hole_diameter = acd::ParseHoleDiameter(args.hole_diameter);
   options.min_convexity = args.min_convexity;
   options.steiner_cuts = !args.no_steiner;
   CheckOutputPath("--json", args.json_path);
@@ -137,16 +131,16 @@ int RunDecompose(const DecomposeArguments& args) {
   std::vector<std::string> written;
   try {
     if (!args.json_path.empty()) {
-      acd::WriteFileAtomically(args.json_path, acd::DecompositionToJson(decomposition, labels));
+      acdplan::WriteFileAtomically(args.json_path, acd::DecompositionToJson(decomposition, labels));
       written.push_back(args.json_path);
     }
     if (!args.svg_path.empty()) {
-      acd::WriteFileAtomically(args.svg_path, acd::DecompositionToSvg(decomposition, labels));
+      acdplan::WriteFileAtomically(args.svg_path, acd::DecompositionToSvg(decomposition, labels));
       written.push_back(args.svg_path);
     }
   } catch (const std::runtime_error& error) {
     // An unwritable output path is the user's to fix, not a bug: exit status 2.
-    throw acd::InputError(error.what());
+    throw acdplan::InputError(error.what());
   }
 
   const acd::DecompositionStats2d& stats = decomposition.stats;
@@ -179,7 +173,7 @@ int RunBenchCollision(const acdplan::collision::BenchCollisionOptions& options,
   const auto rows = acdplan::collision::BenchCollision(options, &std::cerr);
   std::cout << acdplan::collision::BenchCollisionMarkdown(rows);
   if (!json_path.empty()) {
-    acd::WriteFileAtomically(json_path, acdplan::collision::BenchCollisionJson(rows, options));
+    acdplan::WriteFileAtomically(json_path, acdplan::collision::BenchCollisionJson(rows, options));
     std::printf("wrote %s\n", json_path.c_str());
   }
   return 0;
@@ -199,8 +193,11 @@ struct PlanArguments {
 int RunPlan(const PlanArguments& args) {
   namespace planning = acdplan::planning;
   planning::Scenario scenario = planning::LoadScenario(args.scenario);
-  if (!args.sampler.empty()) scenario.sampler = args.sampler;
-  if (!args.planner.empty()) scenario.planner = args.planner;
+  for (const std::string& warning : scenario.warnings) {
+    std::fprintf(stderr, "acdplan: warning: %s\n", warning.c_str());
+  }
+  if (!args.sampler.empty()) scenario.sampler = planning::ParseSamplerType(args.sampler);
+  if (!args.planner.empty()) scenario.planner = planning::ParsePlannerType(args.planner);
   if (args.seed >= 0) scenario.seed = static_cast<std::uint64_t>(args.seed);
   if (args.time > 0) scenario.time_limit = args.time, scenario.samples = 0;
   if (args.samples > 0) scenario.samples = args.samples;
@@ -212,20 +209,21 @@ int RunPlan(const PlanArguments& args) {
   const planning::PlanResult result = planning::PlanScenario(scenario);
   try {
     if (!args.json_path.empty()) {
-      acd::WriteFileAtomically(args.json_path, planning::PlanResultToJson(scenario, result));
+      acdplan::WriteFileAtomically(args.json_path, planning::PlanResultToJson(scenario, result));
     }
     if (!args.svg_path.empty()) {
-      acd::WriteFileAtomically(args.svg_path, planning::PlanResultToSvg(scenario, result));
+      acdplan::WriteFileAtomically(args.svg_path, planning::PlanResultToSvg(scenario, result));
     }
   } catch (const std::runtime_error& error) {
-    throw acd::InputError(error.what());
+    throw acdplan::InputError(error.what());
   }
   std::printf("scenario          %s\n", args.scenario.c_str());
   if (!scenario.description.empty()) std::printf("description       %s\n", scenario.description.c_str());
   std::printf("workspace         %s\n", scenario.workspace_label.c_str());
-  std::printf("robot             %s\n", acdplan::envs::ShapeName(scenario.robot.shape).c_str());
-  std::printf("sampler           %s\n", result.sampler.c_str());
-  std::printf("planner           %s (%s, seed %llu)\n", result.planner.c_str(), result.budget.c_str(),
+  std::printf("robot             %s\n", acdplan::envs::ToString(scenario.robot.shape).c_str());
+  std::printf("sampler           %s\n", planning::ToString(result.sampler).c_str());
+  std::printf("planner           %s (%s, seed %llu)\n", planning::ToString(result.planner).c_str(),
+              result.budget.c_str(),
               static_cast<unsigned long long>(scenario.seed));
   std::printf("acd               %d components, %d openings, %.3f ms\n", result.components,
               result.openings, result.decomposition_ms);
@@ -261,7 +259,7 @@ extern "C" void OnBenchInterrupt(int) { g_bench_stop = 1; }
 void CheckOutputDir(const std::string& dir) {
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
-    throw acd::InputError("--out " + dir + ": exists and is not a folder");
+    throw acdplan::InputError("--out " + dir + ": exists and is not a folder");
   }
 }
 
@@ -341,7 +339,7 @@ int RunBench(const BenchArguments& args) {
   try {
     planning::WriteBenchOutputs(out, manifest, outcome.records, !args.no_plots, &std::cerr);
   } catch (const std::runtime_error& error) {
-    throw acd::InputError(error.what());
+    throw acdplan::InputError(error.what());
   }
   ListOutputs(out);
   if (outcome.interrupted) {
@@ -363,7 +361,7 @@ int RunBenchMerge(const BenchArguments& args) {
   try {
     planning::WriteBenchOutputs(out, manifest, records, !args.no_plots, &std::cerr);
   } catch (const std::runtime_error& error) {
-    throw acd::InputError(error.what());
+    throw acdplan::InputError(error.what());
   }
   std::printf("merged %zu runs from %zu folders\n", records.size(), args.merge_dirs.size());
   ListOutputs(out);
@@ -407,7 +405,7 @@ int main(int argc, char** argv) {
       ->add_option("--hole-diameter", args.hole_diameter,
                    "Hole antipodes: auto, pa (principal axis) or geodesic")
       ->capture_default_str()
-      ->check(ParsedBy(ParseHoleDiameter));
+      ->check(ParsedBy(acd::ParseHoleDiameter));
   decompose->add_flag("--no-steiner", args.no_steiner,
                       "Cuts end at vertices only (no new vertex on an edge)");
   decompose->add_option("--json", args.json_path, "Write the decomposition JSON here");
@@ -512,7 +510,7 @@ int main(int argc, char** argv) {
     if (bench->parsed()) return RunBench(bench_args);
     if (bench_merge->parsed()) return RunBenchMerge(bench_args);
     return 0;
-  } catch (const acd::InputError& error) {
+  } catch (const acdplan::InputError& error) {
     std::cerr << "acdplan: error: " << error.what() << "\n";
     return 2;
   } catch (const std::exception& error) {

@@ -1,6 +1,5 @@
 #include "tools/env_command.h"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -9,7 +8,10 @@
 #include "acd/concavity_measure.h"
 #include "acd/decompose2d.h"
 #include "acd/decomposition_io.h"
-#include "acd/input_error.h"
+#include "base/file_io.h"
+#include "base/format.h"
+#include "base/input_error.h"
+#include "base/stopwatch.h"
 #include "collision/obstacle_set.h"
 #include "envs/free_space2d.h"
 #include "envs/load_workspace.h"
@@ -22,7 +24,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr double kDefaultTauRel = 0.02;  // As planning::Scenario's default.
+constexpr double kDefaultTauDiag = 0.02;  // As planning::Scenario's default.
 
 // A scenario names its world under `workspace`; world files never have that key.
 bool IsScenarioFile(const std::string& path) {
@@ -36,17 +38,9 @@ bool IsScenarioFile(const std::string& path) {
   }
 }
 
-std::string Short(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", x);
-  return buffer;
-}
+std::string Short(double x) { return FormatSignificant(x, 6); }
 
-std::string Milliseconds(double ms) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g ms", ms);
-  return buffer;
-}
+std::string Milliseconds(double ms) { return FormatSignificant(ms, 3) + " ms"; }
 
 // "1 hole", "2 holes".
 std::string Count(size_t n, const std::string& noun, const std::string& plural = "") {
@@ -55,9 +49,9 @@ std::string Count(size_t n, const std::string& noun, const std::string& plural =
 
 void WriteOutput(const std::string& path, const std::string& text) {
   try {
-    acd::WriteFileAtomically(path, text);
+    WriteFileAtomically(path, text);
   } catch (const std::runtime_error& error) {
-    throw acd::InputError(error.what());  // The user's path to fix: exit status 2.
+    throw acdplan::InputError(error.what());  // The user's path to fix: exit status 2.
   }
 }
 
@@ -84,26 +78,25 @@ Json ReportHeader(const EnvArguments& args, const std::string& kind, const std::
 
 int Report2d(const EnvArguments& args, const std::string& kind, const envs::Workspace2d& workspace,
              const planning::Scenario* scenario) {
-  const double tau_rel =
-      args.tau_rel >= 0 ? args.tau_rel : scenario ? scenario->tau_rel : kDefaultTauRel;
+  const double tau_diag = args.tau_diag >= 0 ? args.tau_diag
+                          : scenario         ? scenario->tau_diag
+                                             : kDefaultTauDiag;
   const acd::ConcavityMeasure measure =
       !args.measure.empty() ? acd::ParseConcavityMeasure(args.measure)
       : scenario            ? scenario->measure
                             : acd::ConcavityMeasure::kShortestPath;
   const double diagonal = workspace.bounds.sizes().norm();
 
-  const auto started = std::chrono::steady_clock::now();
+  Stopwatch stopwatch;
   const std::vector<acd::Polygon2d> free_space = envs::FreeSpace2d(workspace);
-  const auto freed = std::chrono::steady_clock::now();
+  const double free_space_ms = stopwatch.Milliseconds();
+  stopwatch.Restart();
   acd::Decompose2dOptions options;
-  options.tau = tau_rel * diagonal;
+  options.tau = tau_diag * diagonal;
   options.measure = measure;
   const acd::Decomposition2d decomposition = acd::Decompose2d(free_space, options);
-  const auto decomposed = std::chrono::steady_clock::now();
+  const double decomposition_ms = stopwatch.Milliseconds();
   const collision::ObstacleSet obstacles = collision::BuildObstacleSet(workspace);
-  auto ms = [](auto from, auto to) {
-    return std::chrono::duration<double, std::milli>(to - from).count();
-  };
 
   int obstacle_vertices = 0, obstacle_holes = 0;
   for (const acd::Polygon2d& o : workspace.obstacles) {
@@ -132,19 +125,19 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
                         Count(obstacle_holes, "hole"));
   Line("free space", Count(free_space.size(), "region") + ", " + Count(free_holes, "hole") +
                          ", " + Short(100.0 * free_area / bounds_area) + "% of the bounds (" +
-                         Milliseconds(ms(started, freed)) + ")");
-  Line("decomposition", "tau " + Short(options.tau) + " (tau_rel " + Short(tau_rel) +
+                         Milliseconds(free_space_ms) + ")");
+  Line("decomposition", "tau " + Short(options.tau) + " (tau_diag " + Short(tau_diag) +
                             " x bounds diagonal " + Short(diagonal) + "), measure " +
                             acd::ToString(measure) + ": " +
                             std::to_string(decomposition.components.size()) + " components, " +
                             std::to_string(decomposition.openings.size()) + " openings (" +
-                            Milliseconds(ms(freed, decomposed)) + ")");
+                            Milliseconds(decomposition_ms) + ")");
   if (!decomposition.openings.empty()) Line("narrowest gap", Short(narrowest));
   Line("obstacle hulls", std::to_string(obstacles.pieces.size()) + " from " +
                              obstacles.hulls_source);
   if (scenario) {
     const envs::Robot& robot = scenario->robot;
-    std::string text = envs::ShapeName(robot.shape);
+    std::string text = ToString(robot.shape);
     if (robot.shape == envs::RobotShape::kDisc) text += ", radius " + Short(robot.radius);
     if (robot.shape == envs::RobotShape::kPolygon) {
       text += ", " + std::to_string(robot.polygon.outer.size()) + " vertices, bounding radius " +
@@ -158,7 +151,7 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
     const std::string caption = args.input + ": " +
                                 std::to_string(decomposition.components.size()) +
                                 " components, " + std::to_string(decomposition.openings.size()) +
-                                " openings (orange), tau_rel " + Short(tau_rel) + ", " +
+                                " openings (orange), tau_diag " + Short(tau_diag) + ", " +
                                 acd::ToString(measure);
     WriteOutput(args.svg_path, envs::WorldToSvg(workspace, decomposition, caption));
     Line("wrote", args.svg_path);
@@ -170,14 +163,14 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
     j["free_regions"] = free_space.size();
     j["free_area"] = free_area;
     j["tau"] = options.tau;
-    j["tau_rel"] = tau_rel;
+    j["tau_diag"] = tau_diag;
     j["measure"] = acd::ToString(measure);
     j["components"] = decomposition.components.size();
     j["openings"] = decomposition.openings.size();
     j["narrowest_opening"] = decomposition.openings.empty() ? Json(nullptr) : Json(narrowest);
     j["obstacle_hulls"] = obstacles.pieces.size();
     j["hulls_source"] = obstacles.hulls_source;
-    if (scenario) j["robot"] = envs::ShapeName(scenario->robot.shape);
+    if (scenario) j["robot"] = ToString(scenario->robot.shape);
     WriteOutput(args.json_path, j.dump(2) + "\n");
     Line("wrote", args.json_path);
   }
@@ -186,7 +179,7 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
 
 int Report3d(const EnvArguments& args, const std::string& kind, const envs::Workspace3d& workspace) {
   if (!args.svg_path.empty()) {
-    throw acd::InputError("--svg " + args.svg_path + ": " + args.input +
+    throw acdplan::InputError("--svg " + args.svg_path + ": " + args.input +
                           " is a 3D world; pictures are drawn for 2D worlds only");
   }
   const collision::ObstacleSet obstacles = collision::BuildObstacleSet(workspace);
@@ -229,15 +222,23 @@ CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
       "space and ACD; --svg draws a 2D world and its decomposition. Exit status: 0 ok, 2 bad "
       "input or usage, 1 internal error.");
   env->add_option("FILE", args->input, "World file or scenario YAML")->required();
-  env->add_option("--tau-rel", args->tau_rel,
-                  "ACD tau relative to the bounds' diagonal (default: the scenario's, else 0.02)")
-      ->check(CLI::NonNegativeNumber);
+  CLI::Option* tau_diag =
+      env->add_option("--tau-diag", args->tau_diag,
+                      "ACD tau as a fraction of the bounds' diagonal (default: the scenario's, "
+                      "else 0.02)")
+          ->check(CLI::NonNegativeNumber);
+  // The older spelling, kept working: tau_rel means the reference radius in `decompose`.
+  CLI::Option* tau_rel = env->add_option("--tau-rel", args->tau_rel,
+                                         "Older spelling of --tau-diag (prints a warning)")
+                             ->check(CLI::NonNegativeNumber);
+  tau_diag->excludes(tau_rel);
+  tau_rel->excludes(tau_diag);
   env->add_option("--measure", args->measure, "Concavity measure: sl, sp, h1 or h2")
       ->check([](const std::string& name) {
         try {
           acd::ParseConcavityMeasure(name);
           return std::string();
-        } catch (const acd::InputError& error) {
+        } catch (const acdplan::InputError& error) {
           return std::string(error.what());
         }
       });
@@ -246,9 +247,20 @@ CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
   return env;
 }
 
-int RunEnv(const EnvArguments& args) {
+int RunEnv(const EnvArguments& given) {
+  EnvArguments args = given;
+  if (args.tau_rel >= 0) {
+    std::fprintf(stderr,
+                 "acdplan: warning: --tau-rel is read as --tau-diag, a fraction of the bounds' "
+                 "diagonal; write --tau-diag (decompose's --tau-rel is relative to the reference "
+                 "radius)\n");
+    args.tau_diag = args.tau_rel;
+  }
   if (IsScenarioFile(args.input)) {
     const planning::Scenario scenario = planning::LoadScenario(args.input);
+    for (const std::string& warning : scenario.warnings) {
+      std::fprintf(stderr, "acdplan: warning: %s\n", warning.c_str());
+    }
     return Report2d(args, "scenario; world " + scenario.workspace_label, scenario.workspace,
                     &scenario);
   }

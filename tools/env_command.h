@@ -9,7 +9,8 @@ namespace acdplan::tools {
 /// What `acdplan env` was asked.
 struct EnvArguments {
   std::string input;       ///< A world file of any kind, or a scenario YAML.
-  double tau_rel = -1.0;   ///< ACD tau / bounds diagonal; < 0: the scenario's, else 0.02.
+  double tau_diag = -1.0;  ///< ACD tau / bounds diagonal; < 0: the scenario's, else 0.02.
+  double tau_rel = -1.0;   ///< The older spelling of --tau-diag (read with a warning).
   std::string measure;     ///< "" : the scenario's, else sp.
   std::string svg_path;    ///< 2D: the world and its free-space decomposition.
   std::string json_path;   ///< The report as JSON.
@@ -19,7 +20,7 @@ struct EnvArguments {
 CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args);
 
 /// Runs `acdplan env`; returns the exit status.
-/// @throws acd::InputError for a world that cannot be loaded or an unwritable output.
+/// @throws acdplan::InputError for a world that cannot be loaded or an unwritable output.
 int RunEnv(const EnvArguments& args);
 
 }  // namespace acdplan::tools

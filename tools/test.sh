@@ -6,7 +6,8 @@
 #                             (or $ACDPLAN_ASAN_BUILD_DIR)
 #
 # Ends with one line "acdplan tests: N passed, M failed"; exits 0 only if every test passed.
-# $ACDPLAN_JOBS overrides the parallelism (default: nproc).
+# $ACDPLAN_JOBS overrides the parallelism (default: nproc); ACDPLAN_WERROR=1 makes compiler
+# warnings errors (.ci/run sets it).
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,7 +17,7 @@ sanitize=0
 for arg in "$@"; do
   case "$arg" in
     --sanitize) sanitize=1 ;;
-    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "test.sh: unknown argument '$arg' (expected --sanitize)" >&2; exit 2 ;;
   esac
 done
@@ -37,6 +38,12 @@ else
 fi
 
 "$root/tools/install-deps.sh"
+
+if [[ ${ACDPLAN_WERROR:-0} == 1 ]]; then
+  cmake_args+=(-DACDPLAN_WARNINGS_AS_ERRORS=ON)
+else
+  cmake_args+=(-DACDPLAN_WARNINGS_AS_ERRORS=OFF)
+fi
 
 if ! cmake -S "$root" -B "$build_dir" "${cmake_args[@]}" -DACDPLAN_BUILD_TESTS=ON; then
   echo "$label: 0 passed, 0 failed (configure failed, no tests ran)"

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <system_error>
 
+#include "base/format.h"
+
 namespace acdplan::acd::internal {
 
 NumberStatus ParseDouble(std::string_view token, double& value) {
@@ -36,14 +38,8 @@ bool ParseInt(std::string_view token, long long& value) {
   return ec == std::errc() && ptr == end;
 }
 
-std::string FormatNumber(double value) {
-  char buffer[40];
-  std::snprintf(buffer, sizeof(buffer), "%.15g", value);
-  return buffer;
-}
-
 std::string FormatPoint(const Point2d& p) {
-  return "(" + FormatNumber(p.x()) + ", " + FormatNumber(p.y()) + ")";
+  return "(" + FormatSignificant(p.x(), 15) + ", " + FormatSignificant(p.y(), 15) + ")";
 }
 
 std::string ToLower(std::string_view text) {

@@ -24,10 +24,7 @@ NumberStatus ParseDouble(std::string_view token, double& value);
 /// Parses the whole of `token` as a decimal integer (a leading '+' is accepted).
 bool ParseInt(std::string_view token, long long& value);
 
-/// Formats `value` with up to 15 significant digits ("0.5", "1.25", "1e+06").
-std::string FormatNumber(double value);
-
-/// Formats `p` as "(x, y)" with FormatNumber().
+/// Formats `p` as "(x, y)", each with up to 15 significant digits (as messages show numbers).
 std::string FormatPoint(const Point2d& p);
 
 /// Lower-cases ASCII letters.

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "collision/internal/mesh_building.h"
 
 namespace acdplan::collision::internal {
@@ -136,7 +136,7 @@ ExactObstacleLocator::ExactObstacleLocator(const ObstacleSet& obstacles, bool sk
       }
       int bad = 0;
       IsClosedMesh(piece.solid, &bad);
-      throw acd::InputError(
+      throw InputError(
           "PointLocator(): exact point location needs closed obstacle meshes: obstacle " +
           std::to_string(piece.obstacle) + " (connected component " + std::to_string(i) +
           ") is open: " + std::to_string(bad) +

@@ -60,7 +60,7 @@ class MeshLocator3d {
 class ExactObstacleLocator {
  public:
   /// `skip_open`: 3D pieces that are not closed are left out (the collision world's containment
-  /// test); otherwise an open piece throws acd::InputError naming it (point location).
+  /// test); otherwise an open piece throws InputError naming it (point location).
   ExactObstacleLocator(const ObstacleSet& obstacles, bool skip_open);
   bool Inside(const Eigen::Vector3d& p) const;
   int skipped_open_pieces() const { return skipped_open_; }

@@ -9,18 +9,11 @@
 #include <fstream>
 #include <iterator>
 
-#include "acd/input_error.h"
+#include "base/file_io.h"
+#include "base/input_error.h"
 
 namespace acdplan::envs::internal {
 namespace {
-
-std::string ReadBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw acd::InputError(path + ": cannot read file: " + std::strerror(errno));
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw acd::InputError(path + ": cannot read file: read error");
-  return bytes;
-}
 
 // A cursor over a PGM header: whitespace and '#' comments are skipped between tokens.
 class PgmHeader {
@@ -37,7 +30,7 @@ class PgmHeader {
       ++digits;
     }
     if (digits == 0 || value > 1000000000) {
-      throw acd::InputError(path_ + ": malformed PGM " + (in_header_ ? "header" : "data") +
+      throw InputError(path_ + ": malformed PGM " + (in_header_ ? "header" : "data") +
                             ": expected " + what);
     }
     return static_cast<int>(value);
@@ -66,9 +59,9 @@ class PgmHeader {
 }  // namespace
 
 GrayImage ReadPgm(const std::string& path) {
-  const std::string bytes = ReadBytes(path);
+  const std::string bytes = ReadFile(path);
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '2' && bytes[1] != '5')) {
-    throw acd::InputError(path + ": not a PGM image (expected magic 'P2' or 'P5')");
+    throw InputError(path + ": not a PGM image (expected magic 'P2' or 'P5')");
   }
   const bool binary = bytes[1] == '5';
   PgmHeader header(path, bytes);
@@ -77,10 +70,10 @@ GrayImage ReadPgm(const std::string& path) {
   image.height = header.Integer("height");
   image.max_value = header.Integer("maxval");
   if (image.width <= 0 || image.height <= 0) {
-    throw acd::InputError(path + ": malformed PGM header: width and height must be > 0");
+    throw InputError(path + ": malformed PGM header: width and height must be > 0");
   }
   if (image.max_value < 1 || image.max_value > 65535) {
-    throw acd::InputError(path + ": malformed PGM header: maxval must be in [1, 65535]");
+    throw InputError(path + ": malformed PGM header: maxval must be in [1, 65535]");
   }
   const size_t n = static_cast<size_t>(image.width) * image.height;
   image.pixels.resize(n);
@@ -89,7 +82,7 @@ GrayImage ReadPgm(const std::string& path) {
     size_t pos = header.pos_ + 1;
     const size_t bytes_per_pixel = image.max_value > 255 ? 2 : 1;
     if (header.pos_ >= bytes.size() || bytes.size() - pos < n * bytes_per_pixel) {
-      throw acd::InputError(path + ": truncated PGM data: expected " + std::to_string(n) +
+      throw InputError(path + ": truncated PGM data: expected " + std::to_string(n) +
                             " pixels");
     }
     for (size_t i = 0; i < n; ++i) {
@@ -102,7 +95,7 @@ GrayImage ReadPgm(const std::string& path) {
     for (size_t i = 0; i < n; ++i) {
       header.SkipSpaceAndComments();
       if (header.pos_ >= bytes.size()) {
-        throw acd::InputError(path + ": truncated PGM data: expected " + std::to_string(n) +
+        throw InputError(path + ": truncated PGM data: expected " + std::to_string(n) +
                               " pixels, found " + std::to_string(i));
       }
       image.pixels[i] =
@@ -111,7 +104,7 @@ GrayImage ReadPgm(const std::string& path) {
   }
   for (size_t i = 0; i < n; ++i) {
     if (image.pixels[i] > image.max_value) {
-      throw acd::InputError(path + ": PGM pixel " + std::to_string(i) + " value " +
+      throw InputError(path + ": PGM pixel " + std::to_string(i) + " value " +
                             std::to_string(image.pixels[i]) + " exceeds maxval " +
                             std::to_string(image.max_value));
     }
@@ -120,14 +113,14 @@ GrayImage ReadPgm(const std::string& path) {
 }
 
 GrayImage ReadPng(const std::string& path) {
-  const std::string bytes = ReadBytes(path);
+  const std::string bytes = ReadFile(path);
   png_image png;
   std::memset(&png, 0, sizeof png);
   png.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_memory(&png, bytes.data(), bytes.size())) {
     const std::string reason = png.message;
     png_image_free(&png);
-    throw acd::InputError(path + ": cannot read PNG: " + reason);
+    throw InputError(path + ": cannot read PNG: " + reason);
   }
   png.format = PNG_FORMAT_GRAY;
   GrayImage image;
@@ -138,19 +131,16 @@ GrayImage ReadPng(const std::string& path) {
   if (!png_image_finish_read(&png, nullptr, buffer.data(), 0, nullptr)) {
     const std::string reason = png.message;
     png_image_free(&png);
-    throw acd::InputError(path + ": cannot read PNG: " + reason);
+    throw InputError(path + ": cannot read PNG: " + reason);
   }
   image.pixels.assign(buffer.begin(), buffer.end());
   return image;
 }
 
 GrayImage ReadGrayImage(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw acd::InputError(path + ": cannot read file: " + std::strerror(errno));
-  char magic[8] = {};
-  in.read(magic, sizeof magic);
+  const std::string bytes = ReadFile(path);
   static const unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (in.gcount() == 8 && std::memcmp(magic, kPngSignature, 8) == 0) return ReadPng(path);
+  if (bytes.size() >= 8 && std::memcmp(bytes.data(), kPngSignature, 8) == 0) return ReadPng(path);
   return ReadPgm(path);
 }
 

@@ -15,12 +15,12 @@ struct GrayImage {
 };
 
 /// Reads a PGM image, plain (P2) or binary (P5), maxval 1..65535, '#' comments in the header.
-/// @throws acd::InputError "<path>: <rule>" (missing file, bad magic, malformed header,
+/// @throws InputError "<path>: <rule>" (missing file, bad magic, malformed header,
 ///         truncated data, value above maxval).
 GrayImage ReadPgm(const std::string& path);
 
 /// Reads a PNG image with libpng, converted to 8-bit grey (colour by luminance, alpha dropped).
-/// @throws acd::InputError "<path>: cannot read PNG: <reason>".
+/// @throws InputError "<path>: cannot read PNG: <reason>".
 GrayImage ReadPng(const std::string& path);
 
 /// ReadPgm() or ReadPng() by the file's first bytes (PNG signature, else PGM).

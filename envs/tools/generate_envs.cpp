@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "envs/generators.h"
 #include "envs/workspace_yaml.h"
 
@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
                                           path.string());
       std::cout << path.string() << "\n";
     }
-  } catch (const acdplan::acd::InputError& error) {
+  } catch (const acdplan::InputError& error) {
     std::cerr << "acdplan_generate_envs: " << error.what() << "\n";
     return 2;
   }

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 
 namespace acdplan::planning::internal {
 
@@ -50,35 +50,33 @@ AcdTargets::AcdTargets(const acd::Decomposition2d& decomposition, const AcdSampl
   }
 }
 
-AcdDraw AcdTargets::DrawAround(std::mt19937_64& rng, const AcdTarget& target) const {
-  std::normal_distribution<double> normal(0.0, 1.0);
+AcdDraw AcdTargets::DrawAround(RandomEngine& rng, const AcdTarget& target) const {
   AcdDraw draw;
   draw.uniform = false;
-  draw.position = target.position + target.sigma * Eigen::Vector2d(normal(rng), normal(rng));
+  const double dx = StandardNormal(rng), dy = StandardNormal(rng);
+  draw.position = target.position + target.sigma * Eigen::Vector2d(dx, dy);
   if (target.opening && options_.orientation == AcdOrientation::kAligned) {
-    std::uniform_int_distribution<int> flip(0, 1);
     draw.has_yaw = true;
-    double yaw = target.across - options_.long_axis + (flip(rng) ? M_PI : 0.0) +
-                 options_.aligned_jitter * normal(rng);
+    const double flip = UniformIndex(rng, 2) ? M_PI : 0.0;
+    const double yaw =
+        target.across - options_.long_axis + flip + options_.aligned_jitter * StandardNormal(rng);
     draw.yaw = std::remainder(yaw, 2 * M_PI);
   }
   return draw;
 }
 
-AcdDraw AcdTargets::Draw(std::mt19937_64& rng) const {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  if (targets_.empty() || unit(rng) < options_.uniform_share) return AcdDraw{};
-  const double u = unit(rng) * cumulative_.back();
+AcdDraw AcdTargets::Draw(RandomEngine& rng) const {
+  if (targets_.empty() || UniformReal(rng, 0.0, 1.0) < options_.uniform_share) return AcdDraw{};
+  const double u = UniformReal(rng, 0.0, 1.0) * cumulative_.back();
   const size_t index = std::min<size_t>(
       std::upper_bound(cumulative_.begin(), cumulative_.end(), u) - cumulative_.begin(),
       targets_.size() - 1);
   return DrawAround(rng, targets_[index]);
 }
 
-AcdDraw AcdTargets::DrawNear(std::mt19937_64& rng, const Eigen::Vector2d& near,
+AcdDraw AcdTargets::DrawNear(RandomEngine& rng, const Eigen::Vector2d& near,
                              double radius) const {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  if (targets_.empty() || unit(rng) < options_.uniform_share) return AcdDraw{};
+  if (targets_.empty() || UniformReal(rng, 0.0, 1.0) < options_.uniform_share) return AcdDraw{};
   double sum = 0;
   std::vector<std::pair<double, size_t>> candidates;
   for (size_t i = 0; i < targets_.size(); ++i) {
@@ -88,18 +86,11 @@ AcdDraw AcdTargets::DrawNear(std::mt19937_64& rng, const Eigen::Vector2d& near,
     }
   }
   if (candidates.empty() || !(sum > 0)) return AcdDraw{};
-  const double u = unit(rng) * sum;
+  const double u = UniformReal(rng, 0.0, 1.0) * sum;
   for (const auto& [prefix, i] : candidates) {
     if (u < prefix) return DrawAround(rng, targets_[i]);
   }
   return DrawAround(rng, targets_[candidates.back().second]);
-}
-
-std::uint64_t DeriveSeed(std::uint64_t seed, std::uint64_t index) {
-  std::uint64_t z = seed + 0x9E3779B97F4A7C15ULL * (index + 1);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
 }
 
 }  // namespace acdplan::planning::internal

@@ -3,7 +3,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
-#include <random>
+#include "base/random.h"
 #include <vector>
 
 #include "acd/decomposition2d.h"
@@ -37,20 +37,17 @@ class AcdTargets {
   const AcdSamplerOptions& options() const { return options_; }
 
   /// Draws a target-based sample (or says "uniform") with `rng`.
-  AcdDraw Draw(std::mt19937_64& rng) const;
+  AcdDraw Draw(RandomEngine& rng) const;
 
   /// As Draw(), restricted to targets within `radius` of `near` (uniform if there are none).
-  AcdDraw DrawNear(std::mt19937_64& rng, const Eigen::Vector2d& near, double radius) const;
+  AcdDraw DrawNear(RandomEngine& rng, const Eigen::Vector2d& near, double radius) const;
 
  private:
-  AcdDraw DrawAround(std::mt19937_64& rng, const AcdTarget& target) const;
+  AcdDraw DrawAround(RandomEngine& rng, const AcdTarget& target) const;
 
   AcdSamplerOptions options_;
   std::vector<AcdTarget> targets_;
   std::vector<double> cumulative_;  ///< Prefix sums of the weights.
 };
-
-/// A well-mixed seed for the `index`-th sampler made from `seed` (SplitMix64).
-std::uint64_t DeriveSeed(std::uint64_t seed, std::uint64_t index);
 
 }  // namespace acdplan::planning::internal

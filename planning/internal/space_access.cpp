@@ -50,16 +50,12 @@ int Coordinates(SpaceKind kind, ob::State* state, double* out[3]) {
   return 0;
 }
 
-double Uniform(std::mt19937_64& rng, double low, double high) {
-  return std::uniform_real_distribution<double>(low, high)(rng);
-}
-
 double Clamp(double x, double low, double high) { return std::min(std::max(x, low), high); }
 
 /// Uniform random unit quaternion (Shoemake).
-Eigen::Quaterniond RandomRotation(std::mt19937_64& rng) {
-  const double u1 = Uniform(rng, 0, 1), u2 = Uniform(rng, 0, 2 * M_PI),
-               u3 = Uniform(rng, 0, 2 * M_PI);
+Eigen::Quaterniond RandomRotation(RandomEngine& rng) {
+  const double u1 = UniformReal(rng, 0, 1), u2 = UniformReal(rng, 0, 2 * M_PI),
+               u3 = UniformReal(rng, 0, 2 * M_PI);
   const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
   return Eigen::Quaterniond(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2),
                             b * std::sin(u3));
@@ -78,10 +74,10 @@ void SetRotation(ob::State* state, const Eigen::Quaterniond& q_in) {
 
 /// `base` turned by an angle (`angle_of(rng)`) about a random axis.
 template <typename Angle>
-Eigen::Quaterniond Perturbed(const Eigen::Quaterniond& base, std::mt19937_64& rng,
+Eigen::Quaterniond Perturbed(const Eigen::Quaterniond& base, RandomEngine& rng,
                              Angle angle_of) {
-  std::normal_distribution<double> normal(0, 1);
-  Eigen::Vector3d axis(normal(rng), normal(rng), normal(rng));
+  const double x = StandardNormal(rng), y = StandardNormal(rng), z = StandardNormal(rng);
+  Eigen::Vector3d axis(x, y, z);
   if (axis.norm() < 1e-12) axis = Eigen::Vector3d::UnitZ();
   return base * Eigen::Quaterniond(Eigen::AngleAxisd(angle_of(rng), axis.normalized()));
 }
@@ -107,20 +103,20 @@ SpaceKind Classify(const ob::StateSpace* space) {
 }
 
 void SampleUniform(SpaceKind kind, const ob::StateSpace* space, ob::State* state,
-                   std::mt19937_64& rng) {
+                   RandomEngine& rng) {
   const ob::RealVectorBounds& bounds = Bounds(kind, space);
   double* x[3] = {nullptr, nullptr, nullptr};
   const int n = Coordinates(kind, state, x);
-  for (int i = 0; i < n; ++i) *x[i] = Uniform(rng, bounds.low[i], bounds.high[i]);
+  for (int i = 0; i < n; ++i) *x[i] = UniformReal(rng, bounds.low[i], bounds.high[i]);
   if (kind == SpaceKind::kSE2) {
-    state->as<ob::SE2StateSpace::StateType>()->setYaw(Uniform(rng, -M_PI, M_PI));
+    state->as<ob::SE2StateSpace::StateType>()->setYaw(UniformReal(rng, -M_PI, M_PI));
   } else if (kind == SpaceKind::kSE3) {
     SetRotation(state, RandomRotation(rng));
   }
 }
 
 bool SetFromDraw(SpaceKind kind, const ob::StateSpace* space, const AcdDraw& draw,
-                 ob::State* state, std::mt19937_64& rng) {
+                 ob::State* state, RandomEngine& rng) {
   const ob::RealVectorBounds& bounds = Bounds(kind, space);
   for (int i = 0; i < 2; ++i) {
     if (draw.position[i] < bounds.low[i] || draw.position[i] > bounds.high[i]) return false;
@@ -130,8 +126,8 @@ bool SetFromDraw(SpaceKind kind, const ob::StateSpace* space, const AcdDraw& dra
   *x[0] = draw.position.x();
   *x[1] = draw.position.y();
   // A 2D decomposition says nothing about z: uniform over the bounds (3D ACD targets later).
-  if (n == 3) *x[2] = Uniform(rng, bounds.low[2], bounds.high[2]);
-  const double yaw = draw.has_yaw ? draw.yaw : Uniform(rng, -M_PI, M_PI);
+  if (n == 3) *x[2] = UniformReal(rng, bounds.low[2], bounds.high[2]);
+  const double yaw = draw.has_yaw ? draw.yaw : UniformReal(rng, -M_PI, M_PI);
   if (kind == SpaceKind::kSE2) {
     state->as<ob::SE2StateSpace::StateType>()->setYaw(yaw);
   } else if (kind == SpaceKind::kSE3) {
@@ -163,7 +159,7 @@ Eigen::Vector2d Xy(SpaceKind kind, const ob::State* state) {
 }
 
 void SampleUniformNear(SpaceKind kind, const ob::StateSpace* space, ob::State* state,
-                       const ob::State* near, double distance, std::mt19937_64& rng) {
+                       const ob::State* near, double distance, RandomEngine& rng) {
   const ob::RealVectorBounds& bounds = Bounds(kind, space);
   double* x[3] = {nullptr, nullptr, nullptr};
   double* c[3] = {nullptr, nullptr, nullptr};
@@ -172,24 +168,23 @@ void SampleUniformNear(SpaceKind kind, const ob::StateSpace* space, ob::State* s
   for (int i = 0; i < n; ++i) {
     const double low = std::max(bounds.low[i], *c[i] - distance);
     const double high = std::min(bounds.high[i], *c[i] + distance);
-    *x[i] = low < high ? Uniform(rng, low, high) : Clamp(*c[i], bounds.low[i], bounds.high[i]);
+    *x[i] = low < high ? UniformReal(rng, low, high) : Clamp(*c[i], bounds.low[i], bounds.high[i]);
   }
   if (kind == SpaceKind::kSE2) {
     const double yaw = near->as<ob::SE2StateSpace::StateType>()->getYaw() +
-                       Uniform(rng, -std::min(distance, M_PI), std::min(distance, M_PI));
+                       UniformReal(rng, -std::min(distance, M_PI), std::min(distance, M_PI));
     state->as<ob::SE2StateSpace::StateType>()->setYaw(std::remainder(yaw, 2 * M_PI));
   } else if (kind == SpaceKind::kSE3) {
     const double limit = std::min(distance, M_PI);
     SetRotation(state, Perturbed(GetRotation(near), rng,
-                                 [limit](std::mt19937_64& g) { return Uniform(g, -limit, limit); }));
+                                 [limit](RandomEngine& g) { return UniformReal(g, -limit, limit); }));
   }
 }
 
 void SampleGaussian(SpaceKind kind, const ob::StateSpace* space, ob::State* state,
-                    const ob::State* mean, double stddev, std::mt19937_64& rng) {
+                    const ob::State* mean, double stddev, RandomEngine& rng) {
   const ob::RealVectorBounds& bounds = Bounds(kind, space);
-  std::normal_distribution<double> normal(0.0, stddev > 0 ? stddev : 0.0);
-  auto gauss = [&](std::mt19937_64& g) { return stddev > 0 ? normal(g) : 0.0; };
+  auto gauss = [stddev](RandomEngine& g) { return stddev > 0 ? stddev * StandardNormal(g) : 0.0; };
   double* x[3] = {nullptr, nullptr, nullptr};
   double* c[3] = {nullptr, nullptr, nullptr};
   const int n = Coordinates(kind, state, x);

@@ -3,7 +3,7 @@
 
 #include <Eigen/Core>
 #include <ompl/base/StateSpace.h>
-#include <random>
+#include "base/random.h"
 
 #include "planning/internal/acd_targets.h"
 
@@ -17,13 +17,13 @@ SpaceKind Classify(const ompl::base::StateSpace* space);
 
 /// Uniform over the space's bounds (uniform yaw / uniform rotation).
 void SampleUniform(SpaceKind kind, const ompl::base::StateSpace* space,
-                   ompl::base::State* state, std::mt19937_64& rng);
+                   ompl::base::State* state, RandomEngine& rng);
 
 /// Writes `draw` (a target-based draw) into `state`: x, y from the draw; z (3D) uniform over
 /// the bounds; the yaw from the draw if it has one, else uniform; SE(3) rotations uniform (or
 /// a rotation about z by the draw's yaw). @returns false if x, y fall outside the bounds.
 bool SetFromDraw(SpaceKind kind, const ompl::base::StateSpace* space, const AcdDraw& draw,
-                 ompl::base::State* state, std::mt19937_64& rng);
+                 ompl::base::State* state, RandomEngine& rng);
 
 /// Sets only x, y of `state`. @returns false (and changes nothing) outside the bounds.
 bool SetXy(SpaceKind kind, const ompl::base::StateSpace* space, ompl::base::State* state,
@@ -36,12 +36,12 @@ Eigen::Vector2d Xy(SpaceKind kind, const ompl::base::State* state);
 /// clipped to the bounds.
 void SampleUniformNear(SpaceKind kind, const ompl::base::StateSpace* space,
                        ompl::base::State* state, const ompl::base::State* near, double distance,
-                       std::mt19937_64& rng);
+                       RandomEngine& rng);
 
 /// Gaussian around `mean`, `stddev` per coordinate (rotation: random axis, Gaussian angle),
 /// clipped to the bounds.
 void SampleGaussian(SpaceKind kind, const ompl::base::StateSpace* space,
                     ompl::base::State* state, const ompl::base::State* mean, double stddev,
-                    std::mt19937_64& rng);
+                    RandomEngine& rng);
 
 }  // namespace acdplan::planning::internal

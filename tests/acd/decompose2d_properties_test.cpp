@@ -20,7 +20,7 @@
 #include "acd/check_decomposition.h"
 #include "acd/concavity.h"
 #include "acd/decompose2d.h"
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "acd/prepare_polygon.h"
 #include "acd/read_polygons.h"
 
@@ -141,7 +141,7 @@ TEST(Decompose2dCorpusTest, CorpusIsComplete) {
 std::string ErrorOf(const std::string& path) {
   try {
     ReadPolygons(path);
-  } catch (const InputError& error) {
+  } catch (const acdplan::InputError& error) {
     return error.what();
   }
   return "";
@@ -186,7 +186,7 @@ Polygon2d SquareWithHole() {
 std::string OptionsError(const Decompose2dOptions& options) {
   try {
     Decompose2d(LShape(), options);
-  } catch (const InputError& error) {
+  } catch (const acdplan::InputError& error) {
     return error.what();
   }
   return "";

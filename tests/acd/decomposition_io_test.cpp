@@ -212,9 +212,10 @@ TEST(DecompositionToSvgTest, DrawsComponentsOpeningsNotchesAndCaption) {
 
 TEST(DecompositionToSvgTest, FlipsTheYAxis) {
   // The bottom rectangle (y in [0, 1]) must be drawn below the top one (y in [1, 3]): larger
-  // SVG y. Drawing spans y in [0, 4] (the ring), so y = 0 maps to SVG y 4.
+  // SVG y. The drawing spans [0, 7] x [0, 2] (900 / 7 pixels per unit) after a 36-pixel
+  // margin, so y = 0 maps to SVG y 36 + 2 x 900 / 7 = 293.143.
   const std::string svg = DecompositionToSvg(HandBuilt(), {"l.poly", -1.0});
-  EXPECT_NE(svg.find("d=\"M0,4 L4,4 L4,3 L2,3 L0,3 Z\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("d=\"M36,293.143 L293.143,293.143 L293.143,228.857 L164.571,228.857 L36,228.857 Z\""), std::string::npos) << svg;
   EXPECT_EQ(svg.find("tau_rel"), std::string::npos);
 }
 
@@ -223,86 +224,6 @@ TEST(DecompositionToSvgTest, EmptyDecompositionStillRenders) {
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_EQ(svg.find("nan"), std::string::npos);
   EXPECT_EQ(svg.find("inf"), std::string::npos);
-}
-
-class WriteFileAtomicallyTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("acdplan_write_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add, ignored);
-    fs::remove_all(dir_, ignored);
-  }
-  static std::string Read(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-  int FileCount() const {
-    int n = 0;
-    for (auto it = fs::recursive_directory_iterator(dir_); it != fs::recursive_directory_iterator();
-         ++it) {
-      n += it->is_regular_file() ? 1 : 0;
-    }
-    return n;
-  }
-  fs::path dir_;
-};
-
-TEST_F(WriteFileAtomicallyTest, CreatesDirectoriesAndLeavesNoTemporaryFile) {
-  const fs::path path = dir_ / "a" / "b" / "out.json";
-  WriteFileAtomically(path.string(), "first");
-  EXPECT_EQ(Read(path), "first");
-  WriteFileAtomically(path.string(), "second, longer");  // replaces
-  EXPECT_EQ(Read(path), "second, longer");
-  EXPECT_EQ(FileCount(), 1);
-}
-
-TEST_F(WriteFileAtomicallyTest, FailsClearlyOnAnUnwritablePath) {
-  fs::create_directories(dir_);
-  // A directory where the file should be: rename() cannot replace it.
-  const fs::path path = dir_ / "taken";
-  fs::create_directories(path);
-  try {
-    WriteFileAtomically(path.string(), "x");
-    FAIL() << "expected std::runtime_error";
-  } catch (const std::runtime_error& error) {
-    EXPECT_NE(std::string(error.what()).find(path.string()), std::string::npos) << error.what();
-  }
-  EXPECT_EQ(FileCount(), 0);
-
-  // A parent that is a regular file.
-  std::ofstream(dir_ / "file") << "x";
-  const fs::path below_file = dir_ / "file" / "out.svg";
-  try {
-    WriteFileAtomically(below_file.string(), "x");
-    FAIL() << "expected std::runtime_error";
-  } catch (const std::runtime_error& error) {
-    EXPECT_NE(std::string(error.what()).find(below_file.string()), std::string::npos)
-        << error.what();
-  }
-  EXPECT_EQ(FileCount(), 1);
-}
-
-TEST_F(WriteFileAtomicallyTest, FailsClearlyInAReadOnlyDirectory) {
-  if (::geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions";
-  fs::create_directories(dir_);
-  fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec);
-  const fs::path path = dir_ / "out.json";
-  try {
-    WriteFileAtomically(path.string(), "x");
-    FAIL() << "expected std::runtime_error";
-  } catch (const std::runtime_error& error) {
-    EXPECT_NE(std::string(error.what()).find(path.string()), std::string::npos) << error.what();
-  }
-  fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add);
-  EXPECT_EQ(FileCount(), 0);
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {
@@ -22,7 +22,7 @@ std::vector<Polygon2d> Read(const std::string& text) {
 std::string ErrorOf(const std::string& text) {
   try {
     Read(text);
-  } catch (const InputError& error) {
+  } catch (const acdplan::InputError& error) {
     return error.what();
   }
   return "";

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {
@@ -22,7 +22,7 @@ std::vector<Polygon2d> Read(const std::string& text) {
 std::string ErrorOf(const std::string& text) {
   try {
     Read(text);
-  } catch (const InputError& error) {
+  } catch (const acdplan::InputError& error) {
     return error.what();
   }
   return "";
@@ -66,7 +66,7 @@ TEST(PolyReaderTest, BirdPolyLine47IsAMalformedNumber) {
   try {
     ReadPoly(in, "bird.poly");
     FAIL() << "bird.poly was accepted";
-  } catch (const InputError& error) {
+  } catch (const acdplan::InputError& error) {
     EXPECT_STREQ(error.what(), "bird.poly:47: malformed number '-6.64248.788605'");
   }
 }

@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {
@@ -19,11 +19,11 @@ Ring2d Square(double x0, double y0, double size) {
   return {{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}};
 }
 
-// The message of the InputError PreparePolygon() throws, or "" if it does not throw.
+// The message of the acdplan::InputError PreparePolygon() throws, or "" if it does not throw.
 std::string ErrorOf(const Polygon2d& raw) {
   try {
     PreparePolygon(raw, "test.poly: polygon 0");
-  } catch (const InputError& error) {
+  } catch (const acdplan::InputError& error) {
     return error.what();
   }
   return "";

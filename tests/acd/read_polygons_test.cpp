@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {
@@ -20,7 +20,7 @@ const fs::path kAcd2d = fs::path(ACDPLAN_DATA_DIR) / "polygons" / "acd2d";
 std::string ErrorOf(const std::string& path) {
   try {
     ReadPolygons(path);
-  } catch (const InputError& error) {
+  } catch (const acdplan::InputError& error) {
     return error.what();
   }
   return "";
@@ -51,7 +51,7 @@ TEST(ReadPolygonsTest, DispatchesByExtensionCaseInsensitiveAndPrepares) {
 
 TEST(ReadPolygonsTest, FileErrors) {
   EXPECT_THAT(ErrorOf("/nonexistent/shape.poly"),
-              HasSubstr("/nonexistent/shape.poly: cannot read file: No such file or directory"));
+              HasSubstr("/nonexistent/shape.poly: cannot read the file: No such file or directory"));
   EXPECT_THAT(ErrorOf("shape.svg"), HasSubstr("shape.svg: unknown polygon file extension '.svg'"));
   const std::string empty = WriteTemp("empty.wkt", "POLYGON EMPTY");
   EXPECT_THAT(ErrorOf(empty), HasSubstr("empty.wkt: no polygon in file"));

@@ -6,7 +6,7 @@
 #include <string>
 #include <thread>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "envs/generators.h"
 #include "envs/mesh_loader.h"
 #include "test_worlds.h"
@@ -44,7 +44,7 @@ Eigen::Isometry2d At(double x, double y, double theta = 0) {
 TEST(CollisionWorld, DiscNearASquareInEveryMode) {
   const CollisionWorld world(SquareSet(), envs::Robot::Disc(0.25));
   for (CollisionMode mode : AllCollisionModes()) {
-    SCOPED_TRACE(ModeName(mode));
+    SCOPED_TRACE(ToString(mode));
     EXPECT_TRUE(world.IsValid(At(3, 1), mode));
     EXPECT_FALSE(world.IsValid(At(2.2, 1), mode));  // overlaps the right wall
     // Entirely inside the obstacle: no surface contact, the containment test must see it.
@@ -57,7 +57,7 @@ TEST(CollisionWorld, DiscNearASquareInEveryMode) {
 TEST(CollisionWorld, PolygonRobotInsideAndAroundAnObstacle) {
   const CollisionWorld world(SquareSet(), testing::LRobot());
   for (CollisionMode mode : AllCollisionModes()) {
-    SCOPED_TRACE(ModeName(mode));
+    SCOPED_TRACE(ToString(mode));
     EXPECT_FALSE(world.IsValid(At(1, 1, 0.3), mode));  // inside
     EXPECT_TRUE(world.IsValid(At(-1, 1, 0.3), mode));
     EXPECT_FALSE(world.IsValid(At(2.25, 1, 0.0), mode));  // straddles x = 2
@@ -87,7 +87,7 @@ TEST(CollisionWorld, HullsAreConservativeNearAConcaveFeature) {
 TEST(CollisionWorld, PointRobotIsLocatedExactly) {
   const CollisionWorld world(SquareSet(), envs::Robot::Point());
   for (CollisionMode mode : AllCollisionModes()) {
-    SCOPED_TRACE(ModeName(mode));
+    SCOPED_TRACE(ToString(mode));
     EXPECT_FALSE(world.IsValid(At(1, 1), mode));
     EXPECT_FALSE(world.IsValid(At(2, 1), mode));  // on the boundary: contact
     EXPECT_TRUE(world.IsValid(At(2.001, 1), mode));
@@ -142,7 +142,7 @@ TEST(CollisionWorld, RejectsARobotOfTheWrongDimension) {
   try {
     CollisionWorld world(SquareSet(), envs::Robot::Mesh(testing::CubeMesh(0.1)));
     FAIL() << "no error";
-  } catch (const acd::InputError& e) {
+  } catch (const acdplan::InputError& e) {
     EXPECT_STREQ(e.what(),
                  "CollisionWorld(): a mesh robot moves in 3D; this world is 2D (use a point, a "
                  "disc or a polygon)");
@@ -154,7 +154,7 @@ TEST(CollisionWorld, RejectsARobotOfTheWrongDimension) {
   try {
     CollisionWorld world(set3, envs::Robot::Disc(0.1));
     FAIL() << "no error";
-  } catch (const acd::InputError& e) {
+  } catch (const acdplan::InputError& e) {
     EXPECT_STREQ(e.what(),
                  "CollisionWorld(): a disc robot moves in the plane; this world is 3D (use a "
                  "mesh or a point)");
@@ -170,7 +170,7 @@ TEST_P(BuiltInWorlds, HullsExactEqualsBvhAndHullsAreConservative) {
   const auto poses = testing::RandomPoses2d(workspace.bounds, testing::kPosesPerWorld, 20240611);
   const envs::Robot robots[] = {envs::Robot::Disc(0.2), testing::LRobot()};
   for (const envs::Robot& robot : robots) {
-    SCOPED_TRACE(envs::ShapeName(robot.shape));
+    SCOPED_TRACE(ToString(robot.shape));
     const CollisionWorld world(set, robot);
     int mismatches = 0, missed = 0, collisions = 0, false_positives = 0;
     for (const auto& pose : poses) {
@@ -187,7 +187,7 @@ TEST_P(BuiltInWorlds, HullsExactEqualsBvhAndHullsAreConservative) {
     // Sanity: the worlds are neither empty nor full for these robots.
     EXPECT_GT(collisions, testing::kPosesPerWorld / 50);
     EXPECT_LT(collisions, testing::kPosesPerWorld);
-    RecordProperty(envs::ShapeName(robot.shape) + "_hull_false_positives", false_positives);
+    RecordProperty(ToString(robot.shape) + "_hull_false_positives", false_positives);
   }
 }
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "envs/generators.h"
 #include "envs/mesh_loader.h"
 #include "test_worlds.h"
@@ -15,7 +15,7 @@ namespace {
 std::string ErrorOf(const std::function<void()>& f) {
   try {
     f();
-  } catch (const acd::InputError& e) {
+  } catch (const acdplan::InputError& e) {
     return e.what();
   }
   return "";

@@ -6,7 +6,7 @@
 #include <random>
 #include <string>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "envs/generators.h"
 #include "envs/mesh_loader.h"
 #include "test_worlds.h"
@@ -44,7 +44,7 @@ TEST(PointLocator2d, HullsCoverTheHoleOnlyWhereAComponentDoes) {
   EXPECT_TRUE(hulls.Inside(Eigen::Vector2d(4, 4)));
   EXPECT_FALSE(hulls.Inside(Eigen::Vector2d(-0.1, 2)));
   EXPECT_EQ(hulls.method(), LocateMethod::kHulls);
-  EXPECT_EQ(LocateMethodName(LocateMethod::kHulls), "hulls");
+  EXPECT_EQ(ToString(LocateMethod::kHulls), "hulls");
 }
 
 TEST(PointLocator2d, HullsNeverSayOutsideWhereExactSaysInsideOnBuiltInWorlds) {
@@ -120,7 +120,7 @@ TEST(PointLocator3d, ExactRefusesAnOpenMesh) {
   try {
     PointLocator exact(set, LocateMethod::kExact);
     FAIL() << "no error";
-  } catch (const acd::InputError& e) {
+  } catch (const acdplan::InputError& e) {
     EXPECT_STREQ(e.what(),
                  "PointLocator(): exact point location needs closed obstacle meshes: obstacle 0 "
                  "(connected component 0) is open: 4 edges are not shared by exactly two "

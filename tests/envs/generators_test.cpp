@@ -29,7 +29,7 @@ TEST_P(GeneratorTest, FreeSpaceIsValidAndDecomposes) {
   for (double width : {0.0, 0.25}) {
     for (std::uint64_t seed : {1, 2, 3}) {
       SCOPED_TRACE("width " + std::to_string(width) + " seed " + std::to_string(seed));
-      const Workspace2d world = GenerateWorkspace2d(GetParam(), seed, width);
+      const Workspace2d world = GenerateWorkspace2d(GetParam(), seed, {width});
       const std::vector<acd::Polygon2d> free = FreeSpace2d(world);
       ASSERT_FALSE(free.empty());
       // Every narrow-passage world is one connected region (its passage connects it), except
@@ -102,12 +102,30 @@ TEST(GeneratorsTest, SpiralCorridorWidth) {
   EXPECT_NEAR(acd::Area(w.obstacles[0]), length * options.wall_thickness, 1e-9);
 }
 
+TEST(GeneratorsTest, ByNameAppliesTheSetParametersOnly) {
+  GeneratorParameters p;
+  p.passage_width = 0.3;
+  p.wall_thickness = 0.7;
+  WallGapOptions gap;
+  gap.passage_width = 0.3;
+  gap.wall_thickness = 0.7;
+  EXPECT_EQ(GenerateWorkspace2d("wall_gap", 4, p).obstacles[0].outer,
+            MakeWallWithGap(4, gap).obstacles[0].outer);
+  MazeOptions maze;
+  maze.passage_width = 0.3;  // wall_thickness 0 keeps the default
+  p.wall_thickness = 0.0;
+  EXPECT_EQ(GenerateWorkspace2d("maze", 4, p).obstacles[0].outer, MakeMaze(4, maze).obstacles[0].outer);
+}
+
 TEST(GeneratorsTest, Errors) {
   EXPECT_THAT(ErrorOf([] { GenerateWorkspace2d("castle", 1); }),
-              HasSubstr("GenerateWorkspace2d(): unknown generator 'castle' (known: wall_gap, "
+              HasSubstr("GenerateWorkspace2d(): unknown generator 'castle' (expected one of: wall_gap, "
                         "zigzag, bug_trap, two_rooms, spiral, maze)"));
-  EXPECT_THAT(ErrorOf([] { GenerateWorkspace2d("maze", 1, -1); }),
+  EXPECT_THAT(ErrorOf([] { GenerateWorkspace2d("maze", 1, {-1}); }),
               HasSubstr("passage_width must be >= 0"));
+  EXPECT_THAT(ErrorOf([] { GenerateWorkspace2d("zigzag", 1, {0, 0.5}); }),
+              HasSubstr("GenerateWorkspace2d(): wall_thickness is not an option of generator "
+                        "'zigzag'"));
   WallGapOptions gap;
   gap.passage_width = 8;
   EXPECT_THAT(ErrorOf([&] { MakeWallWithGap(1, gap); }),

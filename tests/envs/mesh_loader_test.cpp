@@ -91,7 +91,7 @@ TEST(ReadMeshTest, ReadsSharedMeshes) {
 TEST(ReadMeshTest, Errors) {
   TempDir dir;
   EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Path("none.obj")); }),
-              HasSubstr("none.obj: cannot read mesh: No such file or directory"));
+              HasSubstr("none.obj: cannot read the file: No such file or directory"));
   EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("bad.ply", "ply\nformat nonsense\n")); }),
               HasSubstr("bad.ply: cannot read mesh: "));
   EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("bad.xyz123", "hello")); }),

@@ -72,7 +72,7 @@ TEST(MovingAiMapTest, Errors) {
     return ErrorOf([&] { ReadMovingAiMap(path); });
   };
   EXPECT_THAT(ErrorOf([&] { ReadMovingAiMap(dir.Path("none.map")); }),
-              HasSubstr("none.map: cannot read file: No such file or directory"));
+              HasSubstr("none.map: cannot read the file: No such file or directory"));
   EXPECT_THAT(error("height 1\nwidth 1\nmap\n.\n"),
               HasSubstr("bad.map:3: missing 'type octile' before 'map'"));
   EXPECT_THAT(error("type tile\n"), HasSubstr("bad.map:1: unsupported map type 'tile'"));

@@ -133,7 +133,7 @@ TEST(OccupancyMapTest, YamlErrors) {
               HasSubstr("map.yaml: image: expected a string"));
   EXPECT_THAT(error("image: map.pgm\nresolution: [1\n"),
               HasSubstr("map.yaml:3: YAML syntax error: end of sequence flow not found"));
-  EXPECT_THAT(error("- image\n"), HasSubstr("map.yaml: expected a YAML mapping of keys"));
+  EXPECT_THAT(error("- image\n"), HasSubstr("map.yaml: expected a mapping of keys, got a list"));
 }
 
 TEST(OccupancyMapTest, ImageErrors) {
@@ -145,8 +145,8 @@ TEST(OccupancyMapTest, ImageErrors) {
     return ErrorOf([&] { ReadOccupancyMap(path); });
   };
   EXPECT_THAT(error("missing.pgm", ""),
-              HasSubstr("map.yaml: image: cannot read '" + dir.Path("missing.pgm") +
-                        "': No such file or directory"));
+              HasSubstr("map.yaml: image: " + dir.Path("missing.pgm") +
+                        ": cannot read the file: No such file or directory"));
   EXPECT_THAT(error("a.pgm", "P6 1 1 255\n..."),
               HasSubstr("a.pgm: not a PGM image (expected magic 'P2' or 'P5')"));
   EXPECT_THAT(error("b.pgm", "P5 4 x 255\n"),

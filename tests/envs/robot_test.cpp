@@ -28,7 +28,7 @@ TEST(RobotTest, ShapesAndBoundingRadius) {
   tri.triangles.resize(1, 3);
   tri.triangles << 0, 1, 2;
   EXPECT_DOUBLE_EQ(Robot::Mesh(tri).BoundingRadius(), 4.0);
-  EXPECT_EQ(ShapeName(RobotShape::kMesh), "mesh");
+  EXPECT_EQ(ToString(RobotShape::kMesh), "mesh");
 }
 
 TEST(RobotTest, Transformed) {

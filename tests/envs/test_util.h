@@ -10,7 +10,7 @@
 
 #include "acd/check_decomposition.h"
 #include "acd/decompose2d.h"
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "acd/polygon2d.h"
 #include "acd/prepare_polygon.h"
 
@@ -42,12 +42,12 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-/// The InputError message `f()` throws, or "" when it throws nothing.
+/// The acdplan::InputError message `f()` throws, or "" when it throws nothing.
 template <typename F>
 std::string ErrorOf(F f) {
   try {
     f();
-  } catch (const acd::InputError& error) {
+  } catch (const acdplan::InputError& error) {
     return error.what();
   }
   return "";

@@ -91,12 +91,12 @@ TEST(Workspace2dYamlTest, Errors) {
   EXPECT_THAT(error(b + "obstacles:\n  - 3\n"),
               HasSubstr("world.yaml: obstacles[0]: expected a mapping of keys"));
   EXPECT_THAT(error(b + "obstacles:\n  - file: nothere.wkt\n"),
-              HasSubstr("nothere.wkt: cannot read file: No such file or directory"));
+              HasSubstr("nothere.wkt: cannot read the file: No such file or directory"));
   EXPECT_THAT(error(b + "obstacles:\n  - polygon: [[0, 0], [2, 2], [2, 0], [0, 1]]\n"),
               HasSubstr("world.yaml: obstacles[0]: outer ring is not simple"));
   EXPECT_THAT(error(b + "obstacles: [\n"), HasSubstr("world.yaml:3: YAML syntax error"));
   EXPECT_THAT(ErrorOf([&] { LoadWorkspace2dYaml(dir.Path("none.yaml")); }),
-              HasSubstr("none.yaml: cannot read file: No such file or directory"));
+              HasSubstr("none.yaml: cannot read the file: No such file or directory"));
 }
 
 TEST(Workspace3dYamlTest, MeshesWithScaleAndTranslation) {
@@ -125,7 +125,7 @@ TEST(Workspace3dYamlTest, Errors) {
   EXPECT_THAT(error(b + "obstacles:\n  - {mesh: a.obj, scale: 0}\n"),
               HasSubstr("world.yaml: obstacles[0].scale: expected a number > 0"));
   EXPECT_THAT(error(b + "obstacles:\n  - {mesh: missing.obj}\n"),
-              HasSubstr("missing.obj: cannot read mesh: No such file or directory"));
+              HasSubstr("missing.obj: cannot read the file: No such file or directory"));
   // (A PLY: assimp 5.2 leaks memory on some malformed STL files, which LeakSanitizer reports.)
   dir.Write("broken.ply", "ply\nformat nonsense\n");
   EXPECT_THAT(error(b + "obstacles:\n  - {mesh: broken.ply}\n"),

@@ -37,7 +37,7 @@ std::shared_ptr<ob::SpaceInformation> Plane(const envs::Workspace2d& workspace) 
 }
 
 TEST(AcdPrm, LocatesEveryCentroidInItsComponent) {
-  const envs::Workspace2d world = envs::GenerateWorkspace2d("zigzag", 1, 0.2);
+  const envs::Workspace2d world = envs::GenerateWorkspace2d("zigzag", 1, {0.2});
   acd::Decompose2dOptions options;
   options.tau = 0.02 * world.bounds.sizes().norm();
   const acd::Decomposition2d decomposition = acd::Decompose2d(envs::FreeSpace2d(world), options);
@@ -52,25 +52,25 @@ TEST(AcdPrm, LocatesEveryCentroidInItsComponent) {
 
 TEST(AcdPrm, TheRegistryMakesItOnlyWithADecomposition) {
   const envs::Workspace2d world = envs::GenerateWorkspace2d("wall_gap", 1);
-  EXPECT_THROW(MakePlanner("PRM_ACD", Plane(world)), std::invalid_argument);
+  EXPECT_THROW(MakePlanner(PlannerType::kPrmAcd, Plane(world)), std::invalid_argument);
   const acd::Decomposition2d decomposition = acd::Decompose2d(envs::FreeSpace2d(world));
-  EXPECT_EQ(MakePlanner("PRM_ACD", Plane(world), &decomposition)->getName(), "PRM_ACD");
-  EXPECT_TRUE(SupportsSampleBudget("PRM_ACD"));
+  EXPECT_EQ(MakePlanner(PlannerType::kPrmAcd, Plane(world), &decomposition)->getName(), "PRM_ACD");
+  EXPECT_TRUE(HonoursSampleBudget(PlannerType::kPrmAcd));
 }
 
 // The zig-zag corridor of configs/zigzag.yaml narrowed to 0.1, 300 collision-free samples, ten
 // seeds (in a 20-run benchmark: 3 of 20 connected with PRM, 20 of 20 with PRM_ACD).
 TEST(AcdPrm, ConnectsTheAcdSamplesOfANarrowCorridor) {
   Scenario s = LoadScenario(kConfigs + "/zigzag.yaml");
-  s.workspace = envs::GenerateWorkspace2d("zigzag", 1, 0.1);
+  s.workspace = envs::GenerateWorkspace2d("zigzag", 1, {0.1});
   s.samples = 300;
-  s.sampler = "acd";
+  s.sampler = SamplerType::kAcd;
   int prm = 0, prm_acd = 0;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     s.seed = seed;
-    s.planner = "PRM";
+    s.planner = PlannerType::kPrm;
     prm += PlanScenario(s).solved;
-    s.planner = "PRM_ACD";
+    s.planner = PlannerType::kPrmAcd;
     const PlanResult result = PlanScenario(s);
     EXPECT_EQ(result.samples, 300u);
     if (result.solved) {

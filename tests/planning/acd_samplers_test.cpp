@@ -18,7 +18,7 @@
 #include <ompl/util/Console.h>
 
 #include "acd/decompose2d.h"
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "envs/free_space2d.h"
 #include "envs/generators.h"
 #include "planning/acd_state_sampler.h"
@@ -51,7 +51,7 @@ World Decomposed(envs::Workspace2d workspace) {
 }
 
 World MakeWorld(const std::string& generator, std::uint64_t seed, double width) {
-  return Decomposed(envs::GenerateWorkspace2d(generator, seed, width));
+  return Decomposed(envs::GenerateWorkspace2d(generator, seed, {width}));
 }
 
 /// A 2D point space over the world's bounds with the point-in-free-space checker.
@@ -235,8 +235,8 @@ TEST(AcdStateSampler, RejectsUnsupportedSpacesAndBadOptions) {
   options.uniform_share = 1.5;
   try {
     AcdStateSampler sampler(r2.get(), world.decomposition, options);
-    FAIL() << "expected InputError";
-  } catch (const acd::InputError& error) {
+    FAIL() << "expected acdplan::InputError";
+  } catch (const acdplan::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("uniform_share"), std::string::npos)
         << error.what();
   }

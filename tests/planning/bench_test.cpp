@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "planning/bench_record.h"
 #include "planning/bench_report.h"
 #include "planning/bench_runner.h"
@@ -56,7 +56,7 @@ std::string ReadText(const fs::path& path) {
 std::string ErrorOf(const std::string& text) {
   try {
     LoadBenchSpec(WriteBench("bad", text));
-  } catch (const acd::InputError& error) {
+  } catch (const acdplan::InputError& error) {
     return error.what();
   }
   return "";
@@ -163,7 +163,7 @@ TEST(BenchSpec, ShardSyntax) {
     try {
       ParseBenchShard(bad);
       ADD_FAILURE() << bad;
-    } catch (const acd::InputError& error) {
+    } catch (const acdplan::InputError& error) {
       EXPECT_HAS(error.what(), "expected I/N");
     }
   }
@@ -292,7 +292,7 @@ TEST(BenchRunner, ShardsMergedEqualTheUnshardedRun) {
   try {
     MergeBenchRecords({s1.string(), s1.string()}, &manifest, &records);
     ADD_FAILURE() << "merged a shard with itself";
-  } catch (const acd::InputError& error) {
+  } catch (const acdplan::InputError& error) {
     EXPECT_HAS(error.what(), "is also in");
   }
 }

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "acd/input_error.h"
+#include "base/input_error.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
 
@@ -19,8 +19,10 @@ const std::string kConfigs = std::string(ACDPLAN_SOURCE_DIR) + "/configs";
 /// Writes `text` to a scenario file in a scratch folder next to configs/ (so relative
 /// workspace paths like ../envs/2d/wall_gap.yaml resolve) and returns its path.
 std::string Write(const std::string& name, const std::string& text) {
+  // One folder per test: ctest runs the tests of this file in parallel processes.
   const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "acdplan_scenario_test";
+      std::filesystem::temp_directory_path() /
+      ("acdplan_scenario_test_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / name).string();
   std::ofstream(path) << text;
@@ -34,7 +36,7 @@ const std::string kQuery = "start: [2.5, 5]\ngoal: [7.5, 5]\n";
 std::string ErrorOf(const std::string& text) {
   try {
     LoadScenario(Write("bad.yaml", text));
-  } catch (const acd::InputError& error) {
+  } catch (const acdplan::InputError& error) {
     return error.what();
   }
   return "";
@@ -68,7 +70,7 @@ TEST(Scenario, ErrorsNameTheKeyPath) {
                 .find("planner.samples: expected an integer >= 1, got '0'"),
             std::string::npos);
   EXPECT_NE(ErrorOf(kWorld + "start: [2.5, x]\ngoal: [7.5, 5]\n")
-                .find("start[1]: expected a number, got 'x'"),
+                .find("start[1]: expected a finite number, got 'x'"),
             std::string::npos);
   EXPECT_NE(ErrorOf(kWorld + "start: [2.5, 5, 0]\ngoal: [7.5, 5]\n").find("start: expected [x, y]"),
             std::string::npos);
@@ -86,13 +88,52 @@ TEST(Scenario, ErrorsNameTheKeyPath) {
   EXPECT_NE(ErrorOf(kWorld + kQuery + "planner: [PRM\n").find("bad.yaml:"), std::string::npos);
 }
 
+TEST(Scenario, TypedFieldsAndTauDiag) {
+  const Scenario s = LoadScenario(Write(
+      "typed.yaml", kWorld + kQuery +
+                        "acd: {tau_diag: 0.03}\nplanner: {name: RRTConnect, time_limit: 1}\n"
+                        "sampler: {name: obstacle_based}\ncollision: {mode: bvh}\n"));
+  EXPECT_EQ(s.tau_diag, 0.03);
+  EXPECT_EQ(s.planner, PlannerType::kRrtConnect);
+  EXPECT_EQ(s.sampler, SamplerType::kObstacleBased);
+  EXPECT_EQ(s.collision_mode, collision::CollisionMode::kBvh);
+  EXPECT_TRUE(s.warnings.empty());
+}
+
+TEST(Scenario, TauRelIsTheOlderSpellingOfTauDiagWithAWarning) {
+  const Scenario s =
+      LoadScenario(Write("old.yaml", kWorld + kQuery + "acd: {tau_rel: 0.04, measure: sl}\n"));
+  EXPECT_EQ(s.tau_diag, 0.04);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("old.yaml: acd.tau_rel: read as tau_diag"), std::string::npos)
+      << s.warnings[0];
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "acd: {tau_rel: 0.04, tau_diag: 0.02}\n")
+                .find("bad.yaml: acd.tau_rel: give tau_diag only"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "acd: {tau_diag: -1}\n")
+                .find("bad.yaml: acd.tau_diag: expected a number >= 0, got '-1'"),
+            std::string::npos);
+}
+
+TEST(Scenario, UnknownNamesListTheKnownOnes) {
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "planner: {name: PRN}\n")
+                .find("bad.yaml: planner.name: unknown planner 'PRN' (expected one of: PRM, "
+                      "PRM_ACD, PRMstar, LazyPRM, RRT, RRTConnect, RRTstar, EST, KPIECE1, "
+                      "BKPIECE1, SBL)"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "collision: {mode: fast}\n")
+                .find("bad.yaml: collision.mode: unknown collision mode 'fast' (expected one of: "
+                      "bvh, hulls, hulls+exact)"),
+            std::string::npos);
+}
+
 TEST(Scenario, StartInCollisionIsAnInputError) {
   const Scenario s = LoadScenario(Write("wall.yaml", kWorld + "start: [5.0, 8.0]\ngoal: [7.5, 5]\n"
                                                               "planner: {samples: 10}\n"));
   try {
     PlanScenario(s);
-    FAIL() << "expected InputError";
-  } catch (const acd::InputError& error) {
+    FAIL() << "expected acdplan::InputError";
+  } catch (const acdplan::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("start: the robot is in collision"),
               std::string::npos)
         << error.what();
@@ -114,7 +155,7 @@ TEST(Scenario, DemoFigure4OutcomeThroughTheRunner) {
   int acd = 0, uniform = 0;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     s.seed = seed;
-    s.sampler = "acd";
+    s.sampler = SamplerType::kAcd;
     const PlanResult a = PlanScenario(s);
     EXPECT_EQ(a.samples, 200u);
     if (a.solved) {
@@ -122,7 +163,7 @@ TEST(Scenario, DemoFigure4OutcomeThroughTheRunner) {
       EXPECT_GT(a.path.size(), 2u);
       EXPECT_GT(a.path_length, 5.0 - 1e-9);
     }
-    s.sampler = "uniform";
+    s.sampler = SamplerType::kUniform;
     uniform += PlanScenario(s).solved;
   }
   EXPECT_GE(acd, 9);

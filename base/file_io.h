@@ -1,0 +1,20 @@
+#pragma once
+// Reading input files and writing output files, with one wording for their errors.
+
+#include <string>
+
+namespace acdplan {
+
+/// The whole of the file at `path`, bytes as they are.
+/// @throws InputError "<path>: cannot read the file: <reason>", where the reason is the
+///         system's ("No such file or directory") or "it is a directory".
+std::string ReadFile(const std::string& path);
+
+/// Writes `text` to `path` atomically: a temporary file in the same folder, renamed into place
+/// once complete, so a failed run never leaves a partial file that looks complete. Missing
+/// parent folders are created. The file gets the usual 0666 & ~umask permissions.
+/// @throws std::runtime_error "<path>: cannot write the file: <reason>"; no temporary file is
+///         left behind.
+void WriteFileAtomically(const std::string& path, const std::string& text);
+
+}  // namespace acdplan

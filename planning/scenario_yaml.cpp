@@ -1,0 +1,124 @@
+#include "planning/scenario_yaml.h"
+
+#include "base/input_error.h"
+#include "envs/generators.h"
+
+namespace acdplan::planning {
+
+envs::Workspace2d ReadGeneratedWorkspace(const YamlFile& file, const YAML::Node& node,
+                                         const std::string& key, std::string* label) {
+  auto child = [&key](const char* name) { return YamlFile::Child(key, name); };
+  file.CheckKeys(node, key, {"generator", "seed", "passage_width", "wall_thickness"});
+  if (!node["generator"]) file.Fail(child("generator"), "required (or give a file name)");
+  const std::string name = file.String(node["generator"], child("generator"));
+  const std::uint64_t seed =
+      node["seed"] ? file.Integer(node["seed"], child("seed"), "an integer >= 0", 0) : 1;
+  envs::GeneratorParameters parameters;
+  if (node["passage_width"]) {
+    parameters.passage_width = file.Number(node["passage_width"], child("passage_width"),
+                                           "a positive number", Positive);
+  }
+  if (node["wall_thickness"]) {
+    parameters.wall_thickness = file.Number(node["wall_thickness"], child("wall_thickness"),
+                                            "a positive number", Positive);
+  }
+  *label = "generator " + name + " (seed " + std::to_string(seed) + ")";
+  try {
+    return envs::GenerateWorkspace2d(name, seed, parameters);
+  } catch (const InputError& error) {
+    file.Fail(key, error.what());
+  }
+}
+
+void ReadAcdSamplerOptions(const YamlFile& file, const YAML::Node& node, const std::string& key,
+                           AcdSamplerOptions* options) {
+  auto child = [&key](const char* name) { return YamlFile::Child(key, name); };
+  if (node["uniform_share"]) {
+    options->uniform_share = file.Number(node["uniform_share"], child("uniform_share"), "a number in [0, 1]",
+                                UnitInterval);
+  }
+  if (node["opening_weight"]) {
+    options->opening_weight = file.Number(node["opening_weight"], child("opening_weight"), "a number >= 0",
+                                 NonNegative);
+  }
+  if (node["centroid_spread"]) {
+    options->centroid_spread = file.Number(node["centroid_spread"], child("centroid_spread"),
+                                  "a positive number", Positive);
+  }
+  if (node["opening_spread"]) {
+    options->opening_spread = file.Number(node["opening_spread"], child("opening_spread"),
+                                 "a positive number", Positive);
+  }
+  if (node["max_attempts"]) {
+    options->max_attempts = static_cast<int>(
+        file.Integer(node["max_attempts"], child("max_attempts"), "an integer >= 1", 1));
+  }
+  if (node["orientation"]) {
+    try {
+      options->orientation = ParseAcdOrientation(file.String(node["orientation"], child("orientation")));
+    } catch (const InputError& error) {
+      file.Fail(child("orientation"), error.what());
+    }
+  }
+}
+
+envs::Robot ReadRobot(const YamlFile& file, const YAML::Node& node, const std::string& key) {
+  using R = YamlFile;
+  file.CheckKeys(node, key, {"shape", "radius", "polygon"});
+  const std::string shape =
+      node["shape"] ? file.String(node["shape"], R::Child(key, "shape")) : "point";
+  const std::string radius_key = R::Child(key, "radius");
+  const std::string polygon_key = R::Child(key, "polygon");
+  try {
+    if (shape == "point") {
+      if (node["radius"]) file.Fail(radius_key, "only for shape disc");
+      if (node["polygon"]) file.Fail(polygon_key, "only for shape polygon");
+      return envs::Robot::Point();
+    }
+    if (shape == "disc") {
+      if (!node["radius"]) file.Fail(radius_key, "required for shape disc");
+      if (node["polygon"]) file.Fail(polygon_key, "only for shape polygon");
+      return envs::Robot::Disc(file.Number(node["radius"], radius_key, "a positive number", Positive));
+    }
+    if (shape == "polygon") {
+      if (!node["polygon"]) file.Fail(polygon_key, "required for shape polygon");
+      if (node["radius"]) file.Fail(radius_key, "only for shape disc");
+      const YAML::Node& list = node["polygon"];
+      if (!list.IsSequence() || list.size() < 3) {
+        file.Fail(polygon_key, "expected a list of at least 3 [x, y] pairs");
+      }
+      acd::Polygon2d outline;
+      for (size_t i = 0; i < list.size(); ++i) {
+        const std::vector<double> xy =
+            file.Numbers(list[i], R::Item(polygon_key, i), "an [x, y] pair");
+        if (xy.size() != 2) file.Fail(R::Item(polygon_key, i), "expected an [x, y] pair");
+        outline.outer.emplace_back(xy[0], xy[1]);
+      }
+      if (acd::SignedArea(outline.outer) < 0) outline.outer = acd::Reversed(outline.outer);
+      return envs::Robot::Polygon(outline);
+    }
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    if (what.rfind(file.path() + ": ", 0) == 0) throw;
+    file.Fail(key, what);
+  }
+  file.Fail(R::Child(key, "shape"), "expected point, disc or polygon, got '" + shape + "'");
+}
+
+double ReadTauDiag(const YamlFile& file, const YAML::Node& acd, const std::string& key,
+                   double fallback, std::vector<std::string>* warnings) {
+  const std::string diag_key = YamlFile::Child(key, "tau_diag");
+  const std::string rel_key = YamlFile::Child(key, "tau_rel");
+  if (acd["tau_diag"] && acd["tau_rel"]) {
+    file.Fail(rel_key, "give tau_diag only (tau_rel is its older spelling)");
+  }
+  if (acd["tau_diag"]) return file.Number(acd["tau_diag"], diag_key, "a number >= 0", NonNegative);
+  if (!acd["tau_rel"]) return fallback;
+  warnings->push_back(file.path() + ": " + rel_key +
+                      ": read as tau_diag, the tolerance relative to the bounds' diagonal; "
+                      "write tau_diag (tau_rel is relative to the reference radius in "
+                      "acdplan decompose)");
+  return file.Number(acd["tau_rel"], rel_key, "a number >= 0", NonNegative);
+}
+
+}  // namespace acdplan::planning

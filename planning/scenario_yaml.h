@@ -1,0 +1,40 @@
+#pragma once
+// The parts of a scenario's YAML that benchmark definitions share: a generated workspace, a
+// robot, the ACD sampler's options. Errors name the file and the key path (base/yaml_file.h).
+
+#include <string>
+#include <vector>
+
+#include "base/yaml_file.h"
+#include "envs/robot.h"
+#include "envs/workspace2d.h"
+#include "planning/acd_sampler_options.h"
+
+namespace acdplan::planning {
+
+/// A generated workspace from `{generator, seed, passage_width, wall_thickness}` at `key`
+/// (envs::GenerateWorkspace2d); `*label` becomes "generator <name> (seed s)".
+/// @throws InputError "<file>: <key>...: <rule>".
+envs::Workspace2d ReadGeneratedWorkspace(const YamlFile& file, const YAML::Node& node,
+                                         const std::string& key, std::string* label);
+
+/// The ACD sampler options present in mapping `node` at `key` (uniform_share, opening_weight,
+/// centroid_spread, opening_spread, max_attempts, orientation) into `*options`; the caller
+/// checks which keys the mapping may hold.
+/// @throws InputError "<file>: <key>.<option>: <rule>".
+void ReadAcdSamplerOptions(const YamlFile& file, const YAML::Node& node, const std::string& key,
+                           AcdSamplerOptions* options);
+
+/// A robot from `{shape: point | disc (radius) | polygon (polygon: [[x, y], ...])}` at `key`.
+/// @throws InputError "<file>: <key>...: <rule>".
+envs::Robot ReadRobot(const YamlFile& file, const YAML::Node& node, const std::string& key);
+
+/// The ACD tolerance relative to the bounds' diagonal: key `tau_diag` of mapping `acd` (at
+/// key path `key`), or its older spelling `tau_rel`, accepted with a line in `*warnings`
+/// (tau_rel also names `acdplan decompose --tau-rel`, relative to the reference radius);
+/// `fallback` when neither is there.
+/// @throws InputError if both are given or the value is not a number >= 0.
+double ReadTauDiag(const YamlFile& file, const YAML::Node& acd, const std::string& key,
+                   double fallback, std::vector<std::string>* warnings);
+
+}  // namespace acdplan::planning

@@ -1,0 +1,119 @@
+#include "base/file_io.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "base/input_error.h"
+
+namespace acdplan {
+namespace {
+
+namespace fs = std::filesystem;
+
+class FileIoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("acdplan_file_io_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add, ignored);
+    fs::remove_all(dir_, ignored);
+  }
+  static std::string Read(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  int FileCount() const {
+    int n = 0;
+    for (auto it = fs::recursive_directory_iterator(dir_); it != fs::recursive_directory_iterator();
+         ++it) {
+      n += it->is_regular_file() ? 1 : 0;
+    }
+    return n;
+  }
+  /// The message of the exception `write` throws, "" if none.
+  template <typename Exception, typename Write>
+  static std::string MessageOf(Write write) {
+    try {
+      write();
+    } catch (const Exception& error) {
+      return error.what();
+    }
+    return "";
+  }
+  fs::path dir_;
+};
+
+TEST_F(FileIoTest, WriteCreatesFoldersAndLeavesNoTemporaryFile) {
+  const fs::path path = dir_ / "a" / "b" / "out.json";
+  WriteFileAtomically(path.string(), "first");
+  EXPECT_EQ(Read(path), "first");
+  WriteFileAtomically(path.string(), "second, longer");  // replaces
+  EXPECT_EQ(Read(path), "second, longer");
+  EXPECT_EQ(FileCount(), 1);
+}
+
+TEST_F(FileIoTest, WriteFailsClearlyOnAnUnwritablePath) {
+  fs::create_directories(dir_);
+  // A folder where the file should be: rename() cannot replace it.
+  const fs::path taken = dir_ / "taken";
+  fs::create_directories(taken);
+  const std::string message =
+      MessageOf<std::runtime_error>([&] { WriteFileAtomically(taken.string(), "x"); });
+  EXPECT_EQ(message.rfind(taken.string() + ": cannot write the file: ", 0), 0u) << message;
+  EXPECT_EQ(FileCount(), 0);
+
+  // A parent that is a regular file.
+  std::ofstream(dir_ / "file") << "x";
+  const fs::path below_file = dir_ / "file" / "out.svg";
+  const std::string below =
+      MessageOf<std::runtime_error>([&] { WriteFileAtomically(below_file.string(), "x"); });
+  EXPECT_EQ(below.rfind(below_file.string() + ": cannot write the file: cannot create the folder",
+                        0),
+            0u)
+      << below;
+  EXPECT_EQ(FileCount(), 1);
+}
+
+TEST_F(FileIoTest, WriteFailsClearlyInAReadOnlyFolder) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root ignores folder permissions";
+  fs::create_directories(dir_);
+  fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec);
+  const fs::path path = dir_ / "out.json";
+  const std::string message =
+      MessageOf<std::runtime_error>([&] { WriteFileAtomically(path.string(), "x"); });
+  EXPECT_EQ(message, path.string() + ": cannot write the file: Permission denied");
+  fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add);
+  EXPECT_EQ(FileCount(), 0);
+}
+
+TEST_F(FileIoTest, ReadGivesTheBytesBack) {
+  const fs::path path = dir_ / "in.txt";
+  const std::string text("line 1\r\nline 2\0 after a NUL\n", 28);
+  WriteFileAtomically(path.string(), text);
+  EXPECT_EQ(ReadFile(path.string()), text);
+}
+
+TEST_F(FileIoTest, ReadNamesTheFileAndTheReason) {
+  const std::string missing = (dir_ / "none.yaml").string();
+  EXPECT_EQ(MessageOf<InputError>([&] { ReadFile(missing); }),
+            missing + ": cannot read the file: No such file or directory");
+  fs::create_directories(dir_);
+  EXPECT_EQ(MessageOf<InputError>([&] { ReadFile(dir_.string()); }),
+            dir_.string() + ": cannot read the file: it is a directory");
+}
+
+}  // namespace
+}  // namespace acdplan

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Formats every C++ file of the repository with clang-format and the root .clang-format.
+#
+#   tools/format.sh           rewrite the files in place
+#   tools/format.sh --check   change nothing; list the files that differ and exit 1 if any
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+
+check=0
+for arg in "$@"; do
+  case "$arg" in
+    --check) check=1 ;;
+    -h|--help) sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "format.sh: unknown argument '$arg' (expected --check)" >&2; exit 2 ;;
+  esac
+done
+
+if ! command -v clang-format >/dev/null 2>&1; then
+  echo "format.sh: clang-format not found (tools/install-deps.sh installs it)" >&2
+  exit 1
+fi
+
+mapfile -t files < <(git ls-files '*.cpp' '*.h')
+if [[ $check -eq 0 ]]; then
+  clang-format -i "${files[@]}"
+  exit 0
+fi
+
+unformatted=()
+for f in "${files[@]}"; do
+  if ! clang-format --dry-run --Werror "$f" >/dev/null 2>&1; then unformatted+=("$f"); fi
+done
+if [[ ${#unformatted[@]} -gt 0 ]]; then
+  echo "format.sh: ${#unformatted[@]} files differ from .clang-format (run tools/format.sh):" >&2
+  printf '  %s\n' "${unformatted[@]}" >&2
+  exit 1
+fi
+echo "format.sh: all ${#files[@]} C++ files follow .clang-format"
