@@ -1,4 +1,4 @@
-#include "planning/bench_spec.h"
+#include "bench/spec.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,14 +6,18 @@
 #include <sstream>
 
 #include "acd/input_error.h"
+#include "bench/summary.h"
 #include "envs/load_workspace.h"
 #include "planning/internal/yaml_reader.h"
 #include "planning/registry.h"
 
-namespace acdplan::planning {
+namespace acdplan::bench {
 
 namespace {
 
+namespace internal = planning::internal;
+using planning::AcdSamplerOptions;
+using planning::Scenario;
 using Reader = internal::YamlReader;
 
 bool SafeName(const std::string& name) {
@@ -83,7 +87,7 @@ void ReadWorld(const Reader& r, const YAML::Node& node, const std::string& key,
     }
     const std::string file = Resolved(r.file, r.String(node["scenario"], child("scenario")));
     try {
-      world.scenario = LoadScenario(file);
+      world.scenario = planning::LoadScenario(file);
     } catch (const acd::InputError& error) {
       r.Fail(child("scenario"), error.what());
     }
@@ -247,7 +251,8 @@ BenchSpec LoadBenchSpec(const std::string& path) {
   const YAML::Node root = internal::LoadYamlFile(path);
   r.CheckKeys(
       root, "",
-      {"name", "description", "seed", "runs", "acd", "acd_sampler", "worlds", "robots", "cases"});
+      {"name", "description", "seed", "runs", "acd", "acd_sampler", "worlds", "robots", "cases",
+       "targets"});
   BenchSpec spec;
   spec.path = path;
   if (!root["name"]) r.Fail("name", "required");
@@ -343,9 +348,9 @@ BenchSpec LoadBenchSpec(const std::string& path) {
     const std::vector<int> world_ids = Subset(r, group["worlds"], key + ".worlds", spec.worlds);
     const std::vector<int> robot_ids = Subset(r, group["robots"], key + ".robots", spec.robots);
     const std::vector<std::string> samplers =
-        Names(r, group["samplers"], key + ".samplers", SamplerNames(), "sampler");
+        Names(r, group["samplers"], key + ".samplers", planning::SamplerNames(), "sampler");
     const std::vector<std::string> planners =
-        Names(r, group["planners"], key + ".planners", PlannerNames(), "planner");
+        Names(r, group["planners"], key + ".planners", planning::PlannerNames(), "planner");
     const YAML::Node& budgets = group["budgets"];
     if (!budgets) r.Fail(key + ".budgets", "required");
     if (!budgets.IsSequence() || budgets.size() == 0) {
@@ -366,7 +371,7 @@ BenchSpec LoadBenchSpec(const std::string& path) {
         budget.samples = static_cast<int>(
             r.Integer(budgets[b]["samples"], bkey + ".samples", "an integer >= 1", 1));
         for (const std::string& planner : planners) {
-          if (!SupportsSampleBudget(planner)) {
+          if (!planning::SupportsSampleBudget(planner)) {
             r.Fail(bkey + ".samples",
                    "a sample budget (the Figure-4 protocol) needs PRM, PRM_ACD or PRMstar, "
                    "not " + planner + "; use time_limit");
@@ -399,6 +404,9 @@ BenchSpec LoadBenchSpec(const std::string& path) {
         }
       }
     }
+  }
+  if (root["targets"]) {
+    spec.targets = ReadTargets(path, root["targets"], "targets", PlanningTargetVocabulary());
   }
   return spec;
 }
@@ -465,4 +473,4 @@ std::vector<BenchRunId> BenchRunsOfShard(const BenchSpec& spec, int runs, const 
   return ids;
 }
 
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

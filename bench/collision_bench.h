@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace acdplan::collision {
+#include "bench/targets.h"
+
+namespace acdplan::bench {
 
 /// Options for BenchCollision(); `{}` is valid (skips 3D when `mesh_dir` is empty).
 struct BenchCollisionOptions {
@@ -51,12 +53,22 @@ struct BenchCollisionRow {
 std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& options,
                                               std::ostream* progress = nullptr);
 
-/// The rows as a Markdown table with the speed-ups and the targets (hulls >= 3x bvh,
-/// hulls+exact >= 1.5x bvh with 0 mismatches, hull location >= 10x exact with <= 1% error).
-std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows);
+/// The rows as a Markdown table with the speed-ups, then `targets` checked on them (no such
+/// section without targets).
+std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows,
+                                   const std::vector<Target>& targets = {});
+
+/// What collision targets can use: the label "world" (as in the table, e.g. "zigzag/disc") and
+/// "kind" ("2d" or "mesh"), and as metrics the rows' numeric JSON fields (bvh_checks_per_s,
+/// hulls_checks_per_s, ..., locate_hulls_error_rate). A figure that could not be measured
+/// (exact point location in an open mesh) is absent: its targets do not apply to the row.
+const TargetVocabulary& CollisionTargetVocabulary();
+
+/// The rows as target rows (labels and metrics above).
+std::vector<TargetRow> CollisionTargetRows(const std::vector<BenchCollisionRow>& rows);
 
 /// {"format": "acdplan.bench_collision/1", "options": {...}, "worlds": [row, ...]}.
 std::string BenchCollisionJson(const std::vector<BenchCollisionRow>& rows,
                                const BenchCollisionOptions& options);
 
-}  // namespace acdplan::collision
+}  // namespace acdplan::bench

@@ -16,13 +16,15 @@
 #include <vector>
 
 #include "acd/input_error.h"
-#include "planning/bench_record.h"
-#include "planning/bench_report.h"
-#include "planning/bench_runner.h"
-#include "planning/bench_spec.h"
-#include "planning/bench_stats.h"
+#include "bench/record.h"
+#include "bench/merge.h"
+#include "bench/ompl_log.h"
+#include "bench/outputs.h"
+#include "bench/runner.h"
+#include "bench/spec.h"
+#include "bench/stats.h"
 
-namespace acdplan::planning {
+namespace acdplan::bench {
 namespace {
 
 namespace fs = std::filesystem;
@@ -254,21 +256,21 @@ TEST(BenchRunner, ShardsMergedEqualTheUnshardedRun) {
   const BenchRunOutcome all = RunBench(spec);
   ASSERT_EQ(all.records.size(), 9u);
   EXPECT_FALSE(all.interrupted);
-  WriteBenchOutputs(whole.string(), ManifestOf(spec, "1/1"), all.records, false, nullptr);
+  WriteBenchOutputs(whole.string(), ManifestOf(spec, "1/1"), all.records);
   BenchRunOptions o1, o2;
   o1.shard = {1, 2};
   o2.shard = {2, 2};
   const BenchRunOutcome r1 = RunBench(spec, o1), r2 = RunBench(spec, o2);
   EXPECT_EQ(r1.records.size(), 5u);
   EXPECT_EQ(r2.records.size(), 4u);
-  WriteBenchOutputs(s1.string(), ManifestOf(spec, "1/2"), r1.records, false, nullptr);
-  WriteBenchOutputs(s2.string(), ManifestOf(spec, "2/2"), r2.records, false, nullptr);
+  WriteBenchOutputs(s1.string(), ManifestOf(spec, "1/2"), r1.records);
+  WriteBenchOutputs(s2.string(), ManifestOf(spec, "2/2"), r2.records);
 
   BenchManifest manifest;
   std::vector<BenchRecord> records;
   MergeBenchRecords({s1.string(), s2.string()}, &manifest, &records);
   EXPECT_EQ(manifest.shards, (std::vector<std::string>{"1/2", "2/2"}));
-  WriteBenchOutputs(merged.string(), manifest, records, false, nullptr);
+  WriteBenchOutputs(merged.string(), manifest, records);
 
   // runs.csv: every field but the two times.
   const std::vector<BenchRecord> a = ReadBenchRecordsCsv((whole / "runs.csv").string());
@@ -302,8 +304,8 @@ TEST(BenchRunner, AcdBeatsUniformOnFigure4) {
   const BenchRunOutcome outcome = RunBench(spec);
   int acd = 0, uniform = 0;
   for (const BenchCaseSummary& c : SummarizeBenchCases(outcome.records)) {
-    if (c.sampler == "acd") acd = c.successes;
-    if (c.sampler == "uniform") uniform = c.successes;
+    if (c.what.sampler == "acd") acd = c.successes;
+    if (c.what.sampler == "uniform") uniform = c.successes;
     EXPECT_EQ(c.runs, 10);
   }
   EXPECT_GE(acd, 9);
@@ -311,7 +313,7 @@ TEST(BenchRunner, AcdBeatsUniformOnFigure4) {
   for (const BenchRecord& r : outcome.records) {
     EXPECT_EQ(r.samples, 200u);
     EXPECT_GT(r.collision_checks, 0u);
-    EXPECT_EQ(r.decomposition_s > 0, r.sampler == "acd");
+    EXPECT_EQ(r.decomposition_s > 0, r.what.sampler == "acd");
   }
 }
 
@@ -319,7 +321,7 @@ TEST(BenchReport, OmplLogLoadsInOmplBenchmarkStatistics) {
   const BenchSpec spec = LoadBenchSpec(WriteBench("log", SmallFigure4(2)));
   const fs::path dir = Scratch("log");
   const BenchRunOutcome outcome = RunBench(spec);
-  WriteBenchOutputs(dir.string(), ManifestOf(spec, "1/1"), outcome.records, false, nullptr);
+  WriteBenchOutputs(dir.string(), ManifestOf(spec, "1/1"), outcome.records);
   const std::string log = ReadText(dir / BenchOmplLogName("demo"));
 
   // Structure (OMPL's benchmark log grammar): header lines, 3 planners of 2 runs.
@@ -412,4 +414,4 @@ TEST(BenchCli, CtrlCWritesTheFinishedRunsAndExits130) {
 }
 
 }  // namespace
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

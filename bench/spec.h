@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "bench/targets.h"
 #include "planning/scenario.h"
 
-namespace acdplan::planning {
+namespace acdplan::bench {
 
 struct BenchSpec;
 
@@ -20,14 +21,14 @@ struct BenchWorld {
   double workspace_width = 0.0;  ///< Bounds' extent along x [units].
   /// Workspace, start and goal ([x, y] or [x, y, yaw]; point and disc robots use x, y, a
   /// polygon robot yaw 0 when absent), ACD tolerance and measure, collision mode.
-  Scenario scenario;
+  planning::Scenario scenario;
 };
 
 /// One robot of a benchmark.
 struct BenchRobot {
   std::string name;
   envs::Robot robot;
-  AcdSamplerOptions acd_options;  ///< The bench's acd_sampler options, orientation per robot.
+  planning::AcdSamplerOptions acd_options;  ///< The bench's acd_sampler options, orientation per robot.
 };
 
 /// A budget: exactly one of `time_limit` (> 0) and `samples` (>= 1, the Figure-4 protocol).
@@ -75,6 +76,11 @@ struct BenchCase {
 ///       samplers: [uniform, acd]    # registry.h SamplerNames()
 ///       planners: [PRM]             # registry.h PlannerNames()
 ///       budgets: [{samples: 200}, {time_limit: 2}]   # samples: PRM, PRM_ACD, PRMstar
+///   targets:                        # optional acceptance targets (bench/targets.h), on rows
+///     - where: {planner: PRM}       # world x robot x planner x budget (bench/summary.h
+///       metric: acd.success_rate    # PlanningTargetVocabulary())
+///       compare: ">="
+///       value: 0.95
 struct BenchSpec {
   std::string path;  ///< The file it was read from.
   std::string name, description;
@@ -84,6 +90,7 @@ struct BenchSpec {
   std::vector<BenchRobot> robots;
   std::vector<BenchCase> cases;  ///< In file order: groups, then worlds, robots, samplers,
                                  ///< planners, budgets.
+  std::vector<Target> targets;   ///< Checked in summary.md.
 };
 
 /// Reads and validates a benchmark file; loads (generates) its worlds.
@@ -119,4 +126,4 @@ std::uint64_t BenchRunSeed(std::uint64_t base_seed, const std::string& case_key,
 /// case.
 std::vector<BenchRunId> BenchRunsOfShard(const BenchSpec& spec, int runs, const BenchShard& shard);
 
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

@@ -1,4 +1,4 @@
-#include "planning/bench_runner.h"
+#include "bench/runner.h"
 
 #include <ompl/util/Console.h>
 #include <poll.h>
@@ -23,10 +23,11 @@
 #include "collision/obstacle_set.h"
 #include "planning/plan_scenario.h"
 
-namespace acdplan::planning {
+namespace acdplan::bench {
 
 namespace {
 
+using planning::Scenario;
 using Clock = std::chrono::steady_clock;
 
 double Seconds(Clock::time_point from) {
@@ -110,9 +111,9 @@ void CheckQueries(const BenchSpec& spec) {
   std::string line;
   int status = 0;
   try {
-    ConfigureOmpl(scenario.seed, true);
+    planning::ConfigureOmpl(scenario.seed, true);
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);  // Keep the progress line readable.
-    const PlanResult result = PlanScenario(scenario);
+    const planning::PlanResult result = planning::PlanScenario(scenario);
     const bool acd = scenario.sampler == "acd";
     const double decomposition_s = result.decomposition_ms / 1e3;
     char buffer[512];
@@ -238,11 +239,17 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
         if (n > 0) child.output.append(buffer, static_cast<size_t>(n));
       }
     }
-    int status = 0;
-    pid_t pid;
-    while ((pid = waitpid(-1, &status, WNOHANG)) > 0) {
+    // Reap only the runner's own children (the keys of `running`): waitpid(-1) would also
+    // take the exit status of a child the caller started.
+    std::vector<std::pair<pid_t, int>> finished;
+    for (const auto& entry : running) {
+      int status = 0;
+      if (waitpid(entry.first, &status, WNOHANG) == entry.first) {
+        finished.emplace_back(entry.first, status);
+      }
+    }
+    for (const auto& [pid, status] : finished) {
       auto it = running.find(pid);
-      if (it == running.end()) continue;
       Child child = std::move(it->second);
       running.erase(it);
       char buffer[4096];
@@ -255,16 +262,16 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
       const BenchWorld& world = spec.worlds[c.world];
       BenchRecord r;
       r.case_index = c.index;
-      r.world = world.name;
-      r.family = world.family;
-      r.passage_width = world.passage_width;
-      r.workspace_width = world.workspace_width;
-      r.robot = spec.robots[c.robot].name;
-      r.sampler = c.sampler;
-      r.planner = c.planner;
-      r.budget = c.budget.Label();
-      r.time_limit = c.budget.samples > 0 ? 0.0 : c.budget.time_limit;
-      r.sample_budget = c.budget.samples;
+      r.what.world = world.name;
+      r.what.family = world.family;
+      r.what.passage_width = world.passage_width;
+      r.what.workspace_width = world.workspace_width;
+      r.what.robot = spec.robots[c.robot].name;
+      r.what.sampler = c.sampler;
+      r.what.planner = c.planner;
+      r.what.budget = c.budget.Label();
+      r.what.time_limit = c.budget.samples > 0 ? 0.0 : c.budget.time_limit;
+      r.what.sample_budget = c.budget.samples;
       r.run = child.id.run;
       r.seed = child.id.seed;
       if (child.output.rfind("E ", 0) == 0) {
@@ -308,4 +315,4 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
   return outcome;
 }
 
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

@@ -1,4 +1,4 @@
-#include "collision/bench_collision.h"
+#include "bench/collision_bench.h"
 
 #include <algorithm>
 #include <chrono>
@@ -17,8 +17,17 @@
 #include "envs/generators.h"
 #include "envs/mesh_loader.h"
 
-namespace acdplan::collision {
+namespace acdplan::bench {
 namespace {
+
+using collision::BuildObstacleSet;
+using collision::CollisionMode;
+using collision::CollisionWorld;
+using collision::LocateMethod;
+using collision::ObstacleSet;
+using collision::ObstacleSetOptions;
+using collision::PointLocator;
+using collision::TriangleCount;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -204,7 +213,59 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
   return rows;
 }
 
-std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows) {
+namespace {
+
+/// The numeric fields of a row, by their JSON names.
+std::vector<std::pair<std::string, double>> Metrics(const BenchCollisionRow& r) {
+  return {{"triangles", r.triangles},
+          {"hulls", r.hulls},
+          {"poses", r.poses},
+          {"bvh_checks_per_s", r.bvh_checks_per_s},
+          {"hulls_checks_per_s", r.hulls_checks_per_s},
+          {"hulls_exact_checks_per_s", r.hulls_exact_checks_per_s},
+          {"collision_rate", r.collision_rate},
+          {"hulls_false_positive_rate", r.hulls_false_positive_rate},
+          {"hulls_misses", r.hulls_misses},
+          {"hulls_exact_mismatches", r.hulls_exact_mismatches},
+          {"locate_exact_points_per_s", r.locate_exact_points_per_s},
+          {"locate_hulls_points_per_s", r.locate_hulls_points_per_s},
+          {"locate_hulls_error_rate", r.locate_hulls_error_rate}};
+}
+
+std::string CheckCollisionMetric(const std::string& metric) {
+  std::string known;
+  for (const auto& [name, value] : Metrics(BenchCollisionRow())) {
+    if (name == metric) return "";
+    known += (known.empty() ? "" : ", ") + name;
+  }
+  return "unknown metric '" + metric + "' (known: " + known + ")";
+}
+
+}  // namespace
+
+const TargetVocabulary& CollisionTargetVocabulary() {
+  static const TargetVocabulary vocabulary{{"world", "kind"}, &CheckCollisionMetric};
+  return vocabulary;
+}
+
+std::vector<TargetRow> CollisionTargetRows(const std::vector<BenchCollisionRow>& rows) {
+  std::vector<TargetRow> out;
+  for (const BenchCollisionRow& r : rows) {
+    TargetRow row;
+    row.labels["world"] = r.world;
+    const size_t slash = r.world.rfind('/');
+    row.labels["kind"] = slash != std::string::npos && r.world.substr(slash) == "/mesh" ? "mesh"
+                                                                                        : "2d";
+    for (const auto& [name, value] : Metrics(r)) {
+      if (!std::isnan(value)) row.metrics[name] = value;
+    }
+    out.push_back(row);
+  }
+  return out;
+}
+
+std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows,
+                                   const std::vector<Target>& targets) {
   std::string out =
       "| world | hulls | bvh checks/s | hulls checks/s | (x bvh) | hulls+exact checks/s | (x bvh) "
       "| hulls FP rate | mismatches | exact pts/s | hull pts/s | (x exact) | hull error |\n"
@@ -222,9 +283,12 @@ std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows) {
            Format(r.locate_hulls_points_per_s / r.locate_exact_points_per_s, "%.1f") + " | " +
            Format(100 * r.locate_hulls_error_rate, "%.2f%%") + " |\n";
   }
-  out +=
-      "\nTargets: hulls >= 3x bvh; hulls+exact >= 1.5x bvh with 0 mismatches; hull point "
-      "location >= 10x exact with <= 1% error. n/a: exact point location needs a closed mesh.\n";
+  out += "\nn/a: exact point location needs a closed mesh.\n";
+  if (!targets.empty()) {
+    const std::vector<TargetRow> target_rows = CollisionTargetRows(rows);
+    out += "\n## Targets\n\n" +
+           TargetChecksMarkdown(CheckTargets(targets, target_rows), {"world"});
+  }
   return out;
 }
 
@@ -261,4 +325,4 @@ std::string BenchCollisionJson(const std::vector<BenchCollisionRow>& rows,
   return doc.dump(2) + "\n";
 }
 
-}  // namespace acdplan::collision
+}  // namespace acdplan::bench
