@@ -93,8 +93,12 @@ bool Measure(const MetricTest& test, const TargetRow& row, double* value) {
   if (!test.over.empty()) {
     auto o = row.metrics.find(test.over);
     if (o == row.metrics.end()) return false;
-    *value = o->second > 0 ? m->second / o->second
-                           : (m->second > 0 ? INFINITY : std::nan(""));
+    // Not measured on either side: not measured (a ratio to a NaN time must not hold).
+    if (std::isnan(m->second) || std::isnan(o->second)) {
+      *value = std::nan("");
+    } else {
+      *value = o->second > 0 ? m->second / o->second : (m->second > 0 ? INFINITY : std::nan(""));
+    }
   }
   return true;
 }
@@ -228,7 +232,8 @@ std::string TargetsToJson(const std::vector<Target>& targets) {
       j["if"] = nlohmann::ordered_json::array();
       for (const MetricTest& c : t.conditions) j["if"].push_back(test_json(c));
     }
-    for (const auto& [k, v] : test_json(t.test).items()) j[k] = v;
+    const nlohmann::ordered_json test = test_json(t.test);
+    for (const auto& [k, v] : test.items()) j[k] = v;
     list.push_back(j);
   }
   return list.dump();

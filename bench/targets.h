@@ -95,7 +95,8 @@ struct TargetCheck {
 };
 
 /// Every target on every row it applies to (where matches, conditions hold, metrics present),
-/// target-major, rows in the given order.
+/// target-major, rows in the given order. The checks point into `targets` and `rows`, which
+/// must outlive them.
 std::vector<TargetCheck> CheckTargets(const std::vector<Target>& targets,
                                       const std::vector<TargetRow>& rows);
 

@@ -299,6 +299,21 @@ TEST(BenchRunner, ShardsMergedEqualTheUnshardedRun) {
   }
 }
 
+TEST(BenchRunner, ReapsOnlyItsOwnChildren) {
+  // A child of the caller's that has exited before the bench runs: the runner must leave its
+  // exit status to the caller (a waitpid(-1) would take it).
+  const pid_t mine = fork();
+  ASSERT_GE(mine, 0);
+  if (mine == 0) _exit(7);
+  const BenchSpec spec = LoadBenchSpec(WriteBench("reap", SmallFigure4(1)));
+  const BenchRunOutcome outcome = RunBench(spec);
+  EXPECT_EQ(outcome.records.size(), 3u);
+  int status = 0;
+  ASSERT_EQ(waitpid(mine, &status, 0), mine) << "the runner reaped a child it did not start";
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 7);
+}
+
 TEST(BenchRunner, AcdBeatsUniformOnFigure4) {
   const BenchSpec spec = LoadBenchSpec(WriteBench("figure4", SmallFigure4(10)));
   const BenchRunOutcome outcome = RunBench(spec);
@@ -314,6 +329,81 @@ TEST(BenchRunner, AcdBeatsUniformOnFigure4) {
     EXPECT_EQ(r.samples, 200u);
     EXPECT_GT(r.collision_checks, 0u);
     EXPECT_EQ(r.decomposition_s > 0, r.what.sampler == "acd");
+  }
+}
+
+TEST(BenchReport, SpecTargetsAreCheckedInTheSummaryAndSurviveAMerge) {
+  const std::string text =
+      SmallFigure4(2) +
+      "targets:\n"
+      "  - name: acd solves\n"
+      "    where: {planner: PRM, budget_type: samples}\n"
+      "    if: [{metric: uniform.success_rate, compare: '<=', value: 1}]\n"
+      "    metric: acd.success_rate\n"
+      "    compare: '>='\n"
+      "    value: 0.5\n"
+      "  - {metric: gaussian.runs, compare: '==', value: 3}\n";
+  const BenchSpec spec = LoadBenchSpec(WriteBench("targets", text));
+  ASSERT_EQ(spec.targets.size(), 2u);
+  BenchManifest manifest = ManifestOf(spec, "1/1");
+  manifest.targets = spec.targets;
+  const fs::path dir = Scratch("targets"), merged = Scratch("targets_merged");
+  WriteBenchOutputs(dir.string(), manifest, RunBench(spec).records);
+  const std::string summary = ReadText(dir / "summary.md");
+  EXPECT_HAS(summary, "## Targets\n");
+  EXPECT_HAS(summary, "| demo | point | PRM | 200 samples | acd solves | 100% | holds |\n");
+  EXPECT_HAS(summary, "| demo | point | PRM | 200 samples | gaussian.runs == 3 | 2 | **missed** |\n");
+  EXPECT_HAS(summary, "1 target checks hold, 1 missed.");
+
+  BenchManifest joined;
+  std::vector<BenchRecord> records;
+  MergeBenchRecords({dir.string()}, &joined, &records);
+  ASSERT_EQ(joined.targets.size(), 2u);
+  WriteBenchOutputs(merged.string(), joined, records);
+  EXPECT_EQ(ReadText(merged / "summary.md"), summary);
+
+  // Without targets, no section (and bench.json has no "targets").
+  manifest.targets.clear();
+  WriteBenchOutputs(dir.string(), manifest, records);
+  EXPECT_EQ(ReadText(dir / "summary.md").find("## Targets"), std::string::npos);
+  EXPECT_EQ(ReadText(dir / "bench.json").find("\"targets\":"), std::string::npos);
+
+  // A spec's targets are checked with the spec's key path.
+  try {
+    LoadBenchSpec(WriteBench("bad_targets", SmallFigure4(1) + "targets: [{metric: acd.speed, "
+                                                              "compare: '>', value: 1}]\n"));
+    ADD_FAILURE() << "accepted an unknown metric";
+  } catch (const acd::InputError& error) {
+    EXPECT_HAS(error.what(), "bad_targets.yaml: targets[0].metric: expected samplers or");
+  }
+}
+
+TEST(BenchReport, CsvHeaderIsUnchanged) {
+  EXPECT_EQ(BenchCsvHeader(),
+            "case,world,family,passage_width,workspace_width,robot,sampler,planner,budget,"
+            "time_limit,sample_budget,run,seed,status,solved,time_s,decomposition_s,samples,"
+            "collision_checks,path_length,components,openings");
+  BenchRecord r;
+  r.case_index = 3;
+  r.what = {"w", "f", 0.5, 10, "disc", "acd", "PRM", "2 s", 2, 0};
+  r.run = 1;
+  r.seed = 42;
+  r.status = "solved";
+  r.solved = true;
+  const std::string csv = BenchRecordsToCsv({r});
+  EXPECT_HAS(csv, "\n3,w,f,0.5,10,disc,acd,PRM,2 s,2,0,1,42,solved,1,0,0,0,0,0,0,0\n");
+  const fs::path dir = Scratch("csv");
+  std::ofstream(dir / "runs.csv") << csv;
+  const std::vector<BenchRecord> back = ReadBenchRecordsCsv((dir / "runs.csv").string());
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(BenchRecordsToCsv(back), csv);
+  std::ofstream(dir / "bad.csv") << BenchCsvHeader() << "\n3,w,f,wide,10,disc,acd,PRM,2 s,2,0,1,"
+                                                        "42,solved,1,0,0,0,0,0,0,0\n";
+  try {
+    ReadBenchRecordsCsv((dir / "bad.csv").string());
+    ADD_FAILURE();
+  } catch (const acd::InputError& error) {
+    EXPECT_HAS(error.what(), "bad.csv:2: column passage_width: cannot read 'wide'");
   }
 }
 
