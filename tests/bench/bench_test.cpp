@@ -463,6 +463,20 @@ TEST(BenchCli, BadInputExitsTwoWithTheKeyPath) {
   EXPECT_HAS(ReadText(dir / "o3.txt"), "bench.json: cannot read the file");
 }
 
+TEST(BenchCli, BenchCollisionNamesTheFlagOfABadPath) {
+  const fs::path dir = Scratch("cli_collision");
+  EXPECT_EQ(Acdplan("bench-collision --poses 1 --points 1 --mesh-dir /nowhere/meshes", dir / "o.txt"),
+            2);
+  EXPECT_HAS(ReadText(dir / "o.txt"), "--mesh-dir /nowhere/meshes: not a folder");
+  const std::string bad = WriteBench("collision_targets",
+                                     "targets: [{metric: hulls_speed, compare: '>', value: 1}]\n");
+  EXPECT_EQ(Acdplan("bench-collision --poses 1 --points 1 --mesh-dir '' --targets '" + bad + "'",
+                    dir / "o2.txt"),
+            2);
+  EXPECT_HAS(ReadText(dir / "o2.txt"),
+             "collision_targets.yaml: targets[0].metric: unknown metric 'hulls_speed'");
+}
+
 TEST(BenchCli, CtrlCWritesTheFinishedRunsAndExits130) {
   // Time budgets on a world where uniform rarely solves: each run lasts about its budget, so the
   // bench is still running when the signal comes (the outcome checks hold either way).
