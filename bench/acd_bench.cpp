@@ -18,9 +18,9 @@
 #include <list>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <ostream>
 #include <sstream>
 #include <string>
-#include <ostream>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -283,7 +283,8 @@ bool BenchOurs(const BenchInput& input, double tau_rel, const AcdBenchOptions& a
 }
 
 /// Runs CGAL's three partitions (independent of tau, so once per polygon).
-void BenchCgal(const BenchInput& input, const AcdBenchOptions& args, std::vector<AcdBenchRow>* rows) {
+void BenchCgal(const BenchInput& input, const AcdBenchOptions& args,
+               std::vector<AcdBenchRow>* rows) {
   std::vector<std::vector<CgalPoint>> rings;
   for (const acd::Polygon2d& polygon : input.polygons) {
     std::vector<CgalPoint> ring;
@@ -558,7 +559,5 @@ std::vector<TargetRow> AcdBenchTargetRows(const std::vector<AcdBenchRow>& rows) 
   }
   return out;
 }
-
-
 
 }  // namespace acdplan::bench

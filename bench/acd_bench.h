@@ -44,9 +44,9 @@ struct AcdBenchRow {
 /// What RunAcdBench() measured.
 struct AcdBenchResult {
   std::vector<AcdBenchRow> rows;
-  std::vector<std::string> skipped;   ///< Default inputs that did not load, with the reason.
-  std::vector<std::string> problems;  ///< Ours that threw or failed the check; CGAL failures.
-  bool ok = true;                     ///< None of ours threw or failed the check.
+  std::vector<std::string> skipped;     ///< Default inputs that did not load, with the reason.
+  std::vector<std::string> problems;    ///< Ours that threw or failed the check; CGAL failures.
+  bool ok = true;                       ///< None of ours threw or failed the check.
   std::string load_before, load_after;  ///< /proc/loadavg around the runs.
 };
 

@@ -93,8 +93,8 @@ std::vector<Eigen::Vector3d> RandomPoints(const Eigen::AlignedBox3d& box, int co
   std::vector<Eigen::Vector3d> points;
   points.reserve(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i) {
-    Eigen::Vector3d p = box.min() + (box.sizes().array() *
-                                     Eigen::Array3d(u(rng), u(rng), u(rng))).matrix();
+    Eigen::Vector3d p =
+        box.min() + (box.sizes().array() * Eigen::Array3d(u(rng), u(rng), u(rng))).matrix();
     if (flat) p.z() = 0;
     points.push_back(p);
   }
@@ -109,8 +109,8 @@ envs::TriangleMesh Cube(double side) {
         ((i & 4) ? 0.5 : -0.5) * side;
   }
   mesh.triangles.resize(12, 3);
-  mesh.triangles << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4,
-      2, 2, 4, 6, 1, 3, 5, 3, 7, 5;
+  mesh.triangles << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2,
+      2, 4, 6, 1, 3, 5, 3, 7, 5;
   return mesh;
 }
 
@@ -156,9 +156,9 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
     std::vector<Eigen::Isometry2d> poses;
     for (int i = 0; i < options.poses; ++i) {
       Eigen::Isometry2d pose = Eigen::Isometry2d::Identity();
-      pose.translation() = workspace.bounds.min() +
-                           (workspace.bounds.sizes().array() * Eigen::Array2d(u(rng), u(rng)))
-                               .matrix();
+      pose.translation() =
+          workspace.bounds.min() +
+          (workspace.bounds.sizes().array() * Eigen::Array2d(u(rng), u(rng))).matrix();
       pose.linear() = Eigen::Rotation2Dd(2 * M_PI * u(rng) - M_PI).toRotationMatrix();
       poses.push_back(pose);
     }
@@ -196,12 +196,11 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
     std::vector<Eigen::Isometry3d> poses;
     for (int i = 0; i < options.poses; ++i) {
       Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-      pose.translation() = workspace.bounds.min() +
-                           (workspace.bounds.sizes().array() *
-                            Eigen::Array3d(u(rng), u(rng), u(rng)))
-                               .matrix();
-      pose.linear() = Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized()
-                          .toRotationMatrix();
+      pose.translation() =
+          workspace.bounds.min() +
+          (workspace.bounds.sizes().array() * Eigen::Array3d(u(rng), u(rng), u(rng))).matrix();
+      pose.linear() =
+          Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().toRotationMatrix();
       poses.push_back(pose);
     }
     const CollisionWorld world(set, envs::Robot::Mesh(Cube(0.05 * box.sizes().norm())));
@@ -254,8 +253,8 @@ std::vector<TargetRow> CollisionTargetRows(const std::vector<BenchCollisionRow>&
     TargetRow row;
     row.labels["world"] = r.world;
     const size_t slash = r.world.rfind('/');
-    row.labels["kind"] = slash != std::string::npos && r.world.substr(slash) == "/mesh" ? "mesh"
-                                                                                        : "2d";
+    row.labels["kind"] =
+        slash != std::string::npos && r.world.substr(slash) == "/mesh" ? "mesh" : "2d";
     for (const auto& [name, value] : Metrics(r)) {
       if (!std::isnan(value)) row.metrics[name] = value;
     }
@@ -286,15 +285,16 @@ std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows,
   out += "\nn/a: exact point location needs a closed mesh.\n";
   if (!targets.empty()) {
     const std::vector<TargetRow> target_rows = CollisionTargetRows(rows);
-    out += "\n## Targets\n\n" +
-           TargetChecksMarkdown(CheckTargets(targets, target_rows), {"world"});
+    out += "\n## Targets\n\n" + TargetChecksMarkdown(CheckTargets(targets, target_rows), {"world"});
   }
   return out;
 }
 
 std::string BenchCollisionJson(const std::vector<BenchCollisionRow>& rows,
                                const BenchCollisionOptions& options) {
-  auto number = [](double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); };
+  auto number = [](double x) {
+    return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x);
+  };
   nlohmann::json worlds = nlohmann::json::array();
   for (const BenchCollisionRow& r : rows) {
     nlohmann::json w;
@@ -318,8 +318,10 @@ std::string BenchCollisionJson(const std::vector<BenchCollisionRow>& rows,
   }
   nlohmann::json doc;
   doc["format"] = "acdplan.bench_collision/1";
-  doc["options"] = {{"poses", options.poses},   {"points", options.points},
-                    {"seed", options.seed},     {"tau", options.tau},
+  doc["options"] = {{"poses", options.poses},
+                    {"points", options.points},
+                    {"seed", options.seed},
+                    {"tau", options.tau},
                     {"mesh_dir", options.mesh_dir}};
   doc["worlds"] = worlds;
   return doc.dump(2) + "\n";

@@ -13,11 +13,11 @@ namespace acdplan::bench {
 
 /// Options for BenchCollision(); `{}` is valid (skips 3D when `mesh_dir` is empty).
 struct BenchCollisionOptions {
-  int poses = 20000;        ///< Random poses per world and robot; > 0.
-  int points = 200000;      ///< Random points per world for point location; > 0.
-  std::uint64_t seed = 1;   ///< Seeds the worlds (envs generators) and the poses.
-  double tau = 0.02;        ///< 2D obstacle ACD tau [units] (ObstacleSetOptions::tau); >= 0.
-  std::string mesh_dir;     ///< Folder of .obj meshes used one by one as 3D obstacles.
+  int poses = 20000;       ///< Random poses per world and robot; > 0.
+  int points = 200000;     ///< Random points per world for point location; > 0.
+  std::uint64_t seed = 1;  ///< Seeds the worlds (envs generators) and the poses.
+  double tau = 0.02;       ///< 2D obstacle ACD tau [units] (ObstacleSetOptions::tau); >= 0.
+  std::string mesh_dir;    ///< Folder of .obj meshes used one by one as 3D obstacles.
   std::vector<std::string> meshes;  ///< File names in `mesh_dir`; empty = every .obj there.
 };
 
@@ -25,10 +25,10 @@ struct BenchCollisionOptions {
 /// fractions in [0, 1]; a figure that could not be measured is NaN (null in JSON) and `note`
 /// says why.
 struct BenchCollisionRow {
-  std::string world;           ///< "zigzag/disc", "zigzag/polygon", "bunny/mesh", ...
-  std::string hulls_source;    ///< ObstacleSet::hulls_source.
-  int triangles = 0;           ///< Obstacle triangles in the exact BVH.
-  int hulls = 0;               ///< Convex pieces.
+  std::string world;         ///< "zigzag/disc", "zigzag/polygon", "bunny/mesh", ...
+  std::string hulls_source;  ///< ObstacleSet::hulls_source.
+  int triangles = 0;         ///< Obstacle triangles in the exact BVH.
+  int hulls = 0;             ///< Convex pieces.
   int poses = 0;
   double bvh_checks_per_s = 0;
   double hulls_checks_per_s = 0;
@@ -39,7 +39,7 @@ struct BenchCollisionRow {
   int hulls_exact_mismatches = 0;        ///< Poses where hulls+exact and bvh disagree.
   double locate_exact_points_per_s = 0;
   double locate_hulls_points_per_s = 0;
-  double locate_hulls_error_rate = 0;    ///< Of all points, those the two locators disagree on.
+  double locate_hulls_error_rate = 0;  ///< Of all points, those the two locators disagree on.
   std::string note;
 };
 

@@ -55,9 +55,9 @@ void MergeBenchRecords(const std::vector<std::string>& dirs, BenchManifest* mani
       auto it = seen.find(key);
       if (it != seen.end()) {
         throw acd::InputError(runs_path + ": run " + std::to_string(r.run) + " of case " +
-                              std::to_string(r.case_index) + " (" + r.what.world + "/" + r.what.robot + "/" +
-                              r.what.sampler + "/" + r.what.planner + "/" + r.what.budget + ") is also in " +
-                              it->second);
+                              std::to_string(r.case_index) + " (" + r.what.world + "/" +
+                              r.what.robot + "/" + r.what.sampler + "/" + r.what.planner + "/" +
+                              r.what.budget + ") is also in " + it->second);
       }
       seen.emplace(key, runs_path);
       records->push_back(r);

@@ -15,7 +15,7 @@ namespace acdplan::bench {
 namespace {
 
 const std::vector<std::string> kCaseColumns = {
-    "world",  "family",  "passage_width", "workspace_width", "robot",
+    "world",   "family",  "passage_width", "workspace_width", "robot",
     "sampler", "planner", "budget",        "time_limit",      "sample_budget"};
 
 /// runs.csv: "case", the case's columns, then the run's.
@@ -73,8 +73,7 @@ std::string CaseCsvFields(const CaseDescription& c) {
   return out.str();
 }
 
-CaseDescription ReadCaseCsvFields(const std::vector<std::string>& f, size_t first,
-                                  size_t* column) {
+CaseDescription ReadCaseCsvFields(const std::vector<std::string>& f, size_t first, size_t* column) {
   if (f.size() < first + kCaseColumns.size()) {
     *column = f.size() > 0 ? f.size() - 1 : 0;
     throw std::invalid_argument("too few fields");
@@ -115,8 +114,8 @@ std::string BenchRecordsToCsv(const std::vector<BenchRecord>& records) {
   std::ostringstream out;
   out << BenchCsvHeader() << "\n";
   for (const BenchRecord& r : records) {
-    out << r.case_index << "," << CaseCsvFields(r.what) << "," << r.run << ","
-        << r.seed << "," << r.status << "," << (r.solved ? 1 : 0) << "," << Real(r.time_s) << ","
+    out << r.case_index << "," << CaseCsvFields(r.what) << "," << r.run << "," << r.seed << ","
+        << r.status << "," << (r.solved ? 1 : 0) << "," << Real(r.time_s) << ","
         << Real(r.decomposition_s) << "," << r.samples << "," << r.collision_checks << ","
         << Real(r.path_length) << "," << r.components << "," << r.openings << "\n";
   }
@@ -244,8 +243,8 @@ BenchManifest ReadBenchManifest(const std::string& path) {
     throw acd::InputError(path + ": " + key + ": missing or of the wrong type");
   }
   if (j.contains("targets")) {  // JSON is YAML: the benchmark file's reader checks them.
-    m.targets = ReadTargets(path, YAML::Load(j["targets"].dump()), "targets",
-                            PlanningTargetVocabulary());
+    m.targets =
+        ReadTargets(path, YAML::Load(j["targets"].dump()), "targets", PlanningTargetVocabulary());
   }
   return m;
 }

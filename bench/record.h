@@ -44,10 +44,10 @@ void AddCaseJson(const CaseDescription& c, nlohmann::json* object);
 
 /// One finished run, self-describing (a merge needs no BENCH.yaml).
 struct BenchRecord {
-  int case_index = 0;        ///< Position of the case in the benchmark's global order.
-  CaseDescription what;      ///< The case.
-  int run = 0;               ///< 0-based run index within the case.
-  std::uint64_t seed = 0;    ///< The run's seed (samplers and OMPL).
+  int case_index = 0;      ///< Position of the case in the benchmark's global order.
+  CaseDescription what;    ///< The case.
+  int run = 0;             ///< 0-based run index within the case.
+  std::uint64_t seed = 0;  ///< The run's seed (samplers and OMPL).
   /// "solved", "unsolved", "crashed" (the run died: its message is lost) or "timeout" (killed
   /// by the watchdog at 10 x the time limit + 60 s).
   std::string status;

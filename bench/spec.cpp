@@ -249,10 +249,9 @@ std::string BenchCase::Key(const BenchSpec& spec) const {
 BenchSpec LoadBenchSpec(const std::string& path) {
   const Reader r{path};
   const YAML::Node root = internal::LoadYamlFile(path);
-  r.CheckKeys(
-      root, "",
-      {"name", "description", "seed", "runs", "acd", "acd_sampler", "worlds", "robots", "cases",
-       "targets"});
+  r.CheckKeys(root, "",
+              {"name", "description", "seed", "runs", "acd", "acd_sampler", "worlds", "robots",
+               "cases", "targets"});
   BenchSpec spec;
   spec.path = path;
   if (!root["name"]) r.Fail("name", "required");
@@ -374,7 +373,8 @@ BenchSpec LoadBenchSpec(const std::string& path) {
           if (!planning::SupportsSampleBudget(planner)) {
             r.Fail(bkey + ".samples",
                    "a sample budget (the Figure-4 protocol) needs PRM, PRM_ACD or PRMstar, "
-                   "not " + planner + "; use time_limit");
+                   "not " +
+                       planner + "; use time_limit");
           }
         }
       } else {

@@ -28,7 +28,8 @@ struct BenchWorld {
 struct BenchRobot {
   std::string name;
   envs::Robot robot;
-  planning::AcdSamplerOptions acd_options;  ///< The bench's acd_sampler options, orientation per robot.
+  planning::AcdSamplerOptions
+      acd_options;  ///< The bench's acd_sampler options, orientation per robot.
 };
 
 /// A budget: exactly one of `time_limit` (> 0) and `samples` (>= 1, the Figure-4 protocol).

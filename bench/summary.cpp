@@ -111,10 +111,15 @@ std::string Shards(const BenchManifest& m) {
 }  // namespace
 
 const std::vector<std::string>& CaseStatisticNames() {
-  static const std::vector<std::string> names = {
-      "runs",           "successes",          "success_rate",
-      "success_ci95_lo", "success_ci95_hi",   "median_time_s",
-      "p90_time_s",     "median_collision_checks", "median_decomposition_s"};
+  static const std::vector<std::string> names = {"runs",
+                                                 "successes",
+                                                 "success_rate",
+                                                 "success_ci95_lo",
+                                                 "success_ci95_hi",
+                                                 "median_time_s",
+                                                 "p90_time_s",
+                                                 "median_collision_checks",
+                                                 "median_decomposition_s"};
   return names;
 }
 
@@ -123,10 +128,14 @@ namespace {
 /// `c`'s statistics as metrics "<prefix><statistic>".
 void AddStatistics(const std::string& prefix, const BenchCaseSummary& c,
                    std::map<std::string, double>* metrics) {
-  const double values[] = {static_cast<double>(c.runs), static_cast<double>(c.successes),
-                           c.success_rate,              c.success_ci95.first,
-                           c.success_ci95.second,       c.median_time_s,
-                           c.p90_time_s,                c.median_collision_checks,
+  const double values[] = {static_cast<double>(c.runs),
+                           static_cast<double>(c.successes),
+                           c.success_rate,
+                           c.success_ci95.first,
+                           c.success_ci95.second,
+                           c.median_time_s,
+                           c.p90_time_s,
+                           c.median_collision_checks,
                            c.median_decomposition_s};
   const std::vector<std::string>& names = CaseStatisticNames();
   for (size_t i = 0; i < names.size(); ++i) (*metrics)[prefix + names[i]] = values[i];
@@ -265,11 +274,10 @@ std::string BenchSummaryMarkdown(const BenchManifest& m,
     for (const BenchCaseSummary& c : cases) {
       if (c.what.world != world) continue;
       md << "| " << c.what.robot << " | " << c.what.sampler << " | " << c.what.planner << " | "
-         << c.what.budget
-         << " | " << c.successes << "/" << c.runs << " (" << Percent(c.success_rate) << ") | ["
-         << Percent(c.success_ci95.first) << ", " << Percent(c.success_ci95.second) << "] | "
-         << Time(c.median_time_s) << " | " << Time(c.p90_time_s) << " | "
-         << Fixed(c.median_collision_checks, 0) << " | "
+         << c.what.budget << " | " << c.successes << "/" << c.runs << " ("
+         << Percent(c.success_rate) << ") | [" << Percent(c.success_ci95.first) << ", "
+         << Percent(c.success_ci95.second) << "] | " << Time(c.median_time_s) << " | "
+         << Time(c.p90_time_s) << " | " << Fixed(c.median_collision_checks, 0) << " | "
          << (c.what.sampler == "acd" ? Fixed(1e3 * c.median_decomposition_s, 1) : "—") << " |\n";
     }
     md << "\n";
@@ -288,8 +296,9 @@ std::string BenchSummaryMarkdown(const BenchManifest& m,
     const BenchCaseSummary* best = g.BestOther();
     if (!acd || !best) continue;
     md << "| " << g.what.world << " | " << g.what.robot << " | " << g.what.planner << " | "
-       << g.what.budget << " | " << Percent(acd->success_rate) << " | " << (uniform ? Percent(uniform->success_rate) : "—")
-       << " | " << best->what.sampler << " " << Percent(best->success_rate) << " | "
+       << g.what.budget << " | " << Percent(acd->success_rate) << " | "
+       << (uniform ? Percent(uniform->success_rate) : "—") << " | " << best->what.sampler << " "
+       << Percent(best->success_rate) << " | "
        << (uniform ? Ratio(acd->success_rate, uniform->success_rate) : "—") << " | "
        << (uniform ? Ratio(uniform->median_time_s, acd->median_time_s) : "—") << " | "
        << Ratio(best->median_time_s, acd->median_time_s) << " |\n";

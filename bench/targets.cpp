@@ -15,9 +15,9 @@ namespace {
 using Reader = planning::internal::YamlReader;
 
 const std::pair<const char*, Comparison> kComparisons[] = {
-    {"<", Comparison::kLess},          {"<=", Comparison::kLessEqual},
-    {">", Comparison::kGreater},       {">=", Comparison::kGreaterEqual},
-    {"==", Comparison::kEqual},        {"!=", Comparison::kNotEqual}};
+    {"<", Comparison::kLess},    {"<=", Comparison::kLessEqual},
+    {">", Comparison::kGreater}, {">=", Comparison::kGreaterEqual},
+    {"==", Comparison::kEqual},  {"!=", Comparison::kNotEqual}};
 
 std::string Joined(const std::vector<std::string>& names) {
   std::string text;
@@ -57,7 +57,8 @@ MetricTest ReadTest(const Reader& r, const YAML::Node& node, const std::string& 
   for (const auto& [text, comparison] : kComparisons) {
     if (compare == text) test.compare = comparison, found = true;
   }
-  if (!found) r.Fail(child("compare"), "expected one of <, <=, >, >=, ==, !=, got '" + compare + "'");
+  if (!found)
+    r.Fail(child("compare"), "expected one of <, <=, >, >=, ==, !=, got '" + compare + "'");
   test.value = r.Number(node["value"], child("value"), "a number",
                         [](double x) { return std::isfinite(x); });
   return test;
@@ -181,9 +182,9 @@ std::vector<Target> ReadTargets(const std::string& file, const YAML::Node& node,
             vocabulary.labels.end()) {
           r.Fail(lkey, "unknown label (known: " + Joined(vocabulary.labels) + ")");
         }
-        std::vector<std::string> values = entry.second.IsSequence()
-                                              ? r.Strings(entry.second, lkey)
-                                              : std::vector<std::string>{r.String(entry.second, lkey)};
+        std::vector<std::string> values =
+            entry.second.IsSequence() ? r.Strings(entry.second, lkey)
+                                      : std::vector<std::string>{r.String(entry.second, lkey)};
         if (values.empty()) r.Fail(lkey, "expected at least one value");
         target.where[label] = values;
       }
@@ -191,8 +192,8 @@ std::vector<Target> ReadTargets(const std::string& file, const YAML::Node& node,
     if (const YAML::Node& conditions = t["if"]) {
       const std::string ckey = Reader::Child(item, "if");
       if (!conditions.IsSequence()) {
-        r.Fail(ckey, "expected a list of {metric, compare, value}, got " +
-                         Reader::Shown(conditions));
+        r.Fail(ckey,
+               "expected a list of {metric, compare, value}, got " + Reader::Shown(conditions));
       }
       for (size_t c = 0; c < conditions.size(); ++c) {
         const std::string ikey = Reader::Item(ckey, c);

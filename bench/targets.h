@@ -20,11 +20,11 @@
 // not have makes the target not apply to it; a metric the row has but could not measure
 // (NaN, e.g. a median time without a solved run) misses.
 
+#include <yaml-cpp/yaml.h>
+
 #include <map>
 #include <string>
 #include <vector>
-
-#include <yaml-cpp/yaml.h>
 
 namespace acdplan::bench {
 

@@ -4,6 +4,8 @@
 // Exit status: 0 done; 2 bad usage or an unreadable file named on the command line; 1 one of
 // our decompositions threw or failed --check (the table is still complete and says where).
 
+#include "bench/acd_bench.h"
+
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <filesystem>
@@ -13,7 +15,6 @@
 
 #include "acd/decomposition_io.h"
 #include "acd/input_error.h"
-#include "bench/acd_bench.h"
 #include "bench/targets.h"
 
 namespace {

@@ -1,19 +1,19 @@
 // The acdplan command line. Exit statuses (DESIGN.md): 0 success; 2 bad input or usage, with
 // one line "acdplan: error: <message>" on stderr; 1 internal error.
 
-#include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <ctime>
-#include <thread>
 #include <exception>
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "acd/check_decomposition.h"
@@ -174,7 +174,6 @@ int RunDecompose(const DecomposeArguments& args) {
   for (const std::string& path : written) std::printf("wrote          %s\n", path.c_str());
   return 0;
 }
-
 
 /// bench-collision's default --mesh-dir, relative to the working directory (the repository).
 const char* const kDefaultMeshDir = "data/meshes/vhacd";
@@ -454,9 +453,10 @@ int main(int argc, char** argv) {
       ->capture_default_str()->check(CLI::PositiveNumber);
   bench_collision->add_option("--seed", bench_options.seed, "Seed of worlds and poses")
       ->capture_default_str();
-  bench_collision->add_option("--mesh-dir", bench_options.mesh_dir,
-                              "Folder of .obj meshes used as 3D obstacles (relative to the working "
-                              "directory); '' to skip 3D")
+  bench_collision
+      ->add_option("--mesh-dir", bench_options.mesh_dir,
+                   "Folder of .obj meshes used as 3D obstacles (relative to the working "
+                   "directory); '' to skip 3D")
       ->capture_default_str();
 
   PlanArguments plan_args;
@@ -498,9 +498,10 @@ int main(int argc, char** argv) {
   bench->add_option("--runs", bench_args.runs, "Runs per case (default: the file's)")
       ->check(CLI::PositiveNumber);
   bench->add_option("--out", bench_args.out, "Output folder (default bench-out/<name>)");
-  bench->add_option("--shard", bench_args.shard,
-                    "I/N: run only the runs k (global order) with k % N == I - 1; join the "
-                    "shards' folders with bench-merge")
+  bench
+      ->add_option("--shard", bench_args.shard,
+                   "I/N: run only the runs k (global order) with k % N == I - 1; join the "
+                   "shards' folders with bench-merge")
       ->capture_default_str()
       ->check(ParsedBy(acdplan::bench::ParseBenchShard));
   bench->add_option("--jobs", bench_args.jobs,
@@ -533,7 +534,8 @@ int main(int argc, char** argv) {
     if (decompose->parsed()) return RunDecompose(args);
     if (plan->parsed()) return RunPlan(plan_args);
     if (env->parsed()) return acdplan::tools::RunEnv(env_args);
-    if (bench_collision->parsed()) return RunBenchCollision(bench_options, bench_json, bench_targets);
+    if (bench_collision->parsed())
+      return RunBenchCollision(bench_options, bench_json, bench_targets);
     if (bench->parsed()) return RunBench(bench_args);
     if (bench_merge->parsed()) return RunBenchMerge(bench_args);
     return 0;

@@ -67,9 +67,10 @@ void PlotBench(const std::string& dir, std::ostream* log) {
   const std::string script = FindPlotBenchScript(SelfExecutable(), env ? env : "");
   std::error_code ec;
   if (script.empty() || !std::filesystem::is_regular_file(script, ec)) {
-    say("bench: no plots: " + (script.empty() ? std::string("plot_bench.py not found next to the "
-                                                             "executable or in ../share/acdplan")
-                                              : "$ACDPLAN_PLOT_BENCH " + script + " does not exist") +
+    say("bench: no plots: " +
+        (script.empty() ? std::string("plot_bench.py not found next to the "
+                                      "executable or in ../share/acdplan")
+                        : "$ACDPLAN_PLOT_BENCH " + script + " does not exist") +
         " (set ACDPLAN_PLOT_BENCH)");
     return;
   }

@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "acd/input_error.h"
-#include "bench/record.h"
 #include "bench/merge.h"
 #include "bench/ompl_log.h"
 #include "bench/outputs.h"
+#include "bench/record.h"
 #include "bench/runner.h"
 #include "bench/spec.h"
 #include "bench/stats.h"
@@ -333,16 +333,15 @@ TEST(BenchRunner, AcdBeatsUniformOnFigure4) {
 }
 
 TEST(BenchReport, SpecTargetsAreCheckedInTheSummaryAndSurviveAMerge) {
-  const std::string text =
-      SmallFigure4(2) +
-      "targets:\n"
-      "  - name: acd solves\n"
-      "    where: {planner: PRM, budget_type: samples}\n"
-      "    if: [{metric: uniform.success_rate, compare: '<=', value: 1}]\n"
-      "    metric: acd.success_rate\n"
-      "    compare: '>='\n"
-      "    value: 0.5\n"
-      "  - {metric: gaussian.runs, compare: '==', value: 3}\n";
+  const std::string text = SmallFigure4(2) +
+                           "targets:\n"
+                           "  - name: acd solves\n"
+                           "    where: {planner: PRM, budget_type: samples}\n"
+                           "    if: [{metric: uniform.success_rate, compare: '<=', value: 1}]\n"
+                           "    metric: acd.success_rate\n"
+                           "    compare: '>='\n"
+                           "    value: 0.5\n"
+                           "  - {metric: gaussian.runs, compare: '==', value: 3}\n";
   const BenchSpec spec = LoadBenchSpec(WriteBench("targets", text));
   ASSERT_EQ(spec.targets.size(), 2u);
   BenchManifest manifest = ManifestOf(spec, "1/1");
@@ -352,7 +351,8 @@ TEST(BenchReport, SpecTargetsAreCheckedInTheSummaryAndSurviveAMerge) {
   const std::string summary = ReadText(dir / "summary.md");
   EXPECT_HAS(summary, "## Targets\n");
   EXPECT_HAS(summary, "| demo | point | PRM | 200 samples | acd solves | 100% | holds |\n");
-  EXPECT_HAS(summary, "| demo | point | PRM | 200 samples | gaussian.runs == 3 | 2 | **missed** |\n");
+  EXPECT_HAS(summary,
+             "| demo | point | PRM | 200 samples | gaussian.runs == 3 | 2 | **missed** |\n");
   EXPECT_HAS(summary, "1 target checks hold, 1 missed.");
 
   BenchManifest joined;
@@ -397,8 +397,9 @@ TEST(BenchReport, CsvHeaderIsUnchanged) {
   const std::vector<BenchRecord> back = ReadBenchRecordsCsv((dir / "runs.csv").string());
   ASSERT_EQ(back.size(), 1u);
   EXPECT_EQ(BenchRecordsToCsv(back), csv);
-  std::ofstream(dir / "bad.csv") << BenchCsvHeader() << "\n3,w,f,wide,10,disc,acd,PRM,2 s,2,0,1,"
-                                                        "42,solved,1,0,0,0,0,0,0,0\n";
+  std::ofstream(dir / "bad.csv") << BenchCsvHeader()
+                                 << "\n3,w,f,wide,10,disc,acd,PRM,2 s,2,0,1,"
+                                    "42,solved,1,0,0,0,0,0,0,0\n";
   try {
     ReadBenchRecordsCsv((dir / "bad.csv").string());
     ADD_FAILURE();
@@ -465,11 +466,11 @@ TEST(BenchCli, BadInputExitsTwoWithTheKeyPath) {
 
 TEST(BenchCli, BenchCollisionNamesTheFlagOfABadPath) {
   const fs::path dir = Scratch("cli_collision");
-  EXPECT_EQ(Acdplan("bench-collision --poses 1 --points 1 --mesh-dir /nowhere/meshes", dir / "o.txt"),
-            2);
+  EXPECT_EQ(
+      Acdplan("bench-collision --poses 1 --points 1 --mesh-dir /nowhere/meshes", dir / "o.txt"), 2);
   EXPECT_HAS(ReadText(dir / "o.txt"), "--mesh-dir /nowhere/meshes: not a folder");
-  const std::string bad = WriteBench("collision_targets",
-                                     "targets: [{metric: hulls_speed, compare: '>', value: 1}]\n");
+  const std::string bad =
+      WriteBench("collision_targets", "targets: [{metric: hulls_speed, compare: '>', value: 1}]\n");
   EXPECT_EQ(Acdplan("bench-collision --poses 1 --points 1 --mesh-dir '' --targets '" + bad + "'",
                     dir / "o2.txt"),
             2);

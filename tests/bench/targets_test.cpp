@@ -24,7 +24,8 @@ namespace fs = std::filesystem;
   EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << (haystack)
 
 std::string WriteFile(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("acdplan_targets_test_" + std::to_string(getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("acdplan_targets_test_" + std::to_string(getpid()));
   fs::create_directories(dir);
   const fs::path path = dir / name;
   std::ofstream(path) << text;
@@ -111,14 +112,20 @@ TEST(Targets, ChecksRowsWithFiltersConditionsAndRatios) {
 
   std::vector<TargetRow> rows(4);
   rows[0].labels = {{"world", "a"}, {"planner", "PRM"}};
-  rows[0].metrics = {{"uniform.success_rate", 0.1}, {"acd.success_rate", 1.0},
-                     {"uniform.median_time_s", 2.0}, {"acd.median_time_s", 0.1}};
+  rows[0].metrics = {{"uniform.success_rate", 0.1},
+                     {"acd.success_rate", 1.0},
+                     {"uniform.median_time_s", 2.0},
+                     {"acd.median_time_s", 0.1}};
   rows[1].labels = {{"world", "b"}, {"planner", "PRM"}};  // uniform fine: rescue n/a.
-  rows[1].metrics = {{"uniform.success_rate", 0.9}, {"acd.success_rate", 0.5},
-                     {"uniform.median_time_s", 1.0}, {"acd.median_time_s", 0.5}};
+  rows[1].metrics = {{"uniform.success_rate", 0.9},
+                     {"acd.success_rate", 0.5},
+                     {"uniform.median_time_s", 1.0},
+                     {"acd.median_time_s", 0.5}};
   rows[2].labels = {{"world", "c"}, {"planner", "RRT"}};  // acd never solved: NaN misses.
-  rows[2].metrics = {{"uniform.success_rate", 0.0}, {"acd.success_rate", 0.0},
-                     {"uniform.median_time_s", 1.0}, {"acd.median_time_s", std::nan("")}};
+  rows[2].metrics = {{"uniform.success_rate", 0.0},
+                     {"acd.success_rate", 0.0},
+                     {"uniform.median_time_s", 1.0},
+                     {"acd.median_time_s", std::nan("")}};
   rows[3].labels = {{"world", "d"}, {"planner", "PRM"}};  // No acd at all: nothing applies.
   rows[3].metrics = {{"uniform.success_rate", 0.0}};
 
@@ -138,8 +145,9 @@ TEST(Targets, ChecksRowsWithFiltersConditionsAndRatios) {
 
   const std::string md = TargetChecksMarkdown(checks, {"world", "planner"});
   EXPECT_HAS(md, "| world | planner | target | measured | |\n");
-  EXPECT_HAS(md, "| a | PRM | acd.success_rate >= 0.95 where uniform.success_rate <= 0.2 | 100% "
-                 "| holds |\n");
+  EXPECT_HAS(md,
+             "| a | PRM | acd.success_rate >= 0.95 where uniform.success_rate <= 0.2 | 100% "
+             "| holds |\n");
   EXPECT_HAS(md, "| b | PRM | faster | 2x | **missed** |\n");
   EXPECT_HAS(md, "| c | RRT | faster | not measured | **missed** |\n");
   EXPECT_HAS(md, "\n2 target checks hold, 2 missed.\n");
@@ -167,11 +175,12 @@ TEST(Targets, CollisionRowsLeaveUnmeasuredFiguresOut) {
   EXPECT_EQ(rows[0].labels.at("kind"), "mesh");
   EXPECT_EQ(rows[0].metrics.count("locate_exact_points_per_s"), 0u);
   const std::vector<Target> targets = LoadTargetsFile(
-      WriteFile("c.yaml",
-                "targets:\n"
-                "  - {metric: hulls_checks_per_s, over: bvh_checks_per_s, compare: '>=', value: 3}\n"
-                "  - {metric: locate_hulls_points_per_s, over: locate_exact_points_per_s,"
-                " compare: '>=', value: 10}\n"),
+      WriteFile(
+          "c.yaml",
+          "targets:\n"
+          "  - {metric: hulls_checks_per_s, over: bvh_checks_per_s, compare: '>=', value: 3}\n"
+          "  - {metric: locate_hulls_points_per_s, over: locate_exact_points_per_s,"
+          " compare: '>=', value: 10}\n"),
       CollisionTargetVocabulary());
   const std::string md = BenchCollisionMarkdown({open_mesh}, targets);
   EXPECT_HAS(md, "| bunny/mesh | hulls_checks_per_s / bvh_checks_per_s >= 3 | 3x | holds |");
@@ -182,8 +191,9 @@ TEST(Targets, CollisionRowsLeaveUnmeasuredFiguresOut) {
                     CollisionTargetVocabulary());
     ADD_FAILURE() << "accepted an unknown metric";
   } catch (const acd::InputError& error) {
-    EXPECT_HAS(error.what(), "bad.yaml: targets[0].metric: unknown metric 'speed' (known: "
-                             "triangles, hulls,");
+    EXPECT_HAS(error.what(),
+               "bad.yaml: targets[0].metric: unknown metric 'speed' (known: "
+               "triangles, hulls,");
   }
 }
 

@@ -28,7 +28,8 @@ TEST(PlotBench, FindsTheScriptNextToTheExecutableThenInShare) {
   const std::string exe = (prefix / "bin" / "acdplan").string();
   EXPECT_EQ(FindPlotBenchScript(exe, ""), "");
   std::ofstream(prefix / "share" / "acdplan" / "plot_bench.py") << "\n";
-  EXPECT_EQ(FindPlotBenchScript(exe, ""), (prefix / "share" / "acdplan" / "plot_bench.py").string());
+  EXPECT_EQ(FindPlotBenchScript(exe, ""),
+            (prefix / "share" / "acdplan" / "plot_bench.py").string());
   std::ofstream(prefix / "bin" / "plot_bench.py") << "\n";  // A build tree's copy wins.
   EXPECT_EQ(FindPlotBenchScript(exe, ""), (prefix / "bin" / "plot_bench.py").string());
   // $ACDPLAN_PLOT_BENCH wins, even when wrong (so the mistake is reported, not hidden).
