@@ -1,19 +1,18 @@
 // The acdplan command line. Exit statuses (DESIGN.md): 0 success; 2 bad input or usage, with
 // one line "acdplan: error: <message>" on stderr; 1 internal error.
 
-#include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <ctime>
-#include <thread>
 #include <exception>
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "acd/check_decomposition.h"
@@ -23,16 +22,20 @@
 #include "acd/decomposition_io.h"
 #include "base/file_io.h"
 #include "base/input_error.h"
+#include "base/stopwatch.h"
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
-#include "collision/bench_collision.h"
-#include "planning/bench_record.h"
-#include "planning/bench_report.h"
-#include "planning/bench_runner.h"
-#include "planning/bench_spec.h"
+#include "bench/collision_bench.h"
+#include "bench/merge.h"
+#include "bench/outputs.h"
+#include "bench/record.h"
+#include "bench/runner.h"
+#include "bench/spec.h"
+#include "bench/targets.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
 #include "tools/env_command.h"
+#include "tools/plot_bench.h"
 
 namespace {
 
@@ -166,14 +169,28 @@ int RunDecompose(const DecomposeArguments& args) {
   return 0;
 }
 
+/// bench-collision's default --mesh-dir, relative to the working directory (the repository).
+const char* const kDefaultMeshDir = "data/meshes/vhacd";
 
-/// `acdplan bench-collision`: collision/bench_collision.h, a Markdown table on stdout.
-int RunBenchCollision(const acdplan::collision::BenchCollisionOptions& options,
-                      const std::string& json_path) {
-  const auto rows = acdplan::collision::BenchCollision(options, &std::cerr);
-  std::cout << acdplan::collision::BenchCollisionMarkdown(rows);
+/// `acdplan bench-collision`: bench/collision_bench.h, a Markdown table on stdout.
+int RunBenchCollision(acdplan::bench::BenchCollisionOptions options, const std::string& json_path,
+                      const std::string& targets_path) {
+  namespace bench = acdplan::bench;
+  std::error_code ec;
+  if (!options.mesh_dir.empty() && !std::filesystem::is_directory(options.mesh_dir, ec)) {
+    throw acdplan::InputError("--mesh-dir " + options.mesh_dir +
+                          ": not a folder (the default is relative to the working directory: run "
+                          "from the repository, or give --mesh-dir DIR, or --mesh-dir '' to skip "
+                          "3D)");
+  }
+  std::vector<bench::Target> targets;
+  if (!targets_path.empty()) {
+    targets = bench::LoadTargetsFile(targets_path, bench::CollisionTargetVocabulary());
+  }
+  const auto rows = bench::BenchCollision(options, &std::cerr);
+  std::cout << bench::BenchCollisionMarkdown(rows, targets);
   if (!json_path.empty()) {
-    acdplan::WriteFileAtomically(json_path, acdplan::collision::BenchCollisionJson(rows, options));
+    acdplan::WriteFileAtomically(json_path, bench::BenchCollisionJson(rows, options));
     std::printf("wrote %s\n", json_path.c_str());
   }
   return 0;
@@ -284,13 +301,13 @@ void ListOutputs(const std::string& dir) {
 /// `acdplan bench`: exit 0 when the runs are done (whatever they found), 130 after Ctrl-C
 /// (the outputs then hold the finished runs), 2 bad input.
 int RunBench(const BenchArguments& args) {
-  namespace planning = acdplan::planning;
-  const planning::BenchSpec spec = planning::LoadBenchSpec(args.spec);
-  const planning::BenchShard shard = planning::ParseBenchShard(args.shard);
+  namespace bench = acdplan::bench;
+  const bench::BenchSpec spec = bench::LoadBenchSpec(args.spec);
+  const bench::BenchShard shard = bench::ParseBenchShard(args.shard);
   const std::string out = args.out.empty() ? "bench-out/" + spec.name : args.out;
   CheckOutputDir(out);
 
-  planning::BenchManifest manifest;
+  bench::BenchManifest manifest;
   manifest.name = spec.name;
   manifest.description = spec.description;
   manifest.spec = args.spec;
@@ -298,7 +315,7 @@ int RunBench(const BenchArguments& args) {
   manifest.runs = args.runs > 0 ? args.runs : spec.runs;
   manifest.cases = static_cast<int>(spec.cases.size());
   manifest.shards = {args.shard};
-  manifest.planned_runs = planning::BenchRunsOfShard(spec, manifest.runs, shard).size();
+  manifest.planned_runs = bench::BenchRunsOfShard(spec, manifest.runs, shard).size();
   char host[256] = {};
   if (gethostname(host, sizeof(host) - 1) == 0) manifest.hostname = host;
   manifest.cpus = static_cast<int>(std::thread::hardware_concurrency());
@@ -306,6 +323,7 @@ int RunBench(const BenchArguments& args) {
   if (getloadavg(load, 1) == 1) manifest.load_average = load[0];
   manifest.jobs = args.jobs;
   manifest.started = UtcNow();
+  manifest.targets = spec.targets;
 
   // Ctrl-C: stop starting runs, drop the ones in flight, write what finished, exit 130. A
   // second Ctrl-C kills at once (the files already written stay whole: atomic writes).
@@ -316,31 +334,31 @@ int RunBench(const BenchArguments& args) {
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
 
-  const auto started = std::chrono::steady_clock::now();
-  planning::BenchRunOptions options;
+  const acdplan::Stopwatch started;
+  bench::BenchRunOptions options;
   options.runs = manifest.runs;
   options.shard = shard;
   options.jobs = args.jobs;
   options.progress = &std::cerr;
   options.stop = &g_bench_stop;
-  options.checkpoint = [&](const std::vector<planning::BenchRecord>& records) {
-    planning::BenchManifest partial = manifest;
-    partial.wall_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  options.checkpoint = [&](const std::vector<bench::BenchRecord>& records) {
+    bench::BenchManifest partial = manifest;
+    partial.wall_s = started.Seconds();
     partial.interrupted = true;  // Until the final write says otherwise.
-    planning::WriteBenchRecord(out, partial, records);
+    bench::WriteBenchRecord(out, partial, records);
   };
   std::fprintf(stderr, "bench %s: %zu cases x %d runs, shard %s: %llu runs, %d in parallel -> %s\n",
                spec.name.c_str(), spec.cases.size(), manifest.runs, args.shard.c_str(),
                static_cast<unsigned long long>(manifest.planned_runs), args.jobs, out.c_str());
-  const planning::BenchRunOutcome outcome = planning::RunBench(spec, options);
+  const bench::BenchRunOutcome outcome = bench::RunBench(spec, options);
   manifest.wall_s = outcome.wall_s;
   manifest.interrupted = outcome.interrupted;
   try {
-    planning::WriteBenchOutputs(out, manifest, outcome.records, !args.no_plots, &std::cerr);
+    bench::WriteBenchOutputs(out, manifest, outcome.records);
   } catch (const std::runtime_error& error) {
     throw acdplan::InputError(error.what());
   }
+  if (!args.no_plots) acdplan::tools::PlotBench(out, &std::cerr);
   ListOutputs(out);
   if (outcome.interrupted) {
     std::fprintf(stderr, "bench: interrupted: %zu of %llu runs written\n", outcome.records.size(),
@@ -352,17 +370,18 @@ int RunBench(const BenchArguments& args) {
 
 /// `acdplan bench-merge`: joins shard folders into the outputs one unsharded run writes.
 int RunBenchMerge(const BenchArguments& args) {
-  namespace planning = acdplan::planning;
-  planning::BenchManifest manifest;
-  std::vector<planning::BenchRecord> records;
-  planning::MergeBenchRecords(args.merge_dirs, &manifest, &records);
+  namespace bench = acdplan::bench;
+  bench::BenchManifest manifest;
+  std::vector<bench::BenchRecord> records;
+  bench::MergeBenchRecords(args.merge_dirs, &manifest, &records);
   const std::string out = args.out.empty() ? "bench-out/" + manifest.name + "-merged" : args.out;
   CheckOutputDir(out);
   try {
-    planning::WriteBenchOutputs(out, manifest, records, !args.no_plots, &std::cerr);
+    bench::WriteBenchOutputs(out, manifest, records);
   } catch (const std::runtime_error& error) {
     throw acdplan::InputError(error.what());
   }
+  if (!args.no_plots) acdplan::tools::PlotBench(out, &std::cerr);
   std::printf("merged %zu runs from %zu folders\n", records.size(), args.merge_dirs.size());
   ListOutputs(out);
   return 0;
@@ -414,22 +433,27 @@ int main(int argc, char** argv) {
                       "Check the result (coverage, disjointness, concavity); on failure "
                       "list the problems, write nothing and exit 1");
 
-  acdplan::collision::BenchCollisionOptions bench_options;
-  bench_options.mesh_dir = ACDPLAN_BENCH_MESH_DIR;
-  std::string bench_json;
+  acdplan::bench::BenchCollisionOptions bench_options;
+  bench_options.mesh_dir = kDefaultMeshDir;
+  std::string bench_json, bench_targets;
   CLI::App* bench_collision = app.add_subcommand(
       "bench-collision",
       "Collision checks per second for bvh, hulls and hulls+exact and point location exact vs "
-      "hulls, on the built-in 2D worlds and the meshes of --mesh-dir (collision/bench_collision.h)");
+      "hulls, on the built-in 2D worlds and the meshes of --mesh-dir (bench/collision_bench.h)");
   bench_collision->add_option("--json", bench_json, "Write the results as JSON here");
+  bench_collision->add_option("--targets", bench_targets,
+                              "YAML file of targets to check (e.g. "
+                              "configs/bench/collision_targets.yaml; bench/targets.h)");
   bench_collision->add_option("--poses", bench_options.poses, "Random poses per world and robot")
       ->capture_default_str()->check(CLI::PositiveNumber);
   bench_collision->add_option("--points", bench_options.points, "Random points per world")
       ->capture_default_str()->check(CLI::PositiveNumber);
   bench_collision->add_option("--seed", bench_options.seed, "Seed of worlds and poses")
       ->capture_default_str();
-  bench_collision->add_option("--mesh-dir", bench_options.mesh_dir,
-                              "Folder of .obj meshes used as 3D obstacles; '' to skip 3D")
+  bench_collision
+      ->add_option("--mesh-dir", bench_options.mesh_dir,
+                   "Folder of .obj meshes used as 3D obstacles (relative to the working "
+                   "directory); '' to skip 3D")
       ->capture_default_str();
 
   PlanArguments plan_args;
@@ -463,7 +487,7 @@ int main(int argc, char** argv) {
   BenchArguments bench_args;
   CLI::App* bench = app.add_subcommand(
       "bench",
-      "Run the benchmark BENCH.yaml (planning/bench_spec.h: worlds x robots x samplers x "
+      "Run the benchmark BENCH.yaml (bench/spec.h: worlds x robots x samplers x "
       "planners x budgets) and write runs.csv, results.json, summary.md, one OMPL benchmark log "
       "per world and PNG plots into --out. Exit status: 0 done, 130 interrupted (the finished "
       "runs are written), 2 bad input or usage, 1 internal error.");
@@ -471,11 +495,12 @@ int main(int argc, char** argv) {
   bench->add_option("--runs", bench_args.runs, "Runs per case (default: the file's)")
       ->check(CLI::PositiveNumber);
   bench->add_option("--out", bench_args.out, "Output folder (default bench-out/<name>)");
-  bench->add_option("--shard", bench_args.shard,
-                    "I/N: run only the runs k (global order) with k % N == I - 1; join the "
-                    "shards' folders with bench-merge")
+  bench
+      ->add_option("--shard", bench_args.shard,
+                   "I/N: run only the runs k (global order) with k % N == I - 1; join the "
+                   "shards' folders with bench-merge")
       ->capture_default_str()
-      ->check(ParsedBy(acdplan::planning::ParseBenchShard));
+      ->check(ParsedBy(acdplan::bench::ParseBenchShard));
   bench->add_option("--jobs", bench_args.jobs,
                     "Runs in parallel (child processes); more than free cores inflates times")
       ->capture_default_str()
@@ -506,7 +531,8 @@ int main(int argc, char** argv) {
     if (decompose->parsed()) return RunDecompose(args);
     if (plan->parsed()) return RunPlan(plan_args);
     if (env->parsed()) return acdplan::tools::RunEnv(env_args);
-    if (bench_collision->parsed()) return RunBenchCollision(bench_options, bench_json);
+    if (bench_collision->parsed())
+      return RunBenchCollision(bench_options, bench_json, bench_targets);
     if (bench->parsed()) return RunBench(bench_args);
     if (bench_merge->parsed()) return RunBenchMerge(bench_args);
     return 0;

@@ -144,7 +144,8 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
               Short(robot.BoundingRadius());
     }
     Line("robot", text);
-    Line("planner", scenario->planner + " with the " + scenario->sampler + " sampler");
+    Line("planner", planning::ToString(scenario->planner) + " with the " +
+                           planning::ToString(scenario->sampler) + " sampler");
   }
 
   if (!args.svg_path.empty()) {

@@ -6,10 +6,10 @@
 #include <iosfwd>
 #include <vector>
 
-#include "planning/bench_record.h"
-#include "planning/bench_spec.h"
+#include "bench/record.h"
+#include "bench/spec.h"
 
-namespace acdplan::planning {
+namespace acdplan::bench {
 
 /// Options for RunBench(); `{}` is valid.
 struct BenchRunOptions {
@@ -37,13 +37,14 @@ struct BenchRunOutcome {
 /// Checks that each robot fits at each world's start and goal, then runs the shard's runs
 /// (BenchRunsOfShard). Each run is PlanScenario() on the world with the robot, sampler,
 /// planner, budget and the run's seed, in a child process that seeds OMPL's global generator
-/// with it first: a run's result depends on its seed only, not on which runs came before in
-/// the same process, so shards reproduce the unsharded benchmark. A child also gets a
-/// watchdog (SIGALRM at 10 x the time limit + 60 s, or 600 s for a sample budget). acd runs
-/// keep the decomposition in their time; the other samplers do not use it, so it is taken out
+/// with it first (only these children are reaped: waitpid on their pids, never on -1, so the
+/// caller's own children keep their exit statuses): a run's result depends on its seed only, not on
+/// which runs came before in the same process, so shards reproduce the unsharded benchmark. A child
+/// also gets a watchdog (SIGALRM at 10 x the time limit + 60 s, or 600 s for a sample budget). acd
+/// runs keep the decomposition in their time; the other samplers do not use it, so it is taken out
 /// of theirs (and their decomposition_s is 0).
 /// @throws InputError "<bench file>: worlds ...: robot <name>: start: ..." if a robot
 ///         collides at a start or goal, or if a run reports bad input.
 BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options = {});
 
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

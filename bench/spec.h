@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "bench/targets.h"
 #include "planning/scenario.h"
 
-namespace acdplan::planning {
+namespace acdplan::bench {
 
 struct BenchSpec;
 
@@ -20,14 +21,15 @@ struct BenchWorld {
   double workspace_width = 0.0;  ///< Bounds' extent along x [units].
   /// Workspace, start and goal ([x, y] or [x, y, yaw]; point and disc robots use x, y, a
   /// polygon robot yaw 0 when absent), ACD tolerance and measure, collision mode.
-  Scenario scenario;
+  planning::Scenario scenario;
 };
 
 /// One robot of a benchmark.
 struct BenchRobot {
   std::string name;
   envs::Robot robot;
-  AcdSamplerOptions acd_options;  ///< The bench's acd_sampler options, orientation per robot.
+  planning::AcdSamplerOptions
+      acd_options;  ///< The bench's acd_sampler options, orientation per robot.
 };
 
 /// A budget: exactly one of `time_limit` (> 0) and `samples` (>= 1, the Figure-4 protocol).
@@ -42,7 +44,8 @@ struct BenchBudget {
 struct BenchCase {
   int index = 0;             ///< Position in BenchSpec::cases.
   int world = 0, robot = 0;  ///< Indices into BenchSpec::worlds / robots.
-  std::string sampler, planner;
+  planning::SamplerType sampler = planning::SamplerType::kAcd;
+  planning::PlannerType planner = planning::PlannerType::kPrm;
   BenchBudget budget;
   /// "world/robot/sampler/planner/budget": stable, seeds are derived from it.
   std::string Key(const BenchSpec& spec) const;
@@ -54,7 +57,8 @@ struct BenchCase {
 ///   description: "one line"
 ///   seed: 1                         # base seed, integer >= 0 (default 1)
 ///   runs: 20                        # runs per case, integer >= 1 (default 10)
-///   acd: {tau_rel: 0.02, measure: sp}   # defaults for worlds without their own
+///   acd: {tau_diag: 0.02, measure: sp}  # defaults for worlds without their own (tau_rel:
+///                                   # the older spelling, read with a warning)
 ///   acd_sampler: {uniform_share: 0.1, opening_weight: 4, centroid_spread: 0.3,
 ///                 opening_spread: 0.5}
 ///   worlds:                         # required, non-empty
@@ -75,6 +79,11 @@ struct BenchCase {
 ///       samplers: [uniform, acd]    # registry.h SamplerNames()
 ///       planners: [PRM]             # registry.h PlannerNames()
 ///       budgets: [{samples: 200}, {time_limit: 2}]   # samples: PRM, PRM_ACD, PRMstar
+///   targets:                        # optional acceptance targets (bench/targets.h), on rows
+///     - where: {planner: PRM}       # world x robot x planner x budget (bench/summary.h
+///       metric: acd.success_rate    # PlanningTargetVocabulary())
+///       compare: ">="
+///       value: 0.95
 struct BenchSpec {
   std::string path;  ///< The file it was read from.
   std::string name, description;
@@ -84,11 +93,15 @@ struct BenchSpec {
   std::vector<BenchRobot> robots;
   std::vector<BenchCase> cases;  ///< In file order: groups, then worlds, robots, samplers,
                                  ///< planners, budgets.
+  std::vector<Target> targets;   ///< Checked in summary.md.
+  /// Accepted but worth a word ("b.yaml: acd.tau_rel: read as tau_diag ..."), for stderr;
+  /// a scenario file's own warnings are in its world's scenario.
+  std::vector<std::string> warnings;
 };
 
 /// Reads and validates a benchmark file; loads (generates) its worlds.
 /// @throws InputError "<file>: <key path>: <rule>", e.g. "b.yaml: cases[0].planners[1]:
-///         unknown planner 'PRN' (known: ...)", for syntax errors (with the line), unknown keys,
+///         unknown planner 'PRN' (expected one of: ...)", for syntax errors (with the line), unknown keys,
 ///         wrong types, out-of-range values, unknown or duplicate names, a sample budget with a
 ///         planner other than PRM / PRMstar, and errors of a world or scenario file.
 BenchSpec LoadBenchSpec(const std::string& path);
@@ -119,4 +132,4 @@ std::uint64_t BenchRunSeed(std::uint64_t base_seed, const std::string& case_key,
 /// case.
 std::vector<BenchRunId> BenchRunsOfShard(const BenchSpec& spec, int runs, const BenchShard& shard);
 
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

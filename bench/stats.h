@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include "planning/bench_record.h"
+#include "bench/record.h"
 
-namespace acdplan::planning {
+namespace acdplan::bench {
 
 /// The Wilson score interval [lo, hi] for `successes` out of `trials` at normal quantile `z`
 /// (1.959964 for 95%): (p + z^2/2n +- z sqrt(p(1-p)/n + z^2/4n^2)) / (1 + z^2/n), p = k/n
@@ -24,10 +24,7 @@ double Quantile(std::vector<double> values, double q);
 /// One case's outcome over its runs.
 struct BenchCaseSummary {
   int case_index = 0;
-  std::string world, family, robot, sampler, planner, budget;
-  double passage_width = 0.0, workspace_width = 0.0;
-  double time_limit = 0.0;
-  int sample_budget = 0;
+  CaseDescription what;  ///< The case.
   int runs = 0, successes = 0;
   double success_rate = 0.0;
   std::pair<double, double> success_ci95{0.0, 1.0};  ///< Wilson.
@@ -40,4 +37,4 @@ struct BenchCaseSummary {
 /// One summary per case present in `records`, in case order.
 std::vector<BenchCaseSummary> SummarizeBenchCases(const std::vector<BenchRecord>& records);
 
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

@@ -1,4 +1,4 @@
-#include "planning/bench_record.h"
+#include "bench/record.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -7,41 +7,51 @@
 #include <sstream>
 #include <tuple>
 
+#include "base/enum_names.h"
+#include "base/file_io.h"
+#include "base/format.h"
 #include "base/input_error.h"
+#include "bench/summary.h"
 
-namespace acdplan::planning {
+namespace acdplan::bench {
 
 namespace {
 
-const char* const kColumns[] = {"case",
-                                "world",
-                                "family",
-                                "passage_width",
-                                "workspace_width",
-                                "robot",
-                                "sampler",
-                                "planner",
-                                "budget",
-                                "time_limit",
-                                "sample_budget",
-                                "run",
-                                "seed",
-                                "status",
-                                "solved",
-                                "time_s",
-                                "decomposition_s",
-                                "samples",
-                                "collision_checks",
-                                "path_length",
-                                "components",
-                                "openings"};
-constexpr size_t kColumnCount = sizeof(kColumns) / sizeof(kColumns[0]);
+constexpr std::array<EnumName<RunStatus>, 4> kRunStatuses = {{
+    {RunStatus::kSolved, "solved"},
+    {RunStatus::kUnsolved, "unsolved"},
+    {RunStatus::kCrashed, "crashed"},
+    {RunStatus::kTimeout, "timeout"},
+}};
 
-std::string Real(double x) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.17g", x);
-  return buffer;
+}  // namespace
+
+std::string ToString(RunStatus status) { return NameOf(kRunStatuses, status); }
+
+RunStatus ParseRunStatus(const std::string& text) {
+  return ValueOf(kRunStatuses, text, "run status");
 }
+
+namespace {
+
+const std::vector<std::string> kCaseColumns = {
+    "world",   "family",  "passage_width", "workspace_width", "robot",
+    "sampler", "planner", "budget",        "time_limit",      "sample_budget"};
+
+/// runs.csv: "case", the case's columns, then the run's.
+const std::vector<std::string> kColumns = [] {
+  std::vector<std::string> columns = {"case"};
+  columns.insert(columns.end(), kCaseColumns.begin(), kCaseColumns.end());
+  for (const char* c : {"run", "seed", "status", "solved", "time_s", "decomposition_s", "samples",
+                        "collision_checks", "path_length", "components", "openings"}) {
+    columns.push_back(c);
+  }
+  return columns;
+}();
+const size_t kColumnCount = kColumns.size();
+
+/// 17 significant digits: a read gives back the same double.
+std::string Real(double x) { return FormatSignificant(x, 17); }
 
 std::vector<std::string> Split(const std::string& line) {
   std::vector<std::string> fields;
@@ -52,11 +62,68 @@ std::vector<std::string> Split(const std::string& line) {
   return fields;
 }
 
+long long Integer(const std::vector<std::string>& f, size_t i, size_t* column) {
+  *column = i;
+  size_t used = 0;
+  const long long v = std::stoll(f[i], &used);
+  if (used != f[i].size()) throw std::invalid_argument("trailing");
+  return v;
+}
+
+double RealField(const std::vector<std::string>& f, size_t i, size_t* column) {
+  *column = i;
+  size_t used = 0;
+  const double v = std::stod(f[i], &used);
+  if (used != f[i].size()) throw std::invalid_argument("trailing");
+  return v;
+}
+
 }  // namespace
+
+const std::vector<std::string>& CaseCsvColumns() { return kCaseColumns; }
+
+std::string CaseCsvFields(const CaseDescription& c) {
+  std::ostringstream out;
+  out << c.world << "," << c.family << "," << Real(c.passage_width) << ","
+      << Real(c.workspace_width) << "," << c.robot << "," << c.sampler << "," << c.planner << ","
+      << c.budget << "," << Real(c.time_limit) << "," << c.sample_budget;
+  return out.str();
+}
+
+CaseDescription ReadCaseCsvFields(const std::vector<std::string>& f, size_t first, size_t* column) {
+  if (f.size() < first + kCaseColumns.size()) {
+    *column = f.size() > 0 ? f.size() - 1 : 0;
+    throw std::invalid_argument("too few fields");
+  }
+  CaseDescription c;
+  c.world = f[first];
+  c.family = f[first + 1];
+  c.passage_width = RealField(f, first + 2, column);
+  c.workspace_width = RealField(f, first + 3, column);
+  c.robot = f[first + 4];
+  c.sampler = f[first + 5];
+  c.planner = f[first + 6];
+  c.budget = f[first + 7];
+  c.time_limit = RealField(f, first + 8, column);
+  c.sample_budget = static_cast<int>(Integer(f, first + 9, column));
+  return c;
+}
+
+void AddCaseJson(const CaseDescription& c, nlohmann::json* object) {
+  nlohmann::json& e = *object;
+  e["world"] = c.world;
+  e["family"] = c.family;
+  e["passage_width"] = c.passage_width;
+  e["workspace_width"] = c.workspace_width;
+  e["robot"] = c.robot;
+  e["sampler"] = c.sampler;
+  e["planner"] = c.planner;
+  e["budget"] = c.budget;
+}
 
 std::string BenchCsvHeader() {
   std::string header;
-  for (const char* c : kColumns) header += (header.empty() ? "" : ",") + std::string(c);
+  for (const std::string& c : kColumns) header += (header.empty() ? "" : ",") + c;
   return header;
 }
 
@@ -64,10 +131,8 @@ std::string BenchRecordsToCsv(const std::vector<BenchRecord>& records) {
   std::ostringstream out;
   out << BenchCsvHeader() << "\n";
   for (const BenchRecord& r : records) {
-    out << r.case_index << "," << r.world << "," << r.family << "," << Real(r.passage_width) << ","
-        << Real(r.workspace_width) << "," << r.robot << "," << r.sampler << "," << r.planner << ","
-        << r.budget << "," << Real(r.time_limit) << "," << r.sample_budget << "," << r.run << ","
-        << r.seed << "," << r.status << "," << (r.solved ? 1 : 0) << "," << Real(r.time_s) << ","
+    out << r.case_index << "," << CaseCsvFields(r.what) << "," << r.run << "," << r.seed << ","
+        << ToString(r.status) << "," << (r.solved ? 1 : 0) << "," << Real(r.time_s) << ","
         << Real(r.decomposition_s) << "," << r.samples << "," << r.collision_checks << ","
         << Real(r.path_length) << "," << r.components << "," << r.openings << "\n";
   }
@@ -75,8 +140,7 @@ std::string BenchRecordsToCsv(const std::vector<BenchRecord>& records) {
 }
 
 std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot read the file");
+  std::istringstream in(ReadFile(path));
   std::string line;
   if (!std::getline(in, line) || line != BenchCsvHeader()) {
     throw InputError(path + ":1: expected the header " + BenchCsvHeader());
@@ -95,13 +159,7 @@ std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path) {
     size_t column = 0;
     try {
       BenchRecord r;
-      auto integer = [&](size_t i) {
-        column = i;
-        size_t used = 0;
-        const long long v = std::stoll(f[i], &used);
-        if (used != f[i].size()) throw std::invalid_argument("trailing");
-        return v;
-      };
+      auto integer = [&](size_t i) { return Integer(f, i, &column); };
       auto unsigned_integer = [&](size_t i) {
         column = i;
         size_t used = 0;
@@ -110,32 +168,13 @@ std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path) {
         if (used != f[i].size()) throw std::invalid_argument("trailing");
         return static_cast<std::uint64_t>(v);
       };
-      auto real = [&](size_t i) {
-        column = i;
-        size_t used = 0;
-        const double v = std::stod(f[i], &used);
-        if (used != f[i].size()) throw std::invalid_argument("trailing");
-        return v;
-      };
+      auto real = [&](size_t i) { return RealField(f, i, &column); };
       r.case_index = static_cast<int>(integer(0));
-      r.world = f[1];
-      r.family = f[2];
-      r.passage_width = real(3);
-      r.workspace_width = real(4);
-      r.robot = f[5];
-      r.sampler = f[6];
-      r.planner = f[7];
-      r.budget = f[8];
-      r.time_limit = real(9);
-      r.sample_budget = static_cast<int>(integer(10));
+      r.what = ReadCaseCsvFields(f, 1, &column);
       r.run = static_cast<int>(integer(11));
       r.seed = unsigned_integer(12);
-      r.status = f[13];
       column = 13;
-      if (r.status != "solved" && r.status != "unsolved" && r.status != "crashed" &&
-          r.status != "timeout") {
-        throw std::invalid_argument("status");
-      }
+      r.status = ParseRunStatus(f[13]);
       r.solved = integer(14) != 0;
       r.time_s = real(15);
       r.decomposition_s = real(16);
@@ -178,15 +217,15 @@ std::string BenchManifestToJson(const BenchManifest& m) {
   j["jobs"] = m.jobs;
   j["started"] = m.started;
   j["wall_s"] = m.wall_s;
+  if (!m.targets.empty()) j["targets"] = nlohmann::json::parse(TargetsToJson(m.targets));
   return j.dump(2) + "\n";
 }
 
 BenchManifest ReadBenchManifest(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot read the file");
+  const std::string text = ReadFile(path);
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(in);
+    j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& error) {
     throw InputError(path + ": not valid JSON: " + error.what());
   }
@@ -214,7 +253,11 @@ BenchManifest ReadBenchManifest(const std::string& path) {
   } catch (const nlohmann::json::exception&) {
     throw InputError(path + ": " + key + ": missing or of the wrong type");
   }
+  if (j.contains("targets")) {  // JSON is YAML: the benchmark file's reader checks them.
+    const YamlFile file = YamlFile::Parse(nlohmann::json{{"targets", j["targets"]}}.dump(), path);
+    m.targets = ReadTargets(file, file.root()["targets"], "targets", PlanningTargetVocabulary());
+  }
   return m;
 }
 
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

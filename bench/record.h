@@ -4,14 +4,17 @@
 // and an unsharded run give the same files (apart from the measured times).
 
 #include <cstdint>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
-namespace acdplan::planning {
+#include "bench/targets.h"
 
-/// One finished run, self-describing (a merge needs no BENCH.yaml).
-struct BenchRecord {
-  int case_index = 0;            ///< Position of the case in the benchmark's global order.
+namespace acdplan::bench {
+
+/// What one case of a benchmark is: the fields every run, summary and report of the case
+/// repeats. Serialised in one place (CaseCsvColumns() and the functions below it).
+struct CaseDescription {
   std::string world;             ///< World name (unique in the benchmark).
   std::string family;            ///< The sweep the world belongs to (its name if none).
   double passage_width = 0.0;    ///< [units]; 0 if unknown.
@@ -20,11 +23,46 @@ struct BenchRecord {
   std::string budget;       ///< "200 samples" or "2 s".
   double time_limit = 0.0;  ///< [s]; 0 for a sample budget.
   int sample_budget = 0;    ///< 0 for a time budget.
-  int run = 0;              ///< 0-based run index within the case.
-  std::uint64_t seed = 0;   ///< The run's seed (samplers and OMPL).
-  /// "solved", "unsolved", "crashed" (the run died: its message is lost) or "timeout" (killed
-  /// by the watchdog at 10 x the time limit + 60 s).
-  std::string status;
+};
+
+/// The runs.csv columns of a CaseDescription, in order ("world" ... "sample_budget").
+const std::vector<std::string>& CaseCsvColumns();
+
+/// The CaseCsvColumns() fields of `c`, comma-separated (no leading or trailing comma). Reals
+/// with 17 significant digits.
+std::string CaseCsvFields(const CaseDescription& c);
+
+/// Reads the CaseCsvColumns() fields starting at `fields[first]`.
+/// @throws std::invalid_argument with `*column` set to the index (into `fields`) of the field
+///         that cannot be read.
+CaseDescription ReadCaseCsvFields(const std::vector<std::string>& fields, size_t first,
+                                  size_t* column);
+
+/// Adds the case's results.json keys (world, family, passage_width, workspace_width, robot,
+/// sampler, planner, budget) to the JSON object `*object`.
+void AddCaseJson(const CaseDescription& c, nlohmann::json* object);
+
+/// How a run ended.
+enum class RunStatus {
+  kSolved,    ///< "solved": a solution within the budget.
+  kUnsolved,  ///< "unsolved": the budget ran out.
+  kCrashed,   ///< "crashed": the run died; its message is lost.
+  kTimeout,   ///< "timeout": killed by the watchdog at 10 x the time limit + 60 s.
+};
+
+/// "solved", "unsolved", "crashed", "timeout".
+std::string ToString(RunStatus status);
+
+/// Inverse of ToString(). @throws InputError for any other text.
+RunStatus ParseRunStatus(const std::string& text);
+
+/// One finished run, self-describing (a merge needs no BENCH.yaml).
+struct BenchRecord {
+  int case_index = 0;      ///< Position of the case in the benchmark's global order.
+  CaseDescription what;    ///< The case.
+  int run = 0;             ///< 0-based run index within the case.
+  std::uint64_t seed = 0;  ///< The run's seed (samplers and OMPL).
+  RunStatus status = RunStatus::kUnsolved;
   bool solved = false;
   double time_s = 0.0;           ///< Wall time of the run [s]; acd: decomposition included.
   double decomposition_s = 0.0;  ///< Free space + ACD [s]; acd runs only (0 otherwise).
@@ -64,10 +102,12 @@ struct BenchManifest {
   int jobs = 1;                     ///< Runs in parallel.
   std::string started;              ///< "YYYY-MM-DD HH:MM:SS" UTC of the (earliest) start.
   double wall_s = 0.0;              ///< Wall time (sum over parts) [s].
+  std::vector<Target> targets;      ///< The benchmark file's (bench.json: only if any).
 };
 
 std::string BenchManifestToJson(const BenchManifest& manifest);
-/// @throws InputError "<path>: <key>: <rule>" for a missing or malformed field.
+/// @throws InputError "<path>: <key>: <rule>" for a missing or malformed field (a missing
+///         "targets" is none).
 BenchManifest ReadBenchManifest(const std::string& path);
 
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

@@ -7,15 +7,17 @@
 #include <string>
 #include <vector>
 
-namespace acdplan::collision {
+#include "bench/targets.h"
+
+namespace acdplan::bench {
 
 /// Options for BenchCollision(); `{}` is valid (skips 3D when `mesh_dir` is empty).
 struct BenchCollisionOptions {
-  int poses = 20000;        ///< Random poses per world and robot; > 0.
-  int points = 200000;      ///< Random points per world for point location; > 0.
-  std::uint64_t seed = 1;   ///< Seeds the worlds (envs generators) and the poses.
-  double tau = 0.02;        ///< 2D obstacle ACD tau [units] (ObstacleSetOptions::tau); >= 0.
-  std::string mesh_dir;     ///< Folder of .obj meshes used one by one as 3D obstacles.
+  int poses = 20000;       ///< Random poses per world and robot; > 0.
+  int points = 200000;     ///< Random points per world for point location; > 0.
+  std::uint64_t seed = 1;  ///< Seeds the worlds (envs generators) and the poses.
+  double tau = 0.02;       ///< 2D obstacle ACD tau [units] (ObstacleSetOptions::tau); >= 0.
+  std::string mesh_dir;    ///< Folder of .obj meshes used one by one as 3D obstacles.
   std::vector<std::string> meshes;  ///< File names in `mesh_dir`; empty = every .obj there.
 };
 
@@ -23,10 +25,10 @@ struct BenchCollisionOptions {
 /// fractions in [0, 1]; a figure that could not be measured is NaN (null in JSON) and `note`
 /// says why.
 struct BenchCollisionRow {
-  std::string world;           ///< "zigzag/disc", "zigzag/polygon", "bunny/mesh", ...
-  std::string hulls_source;    ///< ObstacleSet::hulls_source.
-  int triangles = 0;           ///< Obstacle triangles in the exact BVH.
-  int hulls = 0;               ///< Convex pieces.
+  std::string world;         ///< "zigzag/disc", "zigzag/polygon", "bunny/mesh", ...
+  std::string hulls_source;  ///< ObstacleSet::hulls_source.
+  int triangles = 0;         ///< Obstacle triangles in the exact BVH.
+  int hulls = 0;             ///< Convex pieces.
   int poses = 0;
   double bvh_checks_per_s = 0;
   double hulls_checks_per_s = 0;
@@ -37,7 +39,7 @@ struct BenchCollisionRow {
   int hulls_exact_mismatches = 0;        ///< Poses where hulls+exact and bvh disagree.
   double locate_exact_points_per_s = 0;
   double locate_hulls_points_per_s = 0;
-  double locate_hulls_error_rate = 0;    ///< Of all points, those the two locators disagree on.
+  double locate_hulls_error_rate = 0;  ///< Of all points, those the two locators disagree on.
   std::string note;
 };
 
@@ -51,12 +53,22 @@ struct BenchCollisionRow {
 std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& options,
                                               std::ostream* progress = nullptr);
 
-/// The rows as a Markdown table with the speed-ups and the targets (hulls >= 3x bvh,
-/// hulls+exact >= 1.5x bvh with 0 mismatches, hull location >= 10x exact with <= 1% error).
-std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows);
+/// The rows as a Markdown table with the speed-ups, then `targets` checked on them (no such
+/// section without targets).
+std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows,
+                                   const std::vector<Target>& targets = {});
+
+/// What collision targets can use: the label "world" (as in the table, e.g. "zigzag/disc") and
+/// "kind" ("2d" or "mesh"), and as metrics the rows' numeric JSON fields (bvh_checks_per_s,
+/// hulls_checks_per_s, ..., locate_hulls_error_rate). A figure that could not be measured
+/// (exact point location in an open mesh) is absent: its targets do not apply to the row.
+const TargetVocabulary& CollisionTargetVocabulary();
+
+/// The rows as target rows (labels and metrics above).
+std::vector<TargetRow> CollisionTargetRows(const std::vector<BenchCollisionRow>& rows);
 
 /// {"format": "acdplan.bench_collision/1", "options": {...}, "worlds": [row, ...]}.
 std::string BenchCollisionJson(const std::vector<BenchCollisionRow>& rows,
                                const BenchCollisionOptions& options);
 
-}  // namespace acdplan::collision
+}  // namespace acdplan::bench

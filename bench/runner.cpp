@@ -1,4 +1,4 @@
-#include "planning/bench_runner.h"
+#include "bench/runner.h"
 
 #include <ompl/util/Console.h>
 #include <poll.h>
@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -23,15 +22,13 @@
 #include "collision/obstacle_set.h"
 #include "planning/plan_scenario.h"
 
-namespace acdplan::planning {
+#include "base/stopwatch.h"
+
+namespace acdplan::bench {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double Seconds(Clock::time_point from) {
-  return std::chrono::duration<double>(Clock::now() - from).count();
-}
+using planning::Scenario;
 
 /// `q` with the dimension `robot` plans in: [x, y, yaw] for a polygon (yaw 0 if absent),
 /// [x, y] otherwise.
@@ -88,7 +85,7 @@ void CheckQueries(const BenchSpec& spec) {
           collision::BuildObstacleSet(world.scenario.workspace));
     }
     collision::CollisionWorldOptions options;
-    options.mode = collision::ParseCollisionMode(world.scenario.collision_mode);
+    options.mode = world.scenario.collision_mode;
     const collision::CollisionWorld check(obstacles[w], robot.robot, options);
     const Eigen::AlignedBox2d& bounds = world.scenario.workspace.bounds;
     for (const char* which : {"start", "goal"}) {
@@ -110,10 +107,10 @@ void CheckQueries(const BenchSpec& spec) {
   std::string line;
   int status = 0;
   try {
-    ConfigureOmpl(scenario.seed, true);
+    planning::ConfigureOmpl(scenario.seed, true);
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);  // Keep the progress line readable.
-    const PlanResult result = PlanScenario(scenario);
-    const bool acd = scenario.sampler == "acd";
+    const planning::PlanResult result = planning::PlanScenario(scenario);
+    const bool acd = scenario.sampler == planning::SamplerType::kAcd;
     const double decomposition_s = result.decomposition_ms / 1e3;
     char buffer[512];
     std::snprintf(buffer, sizeof(buffer), "OK %d %.17g %.17g %llu %llu %.17g %d %d\n",
@@ -169,8 +166,8 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
   const std::vector<BenchRunId> ids = BenchRunsOfShard(spec, runs, options.shard);
   BenchRunOutcome outcome;
   outcome.planned = ids.size();
-  const Clock::time_point started = Clock::now();
-  Clock::time_point last_checkpoint = started, last_progress = started;
+  const Stopwatch started;
+  Stopwatch since_checkpoint, since_progress;
   const bool tty = options.progress && isatty(STDERR_FILENO);
   std::map<pid_t, Child> running;
   size_t next = 0;
@@ -178,9 +175,9 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
 
   auto show_progress = [&](bool final) {
     if (!options.progress) return;
-    const double elapsed = Seconds(started);
-    if (!final && !tty && Seconds(last_progress) < 10.0) return;
-    last_progress = Clock::now();
+    const double elapsed = started.Seconds();
+    if (!final && !tty && since_progress.Seconds() < 10.0) return;
+    since_progress.Restart();
     const size_t done = outcome.records.size();
     std::ostringstream line;
     line << "bench " << spec.name << ": " << done << "/" << ids.size() << " runs, elapsed "
@@ -238,11 +235,17 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
         if (n > 0) child.output.append(buffer, static_cast<size_t>(n));
       }
     }
-    int status = 0;
-    pid_t pid;
-    while ((pid = waitpid(-1, &status, WNOHANG)) > 0) {
+    // Reap only the runner's own children (the keys of `running`): waitpid(-1) would also
+    // take the exit status of a child the caller started.
+    std::vector<std::pair<pid_t, int>> finished;
+    for (const auto& entry : running) {
+      int status = 0;
+      if (waitpid(entry.first, &status, WNOHANG) == entry.first) {
+        finished.emplace_back(entry.first, status);
+      }
+    }
+    for (const auto& [pid, status] : finished) {
       auto it = running.find(pid);
-      if (it == running.end()) continue;
       Child child = std::move(it->second);
       running.erase(it);
       char buffer[4096];
@@ -255,16 +258,16 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
       const BenchWorld& world = spec.worlds[c.world];
       BenchRecord r;
       r.case_index = c.index;
-      r.world = world.name;
-      r.family = world.family;
-      r.passage_width = world.passage_width;
-      r.workspace_width = world.workspace_width;
-      r.robot = spec.robots[c.robot].name;
-      r.sampler = c.sampler;
-      r.planner = c.planner;
-      r.budget = c.budget.Label();
-      r.time_limit = c.budget.samples > 0 ? 0.0 : c.budget.time_limit;
-      r.sample_budget = c.budget.samples;
+      r.what.world = world.name;
+      r.what.family = world.family;
+      r.what.passage_width = world.passage_width;
+      r.what.workspace_width = world.workspace_width;
+      r.what.robot = spec.robots[c.robot].name;
+      r.what.sampler = planning::ToString(c.sampler);
+      r.what.planner = planning::ToString(c.planner);
+      r.what.budget = c.budget.Label();
+      r.what.time_limit = c.budget.samples > 0 ? 0.0 : c.budget.time_limit;
+      r.what.sample_budget = c.budget.samples;
       r.run = child.id.run;
       r.seed = child.id.seed;
       if (child.output.rfind("E ", 0) == 0) {
@@ -280,14 +283,15 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
                       &r.decomposition_s, &samples, &checks, &r.path_length, &r.components,
                       &r.openings) == 8) {
         r.solved = solved != 0;
-        r.status = r.solved ? "solved" : "unsolved";
+        r.status = r.solved ? RunStatus::kSolved : RunStatus::kUnsolved;
         r.samples = samples;
         r.collision_checks = checks;
       } else {
-        r.status = WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM ? "timeout" : "crashed";
+        r.status = WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM ? RunStatus::kTimeout
+                                                                       : RunStatus::kCrashed;
         if (options.progress) {
           *options.progress << (tty ? "\n" : "") << "bench: run " << r.run << " of " << c.Key(spec)
-                            << " (seed " << r.seed << ") " << r.status
+                            << " (seed " << r.seed << ") " << ToString(r.status)
                             << (child.output.rfind("X ", 0) == 0 ? ": " + child.output.substr(2)
                                                                  : std::string("\n"));
         }
@@ -295,17 +299,17 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
       outcome.records.push_back(r);
       show_progress(false);
     }
-    if (options.checkpoint && Seconds(last_checkpoint) >= options.checkpoint_s) {
-      last_checkpoint = Clock::now();
+    if (options.checkpoint && since_checkpoint.Seconds() >= options.checkpoint_s) {
+      since_checkpoint.Restart();
       std::vector<BenchRecord> sorted = outcome.records;
       SortBenchRecords(&sorted);
       options.checkpoint(sorted);
     }
   }
   SortBenchRecords(&outcome.records);
-  outcome.wall_s = Seconds(started);
+  outcome.wall_s = started.Seconds();
   show_progress(true);
   return outcome;
 }
 
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

@@ -1,7 +1,6 @@
-#include "collision/bench_collision.h"
+#include "bench/collision_bench.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,25 +16,34 @@
 #include "envs/generators.h"
 #include "envs/mesh_loader.h"
 
-namespace acdplan::collision {
+#include "base/format.h"
+#include "base/json_number.h"
+#include "base/random.h"
+#include "base/stopwatch.h"
+
+namespace acdplan::bench {
 namespace {
+
+using collision::BuildObstacleSet;
+using collision::CollisionMode;
+using collision::CollisionWorld;
+using collision::LocateMethod;
+using collision::ObstacleSet;
+using collision::ObstacleSetOptions;
+using collision::PointLocator;
+using collision::TriangleCount;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-using Clock = std::chrono::steady_clock;
-
-double Seconds(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 template <class Pose>
 void TimeModes(const CollisionWorld& world, const std::vector<Pose>& poses,
                BenchCollisionRow* row) {
   std::vector<char> bvh(poses.size()), hulls(poses.size()), exact(poses.size());
   auto run = [&](CollisionMode mode, std::vector<char>* out) {
-    const Clock::time_point start = Clock::now();
+    const Stopwatch stopwatch;
     for (size_t i = 0; i < poses.size(); ++i) (*out)[i] = world.IsValid(poses[i], mode);
-    return static_cast<double>(poses.size()) / Seconds(start);
+    return static_cast<double>(poses.size()) / stopwatch.Seconds();
   };
   row->poses = static_cast<int>(poses.size());
   row->bvh_checks_per_s = run(CollisionMode::kBvh, &bvh);
@@ -58,9 +66,9 @@ void TimeLocation(const std::shared_ptr<const ObstacleSet>& set,
                   const std::vector<Eigen::Vector3d>& points, BenchCollisionRow* row) {
   const PointLocator hulls(set, LocateMethod::kHulls);
   std::vector<char> h(points.size()), e(points.size());
-  Clock::time_point start = Clock::now();
+  Stopwatch stopwatch;
   for (size_t i = 0; i < points.size(); ++i) h[i] = hulls.Inside(points[i]);
-  row->locate_hulls_points_per_s = static_cast<double>(points.size()) / Seconds(start);
+  row->locate_hulls_points_per_s = static_cast<double>(points.size()) / stopwatch.Seconds();
   std::unique_ptr<PointLocator> exact;
   try {
     exact = std::make_unique<PointLocator>(set, LocateMethod::kExact);
@@ -70,22 +78,29 @@ void TimeLocation(const std::shared_ptr<const ObstacleSet>& set,
     row->note = error.what();
     return;
   }
-  start = Clock::now();
+  stopwatch.Restart();
   for (size_t i = 0; i < points.size(); ++i) e[i] = exact->Inside(points[i]);
-  row->locate_exact_points_per_s = static_cast<double>(points.size()) / Seconds(start);
+  row->locate_exact_points_per_s = static_cast<double>(points.size()) / stopwatch.Seconds();
   int wrong = 0;
   for (size_t i = 0; i < points.size(); ++i) wrong += h[i] != e[i];
   row->locate_hulls_error_rate = static_cast<double>(wrong) / static_cast<double>(points.size());
 }
 
+/// A uniform point of `box` (coordinates drawn in x, y, z order).
+template <int N>
+Eigen::Matrix<double, N, 1> UniformPoint(const Eigen::AlignedBox<double, N>& box,
+                                         RandomEngine& rng) {
+  Eigen::Matrix<double, N, 1> p;
+  for (int k = 0; k < N; ++k) p[k] = UniformReal(rng, box.min()[k], box.max()[k]);
+  return p;
+}
+
 std::vector<Eigen::Vector3d> RandomPoints(const Eigen::AlignedBox3d& box, int count, bool flat,
-                                          std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+                                          RandomEngine& rng) {
   std::vector<Eigen::Vector3d> points;
   points.reserve(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i) {
-    Eigen::Vector3d p = box.min() + (box.sizes().array() *
-                                     Eigen::Array3d(u(rng), u(rng), u(rng))).matrix();
+    Eigen::Vector3d p = UniformPoint(box, rng);
     if (flat) p.z() = 0;
     points.push_back(p);
   }
@@ -100,17 +115,17 @@ envs::TriangleMesh Cube(double side) {
         ((i & 4) ? 0.5 : -0.5) * side;
   }
   mesh.triangles.resize(12, 3);
-  mesh.triangles << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4,
-      2, 2, 4, 6, 1, 3, 5, 3, 7, 5;
+  mesh.triangles << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2,
+      2, 4, 6, 1, 3, 5, 3, 7, 5;
   return mesh;
 }
 
-std::string Format(double value, const char* format) {
-  if (std::isnan(value)) return "n/a";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
+/// A table figure with `decimals` decimals; "n/a" when it could not be measured.
+std::string Fixed(double value, int decimals) {
+  return std::isnan(value) ? "n/a" : FormatFixed(value, decimals);
 }
+
+std::string Percent(double rate) { return std::isnan(rate) ? "n/a" : FormatFixed(100 * rate, 2) + "%"; }
 
 }  // namespace
 
@@ -136,8 +151,7 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
   }
 
   std::vector<BenchCollisionRow> rows;
-  std::mt19937_64 rng(options.seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  RandomEngine rng(options.seed);
   ObstacleSetOptions set_options;
   set_options.tau = options.tau;
 
@@ -147,10 +161,8 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
     std::vector<Eigen::Isometry2d> poses;
     for (int i = 0; i < options.poses; ++i) {
       Eigen::Isometry2d pose = Eigen::Isometry2d::Identity();
-      pose.translation() = workspace.bounds.min() +
-                           (workspace.bounds.sizes().array() * Eigen::Array2d(u(rng), u(rng)))
-                               .matrix();
-      pose.linear() = Eigen::Rotation2Dd(2 * M_PI * u(rng) - M_PI).toRotationMatrix();
+      pose.translation() = UniformPoint(workspace.bounds, rng);
+      pose.linear() = Eigen::Rotation2Dd(UniformReal(rng, -M_PI, M_PI)).toRotationMatrix();
       poses.push_back(pose);
     }
     BenchCollisionRow location;
@@ -183,16 +195,14 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
     row.hulls_source = set->hulls_source;
     row.triangles = TriangleCount(*set);
     row.hulls = static_cast<int>(set->pieces.size());
-    std::normal_distribution<double> n(0.0, 1.0);
     std::vector<Eigen::Isometry3d> poses;
     for (int i = 0; i < options.poses; ++i) {
       Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-      pose.translation() = workspace.bounds.min() +
-                           (workspace.bounds.sizes().array() *
-                            Eigen::Array3d(u(rng), u(rng), u(rng)))
-                               .matrix();
-      pose.linear() = Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized()
-                          .toRotationMatrix();
+      pose.translation() = UniformPoint(workspace.bounds, rng);
+      // A uniform rotation: a normalised 4D Gaussian (drawn w, x, y, z in order).
+      Eigen::Vector4d q;
+      for (int k = 0; k < 4; ++k) q[k] = StandardNormal(rng);
+      pose.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
       poses.push_back(pose);
     }
     const CollisionWorld world(set, envs::Robot::Mesh(Cube(0.05 * box.sizes().norm())));
@@ -204,33 +214,87 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
   return rows;
 }
 
-std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows) {
+namespace {
+
+/// The numeric fields of a row, by their JSON names.
+std::vector<std::pair<std::string, double>> Metrics(const BenchCollisionRow& r) {
+  return {{"triangles", r.triangles},
+          {"hulls", r.hulls},
+          {"poses", r.poses},
+          {"bvh_checks_per_s", r.bvh_checks_per_s},
+          {"hulls_checks_per_s", r.hulls_checks_per_s},
+          {"hulls_exact_checks_per_s", r.hulls_exact_checks_per_s},
+          {"collision_rate", r.collision_rate},
+          {"hulls_false_positive_rate", r.hulls_false_positive_rate},
+          {"hulls_misses", r.hulls_misses},
+          {"hulls_exact_mismatches", r.hulls_exact_mismatches},
+          {"locate_exact_points_per_s", r.locate_exact_points_per_s},
+          {"locate_hulls_points_per_s", r.locate_hulls_points_per_s},
+          {"locate_hulls_error_rate", r.locate_hulls_error_rate}};
+}
+
+std::string CheckCollisionMetric(const std::string& metric) {
+  std::string known;
+  for (const auto& [name, value] : Metrics(BenchCollisionRow())) {
+    if (name == metric) return "";
+    known += (known.empty() ? "" : ", ") + name;
+  }
+  return "unknown metric '" + metric + "' (expected one of: " + known + ")";
+}
+
+}  // namespace
+
+const TargetVocabulary& CollisionTargetVocabulary() {
+  static const TargetVocabulary vocabulary{{"world", "kind"}, &CheckCollisionMetric};
+  return vocabulary;
+}
+
+std::vector<TargetRow> CollisionTargetRows(const std::vector<BenchCollisionRow>& rows) {
+  std::vector<TargetRow> out;
+  for (const BenchCollisionRow& r : rows) {
+    TargetRow row;
+    row.labels["world"] = r.world;
+    const size_t slash = r.world.rfind('/');
+    row.labels["kind"] =
+        slash != std::string::npos && r.world.substr(slash) == "/mesh" ? "mesh" : "2d";
+    for (const auto& [name, value] : Metrics(r)) {
+      if (!std::isnan(value)) row.metrics[name] = value;
+    }
+    out.push_back(row);
+  }
+  return out;
+}
+
+std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows,
+                                   const std::vector<Target>& targets) {
   std::string out =
       "| world | hulls | bvh checks/s | hulls checks/s | (x bvh) | hulls+exact checks/s | (x bvh) "
       "| hulls FP rate | mismatches | exact pts/s | hull pts/s | (x exact) | hull error |\n"
       "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const BenchCollisionRow& r : rows) {
     out += "| " + r.world + " | " + std::to_string(r.hulls) + " | " +
-           Format(r.bvh_checks_per_s, "%.0f") + " | " + Format(r.hulls_checks_per_s, "%.0f") +
-           " | " + Format(r.hulls_checks_per_s / r.bvh_checks_per_s, "%.2f") + " | " +
-           Format(r.hulls_exact_checks_per_s, "%.0f") + " | " +
-           Format(r.hulls_exact_checks_per_s / r.bvh_checks_per_s, "%.2f") + " | " +
-           Format(100 * r.hulls_false_positive_rate, "%.2f%%") + " | " +
+           Fixed(r.bvh_checks_per_s, 0) + " | " + Fixed(r.hulls_checks_per_s, 0) +
+           " | " + Fixed(r.hulls_checks_per_s / r.bvh_checks_per_s, 2) + " | " +
+           Fixed(r.hulls_exact_checks_per_s, 0) + " | " +
+           Fixed(r.hulls_exact_checks_per_s / r.bvh_checks_per_s, 2) + " | " +
+           Percent(r.hulls_false_positive_rate) + " | " +
            std::to_string(r.hulls_exact_mismatches) + " | " +
-           Format(r.locate_exact_points_per_s, "%.0f") + " | " +
-           Format(r.locate_hulls_points_per_s, "%.0f") + " | " +
-           Format(r.locate_hulls_points_per_s / r.locate_exact_points_per_s, "%.1f") + " | " +
-           Format(100 * r.locate_hulls_error_rate, "%.2f%%") + " |\n";
+           Fixed(r.locate_exact_points_per_s, 0) + " | " +
+           Fixed(r.locate_hulls_points_per_s, 0) + " | " +
+           Fixed(r.locate_hulls_points_per_s / r.locate_exact_points_per_s, 1) + " | " +
+           Percent(r.locate_hulls_error_rate) + " |\n";
   }
-  out +=
-      "\nTargets: hulls >= 3x bvh; hulls+exact >= 1.5x bvh with 0 mismatches; hull point "
-      "location >= 10x exact with <= 1% error. n/a: exact point location needs a closed mesh.\n";
+  out += "\nn/a: exact point location needs a closed mesh.\n";
+  if (!targets.empty()) {
+    const std::vector<TargetRow> target_rows = CollisionTargetRows(rows);
+    out += "\n## Targets\n\n" + TargetChecksMarkdown(CheckTargets(targets, target_rows), {"world"});
+  }
   return out;
 }
 
 std::string BenchCollisionJson(const std::vector<BenchCollisionRow>& rows,
                                const BenchCollisionOptions& options) {
-  auto number = [](double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); };
+  auto number = [](double x) { return JsonNumber(x); };
   nlohmann::json worlds = nlohmann::json::array();
   for (const BenchCollisionRow& r : rows) {
     nlohmann::json w;
@@ -254,11 +318,13 @@ std::string BenchCollisionJson(const std::vector<BenchCollisionRow>& rows,
   }
   nlohmann::json doc;
   doc["format"] = "acdplan.bench_collision/1";
-  doc["options"] = {{"poses", options.poses},   {"points", options.points},
-                    {"seed", options.seed},     {"tau", options.tau},
+  doc["options"] = {{"poses", options.poses},
+                    {"points", options.points},
+                    {"seed", options.seed},
+                    {"tau", options.tau},
                     {"mesh_dir", options.mesh_dir}};
   doc["worlds"] = worlds;
   return doc.dump(2) + "\n";
 }
 
-}  // namespace acdplan::collision
+}  // namespace acdplan::bench

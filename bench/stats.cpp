@@ -1,4 +1,4 @@
-#include "planning/bench_stats.h"
+#include "bench/stats.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <map>
 #include <stdexcept>
 
-namespace acdplan::planning {
+namespace acdplan::bench {
 
 std::pair<double, double> WilsonInterval(int successes, int trials, double z) {
   if (successes < 0 || trials < 0 || successes > trials) {
@@ -43,16 +43,7 @@ std::vector<BenchCaseSummary> SummarizeBenchCases(const std::vector<BenchRecord>
     const BenchRecord& first = *runs.front();
     BenchCaseSummary s;
     s.case_index = index;
-    s.world = first.world;
-    s.family = first.family;
-    s.robot = first.robot;
-    s.sampler = first.sampler;
-    s.planner = first.planner;
-    s.budget = first.budget;
-    s.passage_width = first.passage_width;
-    s.workspace_width = first.workspace_width;
-    s.time_limit = first.time_limit;
-    s.sample_budget = first.sample_budget;
+    s.what = first.what;
     s.runs = static_cast<int>(runs.size());
     std::vector<double> solved_times, checks, decomposition;
     for (const BenchRecord* r : runs) {
@@ -74,4 +65,4 @@ std::vector<BenchCaseSummary> SummarizeBenchCases(const std::vector<BenchRecord>
   return summaries;
 }
 
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

@@ -16,13 +16,15 @@
 #include <vector>
 
 #include "base/input_error.h"
-#include "planning/bench_record.h"
-#include "planning/bench_report.h"
-#include "planning/bench_runner.h"
-#include "planning/bench_spec.h"
-#include "planning/bench_stats.h"
+#include "bench/merge.h"
+#include "bench/ompl_log.h"
+#include "bench/outputs.h"
+#include "bench/record.h"
+#include "bench/runner.h"
+#include "bench/spec.h"
+#include "bench/stats.h"
 
-namespace acdplan::planning {
+namespace acdplan::bench {
 namespace {
 
 namespace fs = std::filesystem;
@@ -56,7 +58,7 @@ std::string ReadText(const fs::path& path) {
 std::string ErrorOf(const std::string& text) {
   try {
     LoadBenchSpec(WriteBench("bad", text));
-  } catch (const acdplan::InputError& error) {
+  } catch (const InputError& error) {
     return error.what();
   }
   return "";
@@ -84,7 +86,7 @@ TEST(BenchSpec, ErrorsNameTheFileAndKeyPath) {
              "bad.yaml: runs: expected an integer >= 1, got '0'");
   EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [PRM, PRN], budgets: "
                                "[{samples: 5}]}\n"),
-             "bad.yaml: cases[0].planners[1]: unknown planner 'PRN' (known: PRM,");
+             "bad.yaml: cases[0].planners[1]: unknown planner 'PRN' (expected one of: PRM,");
   EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [magic], planners: [PRM], budgets: "
                                "[{samples: 5}]}\n"),
              "bad.yaml: cases[0].samplers[0]: unknown sampler 'magic'");
@@ -97,7 +99,7 @@ TEST(BenchSpec, ErrorsNameTheFileAndKeyPath) {
              "bad.yaml: cases[0].budgets[0].time_limit: expected a positive number, got '-1'");
   EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {worlds: [nowhere], samplers: [acd], planners: "
                                "[PRM], budgets: [{samples: 5}]}\n"),
-             "bad.yaml: cases[0].worlds[0]: unknown name 'nowhere' (known: gap)");
+             "bad.yaml: cases[0].worlds[0]: unknown name 'nowhere' (expected one of: gap)");
   EXPECT_HAS(ErrorOf(kWorlds + "robots:\n  - {name: d, shape: disc}\n" + cases),
              "bad.yaml: robots[0].radius: required for shape disc");
   EXPECT_HAS(ErrorOf(kWorlds + "robots:\n  - {name: d, shape: point, wheels: 4}\n" + cases),
@@ -163,7 +165,7 @@ TEST(BenchSpec, ShardSyntax) {
     try {
       ParseBenchShard(bad);
       ADD_FAILURE() << bad;
-    } catch (const acdplan::InputError& error) {
+    } catch (const InputError& error) {
       EXPECT_HAS(error.what(), "expected I/N");
     }
   }
@@ -254,21 +256,21 @@ TEST(BenchRunner, ShardsMergedEqualTheUnshardedRun) {
   const BenchRunOutcome all = RunBench(spec);
   ASSERT_EQ(all.records.size(), 9u);
   EXPECT_FALSE(all.interrupted);
-  WriteBenchOutputs(whole.string(), ManifestOf(spec, "1/1"), all.records, false, nullptr);
+  WriteBenchOutputs(whole.string(), ManifestOf(spec, "1/1"), all.records);
   BenchRunOptions o1, o2;
   o1.shard = {1, 2};
   o2.shard = {2, 2};
   const BenchRunOutcome r1 = RunBench(spec, o1), r2 = RunBench(spec, o2);
   EXPECT_EQ(r1.records.size(), 5u);
   EXPECT_EQ(r2.records.size(), 4u);
-  WriteBenchOutputs(s1.string(), ManifestOf(spec, "1/2"), r1.records, false, nullptr);
-  WriteBenchOutputs(s2.string(), ManifestOf(spec, "2/2"), r2.records, false, nullptr);
+  WriteBenchOutputs(s1.string(), ManifestOf(spec, "1/2"), r1.records);
+  WriteBenchOutputs(s2.string(), ManifestOf(spec, "2/2"), r2.records);
 
   BenchManifest manifest;
   std::vector<BenchRecord> records;
   MergeBenchRecords({s1.string(), s2.string()}, &manifest, &records);
   EXPECT_EQ(manifest.shards, (std::vector<std::string>{"1/2", "2/2"}));
-  WriteBenchOutputs(merged.string(), manifest, records, false, nullptr);
+  WriteBenchOutputs(merged.string(), manifest, records);
 
   // runs.csv: every field but the two times.
   const std::vector<BenchRecord> a = ReadBenchRecordsCsv((whole / "runs.csv").string());
@@ -292,9 +294,24 @@ TEST(BenchRunner, ShardsMergedEqualTheUnshardedRun) {
   try {
     MergeBenchRecords({s1.string(), s1.string()}, &manifest, &records);
     ADD_FAILURE() << "merged a shard with itself";
-  } catch (const acdplan::InputError& error) {
+  } catch (const InputError& error) {
     EXPECT_HAS(error.what(), "is also in");
   }
+}
+
+TEST(BenchRunner, ReapsOnlyItsOwnChildren) {
+  // A child of the caller's that has exited before the bench runs: the runner must leave its
+  // exit status to the caller (a waitpid(-1) would take it).
+  const pid_t mine = fork();
+  ASSERT_GE(mine, 0);
+  if (mine == 0) _exit(7);
+  const BenchSpec spec = LoadBenchSpec(WriteBench("reap", SmallFigure4(1)));
+  const BenchRunOutcome outcome = RunBench(spec);
+  EXPECT_EQ(outcome.records.size(), 3u);
+  int status = 0;
+  ASSERT_EQ(waitpid(mine, &status, 0), mine) << "the runner reaped a child it did not start";
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 7);
 }
 
 TEST(BenchRunner, AcdBeatsUniformOnFigure4) {
@@ -302,8 +319,8 @@ TEST(BenchRunner, AcdBeatsUniformOnFigure4) {
   const BenchRunOutcome outcome = RunBench(spec);
   int acd = 0, uniform = 0;
   for (const BenchCaseSummary& c : SummarizeBenchCases(outcome.records)) {
-    if (c.sampler == "acd") acd = c.successes;
-    if (c.sampler == "uniform") uniform = c.successes;
+    if (c.what.sampler == "acd") acd = c.successes;
+    if (c.what.sampler == "uniform") uniform = c.successes;
     EXPECT_EQ(c.runs, 10);
   }
   EXPECT_GE(acd, 9);
@@ -311,7 +328,83 @@ TEST(BenchRunner, AcdBeatsUniformOnFigure4) {
   for (const BenchRecord& r : outcome.records) {
     EXPECT_EQ(r.samples, 200u);
     EXPECT_GT(r.collision_checks, 0u);
-    EXPECT_EQ(r.decomposition_s > 0, r.sampler == "acd");
+    EXPECT_EQ(r.decomposition_s > 0, r.what.sampler == "acd");
+  }
+}
+
+TEST(BenchReport, SpecTargetsAreCheckedInTheSummaryAndSurviveAMerge) {
+  const std::string text = SmallFigure4(2) +
+                           "targets:\n"
+                           "  - name: acd solves\n"
+                           "    where: {planner: PRM, budget_type: samples}\n"
+                           "    if: [{metric: uniform.success_rate, compare: '<=', value: 1}]\n"
+                           "    metric: acd.success_rate\n"
+                           "    compare: '>='\n"
+                           "    value: 0.5\n"
+                           "  - {metric: gaussian.runs, compare: '==', value: 3}\n";
+  const BenchSpec spec = LoadBenchSpec(WriteBench("targets", text));
+  ASSERT_EQ(spec.targets.size(), 2u);
+  BenchManifest manifest = ManifestOf(spec, "1/1");
+  manifest.targets = spec.targets;
+  const fs::path dir = Scratch("targets"), merged = Scratch("targets_merged");
+  WriteBenchOutputs(dir.string(), manifest, RunBench(spec).records);
+  const std::string summary = ReadText(dir / "summary.md");
+  EXPECT_HAS(summary, "## Targets\n");
+  EXPECT_HAS(summary, "| demo | point | PRM | 200 samples | acd solves | 100% | holds |\n");
+  EXPECT_HAS(summary,
+             "| demo | point | PRM | 200 samples | gaussian.runs == 3 | 2 | **missed** |\n");
+  EXPECT_HAS(summary, "1 target checks hold, 1 missed.");
+
+  BenchManifest joined;
+  std::vector<BenchRecord> records;
+  MergeBenchRecords({dir.string()}, &joined, &records);
+  ASSERT_EQ(joined.targets.size(), 2u);
+  WriteBenchOutputs(merged.string(), joined, records);
+  EXPECT_EQ(ReadText(merged / "summary.md"), summary);
+
+  // Without targets, no section (and bench.json has no "targets").
+  manifest.targets.clear();
+  WriteBenchOutputs(dir.string(), manifest, records);
+  EXPECT_EQ(ReadText(dir / "summary.md").find("## Targets"), std::string::npos);
+  EXPECT_EQ(ReadText(dir / "bench.json").find("\"targets\":"), std::string::npos);
+
+  // A spec's targets are checked with the spec's key path.
+  try {
+    LoadBenchSpec(WriteBench("bad_targets", SmallFigure4(1) + "targets: [{metric: acd.speed, "
+                                                              "compare: '>', value: 1}]\n"));
+    ADD_FAILURE() << "accepted an unknown metric";
+  } catch (const InputError& error) {
+    EXPECT_HAS(error.what(), "bad_targets.yaml: targets[0].metric: expected samplers or");
+  }
+}
+
+TEST(BenchReport, CsvHeaderIsUnchanged) {
+  EXPECT_EQ(BenchCsvHeader(),
+            "case,world,family,passage_width,workspace_width,robot,sampler,planner,budget,"
+            "time_limit,sample_budget,run,seed,status,solved,time_s,decomposition_s,samples,"
+            "collision_checks,path_length,components,openings");
+  BenchRecord r;
+  r.case_index = 3;
+  r.what = {"w", "f", 0.5, 10, "disc", "acd", "PRM", "2 s", 2, 0};
+  r.run = 1;
+  r.seed = 42;
+  r.status = RunStatus::kSolved;
+  r.solved = true;
+  const std::string csv = BenchRecordsToCsv({r});
+  EXPECT_HAS(csv, "\n3,w,f,0.5,10,disc,acd,PRM,2 s,2,0,1,42,solved,1,0,0,0,0,0,0,0\n");
+  const fs::path dir = Scratch("csv");
+  std::ofstream(dir / "runs.csv") << csv;
+  const std::vector<BenchRecord> back = ReadBenchRecordsCsv((dir / "runs.csv").string());
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(BenchRecordsToCsv(back), csv);
+  std::ofstream(dir / "bad.csv") << BenchCsvHeader()
+                                 << "\n3,w,f,wide,10,disc,acd,PRM,2 s,2,0,1,"
+                                    "42,solved,1,0,0,0,0,0,0,0\n";
+  try {
+    ReadBenchRecordsCsv((dir / "bad.csv").string());
+    ADD_FAILURE();
+  } catch (const InputError& error) {
+    EXPECT_HAS(error.what(), "bad.csv:2: column passage_width: cannot read 'wide'");
   }
 }
 
@@ -319,7 +412,7 @@ TEST(BenchReport, OmplLogLoadsInOmplBenchmarkStatistics) {
   const BenchSpec spec = LoadBenchSpec(WriteBench("log", SmallFigure4(2)));
   const fs::path dir = Scratch("log");
   const BenchRunOutcome outcome = RunBench(spec);
-  WriteBenchOutputs(dir.string(), ManifestOf(spec, "1/1"), outcome.records, false, nullptr);
+  WriteBenchOutputs(dir.string(), ManifestOf(spec, "1/1"), outcome.records);
   const std::string log = ReadText(dir / BenchOmplLogName("demo"));
 
   // Structure (OMPL's benchmark log grammar): header lines, 3 planners of 2 runs.
@@ -371,6 +464,20 @@ TEST(BenchCli, BadInputExitsTwoWithTheKeyPath) {
   EXPECT_HAS(ReadText(dir / "o3.txt"), "bench.json: cannot read the file");
 }
 
+TEST(BenchCli, BenchCollisionNamesTheFlagOfABadPath) {
+  const fs::path dir = Scratch("cli_collision");
+  EXPECT_EQ(
+      Acdplan("bench-collision --poses 1 --points 1 --mesh-dir /nowhere/meshes", dir / "o.txt"), 2);
+  EXPECT_HAS(ReadText(dir / "o.txt"), "--mesh-dir /nowhere/meshes: not a folder");
+  const std::string bad =
+      WriteBench("collision_targets", "targets: [{metric: hulls_speed, compare: '>', value: 1}]\n");
+  EXPECT_EQ(Acdplan("bench-collision --poses 1 --points 1 --mesh-dir '' --targets '" + bad + "'",
+                    dir / "o2.txt"),
+            2);
+  EXPECT_HAS(ReadText(dir / "o2.txt"),
+             "collision_targets.yaml: targets[0].metric: unknown metric 'hulls_speed'");
+}
+
 TEST(BenchCli, CtrlCWritesTheFinishedRunsAndExits130) {
   // Time budgets on a world where uniform rarely solves: each run lasts about its budget, so the
   // bench is still running when the signal comes (the outcome checks hold either way).
@@ -412,4 +519,4 @@ TEST(BenchCli, CtrlCWritesTheFinishedRunsAndExits130) {
 }
 
 }  // namespace
-}  // namespace acdplan::planning
+}  // namespace acdplan::bench

@@ -1,0 +1,203 @@
+// Targets: the YAML format with its key-path errors, the JSON round trip of bench.json, and
+// the evaluation (filters, conditions, ratios, not-applicable and not-measured rows).
+
+#include "bench/targets.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "base/input_error.h"
+#include "bench/collision_bench.h"
+#include "bench/summary.h"
+
+namespace acdplan::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+#define EXPECT_HAS(haystack, needle) \
+  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << (haystack)
+
+std::string WriteFile(const std::string& name, const std::string& text) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("acdplan_targets_test_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const fs::path path = dir / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+/// The message LoadTargetsFile() throws for `text` with the planning vocabulary; "" if none.
+std::string ErrorOf(const std::string& text) {
+  try {
+    LoadTargetsFile(WriteFile("t.yaml", text), PlanningTargetVocabulary());
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(Targets, ReadsTheFormat) {
+  const std::vector<Target> targets = LoadTargetsFile(
+      WriteFile("ok.yaml",
+                "targets:\n"
+                "  - name: rescue\n"
+                "    where: {planner: PRM, world: [a, b]}\n"
+                "    if: [{metric: uniform.success_rate, compare: '<=', value: 0.2}]\n"
+                "    metric: acd.success_rate\n"
+                "    compare: '>='\n"
+                "    value: 0.95\n"
+                "  - {metric: uniform.median_time_s, over: acd.median_time_s, compare: '>',"
+                " value: 10}\n"),
+      PlanningTargetVocabulary());
+  ASSERT_EQ(targets.size(), 2u);
+  EXPECT_EQ(targets[0].Label(), "rescue");
+  EXPECT_EQ(targets[0].where.at("world"), (std::vector<std::string>{"a", "b"}));
+  ASSERT_EQ(targets[0].conditions.size(), 1u);
+  EXPECT_EQ(targets[0].conditions[0].compare, Comparison::kLessEqual);
+  EXPECT_DOUBLE_EQ(targets[0].test.value, 0.95);
+  EXPECT_EQ(targets[1].Label(), "uniform.median_time_s / acd.median_time_s > 10");
+
+  // bench.json keeps them as JSON, which the same reader reads back.
+  const std::string json = TargetsToJson(targets);
+  const YamlFile file = YamlFile::Parse("targets: " + json, "bench.json");
+  const std::vector<Target> again =
+      ReadTargets(file, file.root()["targets"], "targets", PlanningTargetVocabulary());
+  EXPECT_EQ(TargetsToJson(again), json);
+}
+
+TEST(Targets, ErrorsNameTheFileAndKeyPath) {
+  const std::string ok = "{metric: acd.success_rate, compare: '>=', value: 1}";
+  EXPECT_EQ(ErrorOf("targets: [" + ok + "]\n"), "");
+  EXPECT_HAS(ErrorOf("goals: []\n"), "t.yaml: goals: unknown key (expected one of: targets)");
+  EXPECT_HAS(ErrorOf("targets: 3\n"), "t.yaml: targets: expected a list of targets");
+  EXPECT_HAS(ErrorOf("targets: [" + ok + ", {metric: acd.success_rate, value: 1}]\n"),
+             "t.yaml: targets[1].compare: required");
+  EXPECT_HAS(ErrorOf("targets: [{metric: acd.success_rate, compare: '=>', value: 1}]\n"),
+             "t.yaml: targets[0].compare: unknown comparison '=>' (expected one of: <, <=, >, >=, "
+             "==, !=)");
+  EXPECT_HAS(ErrorOf("targets: [{metric: acd.success_rate, compare: '>=', value: high}]\n"),
+             "t.yaml: targets[0].value: expected a finite number, got 'high'");
+  EXPECT_HAS(ErrorOf("targets: [{metric: acd.speed, compare: '>=', value: 1}]\n"),
+             "t.yaml: targets[0].metric: expected samplers or [planner/]sampler.statistic");
+  EXPECT_HAS(ErrorOf("targets: [{metric: magic.success_rate, compare: '>=', value: 1}]\n"),
+             "t.yaml: targets[0].metric: unknown sampler 'magic'");
+  EXPECT_HAS(ErrorOf("targets: [{metric: PRN/acd.success_rate, compare: '>=', value: 1}]\n"),
+             "t.yaml: targets[0].metric: unknown planner 'PRN'");
+  EXPECT_HAS(ErrorOf("targets: [{metric: acd.success_rate, over: x, compare: '>=', value: 1}]\n"),
+             "t.yaml: targets[0].over: expected samplers or");
+  EXPECT_HAS(ErrorOf("targets: [{where: {colour: red}, metric: acd.success_rate, compare: '>=', "
+                     "value: 1}]\n"),
+             "t.yaml: targets[0].where.colour: unknown label 'colour' (expected one of: world, family, robot, "
+             "planner, budget, budget_type)");
+  EXPECT_HAS(ErrorOf("targets: [{if: [{metric: acd.runs, compare: '>'}], metric: "
+                     "acd.success_rate, compare: '>=', value: 1}]\n"),
+             "t.yaml: targets[0].if[0].value: required");
+  EXPECT_HAS(ErrorOf("targets: [{metric: acd.success_rate, compare: '>=', value: 1, by: me}]\n"),
+             "t.yaml: targets[0].by: unknown key");
+  EXPECT_HAS(ErrorOf("targets: [\n"), "t.yaml:");  // Syntax error with its line.
+}
+
+TEST(Targets, ChecksRowsWithFiltersConditionsAndRatios) {
+  Target rescue;
+  rescue.where["planner"] = {"PRM"};
+  rescue.conditions.push_back({"uniform.success_rate", "", Comparison::kLessEqual, 0.2});
+  rescue.test = {"acd.success_rate", "", Comparison::kGreaterEqual, 0.95};
+  Target faster;
+  faster.name = "faster";
+  faster.test = {"uniform.median_time_s", "acd.median_time_s", Comparison::kGreaterEqual, 10};
+
+  std::vector<TargetRow> rows(4);
+  rows[0].labels = {{"world", "a"}, {"planner", "PRM"}};
+  rows[0].metrics = {{"uniform.success_rate", 0.1},
+                     {"acd.success_rate", 1.0},
+                     {"uniform.median_time_s", 2.0},
+                     {"acd.median_time_s", 0.1}};
+  rows[1].labels = {{"world", "b"}, {"planner", "PRM"}};  // uniform fine: rescue n/a.
+  rows[1].metrics = {{"uniform.success_rate", 0.9},
+                     {"acd.success_rate", 0.5},
+                     {"uniform.median_time_s", 1.0},
+                     {"acd.median_time_s", 0.5}};
+  rows[2].labels = {{"world", "c"}, {"planner", "RRT"}};  // acd never solved: NaN misses.
+  rows[2].metrics = {{"uniform.success_rate", 0.0},
+                     {"acd.success_rate", 0.0},
+                     {"uniform.median_time_s", 1.0},
+                     {"acd.median_time_s", std::nan("")}};
+  rows[3].labels = {{"world", "d"}, {"planner", "PRM"}};  // No acd at all: nothing applies.
+  rows[3].metrics = {{"uniform.success_rate", 0.0}};
+
+  const std::vector<Target> targets = {rescue, faster};
+  const std::vector<TargetCheck> checks = CheckTargets(targets, rows);
+  ASSERT_EQ(checks.size(), 4u);
+  EXPECT_EQ(checks[0].row->labels.at("world"), "a");  // rescue on a
+  EXPECT_TRUE(checks[0].holds);
+  EXPECT_EQ(checks[1].row->labels.at("world"), "a");  // faster on a: 20x
+  EXPECT_DOUBLE_EQ(checks[1].measured, 20.0);
+  EXPECT_TRUE(checks[1].holds);
+  EXPECT_EQ(checks[2].row->labels.at("world"), "b");  // faster on b: 2x
+  EXPECT_FALSE(checks[2].holds);
+  EXPECT_EQ(checks[3].row->labels.at("world"), "c");
+  EXPECT_TRUE(std::isnan(checks[3].measured));
+  EXPECT_FALSE(checks[3].holds);
+
+  const std::string md = TargetChecksMarkdown(checks, {"world", "planner"});
+  EXPECT_HAS(md, "| world | planner | target | measured | |\n");
+  EXPECT_HAS(md,
+             "| a | PRM | acd.success_rate >= 0.95 where uniform.success_rate <= 0.2 | 100% "
+             "| holds |\n");
+  EXPECT_HAS(md, "| b | PRM | faster | 2x | **missed** |\n");
+  EXPECT_HAS(md, "| c | RRT | faster | not measured | **missed** |\n");
+  EXPECT_HAS(md, "\n2 target checks hold, 2 missed.\n");
+
+  // Numbers in `where` compare as numbers.
+  Target at;
+  at.where["world"] = {"0.010"};
+  at.test = {"x", "", Comparison::kEqual, 1};
+  TargetRow row;
+  row.labels["world"] = "0.01";
+  row.metrics["x"] = 1;
+  const std::vector<Target> ats = {at};
+  const std::vector<TargetRow> one = {row};
+  EXPECT_EQ(CheckTargets(ats, one).size(), 1u);
+}
+
+TEST(Targets, CollisionRowsLeaveUnmeasuredFiguresOut) {
+  BenchCollisionRow open_mesh;
+  open_mesh.world = "bunny/mesh";
+  open_mesh.hulls_checks_per_s = 30;
+  open_mesh.bvh_checks_per_s = 10;
+  open_mesh.locate_exact_points_per_s = std::nan("");
+  const std::vector<TargetRow> rows = CollisionTargetRows({open_mesh});
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].labels.at("kind"), "mesh");
+  EXPECT_EQ(rows[0].metrics.count("locate_exact_points_per_s"), 0u);
+  const std::vector<Target> targets = LoadTargetsFile(
+      WriteFile(
+          "c.yaml",
+          "targets:\n"
+          "  - {metric: hulls_checks_per_s, over: bvh_checks_per_s, compare: '>=', value: 3}\n"
+          "  - {metric: locate_hulls_points_per_s, over: locate_exact_points_per_s,"
+          " compare: '>=', value: 10}\n"),
+      CollisionTargetVocabulary());
+  const std::string md = BenchCollisionMarkdown({open_mesh}, targets);
+  EXPECT_HAS(md, "| bunny/mesh | hulls_checks_per_s / bvh_checks_per_s >= 3 | 3x | holds |");
+  EXPECT_HAS(md, "1 target checks hold, 0 missed.");
+  EXPECT_EQ(BenchCollisionMarkdown({open_mesh}).find("## Targets"), std::string::npos);
+  try {
+    LoadTargetsFile(WriteFile("bad.yaml", "targets: [{metric: speed, compare: '>', value: 1}]\n"),
+                    CollisionTargetVocabulary());
+    ADD_FAILURE() << "accepted an unknown metric";
+  } catch (const InputError& error) {
+    EXPECT_HAS(error.what(),
+               "bad.yaml: targets[0].metric: unknown metric 'speed' (expected one of: "
+               "triangles, hulls,");
+  }
+}
+
+}  // namespace
+}  // namespace acdplan::bench
