@@ -13,15 +13,15 @@ namespace acdplan::acd {
 struct Component2d {
   Polygon2d polygon;   ///< Boundary counter-clockwise; holes (clockwise) only while unresolved.
   Ring2d hull;         ///< Convex hull of the boundary, counter-clockwise, no collinear vertices.
-  Point2d centroid;    ///< Area centroid of `polygon`.
-  double concavity;    ///< Concavity of `polygon` under the measure used [units]; 0 if convex.
+  Point2d centroid = Point2d::Zero();  ///< Area centroid of `polygon`.
+  double concavity = 0.0;  ///< Concavity of `polygon` under the measure used [units]; 0 if convex.
   int source = 0;      ///< Index of the input polygon this component came from.
 };
 
 /// A maximal segment shared by two leaf components: an opening between them.
 struct Opening2d {
-  Point2d a, b;                ///< End points.
-  int component_a, component_b;  ///< Indices into Decomposition2d::components, a < b.
+  Point2d a = Point2d::Zero(), b = Point2d::Zero();  ///< End points.
+  int component_a = -1, component_b = -1;  ///< Indices into Decomposition2d::components, a < b.
 };
 
 /// A cut made by Resolve (Algorithm 5): a segment across the piece, from the resolved notch.

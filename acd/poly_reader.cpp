@@ -40,54 +40,82 @@ class PolyParser {
     last_line_ = number;
   }
 
-  std::vector<Polygon2d> Parse() {
+  std::vector<Polygon2d> Parse(std::vector<std::string>* warnings) {
     const Token& count_token = Next("the number of chains");
     const int chain_count_line = count_token.line;
     const long long chain_count = ReadCount(count_token, "number of chains");
     std::vector<Polygon2d> polygons;
     for (long long chain = 1; chain <= chain_count; ++chain) {
-      const std::string chain_name = "chain " + std::to_string(chain) + " of " +
-                                     std::to_string(chain_count) + " (declared on line " +
-                                     std::to_string(chain_count_line) + ")";
-      const Token& size_token = Next("the vertex count of " + chain_name);
-      const int header_line = size_token.line;
-      const long long n = ReadCount(size_token, "vertex count");
-      const Token& kind_token = Next("'out' or 'in' after the vertex count of " + chain_name);
-      const std::string kind = internal::ToLower(kind_token.text);
-      if (kind != "out" && kind != "in") {
-        Fail(kind_token.line,
-             "expected 'out' or 'in' after the vertex count, found '" + kind_token.text + "'");
-      }
-      if (kind == "in" && polygons.empty()) {
-        Fail(kind_token.line, "hole chain ('in') before any outer chain ('out')");
-      }
-      const std::string what =
-          "chain " + std::to_string(chain) + " (line " + std::to_string(header_line) + ")";
-      Ring2d points;
-      // A count larger than the file is reported as a truncated file below; do not trust it
-      // for the allocation.
-      points.reserve(std::min(static_cast<size_t>(n), tokens_.size()));
-      for (long long v = 0; v < n; ++v) {
-        const std::string expected =
-            "vertex " + std::to_string(v + 1) + " of " + std::to_string(n) + " of " + what;
-        const double x = ReadNumber(Next(expected));
-        const double y = ReadNumber(Next(expected));
-        points.emplace_back(x, y);
-      }
-      Ring2d ring = ReadOrder(points, what);
-      if (kind == "out") {
-        polygons.push_back(Polygon2d{std::move(ring), {}});
-      } else {
-        polygons.back().holes.push_back(std::move(ring));
-      }
+      ReadChain(chain,
+                "chain " + std::to_string(chain) + " of " + std::to_string(chain_count) +
+                    " (declared on line " + std::to_string(chain_count_line) + ")",
+                polygons);
     }
+    // Legacy files (Lien's simple5.poly) declare fewer chains than they hold; his reader read
+    // the declared ones only. Read what is there when it looks like a chain, and say so once.
     if (next_ < tokens_.size()) {
       const Token& extra = tokens_[next_];
-      Fail(extra.line, "unexpected '" + extra.text + "' after the " + std::to_string(chain_count) +
-                           " chain(s) declared on line " + std::to_string(chain_count_line) +
-                           " (wrong chain count?)");
+      long long ignored = 0;
+      const bool chain_follows = internal::ParseInt(extra.text, ignored) && ignored >= 1 &&
+                                 next_ + 1 < tokens_.size() &&
+                                 (internal::ToLower(tokens_[next_ + 1].text) == "out" ||
+                                  internal::ToLower(tokens_[next_ + 1].text) == "in");
+      if (!chain_follows || warnings == nullptr) {
+        Fail(extra.line, "unexpected '" + extra.text + "' after the " +
+                             std::to_string(chain_count) + " chain(s) declared on line " +
+                             std::to_string(chain_count_line) + " (wrong chain count?)");
+      }
+      const int first_extra_line = extra.line;
+      long long chain = chain_count;
+      while (next_ < tokens_.size()) {
+        ++chain;
+        ReadChain(chain,
+                  "chain " + std::to_string(chain) + " (beyond the " + std::to_string(chain_count) +
+                      " declared on line " + std::to_string(chain_count_line) + ")",
+                  polygons);
+      }
+      warnings->push_back(source_ + ":" + std::to_string(first_extra_line) + ": " +
+                          std::to_string(chain - chain_count) + " chain(s) more than the " +
+                          std::to_string(chain_count) + " declared on line " +
+                          std::to_string(chain_count_line) + "; read all " + std::to_string(chain) +
+                          " (wrong chain count in the file)");
     }
     return polygons;
+  }
+
+  // Reads chain number `chain` (named `chain_name` in messages) and adds it to `polygons`.
+  void ReadChain(long long chain, const std::string& chain_name, std::vector<Polygon2d>& polygons) {
+    const Token& size_token = Next("the vertex count of " + chain_name);
+    const int header_line = size_token.line;
+    const long long n = ReadCount(size_token, "vertex count");
+    const Token& kind_token = Next("'out' or 'in' after the vertex count of " + chain_name);
+    const std::string kind = internal::ToLower(kind_token.text);
+    if (kind != "out" && kind != "in") {
+      Fail(kind_token.line,
+           "expected 'out' or 'in' after the vertex count, found '" + kind_token.text + "'");
+    }
+    if (kind == "in" && polygons.empty()) {
+      Fail(kind_token.line, "hole chain ('in') before any outer chain ('out')");
+    }
+    const std::string what =
+        "chain " + std::to_string(chain) + " (line " + std::to_string(header_line) + ")";
+    Ring2d points;
+    // A count larger than the file is reported as a truncated file below; do not trust it
+    // for the allocation.
+    points.reserve(std::min(static_cast<size_t>(n), tokens_.size()));
+    for (long long v = 0; v < n; ++v) {
+      const std::string expected =
+          "vertex " + std::to_string(v + 1) + " of " + std::to_string(n) + " of " + what;
+      const double x = ReadNumber(Next(expected));
+      const double y = ReadNumber(Next(expected));
+      points.emplace_back(x, y);
+    }
+    Ring2d ring = ReadOrder(points, what);
+    if (kind == "out") {
+      polygons.push_back(Polygon2d{std::move(ring), {}});
+    } else {
+      polygons.back().holes.push_back(std::move(ring));
+    }
   }
 
  private:
@@ -170,8 +198,9 @@ class PolyParser {
 
 }  // namespace
 
-std::vector<Polygon2d> ReadPoly(std::istream& in, const std::string& source) {
-  return PolyParser(in, source).Parse();
+std::vector<Polygon2d> ReadPoly(std::istream& in, const std::string& source,
+                                std::vector<std::string>* warnings) {
+  return PolyParser(in, source).Parse(warnings);
 }
 
 }  // namespace acdplan::acd

@@ -19,7 +19,13 @@ namespace acdplan::acd {
 /// @throws InputError naming `source`, the line (or element) and the rule broken, e.g. a
 ///         malformed or non-finite number, a wrong count, a truncated file, a vertex order that
 ///         is not a permutation of 1..n (index out of range, repeated, missing), an "in" chain
-///         before any "out" chain, or content after the declared number of chains.
-std::vector<Polygon2d> ReadPoly(std::istream& in, const std::string& source);
+///         before any "out" chain, or content after the declared number of chains that is not
+///         a chain (or any such content when `warnings` is null).
+/// @param warnings  if given, chains beyond the declared count (Lien's simple5.poly declares 1
+///        and holds 2) are read as well and one line is added here, naming the file and the
+///        line where they start: "simple5.poly:380: 1 chain(s) more than the 1 declared on
+///        line 1; read all 2 (wrong chain count in the file)".
+std::vector<Polygon2d> ReadPoly(std::istream& in, const std::string& source,
+                                std::vector<std::string>* warnings = nullptr);
 
 }  // namespace acdplan::acd

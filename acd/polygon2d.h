@@ -13,7 +13,7 @@ using Point2d = Eigen::Vector2d;
 /// vertex is not repeated).
 using Ring2d = std::vector<Point2d>;
 
-/// A polygon with holes. After PreparePolygon() (acd/prepare_polygon.h): `outer` is simple and
+/// A polygon with holes. After PreparePolygons() (acd/prepare_polygon.h): `outer` is simple and
 /// counter-clockwise, each hole is simple, clockwise and strictly inside `outer`, no two rings
 /// cross, and no ring has duplicate or collinear consecutive vertices.
 struct Polygon2d {

@@ -1,16 +1,25 @@
 #include "acd/prepare_polygon.h"
 
 #include <CGAL/Arr_non_caching_segment_traits_2.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_plus_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Surface_sweep_2_algorithms.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/intersections.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "base/input_error.h"
@@ -150,11 +159,34 @@ struct Hit {
   bool overlap;
 };
 
+// True when intersecting segments `a` and `b` share exactly one point and that point is an end
+// point of one of them: a touching, not a crossing or an overlap. Exact predicates only.
+bool IsTouching(const CgalSegment& a, const CgalSegment& b) {
+  const bool collinear = CGAL::collinear(a.source(), a.target(), b.source()) &&
+                         CGAL::collinear(a.source(), a.target(), b.target());
+  if (collinear) {
+    // Collinear segments touch when they share only an end point.
+    auto only_end = [](const CgalSegment& s, const CgalSegment& t) {
+      return (s.target() == t.source() && !t.has_on(s.source()) && !s.has_on(t.target())) ||
+             (s.source() == t.target() && !t.has_on(s.target()) && !s.has_on(t.source())) ||
+             (s.source() == t.source() && !t.has_on(s.target()) && !s.has_on(t.target())) ||
+             (s.target() == t.target() && !t.has_on(s.source()) && !s.has_on(t.source()));
+    };
+    return only_end(a, b);
+  }
+  return b.has_on(a.source()) || b.has_on(a.target()) || a.has_on(b.source()) ||
+         a.has_on(b.target());
+}
+
 // Sort-by-x sweep with bounding boxes and exact do_intersect tests: O(n log n + k) for k
 // pairs whose x-ranges overlap. Only called once a sweep (below) has found that something
 // intersects, to name the edges.
+// `only_with_outer` skips pairs of which neither edge is on ring 0. `allow_touching` skips pairs
+// that meet in one point that is an end point of one of them (a vertex touching an edge or a
+// vertex), so that only crossings and overlaps are found.
 std::optional<Hit> FindIntersection(const std::vector<IndexedRing>& rings,
-                                    const std::vector<EdgeRef>& edges, bool only_between_rings) {
+                                    const std::vector<EdgeRef>& edges, bool only_between_rings,
+                                    bool allow_touching = false, bool only_with_outer = false) {
   struct Box {
     double xmin, xmax, ymin, ymax;
   };
@@ -185,6 +217,7 @@ std::optional<Hit> FindIntersection(const std::vector<IndexedRing>& rings,
       EdgeRef a = edges[i];
       EdgeRef b = edges[j];
       if (std::make_pair(b.ring, b.index) < std::make_pair(a.ring, a.index)) std::swap(a, b);
+      if (only_with_outer && a.ring != 0 && b.ring != 0) continue;
       if (a.ring == b.ring) {
         if (only_between_rings) continue;
         const int n = static_cast<int>(rings[static_cast<size_t>(a.ring)].size());
@@ -195,6 +228,7 @@ std::optional<Hit> FindIntersection(const std::vector<IndexedRing>& rings,
       const CgalSegment sa = segment(a);
       const CgalSegment sb = segment(b);
       if (!CGAL::do_intersect(sa, sb)) continue;
+      if (allow_touching && IsTouching(sa, sb)) continue;
       Hit hit{a, b, sa.source(), false};
       const auto where = CGAL::intersection(sa, sb);
       if (where) {
@@ -251,9 +285,439 @@ bool RingsAreDisjointAndSimple(const std::vector<IndexedRing>& rings) {
   return !CGAL::do_curves_intersect(segments.begin(), segments.end(), traits);
 }
 
+// ---- Rings that touch at points (the OGC-valid case) ----------------------------------------
+
+// Sign of the ring's signed area, exact (the sum of cross products in rationals, after a
+// floating-point filter). For a ring that touches itself it is the orientation of the part that
+// encloses most area, which is the orientation the ring is meant to have.
+CGAL::Sign ExactAreaSign(const IndexedRing& ring) {
+  const size_t n = ring.size();
+  double sum = 0.0;
+  double magnitude = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const CgalPoint& a = ring.points[i];
+    const CgalPoint& b = ring.points[(i + 1) % n];
+    sum += a.x() * b.y() - b.x() * a.y();
+    magnitude += std::abs(a.x() * b.y()) + std::abs(b.x() * a.y());
+  }
+  // Each term and each addition errs by at most eps relative to `magnitude`.
+  if (std::abs(sum) > 4.0 * static_cast<double>(n + 2) * 1.2e-16 * magnitude) {
+    return sum > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+  }
+  CGAL::Exact_rational exact = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const CgalPoint& a = ring.points[i];
+    const CgalPoint& b = ring.points[(i + 1) % n];
+    exact += CGAL::Exact_rational(a.x()) * CGAL::Exact_rational(b.y()) -
+             CGAL::Exact_rational(b.x()) * CGAL::Exact_rational(a.y());
+  }
+  return CGAL::sign(exact);
+}
+
+struct TouchFaceInfo {
+  int winding = INT_MIN;  // Winding number of the rings around the triangle; INT_MIN: not yet.
+  int component = -1;     // Connected part of the interior (triangles with winding 1).
+  int piece = -1;         // Output polygon.
+};
+using TouchVb = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+using TouchFb =
+    CGAL::Triangulation_face_base_with_info_2<TouchFaceInfo, Kernel,
+                                              CGAL::Constrained_triangulation_face_base_2<Kernel>>;
+using TouchTds = CGAL::Triangulation_data_structure_2<TouchVb, TouchFb>;
+// Rings only touch here (crossings and overlaps are rejected before), so a constraint meets
+// another only at an input vertex: no constructed point, and Epick's predicates are exact.
+using TouchCdt = CGAL::Constrained_triangulation_plus_2<CGAL::Constrained_Delaunay_triangulation_2<
+    Kernel, TouchTds, CGAL::No_constraint_intersection_requiring_constructions_tag>>;
+using FaceHandle = TouchCdt::Face_handle;
+using VertexHandle = TouchCdt::Vertex_handle;
+
+uint64_t EdgeKey(int a, int b) {
+  return (static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32) | static_cast<uint32_t>(b);
+}
+
+// The first vertex of ring `r` that is not on `other` (a ring's points), with its bounded side;
+// ON_BOUNDARY when all are on it.
+CGAL::Bounded_side SideOfRing(const IndexedRing& ring, const std::vector<CgalPoint>& other,
+                              size_t* vertex) {
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const CGAL::Bounded_side side =
+        CGAL::bounded_side_2(other.begin(), other.end(), ring.points[i], Kernel());
+    if (side != CGAL::ON_BOUNDARY) {
+      *vertex = i;
+      return side;
+    }
+  }
+  return CGAL::ON_BOUNDARY;
+}
+
+// Disjoint (or only touching) holes are nested when one's vertex off the other's ring lies
+// inside the other. Bounding boxes filter the O(h^2) pairs.
+void RejectNestedHoles(const std::vector<IndexedRing>& rings, const std::string& where) {
+  // Disjoint holes are nested when one vertex of one lies inside the other.
+  struct Box {
+    double xmin, xmax, ymin, ymax;
+  };
+  std::vector<Box> boxes(rings.size());
+  for (size_t r = 1; r < rings.size(); ++r) {
+    Box b{HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
+    for (const CgalPoint& p : rings[r].points) {
+      b = {std::min(b.xmin, p.x()), std::max(b.xmax, p.x()), std::min(b.ymin, p.y()),
+           std::max(b.ymax, p.y())};
+    }
+    boxes[r] = b;
+  }
+  for (size_t a = 1; a < rings.size(); ++a) {
+    for (size_t b = 1; b < rings.size(); ++b) {
+      if (a == b) continue;
+      const Box& box = boxes[b];
+      const Box& inner = boxes[a];
+      if (inner.xmin < box.xmin || inner.xmax > box.xmax || inner.ymin < box.ymin ||
+          inner.ymax > box.ymax) {
+        continue;
+      }
+      size_t vertex = 0;
+      if (SideOfRing(rings[a], rings[b].points, &vertex) == CGAL::ON_BOUNDED_SIDE) {
+        Fail(where, RingName(static_cast<int>(a)) + " lies inside " +
+                        RingName(static_cast<int>(b)) + " (holes must not be nested)");
+      }
+    }
+  }
+}
+
+// PreparePolygons() once the fast test found rings that meet: validates the touchings and
+// splits the interior into polygons whose rings are simple and disjoint (see the header).
+std::vector<Polygon2d> PrepareTouching(std::vector<IndexedRing> rings, const std::string& where) {
+  const int last = static_cast<int>(rings.size()) - 1;
+  // Crossings and overlaps, in the order and with the messages of the strict checks.
+  for (int r = 0; r <= last; ++r) {
+    if (const auto hit = FindIntersection(rings, EdgesOf(rings, r, r), false, true)) {
+      Fail(where, RingName(r) + " is not simple: edges " + EdgeName(rings, hit->a) + " and " +
+                      EdgeName(rings, hit->b) + Describe(*hit));
+    }
+  }
+  // All holes against the outer ring in one sweep (pairs of two holes are skipped here).
+  if (last >= 1) {
+    if (const auto hit = FindIntersection(rings, EdgesOf(rings, 0, last), true, true, true)) {
+      const int h = hit->b.ring;
+      Fail(where, RingName(h) +
+                      " touches or crosses the outer ring (a hole must lie strictly "
+                      "inside): outer edge " +
+                      EdgeName(rings, hit->a) + " and hole edge " + EdgeName(rings, hit->b) +
+                      Describe(*hit));
+    }
+  }
+  // A ring touching itself may enclose area on the wrong side of the lowest vertex's turn:
+  // orient by the exact sign of the area instead.
+  for (int r = 0; r <= last; ++r) {
+    const CGAL::Sign wanted = r == 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+    if (ExactAreaSign(rings[static_cast<size_t>(r)]) != wanted)
+      Reverse(rings[static_cast<size_t>(r)]);
+  }
+  for (int h = 1; h <= last; ++h) {
+    size_t i = 0;
+    if (SideOfRing(rings[static_cast<size_t>(h)], rings[0].points, &i) == CGAL::ON_UNBOUNDED_SIDE) {
+      const CgalPoint& p = rings[static_cast<size_t>(h)].points[i];
+      Fail(where, RingName(h) + " is not inside the outer ring: its vertex " +
+                      std::to_string(rings[static_cast<size_t>(h)].input_index[i]) + " " +
+                      internal::FormatPoint(Point2d(p.x(), p.y())) + " is outside");
+    }
+  }
+  if (const auto hit = FindIntersection(rings, EdgesOf(rings, 1, last), true, true)) {
+    Fail(where, RingName(hit->a.ring) + " and " + RingName(hit->b.ring) +
+                    " touch or overlap (holes must be disjoint): edges " + EdgeName(rings, hit->a) +
+                    " and " + EdgeName(rings, hit->b) + Describe(*hit));
+  }
+  RejectNestedHoles(rings, where);
+
+  // Constrained triangulation of all ring edges. Vertex info: index into `owners`.
+  TouchCdt cdt;
+  std::vector<std::vector<VertexHandle>> handles(rings.size());
+  std::vector<std::vector<int>> owners;  // Per triangulation vertex: the rings through it.
+  VertexHandle hint;
+  for (size_t r = 0; r < rings.size(); ++r) {
+    for (const CgalPoint& p : rings[r].points) {
+      VertexHandle v = cdt.insert(p, hint == VertexHandle() ? FaceHandle() : hint->face());
+      handles[r].push_back(v);
+      hint = v;
+    }
+  }
+  // Number the vertices after insertion (info defaults are unspecified).
+  int vertex_count = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    v->info() = vertex_count++;
+  }
+  owners.assign(static_cast<size_t>(vertex_count), {});
+  for (size_t r = 0; r < rings.size(); ++r) {
+    for (const VertexHandle& v : handles[r]) {
+      std::vector<int>& o = owners[static_cast<size_t>(v->info())];
+      if (o.empty() || o.back() != static_cast<int>(r)) o.push_back(static_cast<int>(r));
+    }
+  }
+  // Net number of ring edges running a -> b minus b -> a, per triangulation edge, and the
+  // ring of each (for the hole-connectivity rule).
+  std::unordered_map<uint64_t, int> net;
+  struct SubEdge {
+    VertexHandle a, b;
+    int ring;
+  };
+  std::vector<SubEdge> sub_edges;
+  for (size_t r = 0; r < rings.size(); ++r) {
+    const size_t n = handles[r].size();
+    for (size_t i = 0; i < n; ++i) {
+      const auto id = cdt.insert_constraint(handles[r][i], handles[r][(i + 1) % n]);
+      VertexHandle previous;
+      for (auto v = cdt.vertices_in_constraint_begin(id); v != cdt.vertices_in_constraint_end(id);
+           ++v) {
+        if (previous != VertexHandle()) {
+          ++net[EdgeKey(previous->info(), (*v)->info())];
+          --net[EdgeKey((*v)->info(), previous->info())];
+          sub_edges.push_back({previous, *v, static_cast<int>(r)});
+        }
+        previous = *v;
+      }
+    }
+  }
+  auto net_of = [&](const VertexHandle& a, const VertexHandle& b) {
+    const auto it = net.find(EdgeKey(a->info(), b->info()));
+    return it == net.end() ? 0 : it->second;
+  };
+
+  // Winding numbers by a walk over the triangles: crossing edge a -> b (the triangle on its
+  // left) to the right decreases the winding by net(a -> b).
+  std::deque<FaceHandle> queue;
+  cdt.infinite_face()->info().winding = 0;
+  queue.push_back(cdt.infinite_face());
+  while (!queue.empty()) {
+    const FaceHandle f = queue.front();
+    queue.pop_front();
+    for (int i = 0; i < 3; ++i) {
+      const FaceHandle g = f->neighbor(i);
+      if (g->info().winding != INT_MIN) continue;
+      const VertexHandle a = f->vertex(TouchCdt::ccw(i));
+      const VertexHandle b = f->vertex(TouchCdt::cw(i));
+      const bool infinite = cdt.is_infinite(a) || cdt.is_infinite(b);
+      g->info().winding = f->info().winding - (infinite ? 0 : net_of(a, b));
+      queue.push_back(g);
+    }
+  }
+  auto point_of = [](const VertexHandle& v) { return Point2d(v->point().x(), v->point().y()); };
+  auto rings_at = [&](const VertexHandle& v) {
+    const std::vector<int>& o = owners[static_cast<size_t>(v->info())];
+    std::string names;
+    for (size_t k = 0; k < o.size(); ++k) {
+      names += (k == 0 ? "" : k + 1 == o.size() ? " and " : ", ") + RingName(o[k]);
+    }
+    return names;
+  };
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    const int w = f->info().winding;
+    if (w == 0 || w == 1) continue;
+    // Rings that only touch give windings 0 and 1; anything else is a crossing at a shared
+    // vertex (the strict crossing tests above found no other). Name the vertex where rings meet.
+    for (int i = 0; i < 3; ++i) {
+      const VertexHandle v = f->vertex(i);
+      if (owners[static_cast<size_t>(v->info())].size() > 1 ||
+          cdt.are_there_incident_constraints(v)) {
+        int constraints = 0;
+        auto e = cdt.incident_edges(v);
+        const auto done = e;
+        do {
+          if (!cdt.is_infinite(e) && cdt.is_constrained(*e)) ++constraints;
+        } while (++e != done);
+        if (constraints < 4) continue;
+        const std::vector<int>& o = owners[static_cast<size_t>(v->info())];
+        Fail(where, (o.size() == 1 ? RingName(o[0]) + " crosses itself" : rings_at(v) + " cross") +
+                        " at the shared vertex " + internal::FormatPoint(point_of(v)) +
+                        " (rings may touch at points but not cross)");
+      }
+    }
+    Fail(where, "rings cross or overlap near " + internal::FormatPoint(point_of(f->vertex(0))) +
+                    " (winding number " + std::to_string(w) + ")");
+  }
+
+  // Connected parts of the interior: triangles of winding 1 joined across unconstrained edges.
+  int components = 0;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (f->info().winding != 1 || f->info().component >= 0) continue;
+    f->info().component = components;
+    queue.push_back(f);
+    while (!queue.empty()) {
+      const FaceHandle g = queue.front();
+      queue.pop_front();
+      for (int i = 0; i < 3; ++i) {
+        const FaceHandle h = g->neighbor(i);
+        if (h->info().winding != 1 || h->info().component >= 0 || cdt.is_constrained({g, i})) {
+          continue;
+        }
+        h->info().component = components;
+        queue.push_back(h);
+      }
+    }
+    ++components;
+  }
+  // A hole bordering two parts closes a chain of touching rings across the interior.
+  std::vector<int> hole_component(rings.size(), -1);
+  for (const SubEdge& e : sub_edges) {
+    if (e.ring == 0) continue;
+    FaceHandle f;
+    int i = 0;
+    cdt.is_edge(e.a, e.b, f, i);
+    if (f->vertex(TouchCdt::ccw(i)) != e.a) f = f->neighbor(i);  // The triangle left of a -> b.
+    const int c = f->info().component;
+    int& seen = hole_component[static_cast<size_t>(e.ring)];
+    if (seen >= 0 && c != seen) {
+      Fail(where, RingName(e.ring) +
+                      " disconnects the interior: with the rings it touches it closes a chain "
+                      "around part of the polygon (the interior must stay connected), e.g. "
+                      "at " +
+                      internal::FormatPoint(point_of(e.a)));
+    }
+    seen = c;
+  }
+
+  // Pieces. A part without pinch vertices (where its triangles form one fan sector) is one
+  // polygon. A part with pinches is grown triangle by triangle, adding a triangle only while
+  // every vertex keeps one fan sector of the piece (a 2-manifold: simple, disjoint rings).
+  std::vector<char> pinched(static_cast<size_t>(components), 0);
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    std::unordered_map<int, int> sectors;
+    auto f = cdt.incident_faces(v);
+    const auto done = f;
+    do {
+      const int c = f->info().component;
+      auto next = f;
+      ++next;
+      if (c >= 0 && next->info().component != c)
+        ++sectors[c];
+      else if (c >= 0 && cdt.is_constrained({f, f->index(next)}))
+        ++sectors[c];
+    } while (++f != done);
+    for (const auto& [c, count] : sectors) {
+      if (count > 1) pinched[static_cast<size_t>(c)] = 1;
+    }
+  }
+  int pieces = 0;
+  std::vector<int> piece_stamp(static_cast<size_t>(vertex_count), -1);  // Piece of the count.
+  std::vector<int> piece_count(static_cast<size_t>(vertex_count), 0);   // Triangles at vertex.
+  std::vector<int> component_piece(static_cast<size_t>(components), -1);
+  auto count_at = [&](const VertexHandle& v, int piece) {
+    const size_t k = static_cast<size_t>(v->info());
+    return piece_stamp[k] == piece ? piece_count[k] : 0;
+  };
+  auto add = [&](const FaceHandle& f, int piece) {
+    f->info().piece = piece;
+    for (int i = 0; i < 3; ++i) {
+      const size_t k = static_cast<size_t>(f->vertex(i)->info());
+      if (piece_stamp[k] != piece) {
+        piece_stamp[k] = piece;
+        piece_count[k] = 0;
+      }
+      ++piece_count[k];
+    }
+  };
+  // Triangle f may join `piece` if at each vertex the piece has no triangle yet or f shares an
+  // unconstrained edge through that vertex with one of its triangles.
+  auto may_join = [&](const FaceHandle& f, int piece) {
+    for (int i = 0; i < 3; ++i) {
+      if (count_at(f->vertex(i), piece) == 0) continue;
+      bool adjacent = false;
+      for (const int j : {TouchCdt::ccw(i), TouchCdt::cw(i)}) {  // The edges through vertex i.
+        adjacent =
+            adjacent || (f->neighbor(j)->info().piece == piece && !cdt.is_constrained({f, j}));
+      }
+      if (!adjacent) return false;
+    }
+    return true;
+  };
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    const int c = f->info().component;
+    if (c < 0 || f->info().piece >= 0) continue;
+    if (!pinched[static_cast<size_t>(c)]) {
+      int& p = component_piece[static_cast<size_t>(c)];
+      if (p < 0) p = pieces++;
+      f->info().piece = p;
+      continue;
+    }
+    const int piece = pieces++;
+    add(f, piece);
+    queue.push_back(f);
+    while (!queue.empty()) {
+      const FaceHandle g = queue.front();
+      queue.pop_front();
+      for (int i = 0; i < 3; ++i) {
+        const FaceHandle h = g->neighbor(i);
+        if (h->info().component != c || h->info().piece >= 0 || cdt.is_constrained({g, i})) {
+          continue;
+        }
+        if (!may_join(h, piece)) continue;  // Tried again when another neighbour joins.
+        add(h, piece);
+        queue.push_back(h);
+      }
+    }
+  }
+
+  // Rings of each piece: its boundary edges, piece on the left, chained (one out-edge per
+  // vertex, since every vertex has one sector). The ring through the lexicographically smallest
+  // vertex is the outer one.
+  std::vector<std::unordered_map<int, VertexHandle>> next_of(static_cast<size_t>(pieces));
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    const int p = f->info().piece;
+    if (p < 0) continue;
+    for (int i = 0; i < 3; ++i) {
+      if (f->neighbor(i)->info().piece == p) continue;
+      next_of[static_cast<size_t>(p)][f->vertex(TouchCdt::ccw(i))->info()] =
+          f->vertex(TouchCdt::cw(i));
+    }
+  }
+  std::vector<VertexHandle> vertex_of(static_cast<size_t>(vertex_count));
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    vertex_of[static_cast<size_t>(v->info())] = v;
+  }
+  std::vector<Polygon2d> result;
+  result.reserve(static_cast<size_t>(pieces));
+  for (auto& next : next_of) {
+    std::vector<Ring2d> loops;
+    std::vector<CgalPoint> lowest;
+    std::vector<int> starts;
+    for (const auto& entry : next) starts.push_back(entry.first);
+    std::sort(starts.begin(), starts.end());  // Deterministic order.
+    std::unordered_map<int, char> used;
+    for (const int start : starts) {
+      if (used[start]) continue;
+      Ring2d loop;
+      CgalPoint low = vertex_of[static_cast<size_t>(start)]->point();
+      int v = start;
+      do {
+        used[v] = 1;
+        const CgalPoint& p = vertex_of[static_cast<size_t>(v)]->point();
+        loop.emplace_back(p.x(), p.y());
+        if (p < low) low = p;
+        v = next.at(v)->info();
+      } while (v != start);
+      // Drop the vertices other rings added on this ring's straight edges.
+      const IndexedRing cleaned = CleanRing(loop);
+      Ring2d ring;
+      for (const CgalPoint& p : cleaned.points) ring.emplace_back(p.x(), p.y());
+      loops.push_back(std::move(ring));
+      lowest.push_back(low);
+    }
+    size_t outer = 0;
+    for (size_t k = 1; k < loops.size(); ++k) {
+      if (lowest[k] < lowest[outer]) outer = k;
+    }
+    Polygon2d polygon;
+    polygon.outer = std::move(loops[outer]);
+    for (size_t k = 0; k < loops.size(); ++k) {
+      if (k != outer) polygon.holes.push_back(std::move(loops[k]));
+    }
+    result.push_back(std::move(polygon));
+  }
+  return result;
+}
+
 }  // namespace
 
-Polygon2d PreparePolygon(const Polygon2d& raw, const std::string& where) {
+std::vector<Polygon2d> PreparePolygons(const Polygon2d& raw, const std::string& where) {
   // 1. Every coordinate finite.
   const size_t ring_count = 1 + raw.holes.size();
   auto raw_ring = [&](size_t r) -> const Ring2d& { return r == 0 ? raw.outer : raw.holes[r - 1]; };
@@ -286,28 +750,9 @@ Polygon2d PreparePolygon(const Polygon2d& raw, const std::string& where) {
   }
   const int last = static_cast<int>(ring_count) - 1;
 
-  // 4.-6. Simplicity of each ring, holes inside the outer ring, holes disjoint.
-  const bool disjoint = RingsAreDisjointAndSimple(rings);
-  if (!disjoint) {
-    for (int r = 0; r <= last; ++r) {
-      if (const auto hit = FindIntersection(rings, EdgesOf(rings, r, r), false)) {
-        Fail(where, RingName(r) + " is not simple: edges " + EdgeName(rings, hit->a) + " and " +
-                        EdgeName(rings, hit->b) + Describe(*hit));
-      }
-    }
-    for (int h = 1; h <= last; ++h) {
-      std::vector<EdgeRef> edges = EdgesOf(rings, 0, 0);
-      const std::vector<EdgeRef> hole = EdgesOf(rings, h, h);
-      edges.insert(edges.end(), hole.begin(), hole.end());
-      if (const auto hit = FindIntersection(rings, edges, true)) {
-        Fail(where, RingName(h) +
-                        " touches or crosses the outer ring (a hole must lie strictly "
-                        "inside): outer edge " +
-                        EdgeName(rings, hit->a) + " and hole edge " + EdgeName(rings, hit->b) +
-                        Describe(*hit));
-      }
-    }
-  }
+  // 4.-6. Simplicity of each ring, holes inside the outer ring, holes disjoint. Rings that
+  // meet anywhere take the slower path that accepts touchings at points.
+  if (!RingsAreDisjointAndSimple(rings)) return PrepareTouching(std::move(rings), where);
   std::vector<CgalPoint> outer_points = rings[0].points;
   for (int h = 1; h <= last; ++h) {
     // No crossing or touching with the outer ring, so one vertex decides.
@@ -319,41 +764,7 @@ Polygon2d PreparePolygon(const Polygon2d& raw, const std::string& where) {
                       internal::FormatPoint(Point2d(p.x(), p.y())) + " is outside");
     }
   }
-  if (!disjoint) {
-    if (const auto hit = FindIntersection(rings, EdgesOf(rings, 1, last), true)) {
-      Fail(where, RingName(hit->a.ring) + " and " + RingName(hit->b.ring) +
-                      " touch or overlap (holes must be disjoint): edges " +
-                      EdgeName(rings, hit->a) + " and " + EdgeName(rings, hit->b) + Describe(*hit));
-    }
-    // The sweep saw something the pairwise search did not: should not happen.
-    Fail(where, "rings intersect (internal inconsistency between the two intersection tests)");
-  }
-  // Disjoint holes are nested when one vertex of one lies inside the other.
-  struct Box {
-    double xmin, xmax, ymin, ymax;
-  };
-  std::vector<Box> boxes(ring_count);
-  for (size_t r = 1; r < ring_count; ++r) {
-    Box b{HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
-    for (const CgalPoint& p : rings[r].points) {
-      b = {std::min(b.xmin, p.x()), std::max(b.xmax, p.x()), std::min(b.ymin, p.y()),
-           std::max(b.ymax, p.y())};
-    }
-    boxes[r] = b;
-  }
-  for (size_t a = 1; a < ring_count; ++a) {
-    for (size_t b = 1; b < ring_count; ++b) {
-      if (a == b) continue;
-      const CgalPoint& p = rings[a].points[0];
-      const Box& box = boxes[b];
-      if (p.x() < box.xmin || p.x() > box.xmax || p.y() < box.ymin || p.y() > box.ymax) continue;
-      if (CGAL::bounded_side_2(rings[b].points.begin(), rings[b].points.end(), p, Kernel()) ==
-          CGAL::ON_BOUNDED_SIDE) {
-        Fail(where, RingName(static_cast<int>(a)) + " lies inside " +
-                        RingName(static_cast<int>(b)) + " (holes must not be nested)");
-      }
-    }
-  }
+  RejectNestedHoles(rings, where);
 
   Polygon2d clean;
   auto to_ring = [](const IndexedRing& ring) {
@@ -364,7 +775,16 @@ Polygon2d PreparePolygon(const Polygon2d& raw, const std::string& where) {
   };
   clean.outer = to_ring(rings[0]);
   for (size_t r = 1; r < ring_count; ++r) clean.holes.push_back(to_ring(rings[r]));
-  return clean;
+  return {clean};
+}
+
+Polygon2d PreparePolygon(const Polygon2d& raw, const std::string& where) {
+  std::vector<Polygon2d> pieces = PreparePolygons(raw, where);
+  if (pieces.size() != 1) {
+    Fail(where, "rings touch at points, which makes the polygon " + std::to_string(pieces.size()) +
+                    " polygons where one is required (see PreparePolygons())");
+  }
+  return std::move(pieces[0]);
 }
 
 }  // namespace acdplan::acd

@@ -2,22 +2,41 @@
 // Validation and cleaning of raw polygons before decomposition.
 
 #include <string>
+#include <vector>
 
 #include "acd/polygon2d.h"
 
 namespace acdplan::acd {
 
-/// Validates `raw` and returns its cleaned form (see Polygon2d's invariants).
+/// Validates `raw` and returns its cleaned form as polygons that satisfy Polygon2d's
+/// invariants (simple rings, holes strictly inside and pairwise disjoint), whose union is
+/// `raw`'s interior. One polygon, unchanged but for cleaning, unless rings touch.
 ///
 /// Cleans what is valid but untidy: re-orients rings (outer counter-clockwise, holes
 /// clockwise), drops consecutive duplicate vertices (and a repeated closing vertex), drops
 /// collinear vertices and zero-width spikes.
 ///
-/// Checks, in this order: every coordinate finite; cleaning; each ring keeps at least 3
-/// vertices and a non-zero area; each ring is simple (a vertex on a non-adjacent edge, or two
-/// vertices at one point, count as self-intersection); each hole strictly inside the outer
-/// ring (not crossing or touching it); holes pairwise disjoint (no crossing, touching or
-/// nesting).
+/// Accepted touchings (OGC Simple Features validity, plus self-tangent "inverted" rings as
+/// ESRI writes them): rings may meet at isolated points: a hole's vertex on the outer ring or
+/// on another hole (at a vertex or inside an edge), two holes sharing a vertex, a ring touching
+/// itself at a vertex (an outer ring pinching off a pocket of the exterior, or two lobes of
+/// one ring meeting at a point). Such a polygon is returned as several polygons: each part of
+/// the interior that only meets the rest at points becomes its own polygon (two lobes: two
+/// polygons), and each part whose boundary passes a point twice (a pinch) is cut along
+/// diagonals of a constrained Delaunay triangulation into polygons whose rings are simple and
+/// disjoint (grown triangle by triangle while each vertex keeps one fan of triangles; a part
+/// without pinches stays whole, with its holes). The cuts are not openings of the
+/// decomposition.
+///
+/// Still rejected (InputError), checked in this order: a non-finite coordinate; a ring with
+/// fewer than 3 distinct, non-collinear vertices or zero area; a ring crossing itself, or
+/// overlapping itself along a segment ("is not simple"); a hole crossing or overlapping the
+/// outer ring ("touches or crosses the outer ring", the strict rule's wording); a hole outside
+/// the outer ring; two holes crossing or overlapping; nested holes; rings meeting at a shared
+/// vertex where they cross there ("outer ring crosses itself at the shared vertex (x, y)",
+/// "hole 0 and hole 1 cross at ..."); a hole that, with the rings it touches, closes a chain
+/// around part of the interior ("hole k disconnects the interior": the interior must stay
+/// connected; touching at two points of the outer ring is such a chain).
 ///
 /// Messages name rings as "outer ring" or "hole k" (k the 0-based index in `raw.holes`) and
 /// vertices by their 0-based index in the ring as given in `raw` (for a .poly file: after its
@@ -25,17 +44,23 @@ namespace acdplan::acd {
 /// (3,4) and (7,8) intersect at (0.5, 1.25)". Where several pairs intersect, the pair that
 /// comes first in the cleaned ring's order is named.
 ///
-/// O(n log n) for n vertices in all when the input is valid (CGAL's surface sweep, a
+/// Complexity: O(n log n) for n vertices in all when no rings meet (CGAL's surface sweep, a
 /// Bentley-Ottmann variant, stopping at the first intersection) plus O(h * m) point-in-ring
-/// tests for h holes of m vertices; naming the offending edges after a failure can take
-/// O(n^2) in the worst case.
+/// tests for h holes of m vertices. When rings meet: O(n log n + k) intersection searches over
+/// the k edge pairs whose x-ranges overlap, O(h * m + h^2) containment tests (bounding boxes
+/// filter the h^2), and an O(n log n) constrained triangulation with linear passes over it.
+/// All predicates are exact (CGAL's Epick kernel; the triangulation needs no constructions,
+/// since touching rings only meet at input vertices; ring orientation by the exact area sign).
+/// Naming the offending edges after a failure can take O(n^2) in the worst case.
 ///
 /// @param where  names the element in messages, e.g. "monkey.poly: polygon 0".
-/// @throws InputError, one message naming `where`, the ring and the rule, when a coordinate is
-///         NaN or infinite; a ring has fewer than 3 distinct, non-collinear vertices or zero
-///         area; a ring is self-intersecting (the message names the two edges by vertex index
-///         and the point); a hole is outside its outer ring, crosses it or touches it; two
-///         holes overlap, touch or nest. All predicates are exact (CGAL's Epick kernel).
+/// @throws InputError, one message naming `where`, the ring and the rule, as listed above.
+std::vector<Polygon2d> PreparePolygons(const Polygon2d& raw, const std::string& where);
+
+/// PreparePolygons() for callers that need exactly one polygon (a robot outline).
+/// @throws InputError as PreparePolygons(), and when touching rings make `raw` several
+///         polygons ("<where>: rings touch at points, which makes the polygon N polygons where
+///         one is required ...").
 Polygon2d PreparePolygon(const Polygon2d& raw, const std::string& where);
 
 }  // namespace acdplan::acd

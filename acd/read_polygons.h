@@ -8,15 +8,29 @@
 
 namespace acdplan::acd {
 
+/// Options for ReadPolygons(); `{}` is valid (strict: invalid geometry is an error).
+struct ReadPolygonsOptions {
+  /// Make invalid polygons valid with RepairPolygon() (acd/repair_polygon.h) instead of
+  /// rejecting them.
+  bool repair = false;
+  /// If given, receives one line per warning of the reader (e.g. a .poly file with more chains
+  /// than it declares) and per repair change, each naming the file.
+  std::vector<std::string>* notes = nullptr;
+};
+
 /// Reads the polygons in `path`, chosen by extension: `.poly` (Lien's format, see
 /// acd/poly_reader.h), `.wkt` (acd/wkt_reader.h), `.geojson` / `.json` (acd/geojson_reader.h).
-/// Every polygon is passed through PreparePolygon(), so the result is validated and clean.
+/// Every polygon is passed through PreparePolygons(), so the result is validated and clean; a
+/// polygon whose rings touch at points may become several (in file order, so polygon k of the
+/// result is not always polygon k of the file).
 /// `reference_radii`, if given, receives ReferenceRadius() of each polygon as written in the
 /// file, before cleaning drops collinear vertices (which moves the vertex mean): the radius the
-/// dissertation's tables relate tau to (19.58 for neuron.poly; 19.54 after cleaning).
+/// dissertation's tables relate tau to (19.58 for neuron.poly; 19.54 after cleaning), one per
+/// returned polygon (the pieces of one file polygon share its radius).
 /// @throws InputError if the file cannot be read, the extension is unknown, or the content or
 ///         geometry breaks a rule (the message names the file and the line or element).
 std::vector<Polygon2d> ReadPolygons(const std::string& path,
-                                    std::vector<double>* reference_radii = nullptr);
+                                    std::vector<double>* reference_radii = nullptr,
+                                    const ReadPolygonsOptions& options = {});
 
 }  // namespace acdplan::acd

@@ -53,6 +53,7 @@ struct DecomposeArguments {
   std::string json_path;
   std::string svg_path;
   bool check = false;
+  bool repair = false;
 };
 
 /// A CLI11 check from a parser that throws acdplan::InputError, so the value is checked while parsing
@@ -105,7 +106,12 @@ int RunDecompose(const DecomposeArguments& args) {
   CheckOutputPath("--svg", args.svg_path);
 
   std::vector<double> radii;  // As written in the file: the dissertation's tables use these.
-  const std::vector<acd::Polygon2d> polygons = acd::ReadPolygons(args.input, &radii);
+  std::vector<std::string> notes;  // Reader warnings and repair changes, one line each.
+  acd::ReadPolygonsOptions read_options;
+  read_options.repair = args.repair;
+  read_options.notes = &notes;
+  const std::vector<acd::Polygon2d> polygons = acd::ReadPolygons(args.input, &radii, read_options);
+  for (const std::string& note : notes) std::cerr << note << "\n";
   int vertices = 0;
   for (const acd::Polygon2d& polygon : polygons) vertices += acd::VertexCount(polygon);
   const double radius = *std::max_element(radii.begin(), radii.end());
@@ -429,6 +435,9 @@ int main(int argc, char** argv) {
                       "Cuts end at vertices only (no new vertex on an edge)");
   decompose->add_option("--json", args.json_path, "Write the decomposition JSON here");
   decompose->add_option("--svg", args.svg_path, "Write an SVG picture here");
+  decompose->add_flag("--repair", args.repair,
+                      "Make invalid polygons valid (even-odd rule) instead of rejecting them; "
+                      "each change is printed on stderr");
   decompose->add_flag("--check", args.check,
                       "Check the result (coverage, disjointness, concavity); on failure "
                       "list the problems, write nothing and exit 1");

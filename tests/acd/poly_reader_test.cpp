@@ -113,9 +113,26 @@ TEST(PolyReaderTest, CountAndStructureErrorsNameTheLine) {
   EXPECT_THAT(
       ErrorOf("2\n3 out\n0 0\n1 0\n0 1\n1 2 3\n"),
       HasSubstr("t.poly:6: unexpected end of file: expected the vertex count of chain 2 of 2"));
-  // More chains than declared (simple5.poly does this).
+  // More chains than declared (simple5.poly does this) without a warnings list, or content
+  // after the chains that is not a chain.
   EXPECT_THAT(ErrorOf("1\n3 out\n0 0\n1 0\n0 1\n1 2 3\n3 in\n"),
               HasSubstr("t.poly:7: unexpected '3' after the 1 chain(s) declared on line 1"));
+}
+
+TEST(PolyReaderTest, ReadsChainsBeyondTheDeclaredCountWithOneWarning) {
+  std::istringstream in(
+      "1\n4 out\n0 0\n4 0\n4 4\n0 4\n1 2 3 4\n3 in\n1 1\n2 1\n1 2\n1 2 3\n"
+      "3 in\n3 3\n3.5 3\n3 3.5\n3 2 1\n");
+  std::vector<std::string> warnings;
+  const std::vector<Polygon2d> polygons = ReadPoly(in, "t.poly", &warnings);
+  ASSERT_EQ(polygons.size(), 1u);
+  EXPECT_EQ(polygons[0].holes.size(), 2u);
+  EXPECT_THAT(warnings, ::testing::ElementsAre("t.poly:8: 2 chain(s) more than the 1 declared on "
+                                               "line 1; read all 3 (wrong chain count in the "
+                                               "file)"));
+  // Content after the chains that is not a chain stays an error.
+  std::istringstream bad("1\n3 out\n0 0\n1 0\n0 1\n1 2 3\nhello\n");
+  EXPECT_THROW(ReadPoly(bad, "t.poly", &warnings), InputError);
 }
 
 }  // namespace

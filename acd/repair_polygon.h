@@ -1,0 +1,38 @@
+#pragma once
+// Making invalid polygons valid, the way GEOS / PostGIS ST_MakeValid do with the even-odd rule.
+
+#include <string>
+#include <vector>
+
+#include "acd/polygon2d.h"
+
+namespace acdplan::acd {
+
+/// What RepairPolygon() made of a polygon.
+struct RepairedPolygon {
+  std::vector<Polygon2d> polygons;   ///< Valid and prepared (PreparePolygons()); may be empty.
+  std::vector<std::string> changes;  ///< One line per change, "<where>: repaired: ..."; empty
+                                     ///< when `raw` was valid.
+};
+
+/// Returns `raw` made valid. A valid `raw` comes back as PreparePolygons() returns it, with no
+/// change. Otherwise:
+///  1. each ring that cleans to fewer than 3 distinct, non-collinear vertices (e.g. a hole with
+///     two vertices) is dropped: "hole 2 has 2 distinct, non-collinear vertices: dropped";
+///  2. if the rest is still invalid, all ring edges go into one exact arrangement (CGAL
+///     Arrangement_2 with history, Epeck: crossing points are exact), each face is inside when
+///     an odd number of ring edges separates it from the unbounded face (the even-odd rule, as
+///     GEOS's "linework" make-valid: a bow tie gives its two triangles, a hole crossing the
+///     outer ring gives the symmetric difference), edges with inside on both sides vanish, and
+///     the inside is returned as polygons with holes: "<the rule broken>: rebuilt by the
+///     even-odd rule into N polygon(s) with H hole(s), area A";
+///  3. the result goes through PreparePolygons() (points where parts touch are handled there).
+/// Crossing points are rounded to doubles at the end; a rounding that makes rings cross is
+/// reported as an InputError ("repair failed: ..."), not hidden.
+/// O((n + k) log n) for n edges crossing k times, plus PreparePolygons().
+/// @param where  names the polygon in messages and change lines, e.g. "tile.wkt: polygon 0".
+/// @throws InputError if a coordinate is not finite or the repaired result cannot be
+///         represented in doubles.
+RepairedPolygon RepairPolygon(const Polygon2d& raw, const std::string& where);
+
+}  // namespace acdplan::acd

@@ -1,0 +1,97 @@
+#include "acd/repair_polygon.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "acd/check_decomposition.h"
+#include "acd/decompose2d.h"
+#include "base/input_error.h"
+#include "acd/prepare_polygon.h"
+
+namespace acdplan::acd {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+Ring2d Square(double x0, double y0, double size) {
+  return {{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}};
+}
+
+double TotalArea(const std::vector<Polygon2d>& polygons) {
+  double area = 0.0;
+  for (const Polygon2d& p : polygons) area += Area(p);
+  return area;
+}
+
+void ExpectDecomposes(const std::vector<Polygon2d>& polygons) {
+  const Decomposition2d d = Decompose2d(polygons, {});
+  const DecompositionCheck check = CheckDecomposition(polygons, d);
+  EXPECT_TRUE(check.ok()) << (check.ok() ? "" : check.problems[0]);
+}
+
+TEST(RepairPolygonTest, ValidPolygonIsUnchanged) {
+  const RepairedPolygon r = RepairPolygon({Square(0, 0, 4), {Square(1, 1, 1)}}, "w");
+  EXPECT_TRUE(r.changes.empty());
+  ASSERT_EQ(r.polygons.size(), 1u);
+  EXPECT_DOUBLE_EQ(Area(r.polygons[0]), 15.0);
+}
+
+TEST(RepairPolygonTest, BowTieBecomesTwoTriangles) {
+  const RepairedPolygon r =
+      RepairPolygon({{{0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}, "t.wkt: polygon 0");
+  ASSERT_EQ(r.polygons.size(), 2u);
+  EXPECT_EQ(r.polygons[0].outer.size(), 3u);
+  EXPECT_EQ(r.polygons[1].outer.size(), 3u);
+  // Triangles (0,0)-(1.5,1.5)-(0,3) and (1.5,1.5)-(2,2)-(3,0)... areas 2.25 and 0.75.
+  EXPECT_NEAR(TotalArea(r.polygons), 2.25 + 0.75, 1e-12);
+  EXPECT_THAT(r.changes,
+              ElementsAre("t.wkt: polygon 0: repaired: outer ring is not simple: edges (0,1) and "
+                          "(2,3) intersect at (1.5, 1.5): rebuilt by the even-odd rule into 2 "
+                          "polygon(s) with 0 hole(s), area 3"));
+  ExpectDecomposes(r.polygons);
+}
+
+TEST(RepairPolygonTest, TwoVertexHoleIsDropped) {
+  const RepairedPolygon r =
+      RepairPolygon({Square(0, 0, 4), {{{1, 1}, {2, 2}}, Square(1, 2, 1)}}, "t.wkt: polygon 3");
+  EXPECT_THAT(r.changes,
+              ElementsAre("t.wkt: polygon 3: repaired: hole 0 has 2 distinct vertices: dropped"));
+  ASSERT_EQ(r.polygons.size(), 1u);
+  EXPECT_EQ(r.polygons[0].holes.size(), 1u);
+  EXPECT_DOUBLE_EQ(Area(r.polygons[0]), 15.0);
+}
+
+TEST(RepairPolygonTest, HoleCrossingOuterRingGivesTheEvenOddResult) {
+  // Inside both: excluded; inside the hole only: included (the symmetric difference).
+  const RepairedPolygon r = RepairPolygon({Square(0, 0, 4), {Square(3, 1, 2)}}, "w");
+  ASSERT_EQ(r.changes.size(), 1u);
+  EXPECT_THAT(r.changes[0], HasSubstr("w: repaired: hole 0 touches or crosses the outer ring"));
+  EXPECT_THAT(r.changes[0], HasSubstr("rebuilt by the even-odd rule into 2 polygon(s) with 0 "
+                                      "hole(s), area 16"));
+  ASSERT_EQ(r.polygons.size(), 2u);
+  EXPECT_DOUBLE_EQ(Area(r.polygons[0]), 14.0);  // The square with the notch [3,4]x[1,3].
+  EXPECT_DOUBLE_EQ(Area(r.polygons[1]), 2.0);   // [4,5]x[1,3].
+  ExpectDecomposes(r.polygons);
+}
+
+TEST(RepairPolygonTest, DegenerateOuterRingLeavesNothing) {
+  const RepairedPolygon r = RepairPolygon({{{0, 0}, {1, 1}, {2, 2}}, {}}, "w");
+  EXPECT_TRUE(r.polygons.empty());
+  EXPECT_THAT(r.changes, ElementsAre("w: repaired: outer ring has 3 distinct vertices, all "
+                                     "collinear: dropped",
+                                     "w: repaired: nothing remains without the outer ring"));
+}
+
+TEST(RepairPolygonTest, NonFiniteCoordinateIsStillAnError) {
+  Polygon2d raw{Square(0, 0, 1), {}};
+  raw.outer[1].x() = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(RepairPolygon(raw, "w"), InputError);
+}
+
+}  // namespace
+}  // namespace acdplan::acd
