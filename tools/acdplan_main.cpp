@@ -473,11 +473,13 @@ int main(int argc, char** argv) {
       "summary. Exit status: 0 solved, 3 no solution within the budget, 2 bad input or usage, "
       "1 internal error.");
   plan->add_option("SCENARIO", plan_args.scenario, "Scenario YAML file")->required();
+  // The names come from the planning registry's tables, as the scenario validation does.
   plan->add_option("--sampler", plan_args.sampler,
-                   "uniform, gaussian, bridge, obstacle_based, max_clearance or acd");
+                   "One of: " + acdplan::JoinNames(acdplan::planning::SamplerNames()))
+      ->check(ParsedBy(acdplan::planning::ParseSamplerType));
   plan->add_option("--planner", plan_args.planner,
-                   "PRM, PRM_ACD, PRMstar, LazyPRM, RRT, RRTConnect, RRTstar, EST, KPIECE1, "
-                   "BKPIECE1 or SBL");
+                   "One of: " + acdplan::JoinNames(acdplan::planning::PlannerNames()))
+      ->check(ParsedBy(acdplan::planning::ParsePlannerType));
   plan->add_option("--seed", plan_args.seed, "Seed (samplers and OMPL)")
       ->check(CLI::NonNegativeNumber);
   CLI::Option* plan_time =
