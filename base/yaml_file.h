@@ -3,6 +3,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "base/input_error.h"
+
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -57,6 +59,18 @@ class YamlFile {
                               const std::string& what) const;
   /// A list of strings.
   std::vector<std::string> Strings(const YAML::Node& node, const std::string& key) const;
+
+  /// `parse(String(node, key))` for a name parser such as ParseConcavityMeasure(); its
+  /// InputError is reported at `key` ("<path>: <key>: unknown ... (expected one of: ...)").
+  template <typename Parse>
+  auto Parsed(const YAML::Node& node, const std::string& key, Parse parse) const {
+    const std::string name = String(node, key);
+    try {
+      return parse(name);
+    } catch (const InputError& error) {
+      Fail(key, error.what());
+    }
+  }
 
   /// `relative` resolved against this file's folder (absolute paths are kept).
   std::string ResolvePath(const std::string& relative) const;

@@ -32,23 +32,12 @@ bool SafeName(const std::string& name) {
 /// A length as names and labels show it ("0.05", "1e-05").
 std::string Shortest(double x) { return FormatSignificant(x, 6); }
 
-/// `parse(file.String(node, key))`, with a parse error reported at `key`.
-template <typename Parse>
-auto ParsedAt(const YamlFile& file, const YAML::Node& node, const std::string& key, Parse parse) {
-  const std::string name = file.String(node, key);
-  try {
-    return parse(name);
-  } catch (const InputError& error) {
-    file.Fail(key, error.what());
-  }
-}
-
 /// Reads `acd: {tau_diag (or tau_rel), measure}` into `scenario`.
 void ReadAcd(const YamlFile& file, const YAML::Node& node, const std::string& key, Scenario* s) {
   file.CheckKeys(node, key, {"tau_diag", "tau_rel", "measure"});
   s->tau_diag = planning::ReadTauDiag(file, node, key, s->tau_diag, &s->warnings);
   if (node["measure"]) {
-    s->measure = ParsedAt(file, node["measure"], YamlFile::Child(key, "measure"),
+    s->measure = file.Parsed(node["measure"], YamlFile::Child(key, "measure"),
                           acd::ParseConcavityMeasure);
   }
 }
@@ -129,7 +118,7 @@ void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& 
   if (node["collision"]) {
     file.CheckKeys(node["collision"], child("collision"), {"mode"});
     if (node["collision"]["mode"]) {
-      world.scenario.collision_mode = ParsedAt(file, node["collision"]["mode"],
+      world.scenario.collision_mode = file.Parsed(node["collision"]["mode"],
                                                child("collision") + ".mode",
                                                collision::ParseCollisionMode);
     }
@@ -216,7 +205,7 @@ auto ParsedList(const YamlFile& file, const YAML::Node& node, const std::string&
   if (names.empty()) file.Fail(key, "expected at least one name");
   std::vector<decltype(parse(names[0]))> values;
   for (size_t i = 0; i < names.size(); ++i) {
-    values.push_back(ParsedAt(file, node[i], YamlFile::Item(key, i), parse));
+    values.push_back(file.Parsed(node[i], YamlFile::Item(key, i), parse));
   }
   return values;
 }

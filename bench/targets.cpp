@@ -43,12 +43,7 @@ MetricTest ReadTest(const YamlFile& file, const YAML::Node& node, const std::str
   }
   test.metric = MetricName(file, node["metric"], child("metric"), vocabulary);
   if (node["over"]) test.over = MetricName(file, node["over"], child("over"), vocabulary);
-  const std::string compare = file.String(node["compare"], child("compare"));
-  try {
-    test.compare = ParseComparison(compare);
-  } catch (const InputError& error) {
-    file.Fail(child("compare"), error.what());
-  }
+  test.compare = file.Parsed(node["compare"], child("compare"), ParseComparison);
   test.value = file.Number(node["value"], child("value"));
   return test;
 }

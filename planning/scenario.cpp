@@ -32,21 +32,6 @@ void CheckScenario(const Scenario& s) {
   }
 }
 
-namespace {
-
-/// `parse(file.String(node, key))`, with a parse error reported at `key`.
-template <typename Parse>
-auto ParsedAt(const YamlFile& file, const YAML::Node& node, const std::string& key, Parse parse) {
-  const std::string name = file.String(node, key);
-  try {
-    return parse(name);
-  } catch (const InputError& error) {
-    file.Fail(key, error.what());
-  }
-}
-
-}  // namespace
-
 Scenario LoadScenario(const std::string& path) {
   const YamlFile file = YamlFile::Load(path);
   const YAML::Node& root = file.root();
@@ -79,12 +64,12 @@ Scenario LoadScenario(const std::string& path) {
     file.CheckKeys(acd, "acd", {"tau_diag", "tau_rel", "measure"});
     s.tau_diag = ReadTauDiag(file, acd, "acd", s.tau_diag, &s.warnings);
     if (acd["measure"]) {
-      s.measure = ParsedAt(file, acd["measure"], "acd.measure", acd::ParseConcavityMeasure);
+      s.measure = file.Parsed(acd["measure"], "acd.measure", acd::ParseConcavityMeasure);
     }
   }
   if (const YAML::Node& planner = root["planner"]) {
     file.CheckKeys(planner, "planner", {"name", "time_limit", "samples"});
-    if (planner["name"]) s.planner = ParsedAt(file, planner["name"], "planner.name", ParsePlannerType);
+    if (planner["name"]) s.planner = file.Parsed(planner["name"], "planner.name", ParsePlannerType);
     if (planner["time_limit"] && planner["samples"]) {
       file.Fail("planner", "give time_limit or samples, not both");
     }
@@ -101,14 +86,14 @@ Scenario LoadScenario(const std::string& path) {
     file.CheckKeys(sampler, "sampler",
                    {"name", "uniform_share", "orientation", "opening_weight", "centroid_spread",
                     "opening_spread", "max_attempts"});
-    if (sampler["name"]) s.sampler = ParsedAt(file, sampler["name"], "sampler.name", ParseSamplerType);
+    if (sampler["name"]) s.sampler = file.Parsed(sampler["name"], "sampler.name", ParseSamplerType);
     ReadAcdSamplerOptions(file, sampler, "sampler", &s.sampler_options);
   }
   if (const YAML::Node& collision = root["collision"]) {
     file.CheckKeys(collision, "collision", {"mode"});
     if (collision["mode"]) {
       s.collision_mode =
-          ParsedAt(file, collision["mode"], "collision.mode", collision::ParseCollisionMode);
+          file.Parsed(collision["mode"], "collision.mode", collision::ParseCollisionMode);
     }
   }
   CheckScenario(s);

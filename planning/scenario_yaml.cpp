@@ -54,55 +54,55 @@ void ReadAcdSamplerOptions(const YamlFile& file, const YAML::Node& node, const s
         file.Integer(node["max_attempts"], child("max_attempts"), "an integer >= 1", 1));
   }
   if (node["orientation"]) {
-    try {
-      options->orientation = ParseAcdOrientation(file.String(node["orientation"], child("orientation")));
-    } catch (const InputError& error) {
-      file.Fail(child("orientation"), error.what());
-    }
+    options->orientation =
+        file.Parsed(node["orientation"], child("orientation"), ParseAcdOrientation);
   }
 }
 
 envs::Robot ReadRobot(const YamlFile& file, const YAML::Node& node, const std::string& key) {
-  using R = YamlFile;
+  auto child = [&key](const char* name) { return YamlFile::Child(key, name); };
   file.CheckKeys(node, key, {"shape", "radius", "polygon"});
-  const std::string shape =
-      node["shape"] ? file.String(node["shape"], R::Child(key, "shape")) : "point";
-  const std::string radius_key = R::Child(key, "radius");
-  const std::string polygon_key = R::Child(key, "polygon");
+  const envs::RobotShape shape =
+      node["shape"] ? file.Parsed(node["shape"], child("shape"), envs::ParseRobotShape)
+                    : envs::RobotShape::kPoint;
+  if (node["radius"] && shape != envs::RobotShape::kDisc) {
+    file.Fail(child("radius"), "only for shape disc");
+  }
+  if (node["polygon"] && shape != envs::RobotShape::kPolygon) {
+    file.Fail(child("polygon"), "only for shape polygon");
+  }
   try {
-    if (shape == "point") {
-      if (node["radius"]) file.Fail(radius_key, "only for shape disc");
-      if (node["polygon"]) file.Fail(polygon_key, "only for shape polygon");
-      return envs::Robot::Point();
-    }
-    if (shape == "disc") {
-      if (!node["radius"]) file.Fail(radius_key, "required for shape disc");
-      if (node["polygon"]) file.Fail(polygon_key, "only for shape polygon");
-      return envs::Robot::Disc(file.Number(node["radius"], radius_key, "a positive number", Positive));
-    }
-    if (shape == "polygon") {
-      if (!node["polygon"]) file.Fail(polygon_key, "required for shape polygon");
-      if (node["radius"]) file.Fail(radius_key, "only for shape disc");
-      const YAML::Node& list = node["polygon"];
-      if (!list.IsSequence() || list.size() < 3) {
-        file.Fail(polygon_key, "expected a list of at least 3 [x, y] pairs");
+    switch (shape) {
+      case envs::RobotShape::kPoint:
+        return envs::Robot::Point();
+      case envs::RobotShape::kDisc:
+        if (!node["radius"]) file.Fail(child("radius"), "required for shape disc");
+        return envs::Robot::Disc(
+            file.Number(node["radius"], child("radius"), "a positive number", Positive));
+      case envs::RobotShape::kPolygon: {
+        const YAML::Node& list = node["polygon"];
+        if (!list) file.Fail(child("polygon"), "required for shape polygon");
+        if (!list.IsSequence() || list.size() < 3) {
+          file.Fail(child("polygon"), "expected a list of at least 3 [x, y] pairs");
+        }
+        acd::Polygon2d outline;
+        for (size_t i = 0; i < list.size(); ++i) {
+          const std::string item = YamlFile::Item(child("polygon"), i);
+          const std::vector<double> xy = file.Numbers(list[i], item, 2, "an [x, y] pair");
+          outline.outer.emplace_back(xy[0], xy[1]);
+        }
+        if (acd::SignedArea(outline.outer) < 0) outline.outer = acd::Reversed(outline.outer);
+        return envs::Robot::Polygon(outline);
       }
-      acd::Polygon2d outline;
-      for (size_t i = 0; i < list.size(); ++i) {
-        const std::vector<double> xy =
-            file.Numbers(list[i], R::Item(polygon_key, i), "an [x, y] pair");
-        if (xy.size() != 2) file.Fail(R::Item(polygon_key, i), "expected an [x, y] pair");
-        outline.outer.emplace_back(xy[0], xy[1]);
-      }
-      if (acd::SignedArea(outline.outer) < 0) outline.outer = acd::Reversed(outline.outer);
-      return envs::Robot::Polygon(outline);
+      case envs::RobotShape::kMesh:
+        break;
     }
   } catch (const InputError& error) {
     const std::string what = error.what();
     if (what.rfind(file.path() + ": ", 0) == 0) throw;
     file.Fail(key, what);
   }
-  file.Fail(R::Child(key, "shape"), "expected point, disc or polygon, got '" + shape + "'");
+  file.Fail(child("shape"), "a scenario's robot is a point, a disc or a polygon (2D), not a mesh");
 }
 
 double ReadTauDiag(const YamlFile& file, const YAML::Node& acd, const std::string& key,

@@ -121,6 +121,16 @@ TEST(Scenario, UnknownNamesListTheKnownOnes) {
                       "PRM_ACD, PRMstar, LazyPRM, RRT, RRTConnect, RRTstar, EST, KPIECE1, "
                       "BKPIECE1, SBL)"),
             std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "robot: {shape: triangle}\n")
+                .find("bad.yaml: robot.shape: unknown robot shape 'triangle' (expected one of: "
+                      "point, disc, polygon, mesh)"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "robot: {shape: mesh}\n")
+                .find("bad.yaml: robot.shape: a scenario's robot is a point, a disc or a polygon"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "robot: {shape: point, radius: 1}\n")
+                .find("bad.yaml: robot.radius: only for shape disc"),
+            std::string::npos);
   EXPECT_NE(ErrorOf(kWorld + kQuery + "collision: {mode: fast}\n")
                 .find("bad.yaml: collision.mode: unknown collision mode 'fast' (expected one of: "
                       "bvh, hulls, hulls+exact)"),
