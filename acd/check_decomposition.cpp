@@ -54,6 +54,8 @@
 #include "acd/internal/exact_predicates.h"
 #include "acd/internal/ring_locator.h"
 
+#include "base/format.h"
+
 namespace acdplan::acd {
 namespace {
 
@@ -69,12 +71,7 @@ constexpr double kRelative = 1e-9;    // Areas, centroids, tau, distances (x ref
 constexpr double kHullNoise = 1e-12;  // Hull containment (x coordinate magnitude).
 constexpr size_t kMaxProblems = 50;
 
-std::string Num(double v) {
-  std::ostringstream out;
-  out.precision(12);
-  out << v;
-  return out.str();
-}
+std::string Num(double v) { return FormatSignificant(v, 12); }
 
 std::string Pt(const Point2d& p) { return "(" + Num(p.x()) + ", " + Num(p.y()) + ")"; }
 

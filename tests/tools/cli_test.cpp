@@ -240,4 +240,47 @@ TEST_F(CliTest, EnvErrorsNameTheFileAndTheRule) {
   ExpectUsageError(Acdplan("env " + Quote(kSource + "envs/2d/maze.yaml") + " --measure xyz"));
 }
 
+TEST_F(CliTest, TheSameErrorReadsTheSameInEveryCommand) {
+  // A missing file, to decompose, env and plan alike.
+  for (const std::string& command : {std::string("decompose"), std::string("env"),
+                                     std::string("plan")}) {
+    const std::string missing =
+        (dir_ / (command == "decompose" ? "none.poly" : "none.yaml")).string();
+    const RunResult run = Acdplan(command + " " + Quote(missing));
+    ExpectUsageError(run);
+    EXPECT_NE(run.err.find(missing + ": cannot read the file: No such file or directory"),
+              std::string::npos)
+        << command << ": " << run.err;
+  }
+  // An unknown name lists the known ones the same way.
+  const RunResult planner =
+      Acdplan("plan " + Quote(kSource + "configs/demo.yaml") + " --planner PRN");
+  ExpectUsageError(planner);
+  EXPECT_NE(planner.err.find("unknown planner 'PRN' (expected one of: PRM, PRM_ACD,"),
+            std::string::npos)
+      << planner.err;
+  const RunResult measure =
+      Acdplan("env " + Quote(kSource + "envs/2d/maze.yaml") + " --measure xyz");
+  EXPECT_NE(measure.err.find("unknown concavity measure 'xyz' (expected one of: sl, sp, h1, h2)"),
+            std::string::npos)
+      << measure.err;
+}
+
+TEST_F(CliTest, EnvReadsTauRelAsTauDiagWithAWarning) {
+  const std::string world = Quote(kSource + "envs/2d/wall_gap.yaml");
+  const fs::path a = dir_ / "a.json", b = dir_ / "b.json";
+  const RunResult diag = Acdplan("env " + world + " --tau-diag 0.05 --json " + Quote(a.string()));
+  ASSERT_EQ(diag.status, 0) << diag.err;
+  EXPECT_EQ(diag.err, "");
+  EXPECT_NE(diag.out.find("tau_diag 0.05 x bounds diagonal"), std::string::npos) << diag.out;
+  const RunResult rel = Acdplan("env " + world + " --tau-rel 0.05 --json " + Quote(b.string()));
+  ASSERT_EQ(rel.status, 0) << rel.err;
+  EXPECT_NE(rel.err.find("warning: --tau-rel is read as --tau-diag"), std::string::npos)
+      << rel.err;
+  EXPECT_EQ(nlohmann::json::parse(Read(a)).at("tau_diag"), 0.05);
+  EXPECT_EQ(nlohmann::json::parse(Read(a)).at("components"),
+            nlohmann::json::parse(Read(b)).at("components"));
+}
+
 }  // namespace
+
