@@ -1,12 +1,12 @@
 #include "acd/internal/resolve.h"
 
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
 #include <optional>
-
-#include <CGAL/Polygon_2_algorithms.h>
 
 #include "acd/internal/edge_grid.h"
 #include "acd/internal/exact_predicates.h"
@@ -17,8 +17,8 @@ namespace {
 
 // A point of the boundary where a cut ends: a vertex of a ring, or a new point on an edge.
 struct Endpoint {
-  int ring = -1;        // -1: the outer ring; k >= 0: hole k.
-  int index = 0;        // The vertex, or the edge's first vertex when `on_edge`.
+  int ring = -1;  // -1: the outer ring; k >= 0: hole k.
+  int index = 0;  // The vertex, or the edge's first vertex when `on_edge`.
   bool on_edge = false;
   Point2d point = Point2d::Zero();
 };
@@ -201,8 +201,8 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
     const double distance = (x.point - r).norm();
     if (distance == 0.0) return;
     const double relative_concavity = ConcavityAt(concavity, outer, x) / options.concavity_unit;
-    double score = (1.0 + options.score_concavity * relative_concavity) /
-                   (options.score_distance * distance);
+    double score =
+        (1.0 + options.score_concavity * relative_concavity) / (options.score_distance * distance);
     if (!x.on_edge && concavity.outer[x.index] > options.tau && ResolvesBoth(outer, x.index, r)) {
       score *= options.double_resolve_bonus;
     }
@@ -297,9 +297,8 @@ void DistributeHoles(const Polygon2d& polygon, int skip, std::array<Polygon2d, 2
   }
 }
 
-bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeGrid& grid,
-                       const Concavity2d& concavity, int r, const ResolveOptions& options,
-                       Resolution* resolution) {
+bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeGrid& grid, const Concavity2d& concavity,
+                       int r, const ResolveOptions& options, Resolution* resolution) {
   const Endpoint from{-1, r, false, polygon.outer[r]};
   const std::optional<Endpoint> to =
       FirstAccepted(ScoredCandidates(polygon, concavity, -1, r, options),
@@ -333,14 +332,14 @@ std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const EdgeGrid& g
 // The second cut of a hole: from hole vertex `b` to an outer point, crossing neither the first
 // cut (a -> x) nor anything else. `thorough` also tries the scored candidates.
 std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const EdgeGrid& grid,
-                                      const Concavity2d& concavity, int h, int a,
-                                      const Endpoint& x, int b, bool thorough,
-                                      const ResolveOptions& options) {
+                                      const Concavity2d& concavity, int h, int a, const Endpoint& x,
+                                      int b, bool thorough, const ResolveOptions& options) {
   const Ring2d& hole = polygon.holes[h];
   const Endpoint from{h, b, false, hole[b]};
   auto compatible = [&](const Endpoint& y) {
     if (y.index == x.index && (y.on_edge == x.on_edge || (y.on_edge && x.on_edge))) return false;
-    return !SegmentsMeet(hole[a], x.point, from.point, y.point) && IsClearCut(polygon, grid, from, y);
+    return !SegmentsMeet(hole[a], x.point, from.point, y.point) &&
+           IsClearCut(polygon, grid, from, y);
   };
   std::optional<Endpoint> y;
   if (thorough) y = FirstAccepted(ScoredCandidates(polygon, concavity, h, b, options), compatible);
@@ -412,7 +411,8 @@ bool ResolveHole(const Polygon2d& polygon, const EdgeGrid& grid, const Concavity
   std::vector<double> reach(m);
   for (int i = 0; i < m; ++i) {
     reach[i] = std::numeric_limits<double>::infinity();
-    for (const Point2d& v : polygon.outer) reach[i] = std::min(reach[i], (v - hole[i]).squaredNorm());
+    for (const Point2d& v : polygon.outer)
+      reach[i] = std::min(reach[i], (v - hole[i]).squaredNorm());
   }
   std::sort(firsts.begin(), firsts.end(), [&](int u, int v) { return reach[u] < reach[v]; });
   for (int a : firsts) {
@@ -423,8 +423,8 @@ bool ResolveHole(const Polygon2d& polygon, const EdgeGrid& grid, const Concavity
 
 }  // namespace
 
-bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity,
-             const ResolveOptions& options, Resolution* resolution) {
+bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const ResolveOptions& options,
+             Resolution* resolution) {
   const EdgeGrid grid(polygon);
   if (concavity.witness_hole >= 0) {
     // The witness hole first, then the others by decreasing concavity; each with either
