@@ -1,22 +1,24 @@
 #include "acd/internal/resolve.h"
 
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
 #include <optional>
 
-#include <CGAL/Polygon_2_algorithms.h>
-
+#include "acd/internal/edge_grid.h"
 #include "acd/internal/exact_predicates.h"
+#include "acd/internal/ring_locator.h"
 
 namespace acdplan::acd::internal {
 namespace {
 
 // A point of the boundary where a cut ends: a vertex of a ring, or a new point on an edge.
 struct Endpoint {
-  int ring = -1;        // -1: the outer ring; k >= 0: hole k.
-  int index = 0;        // The vertex, or the edge's first vertex when `on_edge`.
+  int ring = -1;  // -1: the outer ring; k >= 0: hole k.
+  int index = 0;  // The vertex, or the edge's first vertex when `on_edge`.
   bool on_edge = false;
   Point2d point = Point2d::Zero();
 };
@@ -59,28 +61,61 @@ bool IsIncident(const Endpoint& e, int ring, int edge, int n) {
   return edge == e.index || Next(edge, n) == e.index;
 }
 
+// Rounding noise of a constructed coordinate, relative to the coordinates' magnitude (a few
+// hundred ulps; the noise floor IsNotch() uses).
+constexpr double kRoundingNoise = 1e-13;
+
+double MaxAbs(const Point2d& p) { return p.cwiseAbs().maxCoeff(); }
+
 // Whether the segment a-b is a valid cut: it leaves both ends into the interior and meets no
-// boundary edge elsewhere (exact predicates).
-bool IsClearCut(const Polygon2d& polygon, const Endpoint& a, const Endpoint& b) {
+// boundary edge elsewhere (exact predicates). An end on an edge is a constructed point, the
+// rounding of an exact one within kRoundingNoise: exact signs on the rounded point cannot tell
+// which side of a vertex the exact cut passes (a cut aimed along a row of collinear vertices
+// slips past them by an ulp and leaves a piece pinched to 1e-15, which no later cut resolves).
+// Such a cut must therefore also keep every other vertex, and its new end every other edge,
+// farther than that noise. Edges are taken from `grid`.
+bool IsClearCut(const Polygon2d& polygon, const EdgeGrid& grid, const Endpoint& a,
+                const Endpoint& b) {
   if (!LeavesInward(polygon, a, b.point) || !LeavesInward(polygon, b, a.point)) return false;
   const Kernel::Segment_2 cut(ToCgal(a.point), ToCgal(b.point));
-  const double xmin = std::min(a.point.x(), b.point.x()), xmax = std::max(a.point.x(), b.point.x());
-  const double ymin = std::min(a.point.y(), b.point.y()), ymax = std::max(a.point.y(), b.point.y());
-  for (int r = -1; r < static_cast<int>(polygon.holes.size()); ++r) {
-    const Ring2d& ring = RingOf(polygon, r);
+  const bool constructed = a.on_edge || b.on_edge;
+  const double noise =
+      constructed ? kRoundingNoise * std::max(MaxAbs(a.point), MaxAbs(b.point)) : 0.0;
+  const double pad = 2.0 * noise;
+  const double xmin = std::min(a.point.x(), b.point.x()) - pad;
+  const double xmax = std::max(a.point.x(), b.point.x()) + pad;
+  const double ymin = std::min(a.point.y(), b.point.y()) - pad;
+  const double ymax = std::max(a.point.y(), b.point.y()) + pad;
+  const bool blocked = grid.AnyNear(a.point, b.point, pad, [&](const EdgeGrid::Edge& edge) {
+    const Ring2d& ring = RingOf(polygon, edge.ring);
     const int n = static_cast<int>(ring.size());
-    for (int i = 0; i < n; ++i) {
-      const Point2d& u = ring[i];
-      const Point2d& w = ring[Next(i, n)];
-      if (std::max(u.x(), w.x()) < xmin || std::min(u.x(), w.x()) > xmax ||
-          std::max(u.y(), w.y()) < ymin || std::min(u.y(), w.y()) > ymax) {
-        continue;
-      }
-      if (IsIncident(a, r, i, n) || IsIncident(b, r, i, n)) continue;
-      if (CGAL::do_intersect(cut, Kernel::Segment_2(ToCgal(u), ToCgal(w)))) return false;
+    const int i = edge.index;
+    const Point2d& u = ring[i];
+    const Point2d& w = ring[Next(i, n)];
+    if (std::max(u.x(), w.x()) < xmin || std::min(u.x(), w.x()) > xmax ||
+        std::max(u.y(), w.y()) < ymin || std::min(u.y(), w.y()) > ymax) {
+      return false;
     }
-  }
-  return true;
+    const bool at_a = IsIncident(a, edge.ring, i, n), at_b = IsIncident(b, edge.ring, i, n);
+    if (!at_a && !at_b && CGAL::do_intersect(cut, Kernel::Segment_2(ToCgal(u), ToCgal(w)))) {
+      return true;
+    }
+    if (!constructed) return false;
+    const double edge_noise = std::max(noise, kRoundingNoise * std::max(MaxAbs(u), MaxAbs(w)));
+    // Vertices of this edge other than the cut's own ends, near the cut.
+    for (const Point2d* v : {&u, &w}) {
+      if (*v == a.point || *v == b.point) continue;
+      if (SegmentDistance(*v, a.point, b.point) <= edge_noise) return true;
+    }
+    // A constructed end near an edge other than its own.
+    for (const Endpoint* e : {&a, &b}) {
+      if (!e->on_edge || (e->ring == edge.ring && e->index == i)) continue;
+      if (IsIncident(*e, edge.ring, i, n)) continue;
+      if (SegmentDistance(e->point, u, w) <= edge_noise) return true;
+    }
+    return false;
+  });
+  return !blocked;
 }
 
 bool SegmentsMeet(const Point2d& a, const Point2d& b, const Point2d& c, const Point2d& d) {
@@ -166,8 +201,8 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
     const double distance = (x.point - r).norm();
     if (distance == 0.0) return;
     const double relative_concavity = ConcavityAt(concavity, outer, x) / options.concavity_unit;
-    double score = (1.0 + options.score_concavity * relative_concavity) /
-                   (options.score_distance * distance);
+    double score =
+        (1.0 + options.score_concavity * relative_concavity) / (options.score_distance * distance);
     if (!x.on_edge && concavity.outer[x.index] > options.tau && ResolvesBoth(outer, x.index, r)) {
       score *= options.double_resolve_bonus;
     }
@@ -262,12 +297,12 @@ void DistributeHoles(const Polygon2d& polygon, int skip, std::array<Polygon2d, 2
   }
 }
 
-bool ResolveOuterNotch(const Polygon2d& polygon, const Concavity2d& concavity, int r,
-                       const ResolveOptions& options, Resolution* resolution) {
+bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeGrid& grid, const Concavity2d& concavity,
+                       int r, const ResolveOptions& options, Resolution* resolution) {
   const Endpoint from{-1, r, false, polygon.outer[r]};
   const std::optional<Endpoint> to =
       FirstAccepted(ScoredCandidates(polygon, concavity, -1, r, options),
-                    [&](const Endpoint& x) { return IsClearCut(polygon, from, x); });
+                    [&](const Endpoint& x) { return IsClearCut(polygon, grid, from, x); });
   if (!to) return false;
   Endpoint start = from;
   Endpoint end = *to;
@@ -283,10 +318,11 @@ bool ResolveOuterNotch(const Polygon2d& polygon, const Concavity2d& concavity, i
 
 // The first cut of a hole: from hole vertex `a` to the best-scoring, else the closest, visible
 // outer point (Algorithm 5).
-std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const Concavity2d& concavity, int h,
-                                     int a, const ResolveOptions& options) {
+std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const EdgeGrid& grid,
+                                     const Concavity2d& concavity, int h, int a,
+                                     const ResolveOptions& options) {
   const Endpoint from{h, a, false, polygon.holes[h][a]};
-  auto clear = [&](const Endpoint& e) { return IsClearCut(polygon, from, e); };
+  auto clear = [&](const Endpoint& e) { return IsClearCut(polygon, grid, from, e); };
   std::optional<Endpoint> x =
       FirstAccepted(ScoredCandidates(polygon, concavity, h, a, options), clear);
   if (!x) x = FirstAccepted(NearestCandidates(polygon, from.point), clear);
@@ -295,14 +331,15 @@ std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const Concavity2d
 
 // The second cut of a hole: from hole vertex `b` to an outer point, crossing neither the first
 // cut (a -> x) nor anything else. `thorough` also tries the scored candidates.
-std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const Concavity2d& concavity, int h,
-                                      int a, const Endpoint& x, int b, bool thorough,
-                                      const ResolveOptions& options) {
+std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const EdgeGrid& grid,
+                                      const Concavity2d& concavity, int h, int a, const Endpoint& x,
+                                      int b, bool thorough, const ResolveOptions& options) {
   const Ring2d& hole = polygon.holes[h];
   const Endpoint from{h, b, false, hole[b]};
   auto compatible = [&](const Endpoint& y) {
     if (y.index == x.index && (y.on_edge == x.on_edge || (y.on_edge && x.on_edge))) return false;
-    return !SegmentsMeet(hole[a], x.point, from.point, y.point) && IsClearCut(polygon, from, y);
+    return !SegmentsMeet(hole[a], x.point, from.point, y.point) &&
+           IsClearCut(polygon, grid, from, y);
   };
   std::optional<Endpoint> y;
   if (thorough) y = FirstAccepted(ScoredCandidates(polygon, concavity, h, b, options), compatible);
@@ -340,20 +377,20 @@ void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x,
 // makes (Fig. 19). Where an antipode sees no outer point (a hole wrapped around itself or
 // hidden behind others), other hole vertices stand in: for the first cut, the ones nearest to
 // the outer boundary; for the second, the ones farthest from the first.
-bool ResolveHole(const Polygon2d& polygon, const Concavity2d& concavity, int h,
-                 const ResolveOptions& options, Resolution* resolution) {
+bool ResolveHole(const Polygon2d& polygon, const EdgeGrid& grid, const Concavity2d& concavity,
+                 int h, const ResolveOptions& options, Resolution* resolution) {
   const Ring2d& hole = polygon.holes[h];
   const int m = static_cast<int>(hole.size());
   const HoleConcavity& antipodes = concavity.holes[h];
   auto try_pair = [&](int a, int b, bool thorough, const Endpoint& x) {
     if (b == a) return false;
     const std::optional<Endpoint> y =
-        SecondHoleCut(polygon, concavity, h, a, x, b, thorough, options);
+        SecondHoleCut(polygon, grid, concavity, h, a, x, b, thorough, options);
     if (y) SplitThroughHole(polygon, h, a, x, b, *y, resolution);
     return y.has_value();
   };
   auto try_first = [&](int a, int partner) {
-    const std::optional<Endpoint> x = FirstHoleCut(polygon, concavity, h, a, options);
+    const std::optional<Endpoint> x = FirstHoleCut(polygon, grid, concavity, h, a, options);
     if (!x) return false;
     if (partner >= 0 && try_pair(a, partner, true, *x)) return true;
     std::vector<int> others(m);
@@ -374,7 +411,8 @@ bool ResolveHole(const Polygon2d& polygon, const Concavity2d& concavity, int h,
   std::vector<double> reach(m);
   for (int i = 0; i < m; ++i) {
     reach[i] = std::numeric_limits<double>::infinity();
-    for (const Point2d& v : polygon.outer) reach[i] = std::min(reach[i], (v - hole[i]).squaredNorm());
+    for (const Point2d& v : polygon.outer)
+      reach[i] = std::min(reach[i], (v - hole[i]).squaredNorm());
   }
   std::sort(firsts.begin(), firsts.end(), [&](int u, int v) { return reach[u] < reach[v]; });
   for (int a : firsts) {
@@ -385,8 +423,9 @@ bool ResolveHole(const Polygon2d& polygon, const Concavity2d& concavity, int h,
 
 }  // namespace
 
-bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity,
-             const ResolveOptions& options, Resolution* resolution) {
+bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const ResolveOptions& options,
+             Resolution* resolution) {
+  const EdgeGrid grid(polygon);
   if (concavity.witness_hole >= 0) {
     // The witness hole first, then the others by decreasing concavity; each with either
     // antipode connecting first.
@@ -398,13 +437,13 @@ bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity,
     std::stable_partition(order.begin(), order.end(),
                           [&](int k) { return k == concavity.witness_hole; });
     for (int k : order) {
-      if (ResolveHole(polygon, concavity, k, options, resolution)) return true;
+      if (ResolveHole(polygon, grid, concavity, k, options, resolution)) return true;
     }
     return false;
   }
   // The witness; should no cut resolve it, the other outer notches by decreasing concavity.
   if (concavity.witness_vertex >= 0 &&
-      ResolveOuterNotch(polygon, concavity, concavity.witness_vertex, options, resolution)) {
+      ResolveOuterNotch(polygon, grid, concavity, concavity.witness_vertex, options, resolution)) {
     return true;
   }
   const Ring2d& outer = polygon.outer;
@@ -418,7 +457,7 @@ bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity,
   std::stable_sort(notches.begin(), notches.end(),
                    [&](int a, int b) { return concavity.outer[a] > concavity.outer[b]; });
   for (int r : notches) {
-    if (ResolveOuterNotch(polygon, concavity, r, options, resolution)) return true;
+    if (ResolveOuterNotch(polygon, grid, concavity, r, options, resolution)) return true;
   }
   return false;
 }

@@ -1,0 +1,82 @@
+#pragma once
+// A uniform grid over the edges of a polygon with holes, for segment queries during Resolve.
+// Internal.
+
+#include <cstdint>
+#include <vector>
+
+#include "acd/polygon2d.h"
+
+namespace acdplan::acd::internal {
+
+/// The edges of all rings of a polygon bucketed in a uniform grid of about one cell per edge.
+/// An edge is listed in every cell its bounding box meets. A query reports each edge whose box
+/// may meet a segment's padded corridor at most once; it is conservative (cells are selected
+/// with one cell of slack against rounding), never exact: callers decide with exact predicates.
+/// Building is O(n + total cells covered); a query costs the cells the corridor crosses plus
+/// the edges listed there, instead of O(n) for a scan of all edges.
+class EdgeGrid {
+ public:
+  /// An edge: `index` -> `index` + 1 of ring `ring` (-1: the outer ring; k >= 0: hole k).
+  struct Edge {
+    int ring;
+    int index;
+  };
+
+  explicit EdgeGrid(const Polygon2d& polygon);
+
+  /// Calls `visit(edge)` for every edge that may come within `pad` of the segment a-b, until
+  /// `visit` returns true (then returns true). Not thread-safe (a scratch stamp per edge).
+  template <typename Visit>
+  bool AnyNear(const Point2d& a, const Point2d& b, double pad, Visit visit) const;
+
+ private:
+  int Column(double x) const;
+  int Row(double y) const;
+
+  std::vector<Edge> edges_;
+  double x0_ = 0.0, y0_ = 0.0, inverse_cell_ = 1.0;
+  int columns_ = 1, rows_ = 1;
+  std::vector<int> cell_begin_;  // CSR offsets into cell_edges_, columns_ * rows_ + 1 entries.
+  std::vector<int> cell_edges_;
+  mutable std::vector<std::uint32_t> stamp_;  // Per edge: the query that last reported it.
+  mutable std::uint32_t query_ = 0;
+};
+
+template <typename Visit>
+bool EdgeGrid::AnyNear(const Point2d& a, const Point2d& b, double pad, Visit visit) const {
+  if (++query_ == 0) {  // Wrapped around: forget old stamps.
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    query_ = 1;
+  }
+  const double xlo = std::min(a.x(), b.x()) - pad, xhi = std::max(a.x(), b.x()) + pad;
+  const int c0 = Column(xlo), c1 = Column(xhi);
+  const double dx = b.x() - a.x();
+  for (int c = c0; c <= c1; ++c) {
+    // The segment's y-range over this column's x-range (plus the pad), or its whole y-range
+    // when it is (nearly) vertical; one row of slack each way absorbs rounding.
+    double ylo = std::min(a.y(), b.y()), yhi = std::max(a.y(), b.y());
+    if (dx != 0.0 && c0 != c1) {
+      const double cx0 = std::max(xlo, x0_ + c / inverse_cell_ - pad);
+      const double cx1 = std::min(xhi, x0_ + (c + 1) / inverse_cell_ + pad);
+      const double t0 = std::clamp((cx0 - a.x()) / dx, 0.0, 1.0);
+      const double t1 = std::clamp((cx1 - a.x()) / dx, 0.0, 1.0);
+      const double y_at0 = a.y() + t0 * (b.y() - a.y()), y_at1 = a.y() + t1 * (b.y() - a.y());
+      ylo = std::max(ylo, std::min(y_at0, y_at1));
+      yhi = std::min(yhi, std::max(y_at0, y_at1));
+    }
+    const int r0 = std::max(0, Row(ylo - pad) - 1), r1 = std::min(rows_ - 1, Row(yhi + pad) + 1);
+    for (int r = r0; r <= r1; ++r) {
+      const int cell = r * columns_ + c;
+      for (int k = cell_begin_[cell]; k < cell_begin_[cell + 1]; ++k) {
+        const int e = cell_edges_[k];
+        if (stamp_[e] == query_) continue;
+        stamp_[e] = query_;
+        if (visit(edges_[e])) return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace acdplan::acd::internal
