@@ -1,16 +1,17 @@
 #include "acd/concavity.h"
 
+#include <CGAL/convex_hull_2.h>
+
+#include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 
-#include <CGAL/convex_hull_2.h>
-#include <Eigen/Eigenvalues>
-
 #include "acd/internal/exact_predicates.h"
 #include "acd/internal/pocket_cache.h"
+#include "acd/internal/point_tree.h"
 #include "acd/internal/shortest_paths.h"
 
 namespace acdplan::acd {
@@ -139,26 +140,84 @@ bool UseGeodesic(const ConcavityOptions& options) {
          options.measure == ConcavityMeasure::kHybrid1;
 }
 
-// Closest vertex of `ring` to `p`: index and distance.
-std::pair<int, double> ClosestVertex(const Ring2d& ring, const Point2d& p) {
-  int best = 0;
-  double best_d2 = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < static_cast<int>(ring.size()); ++i) {
-    const double d2 = (ring[i] - p).squaredNorm();
-    if (d2 < best_d2) {
-      best_d2 = d2;
-      best = i;
-    }
+// A vertex closest to a point: ring (-1 outer, k hole k; INT_MAX none), index, squared
+// distance and distance.
+struct HoleLinkCandidate {
+  int ring = std::numeric_limits<int>::max();
+  int vertex = 0;
+  double d2 = std::numeric_limits<double>::infinity();
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+// The vertex searches of MeasureHoles(): one tree over the outer ring, one over all holes.
+// Each search returns what a scan of the rings in order (outer first, then hole 0, 1, ...)
+// would: the closest vertex of each ring (lowest index on equal squared distance), and of
+// those the one at the smallest distance, the first ring on equal distance.
+class VertexSearch {
+ public:
+  explicit VertexSearch(const Polygon2d& polygon)
+      : outer_(polygon.outer), holes_(HoleVertices(polygon, &ring_, &index_)) {}
+
+  // The closest outer vertex to `p`: index and squared distance.
+  std::pair<int, double> ClosestOuter(const Point2d& p) const {
+    int best = -1;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    double radius = best_d2;
+    outer_.Search(p, &radius, [&](int id, double d2) {
+      if (d2 < best_d2 || (d2 == best_d2 && id < best)) {
+        best = id;
+        best_d2 = d2;
+        radius = std::sqrt(d2);
+      }
+    });
+    return {best, best_d2};
   }
-  return {best, std::sqrt(best_d2)};
-}
+
+  // The closest vertex to `p` on a hole other than `skip`, ordered by distance, then ring, then
+  // squared distance, then index: the scan's choice among the holes. Ring -1 if there is none.
+  HoleLinkCandidate ClosestOnHoles(const Point2d& p, int skip) const {
+    HoleLinkCandidate best;
+    double radius = best.distance;
+    holes_.Search(p, &radius, [&](int id, double d2) {
+      const int ring = ring_[id];
+      if (ring == skip) return;
+      const double d = std::sqrt(d2);
+      if (d < best.distance ||
+          (d == best.distance &&
+           (ring < best.ring || (ring == best.ring &&
+                                 (d2 < best.d2 || (d2 == best.d2 && index_[id] < best.vertex)))))) {
+        best = {ring, index_[id], d2, d};
+        radius = d;
+      }
+    });
+    return best;
+  }
+
+ private:
+  static std::vector<Point2d> HoleVertices(const Polygon2d& polygon, std::vector<int>* ring,
+                                           std::vector<int>* index) {
+    std::vector<Point2d> points;
+    for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
+      for (int i = 0; i < static_cast<int>(polygon.holes[k].size()); ++i) {
+        points.push_back(polygon.holes[k][i]);
+        ring->push_back(k);
+        index->push_back(i);
+      }
+    }
+    return points;
+  }
+
+  internal::PointTree outer_;
+  std::vector<int> ring_, index_;  // Per hole vertex of holes_: its hole and index.
+  internal::PointTree holes_;
+};
 
 // Where a hole meets the rest of the polygon: the vertex x of another ring closest to one of
 // the hole's antipodes.
 struct HoleLink {
-  int ring = -1;    // -1: the outer ring; j >= 0: hole j.
-  int vertex = 0;   // x.
-  int end = 0;      // 0: p is the antipode closest to x; 1: cw(p) is.
+  int ring = -1;   // -1: the outer ring; j >= 0: hole j.
+  int vertex = 0;  // x.
+  int end = 0;     // 0: p is the antipode closest to x; 1: cw(p) is.
   double distance = std::numeric_limits<double>::infinity();
 };
 
@@ -174,6 +233,7 @@ std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
   if (k == 0) return holes;
   const bool geodesic = UseGeodesic(options);
   std::vector<HoleLink> nearest(k), nearest_outer(k);
+  const VertexSearch search(polygon);
   for (int i = 0; i < k; ++i) {
     const Ring2d& hole = polygon.holes[i];
     const Antipodes pair = geodesic ? GeodesicAntipodes(hole) : PrincipalAxisAntipodes(hole);
@@ -182,12 +242,15 @@ std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
     holes[i].diameter = pair.distance;
     for (int end = 0; end < 2; ++end) {
       const Point2d& a = hole[end == 0 ? pair.a : pair.b];
-      for (int ring = -1; ring < k; ++ring) {
-        if (ring == i) continue;
-        const auto [x, d] = ClosestVertex(ring < 0 ? polygon.outer : polygon.holes[ring], a);
-        if (d < nearest[i].distance) nearest[i] = {ring, x, end, d};
-        if (ring < 0 && d < nearest_outer[i].distance) nearest_outer[i] = {ring, x, end, d};
-      }
+      const auto [x, d2] = search.ClosestOuter(a);
+      const double d = std::sqrt(d2);
+      // The outer ring comes first: a hole replaces it only when strictly closer.
+      const HoleLinkCandidate on_hole = search.ClosestOnHoles(a, i);
+      const HoleLink link = on_hole.distance < d
+                                ? HoleLink{on_hole.ring, on_hole.vertex, end, on_hole.distance}
+                                : HoleLink{-1, x, end, d};
+      if (link.distance < nearest[i].distance) nearest[i] = link;
+      if (d < nearest_outer[i].distance) nearest_outer[i] = {-1, x, end, d};
     }
   }
   // Settle holes whose x lies on the outer ring or on a settled hole; a cycle of holes closest
@@ -224,8 +287,7 @@ std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
         cheapest = i;
       }
     }
-    settle(cheapest, nearest_outer[cheapest],
-           outer_concavity[nearest_outer[cheapest].vertex]);
+    settle(cheapest, nearest_outer[cheapest], outer_concavity[nearest_outer[cheapest].vertex]);
     ++done;
   }
   return holes;
@@ -297,7 +359,8 @@ std::vector<int> ConvexHullIndices(const Ring2d& ring) {
     const int v = at(k);
     // Inside the current hull or on its boundary (then it cannot be a strict hull vertex, and
     // letting it in would pop true hull vertices that are collinear with it).
-    if (turn(deque[top - 1], deque[top], v) >= 0 && turn(deque[bottom], deque[bottom + 1], v) >= 0) {
+    if (turn(deque[top - 1], deque[top], v) >= 0 &&
+        turn(deque[bottom], deque[bottom + 1], v) >= 0) {
       continue;
     }
     while (top - bottom >= 2 && turn(deque[top - 1], deque[top], v) <= 0) --top;
@@ -378,10 +441,10 @@ Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOpti
       }
       i = next;
     }
-    const bool needs_sp = hazard && (options.measure == ConcavityMeasure::kShortestPath ||
-                                     options.measure == ConcavityMeasure::kHybrid1 ||
-                                     (options.measure == ConcavityMeasure::kHybrid2 &&
-                                      sl_max <= options.tau));
+    const bool needs_sp =
+        hazard && (options.measure == ConcavityMeasure::kShortestPath ||
+                   options.measure == ConcavityMeasure::kHybrid1 ||
+                   (options.measure == ConcavityMeasure::kHybrid2 && sl_max <= options.tau));
     if (!needs_sp) continue;
     const Ring2d chain = PocketChain(ring, pocket);
     const std::vector<double>* cached = cache != nullptr ? cache->Find(chain) : nullptr;
