@@ -282,18 +282,31 @@ Ring2d InsertOnOuter(const Ring2d& outer, std::vector<Endpoint*> ends) {
   return ring;
 }
 
-// Gives each hole of `polygon` other than `skip` to the piece that contains it.
+// Gives each hole of `polygon` other than `skip` to the piece that contains it: piece 0 if the
+// hole's first vertex lies strictly inside piece 0's ring, else piece 1. Parity by a slab
+// locator (exact); a point within rounding noise of the ring (never the case for a valid cut,
+// which keeps clear of other holes) is decided by CGAL's exact test, as before.
 void DistributeHoles(const Polygon2d& polygon, int skip, std::array<Polygon2d, 2>* pieces) {
+  const Ring2d& first = (*pieces)[0].outer;
+  const RingLocator locator(Polygon2d{first, {}});
+  double scale = 0.0;
+  for (const Point2d& p : first) scale = std::max(scale, MaxAbs(p));
+  const double noise = kRoundingNoise * std::max(1.0, scale);
   for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
     if (k == skip) continue;
     const Ring2d& hole = polygon.holes[k];
-    const Ring2d& first = (*pieces)[0].outer;
-    std::vector<Kernel::Point_2> boundary;
-    boundary.reserve(first.size());
-    for (const Point2d& p : first) boundary.push_back(ToCgal(p));
-    const CGAL::Bounded_side side =
-        CGAL::bounded_side_2(boundary.begin(), boundary.end(), ToCgal(hole.front()), Kernel());
-    (*pieces)[side == CGAL::ON_BOUNDED_SIDE ? 0 : 1].holes.push_back(hole);
+    const Point2d& p = hole.front();
+    bool inside;
+    if (locator.NearBoundary(p, noise)) {
+      std::vector<Kernel::Point_2> boundary;
+      boundary.reserve(first.size());
+      for (const Point2d& q : first) boundary.push_back(ToCgal(q));
+      inside = CGAL::bounded_side_2(boundary.begin(), boundary.end(), ToCgal(p), Kernel()) ==
+               CGAL::ON_BOUNDED_SIDE;
+    } else {
+      inside = locator.InsideParity(p);
+    }
+    (*pieces)[inside ? 0 : 1].holes.push_back(hole);
   }
 }
 
