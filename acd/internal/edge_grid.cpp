@@ -65,14 +65,4 @@ EdgeGrid::EdgeGrid(const Polygon2d& polygon) {
   stamp_.assign(edges_.size(), 0);
 }
 
-int EdgeGrid::Column(double x) const {
-  const double c = std::floor((x - x0_) * inverse_cell_);
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(columns_ - 1)));
-}
-
-int EdgeGrid::Row(double y) const {
-  const double r = std::floor((y - y0_) * inverse_cell_);
-  return static_cast<int>(std::clamp(r, 0.0, static_cast<double>(rows_ - 1)));
-}
-
 }  // namespace acdplan::acd::internal

@@ -2,6 +2,8 @@
 // A uniform grid over the edges of a polygon with holes, for segment queries during Resolve.
 // Internal.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -42,6 +44,16 @@ class EdgeGrid {
   mutable std::vector<std::uint32_t> stamp_;  // Per edge: the query that last reported it.
   mutable std::uint32_t query_ = 0;
 };
+
+inline int EdgeGrid::Column(double x) const {
+  const double c = std::floor((x - x0_) * inverse_cell_);
+  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(columns_ - 1)));
+}
+
+inline int EdgeGrid::Row(double y) const {
+  const double r = std::floor((y - y0_) * inverse_cell_);
+  return static_cast<int>(std::clamp(r, 0.0, static_cast<double>(rows_ - 1)));
+}
 
 template <typename Visit>
 bool EdgeGrid::AnyNear(const Point2d& a, const Point2d& b, double pad, Visit visit) const {

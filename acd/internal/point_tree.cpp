@@ -1,7 +1,6 @@
 #include "acd/internal/point_tree.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace acdplan::acd::internal {
 namespace {
@@ -10,28 +9,31 @@ constexpr int kLeafSize = 8;
 
 }  // namespace
 
-PointTree::PointTree(const std::vector<Point2d>& points) : points_(points), order_(points.size()) {
-  std::iota(order_.begin(), order_.end(), 0);
-  if (!points_.empty()) {
-    nodes_.reserve(2 * points_.size() / kLeafSize + 2);
-    Build(0, static_cast<int>(points_.size()));
+PointTree::PointTree(const std::vector<Point2d>& points) {
+  const int n = static_cast<int>(points.size());
+  entries_.reserve(n);
+  for (int i = 0; i < n; ++i) entries_.push_back({points[i], i});
+  if (n > 0) {
+    nodes_.reserve(2 * n / kLeafSize + 2);
+    Build(0, n);
   }
 }
 
 int PointTree::Build(int begin, int end) {
   const int node = static_cast<int>(nodes_.size());
-  Point2d lower = points_[order_[begin]], upper = lower;
+  Point2d lower = entries_[begin].point, upper = lower;
   for (int k = begin + 1; k < end; ++k) {
-    lower = lower.cwiseMin(points_[order_[k]]);
-    upper = upper.cwiseMax(points_[order_[k]]);
+    lower = lower.cwiseMin(entries_[k].point);
+    upper = upper.cwiseMax(entries_[k].point);
   }
   nodes_.push_back({lower, upper, begin, end});
   if (end - begin <= kLeafSize) return node;
   // Split the wider side at the median.
   const int axis = upper.x() - lower.x() >= upper.y() - lower.y() ? 0 : 1;
   const int middle = begin + (end - begin) / 2;
-  std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
-                   [&](int a, int b) { return points_[a][axis] < points_[b][axis]; });
+  std::nth_element(
+      entries_.begin() + begin, entries_.begin() + middle, entries_.begin() + end,
+      [axis](const Entry& a, const Entry& b) { return a.point[axis] < b.point[axis]; });
   const int left = Build(begin, middle);
   const int right = Build(middle, end);
   nodes_[node].left = left;

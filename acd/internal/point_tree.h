@@ -29,7 +29,7 @@ class PointTree {
  private:
   struct Node {
     Point2d lower, upper;  // Bounding box of the node's points.
-    int begin, end;        // Range in order_.
+    int begin, end;        // Range in entries_.
     int left = -1, right = -1;
   };
   int Build(int begin, int end);
@@ -37,8 +37,11 @@ class PointTree {
   template <typename Visit>
   void Search(int node, const Point2d& p, double* radius, Visit& visit) const;
 
-  std::vector<Point2d> points_;
-  std::vector<int> order_;
+  struct Entry {
+    Point2d point;
+    int id;
+  };
+  std::vector<Entry> entries_;  // The points, reordered so that each node is a range.
   std::vector<Node> nodes_;
 };
 
@@ -56,10 +59,8 @@ void PointTree::Search(int node, const Point2d& p, double* radius, Visit& visit)
   if (std::sqrt(BoxDistance2(node, p)) > *radius) return;
   const Node& n = nodes_[node];
   if (n.left < 0) {
-    for (int k = n.begin; k < n.end; ++k) {
-      const int id = order_[k];
-      visit(id, (points_[id] - p).squaredNorm());
-    }
+    for (int k = n.begin; k < n.end; ++k)
+      visit(entries_[k].id, (entries_[k].point - p).squaredNorm());
     return;
   }
   const bool left_first = BoxDistance2(n.left, p) <= BoxDistance2(n.right, p);
