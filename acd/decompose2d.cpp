@@ -1,16 +1,16 @@
 #include "acd/decompose2d.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include "acd/concavity.h"
-#include "base/input_error.h"
 #include "acd/internal/openings.h"
 #include "acd/internal/pocket_cache.h"
 #include "acd/internal/resolve.h"
+#include "base/input_error.h"
+#include "base/stopwatch.h"
 
 namespace acdplan::acd {
 namespace {
@@ -99,8 +99,9 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
     internal::Resolution resolution;
     if (++splits > budget || !Resolve(out->tree[id].piece, concavity, resolve, &resolution)) {
       std::ostringstream message;
-      message << "Decompose2d(): could not resolve a piece with " << VertexCount(out->tree[id].piece)
-              << " vertices and concavity " << concavity.value << " (split " << splits << ")";
+      message << "Decompose2d(): could not resolve a piece with "
+              << VertexCount(out->tree[id].piece) << " vertices and concavity " << concavity.value
+              << " (split " << splits << ")";
       throw std::logic_error(message.str());
     }
     out->tree[id].witness = resolution.witness;
@@ -127,13 +128,12 @@ Decomposition2d Decompose2d(const std::vector<Polygon2d>& polygons,
   out.measure = options.measure;
   out.tau = options.tau;
   out.min_convexity = options.min_convexity;
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   for (int i = 0; i < static_cast<int>(polygons.size()); ++i) {
     DecomposeOne(polygons[i], i, options, &out);
   }
   out.openings = internal::FindOpenings(out);
-  out.stats.time_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  out.stats.time_ms = stopwatch.Milliseconds();
 
   double area = 0.0, hull_area = 0.0;
   for (const Component2d& c : out.components) {
