@@ -27,8 +27,9 @@ class EdgeGrid {
 
   explicit EdgeGrid(const Polygon2d& polygon);
 
-  /// Calls `visit(edge)` for every edge that may come within `pad` of the segment a-b, until
-  /// `visit` returns true (then returns true). Not thread-safe (a scratch stamp per edge).
+  /// Calls `visit(edge)` for every edge that may come within `pad` of the segment a-b, cells
+  /// from a toward b, until `visit` returns true (then returns true). Not thread-safe (a scratch
+  /// stamp per edge).
   template <typename Visit>
   bool AnyNear(const Point2d& a, const Point2d& b, double pad, Visit visit) const;
 
@@ -64,7 +65,11 @@ bool EdgeGrid::AnyNear(const Point2d& a, const Point2d& b, double pad, Visit vis
   const double xlo = std::min(a.x(), b.x()) - pad, xhi = std::max(a.x(), b.x()) + pad;
   const int c0 = Column(xlo), c1 = Column(xhi);
   const double dx = b.x() - a.x();
-  for (int c = c0; c <= c1; ++c) {
+  // Cells from a's end toward b's, so that a blocker near a (the usual case: a cut from a hole
+  // vertex past its neighbours) ends the walk early.
+  const int column_step = a.x() <= b.x() ? 1 : -1;
+  const bool rows_up = a.y() <= b.y();
+  for (int c = column_step > 0 ? c0 : c1; c0 <= c && c <= c1; c += column_step) {
     // The segment's y-range over this column's x-range (plus the pad), or its whole y-range
     // when it is (nearly) vertical; one row of slack each way absorbs rounding.
     double ylo = std::min(a.y(), b.y()), yhi = std::max(a.y(), b.y());
@@ -78,8 +83,8 @@ bool EdgeGrid::AnyNear(const Point2d& a, const Point2d& b, double pad, Visit vis
       yhi = std::min(yhi, std::max(y_at0, y_at1));
     }
     const int r0 = std::max(0, Row(ylo - pad) - 1), r1 = std::min(rows_ - 1, Row(yhi + pad) + 1);
-    for (int r = r0; r <= r1; ++r) {
-      const int cell = r * columns_ + c;
+    for (int k = 0; k <= r1 - r0; ++k) {
+      const int cell = (rows_up ? r0 + k : r1 - k) * columns_ + c;
       for (int k = cell_begin_[cell]; k < cell_begin_[cell + 1]; ++k) {
         const int e = cell_edges_[k];
         if (stamp_[e] == query_) continue;

@@ -5,7 +5,7 @@
 namespace acdplan::acd::internal {
 namespace {
 
-constexpr int kLeafSize = 8;
+constexpr int kLeafSize = 16;
 
 }  // namespace
 

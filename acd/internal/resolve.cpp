@@ -287,6 +287,7 @@ Ring2d InsertOnOuter(const Ring2d& outer, std::vector<Endpoint*> ends) {
 // locator (exact); a point within rounding noise of the ring (never the case for a valid cut,
 // which keeps clear of other holes) is decided by CGAL's exact test, as before.
 void DistributeHoles(const Polygon2d& polygon, int skip, std::array<Polygon2d, 2>* pieces) {
+  if (polygon.holes.size() <= (skip >= 0 ? 1u : 0u)) return;
   const Ring2d& first = (*pieces)[0].outer;
   const RingLocator locator(Polygon2d{first, {}});
   double scale = 0.0;
