@@ -26,41 +26,48 @@ EdgeGrid::EdgeGrid(const Polygon2d& polygon) {
   x0_ = lower.x();
   y0_ = lower.y();
 
-  auto ring_of = [&](int ring) -> const Ring2d& {
-    return ring < 0 ? polygon.outer : polygon.holes[ring];
-  };
-  auto for_each_cell = [&](const Edge& e, auto f) {
-    const Ring2d& points = ring_of(e.ring);
+  // Each edge's bounding box, as the cells' ranges are taken from it in every pass.
+  std::vector<Point2d> box_lower, box_upper;
+  box_lower.reserve(edges_.size());
+  box_upper.reserve(edges_.size());
+  for (const Edge& e : edges_) {
+    const Ring2d& points = e.ring < 0 ? polygon.outer : polygon.holes[e.ring];
     const Point2d& u = points[e.index];
     const Point2d& w = points[e.index + 1 == static_cast<int>(points.size()) ? 0 : e.index + 1];
-    const int c0 = Column(std::min(u.x(), w.x())), c1 = Column(std::max(u.x(), w.x()));
-    const int r0 = Row(std::min(u.y(), w.y())), r1 = Row(std::max(u.y(), w.y()));
-    for (int r = r0; r <= r1; ++r) {
-      for (int c = c0; c <= c1; ++c) f(r * columns_ + c);
-    }
-  };
+    box_lower.push_back(u.cwiseMin(w));
+    box_upper.push_back(u.cwiseMax(w));
+  }
+  const int edge_total = static_cast<int>(edges_.size());
   // Long slanted edges cover many cells with their boxes: coarsen until the lists stay linear.
+  std::vector<int> ranges(4 * edges_.size());  // Per edge: first and last column and row.
   for (;; cell *= 2.0) {
     inverse_cell_ = 1.0 / cell;
     columns_ = std::clamp(static_cast<int>(extent.x() * inverse_cell_) + 1, 1, kMaxSide + 1);
     rows_ = std::clamp(static_cast<int>(extent.y() * inverse_cell_) + 1, 1, kMaxSide + 1);
     double covered = 0.0;
-    for (const Edge& e : edges_) {
-      const Ring2d& points = ring_of(e.ring);
-      const Point2d& u = points[e.index];
-      const Point2d& w = points[e.index + 1 == static_cast<int>(points.size()) ? 0 : e.index + 1];
-      covered += (Column(std::max(u.x(), w.x())) - Column(std::min(u.x(), w.x())) + 1.0) *
-                 (Row(std::max(u.y(), w.y())) - Row(std::min(u.y(), w.y())) + 1.0);
+    for (int k = 0; k < edge_total; ++k) {
+      int* range = &ranges[4 * k];
+      range[0] = Column(box_lower[k].x());
+      range[1] = Column(box_upper[k].x());
+      range[2] = Row(box_lower[k].y());
+      range[3] = Row(box_upper[k].y());
+      covered += (range[1] - range[0] + 1.0) * (range[3] - range[2] + 1.0);
     }
     if (covered <= 16.0 * edge_count || (columns_ == 1 && rows_ == 1)) break;
   }
+  auto for_each_cell = [&](int k, auto f) {
+    const int* range = &ranges[4 * k];
+    for (int r = range[2]; r <= range[3]; ++r) {
+      for (int c = range[0]; c <= range[1]; ++c) f(r * columns_ + c);
+    }
+  };
   cell_begin_.assign(static_cast<size_t>(columns_) * rows_ + 1, 0);
-  for (const Edge& e : edges_) for_each_cell(e, [&](int cell) { ++cell_begin_[cell + 1]; });
+  for (int k = 0; k < edge_total; ++k) for_each_cell(k, [&](int cell) { ++cell_begin_[cell + 1]; });
   for (size_t i = 1; i < cell_begin_.size(); ++i) cell_begin_[i] += cell_begin_[i - 1];
   cell_edges_.resize(cell_begin_.back());
   std::vector<int> fill(cell_begin_.begin(), cell_begin_.end() - 1);
-  for (int k = 0; k < static_cast<int>(edges_.size()); ++k) {
-    for_each_cell(edges_[k], [&](int cell) { cell_edges_[fill[cell]++] = k; });
+  for (int k = 0; k < edge_total; ++k) {
+    for_each_cell(k, [&](int cell) { cell_edges_[fill[cell]++] = k; });
   }
   stamp_.assign(edges_.size(), 0);
 }
