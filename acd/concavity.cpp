@@ -86,10 +86,7 @@ Ring2d PocketChain(const Ring2d& ring, const Pocket& pocket) {
 
 // The antipodal pair of a hole and the distance between them (Ch. IV.A.2.b). `hole` is
 // clockwise; the hole region as a polygon of its own is the reversed, counter-clockwise ring.
-struct Antipodes {
-  int a, b;
-  double distance;
-};
+using Antipodes = internal::HoleAntipodes;
 
 Antipodes PrincipalAxisAntipodes(const Ring2d& hole) {
   Point2d mean = Point2d::Zero();
@@ -227,7 +224,8 @@ struct HoleLink {
 // open (two holes closest to each other); see the loop below.
 std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
                                         const std::vector<double>& outer_concavity, double delta,
-                                        const ConcavityOptions& options) {
+                                        const ConcavityOptions& options,
+                                        internal::PocketCache* cache) {
   const int k = static_cast<int>(polygon.holes.size());
   std::vector<HoleConcavity> holes(k);
   if (k == 0) return holes;
@@ -236,7 +234,11 @@ std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
   const VertexSearch search(polygon);
   for (int i = 0; i < k; ++i) {
     const Ring2d& hole = polygon.holes[i];
-    const Antipodes pair = geodesic ? GeodesicAntipodes(hole) : PrincipalAxisAntipodes(hole);
+    const Antipodes* cached = cache != nullptr ? cache->FindAntipodes(hole) : nullptr;
+    const Antipodes pair = cached != nullptr ? *cached
+                           : geodesic        ? GeodesicAntipodes(hole)
+                                             : PrincipalAxisAntipodes(hole);
+    if (cache != nullptr && cached == nullptr) cache->InsertAntipodes(hole, pair);
     holes[i].p = pair.a;
     holes[i].cw_p = pair.b;
     holes[i].diameter = pair.distance;
@@ -416,6 +418,18 @@ void PocketCache::Insert(const Ring2d& chain, std::vector<double> distances) {
   entries_.emplace(Hash(chain), Entry{chain, std::move(distances)});
 }
 
+const HoleAntipodes* PocketCache::FindAntipodes(const Ring2d& hole) const {
+  const auto [first, last] = antipodes_.equal_range(Hash(hole));
+  for (auto it = first; it != last; ++it) {
+    if (it->second.hole == hole) return &it->second.antipodes;
+  }
+  return nullptr;
+}
+
+void PocketCache::InsertAntipodes(const Ring2d& hole, const HoleAntipodes& antipodes) {
+  antipodes_.emplace(Hash(hole), AntipodesEntry{hole, antipodes});
+}
+
 Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOptions& options,
                                    PocketCache* cache) {
   Concavity2d result;
@@ -467,7 +481,7 @@ Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOpti
     }
   }
   const double delta = result.value;
-  result.holes = MeasureHoles(polygon, result.outer, delta, options);
+  result.holes = MeasureHoles(polygon, result.outer, delta, options, cache);
   for (int i = 0; i < static_cast<int>(result.holes.size()); ++i) {
     if (result.holes[i].concavity >= result.value) {
       result.value = result.holes[i].concavity;

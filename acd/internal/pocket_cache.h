@@ -10,10 +10,17 @@
 
 namespace acdplan::acd::internal {
 
+/// The antipodal pair of a hole (indices into the hole ring) and the distance between them.
+struct HoleAntipodes {
+  int a, b;
+  double distance;
+};
+
 /// Per-vertex concavities of pockets already measured, keyed by the pocket chain. A cut only
 /// changes the pockets it touches; every other pocket of a child piece is a pocket of its parent
 /// with the same chain and bridge, so its SP distances (a triangulation and a funnel walk) are
-/// looked up instead of recomputed. One cache serves one decomposition (fixed measure and tau).
+/// looked up instead of recomputed. Likewise the antipodes of holes, which a child piece
+/// inherits unchanged. One cache serves one decomposition (fixed measure and tau).
 class PocketCache {
  public:
   /// The stored distances for `chain`, or nullptr.
@@ -21,13 +28,23 @@ class PocketCache {
   /// Stores `distances` for `chain`.
   void Insert(const Ring2d& chain, std::vector<double> distances);
 
+  /// The stored antipodes of `hole`, or nullptr.
+  const HoleAntipodes* FindAntipodes(const Ring2d& hole) const;
+  /// Stores `antipodes` for `hole`.
+  void InsertAntipodes(const Ring2d& hole, const HoleAntipodes& antipodes);
+
  private:
   struct Entry {
     Ring2d chain;
     std::vector<double> distances;
   };
+  struct AntipodesEntry {
+    Ring2d hole;
+    HoleAntipodes antipodes;
+  };
   static std::uint64_t Hash(const Ring2d& chain);
   std::unordered_multimap<std::uint64_t, Entry> entries_;
+  std::unordered_multimap<std::uint64_t, AntipodesEntry> antipodes_;
 };
 
 /// MeasureConcavity() that reuses and fills `cache` (may be nullptr).
