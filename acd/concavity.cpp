@@ -153,7 +153,7 @@ struct HoleLinkCandidate {
 class VertexSearch {
  public:
   explicit VertexSearch(const Polygon2d& polygon)
-      : outer_(polygon.outer), holes_(HoleVertices(polygon, &ring_, &index_)) {}
+      : outer_(polygon.outer), holes_(HoleTree(polygon, &ring_, &index_)) {}
 
   // The closest outer vertex to `p`: index and squared distance.
   std::pair<int, double> ClosestOuter(const Point2d& p) const {
@@ -191,17 +191,20 @@ class VertexSearch {
   }
 
  private:
-  static std::vector<Point2d> HoleVertices(const Polygon2d& polygon, std::vector<int>* ring,
-                                           std::vector<int>* index) {
+  // A tree over the vertices of all holes, runs split at each hole's first vertex.
+  static internal::PointTree HoleTree(const Polygon2d& polygon, std::vector<int>* ring,
+                                      std::vector<int>* index) {
     std::vector<Point2d> points;
+    std::vector<int> ring_begin;
     for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
+      ring_begin.push_back(static_cast<int>(points.size()));
       for (int i = 0; i < static_cast<int>(polygon.holes[k].size()); ++i) {
         points.push_back(polygon.holes[k][i]);
         ring->push_back(k);
         index->push_back(i);
       }
     }
-    return points;
+    return internal::PointTree(points, ring_begin);
   }
 
   internal::PointTree outer_;
