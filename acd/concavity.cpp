@@ -259,7 +259,10 @@ std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
     }
   }
   // Settle holes whose x lies on the outer ring or on a settled hole; a cycle of holes closest
-  // to each other is broken at the hole cheapest to reach from the outer ring.
+  // to each other is broken at the hole cheapest to reach from the outer ring (the first such
+  // hole on equal cost). A settled hole settles every hole linked to it, transitively; the
+  // holes left are those whose links lead into a cycle, and as settling only ever adds, the
+  // cheapest unsettled hole is each time the next unsettled one in order of cost.
   std::vector<bool> settled(k, false);
   auto settle = [&](int i, const HoleLink& link, double at_x) {
     if (link.end == 1) std::swap(holes[i].p, holes[i].cw_p);
@@ -267,33 +270,49 @@ std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
     holes[i].concavity = holes[i].depth + holes[i].diameter + delta;
     settled[i] = true;
   };
-  for (int done = 0; done < k;) {
-    bool progress = false;
+  // The holes linked to each hole (CSR).
+  std::vector<int> linked_begin(k + 1, 0), linked(k);
+  for (int i = 0; i < k; ++i) {
+    if (nearest[i].ring >= 0) ++linked_begin[nearest[i].ring + 1];
+  }
+  for (int j = 0; j < k; ++j) linked_begin[j + 1] += linked_begin[j];
+  {
+    std::vector<int> fill(linked_begin.begin(), linked_begin.end() - 1);
     for (int i = 0; i < k; ++i) {
-      if (settled[i]) continue;
-      const HoleLink& link = nearest[i];
-      if (link.ring < 0) {
-        settle(i, link, outer_concavity[link.vertex]);
-      } else if (settled[link.ring]) {
-        settle(i, link, holes[link.ring].concavity);
-      } else {
-        continue;
-      }
-      ++done;
-      progress = true;
+      if (nearest[i].ring >= 0) linked[fill[nearest[i].ring]++] = i;
     }
-    if (progress) continue;
-    int cheapest = -1;
-    for (int i = 0; i < k; ++i) {
-      if (settled[i]) continue;
-      const double cost = outer_concavity[nearest_outer[i].vertex] + nearest_outer[i].distance;
-      if (cheapest < 0 || cost < outer_concavity[nearest_outer[cheapest].vertex] +
-                                     nearest_outer[cheapest].distance) {
-        cheapest = i;
+  }
+  std::vector<int> stack;
+  auto settle_linked = [&](int root) {
+    stack.assign(1, root);
+    while (!stack.empty()) {
+      const int j = stack.back();
+      stack.pop_back();
+      for (int e = linked_begin[j]; e < linked_begin[j + 1]; ++e) {
+        const int i = linked[e];
+        if (settled[i]) continue;
+        settle(i, nearest[i], holes[j].concavity);
+        stack.push_back(i);
       }
     }
-    settle(cheapest, nearest_outer[cheapest], outer_concavity[nearest_outer[cheapest].vertex]);
-    ++done;
+  };
+  for (int i = 0; i < k; ++i) {
+    if (nearest[i].ring >= 0) continue;
+    settle(i, nearest[i], outer_concavity[nearest[i].vertex]);
+    settle_linked(i);
+  }
+  std::vector<double> cost(k);
+  std::vector<int> by_cost(k);
+  for (int i = 0; i < k; ++i) {
+    cost[i] = outer_concavity[nearest_outer[i].vertex] + nearest_outer[i].distance;
+    by_cost[i] = i;
+  }
+  std::sort(by_cost.begin(), by_cost.end(),
+            [&](int a, int b) { return cost[a] < cost[b] || (cost[a] == cost[b] && a < b); });
+  for (const int i : by_cost) {
+    if (settled[i]) continue;
+    settle(i, nearest_outer[i], outer_concavity[nearest_outer[i].vertex]);
+    settle_linked(i);
   }
   return holes;
 }
