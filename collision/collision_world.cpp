@@ -98,6 +98,12 @@ struct CollisionWorld::Impl {
   Eigen::Vector3d witness = Eigen::Vector3d::Zero();  // a point of the robot (containment)
   std::optional<internal::MeshLocator3d> robot_locator;  // closed 3D robot: obstacle inside it
   Geometry point_probe;                // point robot: a zero-radius sphere for distances
+  // Broadphase query objects of robot_hull / point_probe at the identity, built once. A query
+  // copies one (RobotAt()) instead of constructing fcl::CollisionObject from the shared
+  // geometry: that constructor recomputes the geometry's local AABB, i.e. writes to geometry
+  // every concurrent query reads (a data race inside libfcl, which TSan cannot see).
+  std::unique_ptr<fcl::CollisionObjectd> robot_hull_object;
+  std::unique_ptr<fcl::CollisionObjectd> point_probe_object;
 
   // Obstacles (world frame).
   Geometry all_bvh;                       // kBvh
@@ -121,6 +127,16 @@ struct CollisionWorld::Impl {
 };
 
 namespace {
+
+/// The robot's broadphase object at `pose`, copied from `prototype` (see Impl): reads the
+/// shared geometry only.
+fcl::CollisionObjectd RobotAt(const fcl::CollisionObjectd& prototype,
+                              const Eigen::Isometry3d& pose) {
+  fcl::CollisionObjectd robot(prototype);
+  robot.setTransform(pose);
+  robot.computeAABB();
+  return robot;
+}
 
 size_t PieceOf(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2) {
   void* data = o1->getUserData() ? o1->getUserData() : o2->getUserData();
@@ -233,6 +249,10 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
     planes.push_back(piece.planes);
     boxes.push_back(piece.box);
   }
+  if (m.robot_hull) m.robot_hull_object = std::make_unique<fcl::CollisionObjectd>(m.robot_hull);
+  if (m.point_probe) {
+    m.point_probe_object = std::make_unique<fcl::CollisionObjectd>(m.point_probe);
+  }
   m.manager.registerObjects(objects);
   m.manager.setup();
   const double slack = 1e-12 * (1 + set.bounds.sizes().norm() +
@@ -279,7 +299,7 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
     collides = Collide(m.robot_exact.get(), pose, m.all_bvh.get(), fcl::Transform3d::Identity()) ||
                m.exact_locator->Inside(witness);
     if (!collides && m.robot_locator) {
-      fcl::CollisionObjectd robot(m.robot_hull, pose);
+      const fcl::CollisionObjectd robot = RobotAt(*m.robot_hull_object, pose);
       const fcl::AABBd& box = robot.getAABB();
       for (size_t i = 0; i < set.pieces.size() && !collides; ++i) {
         const auto& pb = set.pieces[i].box;
@@ -303,7 +323,7 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
       std::vector<int> odd_obstacles;   // 3D: obstacles with an odd count of pieces holding witness
       std::uint64_t hull_tests = 0, confirmations = 0;
     } q{&m, &set, pose, witness, mode == CollisionMode::kHullsExact, false, {}, 0, 0};
-    fcl::CollisionObjectd robot(m.robot_hull, pose);
+    fcl::CollisionObjectd robot = RobotAt(*m.robot_hull_object, pose);
     m.manager.collide(&robot, &q, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2,
                                      void* data) {
       HitQuery& q = *static_cast<HitQuery*>(data);
@@ -368,7 +388,8 @@ double CollisionWorld::Clearance(const Eigen::Isometry3d& pose, CollisionMode mo
     bool refine;
     double best = std::numeric_limits<double>::infinity();
   } context{&m, pose, exact, hull_geometry.get(), mode == CollisionMode::kHullsExact};
-  fcl::CollisionObjectd robot(hull_geometry, pose);
+  fcl::CollisionObjectd robot =
+      RobotAt(m.robot_exact ? *m.robot_hull_object : *m.point_probe_object, pose);
   m.manager.distance(&robot, &context, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2,
                                           void* data, double& dist) {
     Context& c = *static_cast<Context*>(data);
