@@ -7,10 +7,6 @@
 // only as a safety net (no assertion depends on wall-clock time).
 
 #include <gtest/gtest.h>
-
-#include <cmath>
-#include <future>
-#include <memory>
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/ScopedState.h>
@@ -21,6 +17,10 @@
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/tools/multiplan/ParallelPlan.h>
 #include <ompl/util/Console.h>
+
+#include <cmath>
+#include <future>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
@@ -62,8 +62,8 @@ World MakeWorld(const std::string& generator, std::uint64_t seed, double passage
   options.tau = 0.02 * world.workspace.bounds.sizes().norm();
   world.decomposition = acd::Decompose2d(envs::FreeSpace2d(world.workspace), options);
   world.robot = robot;
-  auto obstacles = std::make_shared<const collision::ObstacleSet>(
-      collision::BuildObstacleSet(world.workspace));
+  auto obstacles =
+      std::make_shared<const collision::ObstacleSet>(collision::BuildObstacleSet(world.workspace));
   collision::CollisionWorldOptions hulls;
   hulls.mode = collision::CollisionMode::kHullsExact;
   world.hulls = std::make_shared<const collision::CollisionWorld>(obstacles, robot, hulls);
@@ -140,9 +140,11 @@ void ExpectPathValid(const World& world, const std::vector<Eigen::Vector2d>& pat
   EXPECT_LE((path.back() - goal).norm(), 1e-9) << what;
   int bad = 0;
   for (size_t i = 0; i + 1 < path.size(); ++i) {
-    const int steps = std::max(1, static_cast<int>(std::ceil((path[i + 1] - path[i]).norm() / 0.002)));
+    const int steps =
+        std::max(1, static_cast<int>(std::ceil((path[i + 1] - path[i]).norm() / 0.002)));
     for (int k = 0; k <= steps; ++k) {
-      const Eigen::Vector2d p = path[i] + (path[i + 1] - path[i]) * (static_cast<double>(k) / steps);
+      const Eigen::Vector2d p =
+          path[i] + (path[i + 1] - path[i]) * (static_cast<double>(k) / steps);
       if (!world.exact->IsValid(At(p)) ||
           !envs::InsideBounds(world.robot, world.workspace.bounds, At(p))) {
         ++bad;
@@ -213,9 +215,10 @@ TEST(ParallelPlanning, ParallelPlanHybridizesEverySolution) {
   parallel.addPlanner(std::make_shared<og::RRTConnect>(si));
   parallel.addPlanner(std::make_shared<og::RRTConnect>(si));
   parallel.addPlanner(std::make_shared<og::PRM>(si));
-  const ob::PlannerStatus status = parallel.solve(ob::timedPlannerTerminationCondition(kSafetyLimitS),
-                                                  /*minSolCount=*/1, /*maxSolCount=*/3,
-                                                  /*hybridize=*/true);
+  const ob::PlannerStatus status =
+      parallel.solve(ob::timedPlannerTerminationCondition(kSafetyLimitS),
+                     /*minSolCount=*/1, /*maxSolCount=*/3,
+                     /*hybridize=*/true);
   ASSERT_EQ(status, ob::PlannerStatus::EXACT_SOLUTION);
   EXPECT_GE(pdef->getSolutionCount(), 3u);
   for (const ob::PlannerSolution& solution : pdef->getSolutions()) {
@@ -294,7 +297,8 @@ TEST(ParallelPlanning, PlanScenarioOnSeveralThreads) {
   };
   std::vector<std::future<PlanResult>> futures;
   for (const Scenario& scenario : scenarios) {
-    futures.push_back(std::async(std::launch::async, [&scenario] { return PlanScenario(scenario); }));
+    futures.push_back(
+        std::async(std::launch::async, [&scenario] { return PlanScenario(scenario); }));
   }
   std::vector<PlanResult> results;
   for (auto& future : futures) results.push_back(future.get());
@@ -302,7 +306,8 @@ TEST(ParallelPlanning, PlanScenarioOnSeveralThreads) {
   for (size_t i = 0; i < scenarios.size(); ++i) {
     const Scenario& scenario = scenarios[i];
     const PlanResult& result = results[i];
-    const std::string what = "scenario " + std::to_string(i) + " (" + ToString(scenario.planner) + ")";
+    const std::string what =
+        "scenario " + std::to_string(i) + " (" + ToString(scenario.planner) + ")";
     EXPECT_TRUE(result.solved) << what;
     EXPECT_GT(result.collision_checks, 0u) << what;
     if (!result.solved) continue;

@@ -5,11 +5,11 @@
 // literals: exact) and say so in the commit.
 
 #include <gtest/gtest.h>
-
-#include <cstdio>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Console.h>
+
+#include <cstdio>
 #include <string>
 
 #include "acd/decompose2d.h"
@@ -31,11 +31,7 @@ struct Pinned {
 // AcdValidStateSampler on wall_gap (seed 1, gap 0.2 wide), tau = 0.02 x diagonal, default
 // AcdSamplerOptions with seed 42: the first states (x, y).
 const Pinned kFirstStates[] = {
-    {0x0p+0, 0x0p+0},
-    {0x0p+0, 0x0p+0},
-    {0x0p+0, 0x0p+0},
-    {0x0p+0, 0x0p+0},
-    {0x0p+0, 0x0p+0},
+    {0x0p+0, 0x0p+0}, {0x0p+0, 0x0p+0}, {0x0p+0, 0x0p+0}, {0x0p+0, 0x0p+0}, {0x0p+0, 0x0p+0},
 };
 constexpr int kCount = static_cast<int>(sizeof(kFirstStates) / sizeof(kFirstStates[0]));
 
