@@ -31,7 +31,9 @@ struct Pinned {
 // AcdValidStateSampler on wall_gap (seed 1, gap 0.2 wide), tau = 0.02 x diagonal, default
 // AcdSamplerOptions with seed 42: the first states (x, y).
 const Pinned kFirstStates[] = {
-    {0x0p+0, 0x0p+0}, {0x0p+0, 0x0p+0}, {0x0p+0, 0x0p+0}, {0x0p+0, 0x0p+0}, {0x0p+0, 0x0p+0},
+    {0x1.473a27851e446p+2, 0x1.156989fb74442p+1}, {0x1.4296388fc3bb2p+2, 0x1.08134ee9a026bp+1},
+    {0x1.0e386c2a14c64p+1, 0x1.1e7c88df94ee2p+3}, {0x1.5784f8240e6a9p+2, 0x1.1ea46da841255p+1},
+    {0x1.ce69af802e4fp-1, 0x1.f8a73836961efp+2},
 };
 constexpr int kCount = static_cast<int>(sizeof(kFirstStates) / sizeof(kFirstStates[0]));
 
