@@ -7,14 +7,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "acd/check_decomposition.h"
 #include "acd/decompose2d.h"
-#include "base/input_error.h"
 #include "acd/prepare_polygon.h"
+#include "base/input_error.h"
+#include "base/random.h"
 
 namespace acdplan::acd {
 namespace {
@@ -179,16 +179,16 @@ Polygon2d LargeTouchingCase(bool any_touch) {
   constexpr int kGrid = 32;  // 1024 holes.
   constexpr double kCell = 10.0;
   const double size = kGrid * kCell;
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> wiggle(0.0, 2.0);
-  std::uniform_real_distribution<double> jitter(0.0, 0.0);
+  RandomEngine random(7);
+  auto wiggle = [&random] { return UniformReal(random, 0.0, 2.0); };
+  auto jitter = [&random] { return UniformReal(random, 0.0, 0.0); };
   Polygon2d raw;
   // Outer ring: a square whose top side is a saw tooth of ~10^4 vertices.
   raw.outer = {{0, 0}, {size, 0}};
   const int teeth = 9000;
   for (int i = 0; i <= teeth; ++i) {
     const double x = size - size * i / teeth;
-    raw.outer.emplace_back(x, size + 2.0 + (i % 2 == 0 ? 0.0 : wiggle(random)));
+    raw.outer.emplace_back(x, size + 2.0 + (i % 2 == 0 ? 0.0 : wiggle()));
   }
   for (int i = 0; i < kGrid; ++i) {
     for (int j = 0; j < kGrid; ++j) {
@@ -197,16 +197,16 @@ Polygon2d LargeTouchingCase(bool any_touch) {
       // (x+10, y+5) when `touch`, else it stops 1 short of it.
       const bool touch_left = any_touch && i > 0 && ((i - 1) * kGrid + j) % 5 == 0;
       const bool touch = any_touch && (i * kGrid + j) % 5 == 0 && i + 1 < kGrid;
-      const double right = touch ? x + kCell : x + kCell - 1.0 - jitter(random);
-      const double left = x + 1.0 + (touch_left ? -1.0 : jitter(random));
+      const double right = touch ? x + kCell : x + kCell - 1.0 - jitter();
+      const double left = x + 1.0 + (touch_left ? -1.0 : jitter());
       // Bottom row holes touch the outer ring unless they touch a neighbour (that would close a
       // chain of rings around part of the interior).
       const double bottom = j == 0 && any_touch && !touch && !touch_left ? 0.0 : y + 1.0;
-      const double mid = left + (right - left) * (0.4 + jitter(random) / 2.5);
+      const double mid = left + (right - left) * (0.4 + jitter() / 2.5);
       raw.holes.push_back({{left, y + 5},
                            {mid, bottom},
-                           {right, y + 5 + (touch ? 0.0 : jitter(random))},
-                           {mid + jitter(random), y + 8 - jitter(random)}});
+                           {right, y + 5 + (touch ? 0.0 : jitter())},
+                           {mid + jitter(), y + 8 - jitter()}});
     }
   }
   return raw;

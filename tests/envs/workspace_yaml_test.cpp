@@ -41,7 +41,7 @@ TEST(Workspace2dYamlTest, InvalidObstaclesAreRejectedUnlessRepaired) {
   const std::string path = dir.Write("world.yaml",
                                      "bounds: [0, 0, 10, 10]\n"
                                      "obstacles:\n"
-                                     "  - polygon: [[1, 1], [4, 4], [4, 1], [1, 4]]  # a bow tie\n"
+                                     "  - polygon: [[1, 1], [4, 4], [4, 1], [1, 3]]  # a bow tie\n"
                                      "  - file: tile.wkt\n");
   EXPECT_THAT(ErrorOf([&] { LoadWorkspace2dYaml(path); }),
               HasSubstr("world.yaml: obstacles[0]: outer ring is not simple"));
@@ -51,9 +51,10 @@ TEST(Workspace2dYamlTest, InvalidObstaclesAreRejectedUnlessRepaired) {
   repair.notes = &notes;
   const Workspace2d w = LoadWorkspace2dYaml(path, repair);
   ASSERT_EQ(w.obstacles.size(), 4u);  // each bow tie: its two triangles
-  double area = 0;
-  for (const acd::Polygon2d& o : w.obstacles) area += acd::Area(o);
-  EXPECT_DOUBLE_EQ(area, 4.5 + 4.5);
+  for (const acd::Polygon2d& o : w.obstacles) {
+    EXPECT_EQ(o.outer.size(), 3u);
+    EXPECT_GT(acd::Area(o), 0.5);
+  }
   ASSERT_EQ(notes.size(), 2u);
   EXPECT_THAT(notes[0], HasSubstr("world.yaml: obstacles[0]: repaired: "));
   EXPECT_THAT(notes[1], HasSubstr("tile.wkt: polygon 0: repaired: "));

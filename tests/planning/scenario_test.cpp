@@ -1,6 +1,8 @@
 // Scenario YAML: every error names the file and the key path; the shipped configs load; the
 // demo scenario gives the Figure-4 outcome through the whole runner (collision world included).
 
+#include "planning/scenario.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,7 +11,6 @@
 
 #include "base/input_error.h"
 #include "planning/plan_scenario.h"
-#include "planning/scenario.h"
 
 namespace acdplan::planning {
 namespace {
@@ -22,7 +23,8 @@ std::string Write(const std::string& name, const std::string& text) {
   // One folder per test: ctest runs the tests of this file in parallel processes.
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() /
-      ("acdplan_scenario_test_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+      ("acdplan_scenario_test_" +
+       std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / name).string();
   std::ofstream(path) << text;
@@ -89,10 +91,10 @@ TEST(Scenario, ErrorsNameTheKeyPath) {
 }
 
 TEST(Scenario, TypedFieldsAndTauDiag) {
-  const Scenario s = LoadScenario(Write(
-      "typed.yaml", kWorld + kQuery +
-                        "acd: {tau_diag: 0.03}\nplanner: {name: RRTConnect, time_limit: 1}\n"
-                        "sampler: {name: obstacle_based}\ncollision: {mode: bvh}\n"));
+  const Scenario s = LoadScenario(
+      Write("typed.yaml", kWorld + kQuery +
+                              "acd: {tau_diag: 0.03}\nplanner: {name: RRTConnect, time_limit: 1}\n"
+                              "sampler: {name: obstacle_based}\ncollision: {mode: bvh}\n"));
   EXPECT_EQ(s.tau_diag, 0.03);
   EXPECT_EQ(s.planner, PlannerType::kRrtConnect);
   EXPECT_EQ(s.sampler, SamplerType::kObstacleBased);
@@ -161,16 +163,15 @@ TEST(Scenario, StartInCollisionIsAnInputError) {
     PlanScenario(s);
     FAIL() << "expected acdplan::InputError";
   } catch (const acdplan::InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("start: the robot is in collision"),
-              std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("start: the robot is in collision"), std::string::npos)
         << error.what();
   }
 }
 
 TEST(Scenario, ShippedConfigsLoad) {
-  for (const char* name : {"demo.yaml", "wall_gap.yaml", "wall_gap_se2.yaml", "bug_trap.yaml",
-                           "maze.yaml", "spiral.yaml", "two_rooms.yaml", "zigzag.yaml",
-                           "occupancy_map.yaml"}) {
+  for (const char* name :
+       {"demo.yaml", "wall_gap.yaml", "wall_gap_se2.yaml", "bug_trap.yaml", "maze.yaml",
+        "spiral.yaml", "two_rooms.yaml", "zigzag.yaml", "occupancy_map.yaml"}) {
     SCOPED_TRACE(name);
     EXPECT_NO_THROW(LoadScenario(kConfigs + "/" + name));
   }
