@@ -84,6 +84,14 @@ std::string YamlFile::String(const YAML::Node& node, const std::string& key) con
   return node.Scalar();
 }
 
+bool YamlFile::Bool(const YAML::Node& node, const std::string& key) const {
+  bool value = false;
+  if (!IsScalar(node) || !YAML::convert<bool>::decode(node, value)) {
+    Fail(key, "expected true or false, got " + Shown(node));
+  }
+  return value;
+}
+
 std::vector<double> YamlFile::Numbers(const YAML::Node& node, const std::string& key,
                                       const std::string& what) const {
   if (!IsSequence(node)) Fail(key, "expected " + what + ", got " + Shown(node));

@@ -50,6 +50,8 @@ class YamlFile {
                     long long min) const;
   /// A string scalar.
   std::string String(const YAML::Node& node, const std::string& key) const;
+  /// true or false (YAML's spellings: true/false, yes/no, on/off).
+  bool Bool(const YAML::Node& node, const std::string& key) const;
   /// A list of finite numbers of any length; `what` describes it in the message.
   std::vector<double> Numbers(const YAML::Node& node, const std::string& key,
                               const std::string& what) const;

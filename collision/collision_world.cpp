@@ -95,20 +95,26 @@ struct CollisionWorld::Impl {
   Geometry robot_exact;                // null for a point robot
   Geometry robot_hull;                 // convex hull (== robot_exact for a disc)
   std::vector<Geometry> robot_pieces;  // exact convex pieces of a non-convex polygon robot
-  Eigen::Vector3d witness = Eigen::Vector3d::Zero();  // a point of the robot (containment)
+  Eigen::Vector3d witness = Eigen::Vector3d::Zero();     // a point of the robot (containment)
   std::optional<internal::MeshLocator3d> robot_locator;  // closed 3D robot: obstacle inside it
-  Geometry point_probe;                // point robot: a zero-radius sphere for distances
+  Geometry point_probe;  // point robot: a zero-radius sphere for distances
+  // Broadphase query objects of robot_hull / point_probe at the identity, built once. A query
+  // copies one (RobotAt()) instead of constructing fcl::CollisionObject from the shared
+  // geometry: that constructor recomputes the geometry's local AABB, i.e. writes to geometry
+  // every concurrent query reads (a data race inside libfcl, which TSan cannot see).
+  std::unique_ptr<fcl::CollisionObjectd> robot_hull_object;
+  std::unique_ptr<fcl::CollisionObjectd> point_probe_object;
 
   // Obstacles (world frame).
-  Geometry all_bvh;                       // kBvh
+  Geometry all_bvh;  // kBvh
   std::optional<internal::ExactObstacleLocator> exact_locator;
-  std::vector<Geometry> piece_hulls;      // fcl::Convexd
+  std::vector<Geometry> piece_hulls;  // fcl::Convexd
   std::vector<std::unique_ptr<fcl::CollisionObjectd>> hull_objects;
   fcl::DynamicAABBTreeCollisionManagerd manager;
-  std::vector<Geometry> piece_bvhs;       // kHullsExact confirmation
+  std::vector<Geometry> piece_bvhs;  // kHullsExact confirmation
   std::vector<std::optional<internal::PolygonLocator2d>> piece_polygons;  // 2D containment
   std::vector<std::optional<internal::MeshLocator3d>> piece_meshes;       // 3D containment
-  internal::HullTree hull_tree;           // point robot, kHulls / kHullsExact
+  internal::HullTree hull_tree;  // point robot, kHulls / kHullsExact
   int dimension = 2;
 
   // True if piece `i` lies inside the robot at `pose` (closed 3D robot only): with no surface
@@ -121,6 +127,16 @@ struct CollisionWorld::Impl {
 };
 
 namespace {
+
+/// The robot's broadphase object at `pose`, copied from `prototype` (see Impl): reads the
+/// shared geometry only.
+fcl::CollisionObjectd RobotAt(const fcl::CollisionObjectd& prototype,
+                              const Eigen::Isometry3d& pose) {
+  fcl::CollisionObjectd robot(prototype);
+  robot.setTransform(pose);
+  robot.computeAABB();
+  return robot;
+}
 
 size_t PieceOf(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2) {
   void* data = o1->getUserData() ? o1->getUserData() : o2->getUserData();
@@ -147,7 +163,9 @@ Eigen::Isometry3d CollisionWorld::Lift(const Eigen::Isometry2d& pose) {
 
 CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
                                const envs::Robot& robot, const CollisionWorldOptions& options)
-    : obstacles_(std::move(obstacles)), robot_(robot), options_(options),
+    : obstacles_(std::move(obstacles)),
+      robot_(robot),
+      options_(options),
       impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   const ObstacleSet& set = *obstacles_;
@@ -156,7 +174,7 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
   if (set.dimension == 3 &&
       (robot.shape == envs::RobotShape::kDisc || robot.shape == envs::RobotShape::kPolygon)) {
     throw InputError("CollisionWorld(): a " + shape +
-                          " robot moves in the plane; this world is 3D (use a mesh or a point)");
+                     " robot moves in the plane; this world is 3D (use a mesh or a point)");
   }
   if (set.dimension == 2 && robot.shape == envs::RobotShape::kMesh) {
     throw InputError(
@@ -180,8 +198,8 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
     case envs::RobotShape::kPolygon: {
       const envs::TriangleMesh prism = internal::ExtrudePolygon(robot.polygon, -h / 4, h / 4);
       m.robot_exact = MakeBvh({&prism});
-      m.robot_hull =
-          MakeConvex(internal::ExtrudeConvexRing(acd::ConvexHull(robot.polygon.outer), -h / 4, h / 4));
+      m.robot_hull = MakeConvex(
+          internal::ExtrudeConvexRing(acd::ConvexHull(robot.polygon.outer), -h / 4, h / 4));
       const acd::Decomposition2d pieces = acd::Decompose2d(robot.polygon, {});
       if (pieces.components.size() > 1 || !robot.polygon.holes.empty()) {
         for (const acd::Component2d& c : pieces.components) {
@@ -233,16 +251,19 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
     planes.push_back(piece.planes);
     boxes.push_back(piece.box);
   }
+  if (m.robot_hull) m.robot_hull_object = std::make_unique<fcl::CollisionObjectd>(m.robot_hull);
+  if (m.point_probe) {
+    m.point_probe_object = std::make_unique<fcl::CollisionObjectd>(m.point_probe);
+  }
   m.manager.registerObjects(objects);
   m.manager.setup();
-  const double slack = 1e-12 * (1 + set.bounds.sizes().norm() +
-                                set.bounds.max().cwiseAbs().maxCoeff() +
-                                set.bounds.min().cwiseAbs().maxCoeff());
+  const double slack =
+      1e-12 * (1 + set.bounds.sizes().norm() + set.bounds.max().cwiseAbs().maxCoeff() +
+               set.bounds.min().cwiseAbs().maxCoeff());
   m.hull_tree = internal::HullTree(planes, boxes, slack);
 }
 
 CollisionWorld::~CollisionWorld() = default;
-
 
 bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) const {
   checks_.fetch_add(1, std::memory_order_relaxed);
@@ -250,7 +271,6 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
   const ObstacleSet& set = *obstacles_;
   bool collides = false;
   const Eigen::Vector3d witness = pose * m.witness;
-
 
   if (!m.robot_exact) {  // point robot
     if (mode == CollisionMode::kBvh) {
@@ -265,7 +285,8 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
         exact_confirmations_.fetch_add(1, std::memory_order_relaxed);
         const auto& poly = m.piece_polygons[static_cast<size_t>(i)];
         const auto& mesh = m.piece_meshes[static_cast<size_t>(i)];
-        const bool in = poly ? poly->Contains(witness.head<2>()) : (mesh && mesh->Contains(witness));
+        const bool in =
+            poly ? poly->Contains(witness.head<2>()) : (mesh && mesh->Contains(witness));
         if (!in) continue;
         if (m.dimension == 2) {
           collides = true;
@@ -279,7 +300,7 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
     collides = Collide(m.robot_exact.get(), pose, m.all_bvh.get(), fcl::Transform3d::Identity()) ||
                m.exact_locator->Inside(witness);
     if (!collides && m.robot_locator) {
-      fcl::CollisionObjectd robot(m.robot_hull, pose);
+      const fcl::CollisionObjectd robot = RobotAt(*m.robot_hull_object, pose);
       const fcl::AABBd& box = robot.getAABB();
       for (size_t i = 0; i < set.pieces.size() && !collides; ++i) {
         const auto& pb = set.pieces[i].box;
@@ -297,52 +318,52 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
       const Impl* m;
       const ObstacleSet* set;
       Eigen::Isometry3d pose;
-      Eigen::Vector3d witness;          // world frame
-      bool exact;                       // kHullsExact
+      Eigen::Vector3d witness;  // world frame
+      bool exact;               // kHullsExact
       bool hit = false;
-      std::vector<int> odd_obstacles;   // 3D: obstacles with an odd count of pieces holding witness
+      std::vector<int> odd_obstacles;  // 3D: obstacles with an odd count of pieces holding witness
       std::uint64_t hull_tests = 0, confirmations = 0;
     } q{&m, &set, pose, witness, mode == CollisionMode::kHullsExact, false, {}, 0, 0};
-    fcl::CollisionObjectd robot(m.robot_hull, pose);
-    m.manager.collide(&robot, &q, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2,
-                                     void* data) {
-      HitQuery& q = *static_cast<HitQuery*>(data);
-      const Impl& m = *q.m;
-      const size_t i = PieceOf(o1, o2);
-      const fcl::Transform3d identity = fcl::Transform3d::Identity();
-      ++q.hull_tests;
-      if (!Collide(m.robot_hull.get(), q.pose, m.piece_hulls[i].get(), identity)) return false;
-      // A convex piece is its own hull, so the hull tests below are exact for it: only a
-      // concave piece needs its own triangles to confirm a hull hit.
-      if (!q.exact || q.set->pieces[i].convex) {
-        if (m.robot_pieces.empty()) {
-          q.hit = true;
-        } else {
-          for (const Geometry& piece : m.robot_pieces) {
-            ++q.hull_tests;
-            if (Collide(piece.get(), q.pose, m.piece_hulls[i].get(), identity)) {
+    fcl::CollisionObjectd robot = RobotAt(*m.robot_hull_object, pose);
+    m.manager.collide(
+        &robot, &q, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data) {
+          HitQuery& q = *static_cast<HitQuery*>(data);
+          const Impl& m = *q.m;
+          const size_t i = PieceOf(o1, o2);
+          const fcl::Transform3d identity = fcl::Transform3d::Identity();
+          ++q.hull_tests;
+          if (!Collide(m.robot_hull.get(), q.pose, m.piece_hulls[i].get(), identity)) return false;
+          // A convex piece is its own hull, so the hull tests below are exact for it: only a
+          // concave piece needs its own triangles to confirm a hull hit.
+          if (!q.exact || q.set->pieces[i].convex) {
+            if (m.robot_pieces.empty()) {
               q.hit = true;
-              break;
+            } else {
+              for (const Geometry& piece : m.robot_pieces) {
+                ++q.hull_tests;
+                if (Collide(piece.get(), q.pose, m.piece_hulls[i].get(), identity)) {
+                  q.hit = true;
+                  break;
+                }
+              }
             }
+            return q.hit;
           }
-        }
-        return q.hit;
-      }
-      ++q.confirmations;
-      if (Collide(m.robot_exact.get(), q.pose, m.piece_bvhs[i].get(), identity) ||
-          m.PieceInsideRobot(*q.set, i, q.pose)) {
-        q.hit = true;
-        return true;
-      }
-      if (const auto& poly = m.piece_polygons[i]) {
-        q.hit = poly->Contains(q.witness.head<2>());
-        return q.hit;
-      }
-      if (const auto& mesh = m.piece_meshes[i]; mesh && mesh->Contains(q.witness)) {
-        TogglePresence(&q.odd_obstacles, q.set->pieces[i].obstacle);
-      }
-      return false;
-    });
+          ++q.confirmations;
+          if (Collide(m.robot_exact.get(), q.pose, m.piece_bvhs[i].get(), identity) ||
+              m.PieceInsideRobot(*q.set, i, q.pose)) {
+            q.hit = true;
+            return true;
+          }
+          if (const auto& poly = m.piece_polygons[i]) {
+            q.hit = poly->Contains(q.witness.head<2>());
+            return q.hit;
+          }
+          if (const auto& mesh = m.piece_meshes[i]; mesh && mesh->Contains(q.witness)) {
+            TogglePresence(&q.odd_obstacles, q.set->pieces[i].obstacle);
+          }
+          return false;
+        });
     collides = q.hit || !q.odd_obstacles.empty();
     hull_tests_.fetch_add(q.hull_tests, std::memory_order_relaxed);
     exact_confirmations_.fetch_add(q.confirmations, std::memory_order_relaxed);
@@ -368,28 +389,31 @@ double CollisionWorld::Clearance(const Eigen::Isometry3d& pose, CollisionMode mo
     bool refine;
     double best = std::numeric_limits<double>::infinity();
   } context{&m, pose, exact, hull_geometry.get(), mode == CollisionMode::kHullsExact};
-  fcl::CollisionObjectd robot(hull_geometry, pose);
-  m.manager.distance(&robot, &context, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2,
-                                          void* data, double& dist) {
-    Context& c = *static_cast<Context*>(data);
-    const size_t i = PieceOf(o1, o2);
-    double d = Distance(c.hull, c.pose, c.m->piece_hulls[i].get(), fcl::Transform3d::Identity());
-    if (!c.refine && !c.m->robot_pieces.empty() && d < c.best) {
-      // The exact convex pieces of the robot give a tighter (still conservative) bound.
-      double pieces = std::numeric_limits<double>::infinity();
-      for (const Geometry& piece : c.m->robot_pieces) {
-        pieces = std::min(pieces, Distance(piece.get(), c.pose, c.m->piece_hulls[i].get(),
-                                           fcl::Transform3d::Identity()));
-      }
-      d = pieces;
-    }
-    if (c.refine && d < c.best) {
-      d = Distance(c.exact, c.pose, c.m->piece_bvhs[i].get(), fcl::Transform3d::Identity());
-    }
-    c.best = std::min(c.best, d);
-    dist = std::min(dist, c.best);
-    return c.best <= 0;
-  });
+  fcl::CollisionObjectd robot =
+      RobotAt(m.robot_exact ? *m.robot_hull_object : *m.point_probe_object, pose);
+  m.manager.distance(
+      &robot, &context,
+      [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data, double& dist) {
+        Context& c = *static_cast<Context*>(data);
+        const size_t i = PieceOf(o1, o2);
+        double d =
+            Distance(c.hull, c.pose, c.m->piece_hulls[i].get(), fcl::Transform3d::Identity());
+        if (!c.refine && !c.m->robot_pieces.empty() && d < c.best) {
+          // The exact convex pieces of the robot give a tighter (still conservative) bound.
+          double pieces = std::numeric_limits<double>::infinity();
+          for (const Geometry& piece : c.m->robot_pieces) {
+            pieces = std::min(pieces, Distance(piece.get(), c.pose, c.m->piece_hulls[i].get(),
+                                               fcl::Transform3d::Identity()));
+          }
+          d = pieces;
+        }
+        if (c.refine && d < c.best) {
+          d = Distance(c.exact, c.pose, c.m->piece_bvhs[i].get(), fcl::Transform3d::Identity());
+        }
+        c.best = std::min(c.best, d);
+        dist = std::min(dist, c.best);
+        return c.best <= 0;
+      });
   return std::isfinite(context.best) ? context.best : std::numeric_limits<double>::infinity();
 }
 

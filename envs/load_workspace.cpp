@@ -45,17 +45,17 @@ bool IsWorkspace3dYaml(const YamlFile& file) {
 
 }  // namespace
 
-Workspace2d LoadWorkspace2d(const std::string& path) {
+Workspace2d LoadWorkspace2d(const std::string& path, const acd::ReadPolygonsOptions& polygons) {
   const std::string extension = LowerExtension(path);
   if (extension == ".yaml" || extension == ".yml") {
     if (YamlFile::Load(path).root()["image"]) return LoadOccupancyMap(path);
-    return LoadWorkspace2dYaml(path);
+    return LoadWorkspace2dYaml(path, polygons);
   }
   if (extension == ".map") return LoadMovingAiMap(path);
   if (extension == ".poly" || extension == ".wkt" || extension == ".geojson" ||
       extension == ".json") {
     Workspace2d workspace;
-    workspace.obstacles = acd::ReadPolygons(path);
+    workspace.obstacles = acd::ReadPolygons(path, nullptr, polygons);
     for (const acd::Polygon2d& polygon : workspace.obstacles) {
       for (const acd::Point2d& p : polygon.outer) workspace.bounds.extend(p);
     }
@@ -69,7 +69,7 @@ Workspace2d LoadWorkspace2d(const std::string& path) {
                         "' (expected .yaml, .yml, .map, .poly, .wkt, .geojson or .json)");
 }
 
-World LoadWorld(const std::string& path) {
+World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygons) {
   const std::string extension = LowerExtension(path);
   World world;
   if (IsMeshExtension(extension)) {
@@ -96,12 +96,12 @@ World LoadWorld(const std::string& path) {
       world.workspace3d = LoadWorkspace3dYaml(path);
     } else {
       world.kind = "workspace";
-      world.workspace2d = LoadWorkspace2dYaml(path);
+      world.workspace2d = LoadWorkspace2dYaml(path, polygons);
     }
     return world;
   }
   world.kind = extension == ".map" ? "Moving AI map" : "polygon file";
-  world.workspace2d = LoadWorkspace2d(path);
+  world.workspace2d = LoadWorkspace2d(path, polygons);
   return world;
 }
 

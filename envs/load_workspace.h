@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "acd/read_polygons.h"
 #include "envs/workspace2d.h"
 #include "envs/workspace3d.h"
 
@@ -14,8 +15,12 @@ namespace acdplan::envs {
 ///  - `.map`: a Moving AI grid (envs/moving_ai_map.h);
 ///  - `.poly`, `.wkt`, `.geojson`, `.json`: the file's polygons as obstacles inside their
 ///    bounding box grown by 10% of its larger side on every side.
+/// `polygons` says how obstacle polygons (from polygon files, inline in a workspace YAML or
+/// files it names) are read: strictly by default; with `repair`, invalid ones are made valid
+/// (acd::RepairPolygon) and each change is a line of `notes`.
 /// @throws InputError from the loader, or for an unknown extension.
-Workspace2d LoadWorkspace2d(const std::string& path);
+Workspace2d LoadWorkspace2d(const std::string& path,
+                            const acd::ReadPolygonsOptions& polygons = {});
 
 /// A world of either dimension, and what kind of file it came from.
 struct World {
@@ -30,7 +35,8 @@ struct World {
 /// numbers or `mesh` obstacles, envs/workspace_yaml.h), or a single mesh that ReadMesh() reads
 /// (.obj, .stl, .ply, .off, .dae, .gltf, .glb) as the one obstacle inside its bounding box grown
 /// by 10% of its larger side.
+/// `polygons` as for LoadWorkspace2d().
 /// @throws InputError from the loader, or for an unknown extension.
-World LoadWorld(const std::string& path);
+World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygons = {});
 
 }  // namespace acdplan::envs

@@ -4,6 +4,7 @@
 
 #include "acd/prepare_polygon.h"
 #include "acd/read_polygons.h"
+#include "acd/repair_polygon.h"
 #include "base/file_io.h"
 #include "base/format.h"
 #include "base/input_error.h"
@@ -60,7 +61,7 @@ const YAML::Node Obstacles(const YamlFile& file) {
 
 }  // namespace
 
-Workspace2d LoadWorkspace2dYaml(const std::string& path) {
+Workspace2d LoadWorkspace2dYaml(const std::string& path, const acd::ReadPolygonsOptions& polygons) {
   const YamlFile file = YamlFile::Load(path);
   file.CheckKeys(file.root(), "", {"description", "bounds", "obstacles"});
   if (!file.root()["bounds"]) file.Fail("bounds", "missing required key");
@@ -82,7 +83,7 @@ Workspace2d LoadWorkspace2dYaml(const std::string& path) {
     if (entry["file"]) {
       if (entry["holes"]) file.Fail(YamlFile::Child(key, "holes"), "only allowed with 'polygon'");
       const std::string name = file.String(entry["file"], YamlFile::Child(key, "file"));
-      for (acd::Polygon2d& polygon : acd::ReadPolygons(file.ResolvePath(name))) {
+      for (acd::Polygon2d& polygon : acd::ReadPolygons(file.ResolvePath(name), nullptr, polygons)) {
         workspace.obstacles.push_back(std::move(polygon));
       }
       continue;
@@ -94,7 +95,20 @@ Workspace2d LoadWorkspace2dYaml(const std::string& path) {
         polygon.holes.push_back(ReadRing(file, holes[h], YamlFile::Item(YamlFile::Child(key, "holes"), h)));
       }
     }
-    workspace.obstacles.push_back(acd::PreparePolygon(polygon, path + ": " + key));
+    // Rings may touch at points (OGC-valid): the obstacle may become several polygons.
+    const std::string where = path + ": " + key;
+    std::vector<acd::Polygon2d> prepared;
+    if (polygons.repair) {
+      acd::RepairedPolygon repaired = acd::RepairPolygon(polygon, where);
+      if (polygons.notes) {
+        polygons.notes->insert(polygons.notes->end(), repaired.changes.begin(),
+                               repaired.changes.end());
+      }
+      prepared = std::move(repaired.polygons);
+    } else {
+      prepared = acd::PreparePolygons(polygon, where);
+    }
+    for (acd::Polygon2d& piece : prepared) workspace.obstacles.push_back(std::move(piece));
   }
   return workspace;
 }

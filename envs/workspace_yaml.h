@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "acd/read_polygons.h"
 #include "envs/workspace2d.h"
 #include "envs/workspace3d.h"
 
@@ -19,7 +20,8 @@ namespace acdplan::envs {
 /// @throws InputError naming the file and the key path, e.g. "world.yaml:
 ///         obstacles[2].polygon: expected a list of [x, y] pairs", for YAML syntax errors
 ///         (with the line), unknown keys, wrong types, empty bounds and invalid polygons.
-Workspace2d LoadWorkspace2dYaml(const std::string& path);
+Workspace2d LoadWorkspace2dYaml(const std::string& path,
+                                const acd::ReadPolygonsOptions& polygons = {});
 
 /// Writes `workspace` in the format LoadWorkspace2dYaml() reads, inline polygons with
 /// shortest round-trip numbers; atomically (a temporary file renamed into place).

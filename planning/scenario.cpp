@@ -35,18 +35,24 @@ void CheckScenario(const Scenario& s) {
 Scenario LoadScenario(const std::string& path) {
   const YamlFile file = YamlFile::Load(path);
   const YAML::Node& root = file.root();
-  file.CheckKeys(root, "", {"description", "workspace", "robot", "start", "goal", "acd",
-                            "planner", "sampler", "collision", "seed"});
+  file.CheckKeys(root, "", {"description", "workspace", "repair", "robot", "start", "goal",
+                            "acd", "planner", "sampler", "collision", "seed"});
   Scenario s;
   s.path = path;
   if (root["description"]) s.description = file.String(root["description"], "description");
   if (root["seed"]) s.seed = file.Integer(root["seed"], "seed", "an integer >= 0", 0);
 
   if (!root["workspace"]) file.Fail("workspace", "required");
+  if (root["repair"] && !root["workspace"].IsScalar()) {
+    file.Fail("repair", "only for a workspace file (generated worlds are always valid)");
+  }
   const YAML::Node& workspace = root["workspace"];
   if (workspace.IsScalar()) {
     s.workspace_label = file.ResolvePath(workspace.Scalar());
-    s.workspace = envs::LoadWorkspace2d(s.workspace_label);
+    acd::ReadPolygonsOptions polygons;
+    polygons.repair = root["repair"] && file.Bool(root["repair"], "repair");
+    polygons.notes = &s.warnings;
+    s.workspace = envs::LoadWorkspace2d(s.workspace_label, polygons);
   } else if (workspace.IsMap()) {
     s.workspace = ReadGeneratedWorkspace(file, workspace, "workspace", &s.workspace_label);
   } else {

@@ -22,6 +22,8 @@ namespace acdplan::planning {
 ///   workspace: {generator: wall_gap, seed: 1, passage_width: 0.05, wall_thickness: 1.0}
 ///                                    # generators: envs::GeneratorNames(); wall_thickness
 ///                                    # for wall_gap, bug_trap, two_rooms, spiral and maze
+///   repair: true                     # with a workspace file: make invalid obstacle polygons
+///                                    # valid (acd::RepairPolygon), each change a warning
 ///   robot: {shape: point}            # point (default) | disc (radius) | polygon (polygon:
 ///                                    # [[x, y], ...] in the body frame; plans in SE(2))
 ///   start: [x, y]                    # required; [x, y, yaw] for a polygon robot [rad]

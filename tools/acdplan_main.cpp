@@ -111,7 +111,7 @@ int RunDecompose(const DecomposeArguments& args) {
   read_options.repair = args.repair;
   read_options.notes = &notes;
   const std::vector<acd::Polygon2d> polygons = acd::ReadPolygons(args.input, &radii, read_options);
-  for (const std::string& note : notes) std::cerr << note << "\n";
+  for (const std::string& note : notes) std::cerr << "acdplan: " << note << "\n";
   int vertices = 0;
   for (const acd::Polygon2d& polygon : polygons) vertices += acd::VertexCount(polygon);
   const double radius = *std::max_element(radii.begin(), radii.end());

@@ -243,6 +243,9 @@ CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
           return std::string(error.what());
         }
       });
+  env->add_flag("--repair", args->repair,
+                "Make invalid obstacle polygons valid (even-odd rule) instead of rejecting them; "
+                "each change is printed on stderr (a scenario file says `repair: true`)");
   env->add_option("--svg", args->svg_path, "Write a picture of the 2D world and its ACD here");
   env->add_option("--json", args->json_path, "Write the report as JSON here");
   return env;
@@ -262,10 +265,20 @@ int RunEnv(const EnvArguments& given) {
     for (const std::string& warning : scenario.warnings) {
       std::fprintf(stderr, "acdplan: warning: %s\n", warning.c_str());
     }
+    if (args.repair) {
+      std::fprintf(stderr,
+                   "acdplan: warning: --repair does not apply to a scenario file; its `repair: "
+                   "true` key does\n");
+    }
     return Report2d(args, "scenario; world " + scenario.workspace_label, scenario.workspace,
                     &scenario);
   }
-  const envs::World world = envs::LoadWorld(args.input);
+  std::vector<std::string> notes;
+  acd::ReadPolygonsOptions polygons;
+  polygons.repair = args.repair;
+  polygons.notes = &notes;
+  const envs::World world = envs::LoadWorld(args.input, polygons);
+  for (const std::string& note : notes) std::fprintf(stderr, "acdplan: %s\n", note.c_str());
   if (world.dimension == 3) return Report3d(args, world.kind, world.workspace3d);
   return Report2d(args, world.kind, world.workspace2d, nullptr);
 }

@@ -12,6 +12,7 @@ struct EnvArguments {
   double tau_diag = -1.0;  ///< ACD tau / bounds diagonal; < 0: the scenario's, else 0.02.
   double tau_rel = -1.0;   ///< The older spelling of --tau-diag (read with a warning).
   std::string measure;     ///< "" : the scenario's, else sp.
+  bool repair = false;     ///< Make invalid obstacle polygons valid (acd::RepairPolygon).
   std::string svg_path;    ///< 2D: the world and its free-space decomposition.
   std::string json_path;   ///< The report as JSON.
 };

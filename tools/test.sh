@@ -4,6 +4,9 @@
 #   tools/test.sh             Release build in build/ (or $ACDPLAN_BUILD_DIR)
 #   tools/test.sh --sanitize  ASan+UBSan RelWithDebInfo build in build-asan/
 #                             (or $ACDPLAN_ASAN_BUILD_DIR)
+#   tools/test.sh --tsan      ThreadSanitizer RelWithDebInfo build in build-tsan/
+#                             (or $ACDPLAN_TSAN_BUILD_DIR); builds and runs only the tests
+#                             labelled `threads` (suppressions: tools/tsan.supp)
 #
 # Ends with one line "acdplan tests: N passed, M failed"; exits 0 only if every test passed.
 # $ACDPLAN_JOBS overrides the parallelism (default: nproc); ACDPLAN_WERROR=1 makes compiler
@@ -14,16 +17,24 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 
 sanitize=0
+tsan=0
 for arg in "$@"; do
   case "$arg" in
     --sanitize) sanitize=1 ;;
-    -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) echo "test.sh: unknown argument '$arg' (expected --sanitize)" >&2; exit 2 ;;
+    --tsan) tsan=1 ;;
+    -h|--help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "test.sh: unknown argument '$arg' (expected --sanitize or --tsan)" >&2; exit 2 ;;
   esac
 done
+if [[ $sanitize -eq 1 && $tsan -eq 1 ]]; then
+  echo "test.sh: --sanitize and --tsan are exclusive (ThreadSanitizer cannot run with ASan)" >&2
+  exit 2
+fi
 
 jobs=${ACDPLAN_JOBS:-$(nproc)}
 label="acdplan tests"
+build_targets=()
+ctest_args=()
 
 if [[ $sanitize -eq 1 ]]; then
   build_dir=${ACDPLAN_ASAN_BUILD_DIR:-build-asan}
@@ -32,6 +43,17 @@ if [[ $sanitize -eq 1 ]]; then
   export ASAN_OPTIONS="detect_leaks=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
   echo "test.sh: sanitizer build in $build_dir (ASan + UBSan)"
+elif [[ $tsan -eq 1 ]]; then
+  build_dir=${ACDPLAN_TSAN_BUILD_DIR:-build-tsan}
+  cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DACDPLAN_SANITIZE=OFF -DACDPLAN_TSAN=ON
+    -DACDPLAN_BUILD_TOOLS=OFF)
+  # Only the test executables of the `threads` label (tests/*/CMakeLists.txt), so the step
+  # stays short; halt_on_error makes the first race fail its test.
+  build_targets=(--target planning_parallel_test)
+  ctest_args=(-L threads)
+  label="acdplan threads tests (TSan)"
+  export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$root/tools/tsan.supp${TSAN_OPTIONS:+:$TSAN_OPTIONS}"
+  echo "test.sh: ThreadSanitizer build in $build_dir (tests labelled 'threads' only)"
 else
   build_dir=${ACDPLAN_BUILD_DIR:-build}
   cmake_args=(-DCMAKE_BUILD_TYPE=Release -DACDPLAN_SANITIZE=OFF)
@@ -49,14 +71,14 @@ if ! cmake -S "$root" -B "$build_dir" "${cmake_args[@]}" -DACDPLAN_BUILD_TESTS=O
   echo "$label: 0 passed, 0 failed (configure failed, no tests ran)"
   exit 1
 fi
-if ! cmake --build "$build_dir" -j "$jobs"; then
+if ! cmake --build "$build_dir" -j "$jobs" "${build_targets[@]}"; then
   echo "$label: 0 passed, 0 failed (build failed, no tests ran)"
   exit 1
 fi
 
 log="$build_dir/ctest-summary.log"
 set +e
-(cd "$build_dir" && ctest --output-on-failure --no-tests=error -j "$jobs") 2>&1 | tee "$log"
+(cd "$build_dir" && ctest --output-on-failure --no-tests=error -j "$jobs" "${ctest_args[@]}") 2>&1 | tee "$log"
 ctest_status=${PIPESTATUS[0]}
 set -e
 

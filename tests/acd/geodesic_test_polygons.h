@@ -1,16 +1,17 @@
 #pragma once
 // Seeded generators of simple polygons and brute-force geodesic references, shared by
-// triangulate_ring_test.cpp and shortest_paths_test.cpp.
+// triangulate_ring_test.cpp and shortest_paths_test.cpp. Draws go through base/random.h, so a
+// seed gives the same polygons with any standard library.
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 #include <utility>
 #include <vector>
 
 #include "acd/internal/exact_predicates.h"
 #include "acd/polygon2d.h"
+#include "base/random.h"
 
 namespace acdplan::acd::testing {
 
@@ -29,11 +30,10 @@ inline Ring2d RegularPolygon(int n, double radius = 1.0) {
 
 /// Star-shaped polygon around the origin: n >= 3 sorted random angles (resampled until no gap
 /// reaches 0.9 pi, so the origin is in the kernel), radii in [min_radius, 1].
-inline Ring2d RandomStar(int n, std::mt19937& rng, double min_radius = 0.2) {
-  std::uniform_real_distribution<double> angle(0.0, 2 * kPi), radius(min_radius, 1.0);
+inline Ring2d RandomStar(int n, RandomEngine& rng, double min_radius = 0.2) {
   std::vector<double> angles(n);
   for (double max_gap = 2 * kPi; max_gap >= 0.9 * kPi;) {
-    for (double& a : angles) a = angle(rng);
+    for (double& a : angles) a = UniformReal(rng, 0.0, 2 * kPi);
     std::sort(angles.begin(), angles.end());
     max_gap = angles.front() + 2 * kPi - angles.back();
     for (int i = 1; i < n; ++i) max_gap = std::max(max_gap, angles[i] - angles[i - 1]);
@@ -41,7 +41,7 @@ inline Ring2d RandomStar(int n, std::mt19937& rng, double min_radius = 0.2) {
   angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
   Ring2d ring;
   for (double a : angles) {
-    const double r = radius(rng);
+    const double r = UniformReal(rng, min_radius, 1.0);
     ring.emplace_back(r * std::cos(a), r * std::sin(a));
   }
   return ring;
@@ -49,19 +49,21 @@ inline Ring2d RandomStar(int n, std::mt19937& rng, double min_radius = 0.2) {
 
 /// Comb: a base bar [0, 2 teeth] x [0, 1] with `teeth` random-height teeth on top. The tooth
 /// bases all lie on the line y = 1 (collinear reflex vertices) unless `jitter` is set.
-inline Ring2d RandomComb(int teeth, std::mt19937& rng, bool jitter = false) {
-  std::uniform_real_distribution<double> width(0.5, 1.6), height(0.5, 5.0), wiggle(-0.1, 0.1);
+inline Ring2d RandomComb(int teeth, RandomEngine& rng, bool jitter = false) {
+  auto width = [&rng] { return UniformReal(rng, 0.5, 1.6); };
+  auto height = [&rng] { return UniformReal(rng, 0.5, 5.0); };
+  auto wiggle = [&rng] { return UniformReal(rng, -0.1, 0.1); };
   const double w = 2.0 * teeth;
   Ring2d ring = {{0, 0}, {w, 0}, {w, 1}};
   for (int i = teeth - 1; i >= 0; --i) {
     const double x0 = 2.0 * i + 0.2;
-    const double x1 = x0 + width(rng);
-    const double h = height(rng);
-    const double y0 = jitter ? 1 + wiggle(rng) : 1.0;
-    const double y1 = jitter ? 1 + wiggle(rng) : 1.0;
+    const double x1 = x0 + width();
+    const double h = height();
+    const double y0 = jitter ? 1 + wiggle() : 1.0;
+    const double y1 = jitter ? 1 + wiggle() : 1.0;
     ring.emplace_back(x1, y1);
-    ring.emplace_back(x1 + (jitter ? wiggle(rng) : 0.0), 1 + h);
-    ring.emplace_back(x0 + (jitter ? wiggle(rng) : 0.0), 1 + h);
+    ring.emplace_back(x1 + (jitter ? wiggle() : 0.0), 1 + h);
+    ring.emplace_back(x0 + (jitter ? wiggle() : 0.0), 1 + h);
     ring.emplace_back(x0, y0);
   }
   ring.emplace_back(0, 1);
@@ -70,11 +72,12 @@ inline Ring2d RandomComb(int teeth, std::mt19937& rng, bool jitter = false) {
 
 /// Thick spiral band (counter-clockwise): centre line r = 1 + theta / (2 pi), width 0.5, over
 /// `turns` turns, sampled at randomly jittered angles (about 16 to 24 samples per turn).
-inline Ring2d RandomSpiral(double turns, std::mt19937& rng) {
-  std::uniform_real_distribution<double> step(2 * kPi / 24, 2 * kPi / 16);
+inline Ring2d RandomSpiral(double turns, RandomEngine& rng) {
   std::vector<double> thetas = {0.0};
   const double end = 2 * kPi * turns;
-  while (thetas.back() + 2 * kPi / 16 < end) thetas.push_back(thetas.back() + step(rng));
+  while (thetas.back() + 2 * kPi / 16 < end) {
+    thetas.push_back(thetas.back() + UniformReal(rng, 2 * kPi / 24, 2 * kPi / 16));
+  }
   thetas.push_back(end);
   Ring2d ring;
   for (double t : thetas) {
@@ -95,10 +98,12 @@ inline bool ProperlyCross(const Point2d& p, const Point2d& q, const Point2d& a, 
 
 /// Random simple polygon (counter-clockwise): random points untangled by 2-opt moves (each move
 /// shortens the tour, so it terminates).
-inline Ring2d RandomTwoOptPolygon(int n, std::mt19937& rng) {
-  std::uniform_real_distribution<double> coord(0.0, 1.0);
+inline Ring2d RandomTwoOptPolygon(int n, RandomEngine& rng) {
   Ring2d ring(n);
-  for (Point2d& p : ring) p = Point2d(coord(rng), coord(rng));
+  for (Point2d& p : ring) {
+    const double x = UniformReal(rng, 0.0, 1.0);  // x first: sequenced draws.
+    p = Point2d(x, UniformReal(rng, 0.0, 1.0));
+  }
   for (bool changed = true; changed;) {
     changed = false;
     for (int i = 0; i < n && !changed; ++i) {

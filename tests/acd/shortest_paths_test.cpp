@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 #include <string>
 
 #include "tests/acd/geodesic_test_polygons.h"
@@ -68,18 +67,18 @@ TEST(ComputeShortestPathTreeTest, HookByHand) {
 }
 
 TEST(ComputeShortestPathTreeTest, MatchesBruteForceOnRandomPolygons) {
-  std::mt19937 rng(2024);
+  RandomEngine rng(2024);
   int cases = 0;
   for (int i = 0; i < 60; ++i) {
-    std::uniform_int_distribution<int> size(4, 60);
+    auto size = [&rng] { return 4 + static_cast<int>(UniformIndex(rng, 57)); };  // [4, 60]
     const std::vector<std::pair<std::string, Ring2d>> rings = {
-        {"star", RandomStar(size(rng), rng, 0.05)},
-        {"2-opt", RandomTwoOptPolygon(size(rng) / 2 + 3, rng)},
+        {"star", RandomStar(size(), rng, 0.05)},
+        {"2-opt", RandomTwoOptPolygon(size() / 2 + 3, rng)},
         {"comb", RandomComb(2 + i % 9, rng, /*jitter=*/i % 2 == 0)},
         {"spiral", RandomSpiral(0.3 + 0.05 * i, rng)},
     };
     for (const auto& [name, ring] : rings) {
-      const int source = std::uniform_int_distribution<int>(0, ring.size() - 1)(rng);
+      const int source = static_cast<int>(UniformIndex(rng, ring.size()));
       ExpectTreeMatchesBruteForce(ring, source, name + " " + std::to_string(i));
       ++cases;
     }
@@ -161,17 +160,17 @@ std::vector<Ring2d> HullPockets(const Ring2d& ring) {
 // A star-shaped pocket below the bridge (-1, 0) -> (1, 0) around the centre (0, -cy): the chain
 // sweeps the angles from beta- over the bottom round to beta+, with spiky radii, so vertices
 // can reach far beyond either end of the bridge. Counter-clockwise.
-Ring2d RandomStarPocket(int n, std::mt19937& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double cy = 0.2 + 0.8 * unit(rng);
+Ring2d RandomStarPocket(int n, RandomEngine& rng) {
+  auto unit = [&rng] { return UniformReal(rng, 0.0, 1.0); };
+  const double cy = 0.2 + 0.8 * unit();
   const double from = std::atan2(cy, -1.0), to = std::atan2(cy, 1.0) + 2 * kPi;
   std::vector<double> angles(n);
-  for (double& a : angles) a = from + (to - from) * (0.001 + 0.998 * unit(rng));
+  for (double& a : angles) a = from + (to - from) * (0.001 + 0.998 * unit());
   std::sort(angles.begin(), angles.end());
   Ring2d chain = {{-1, 0}};
   for (double a : angles) {
-    double r = 0.1 + 2.4 * unit(rng);
-    if (std::sin(a) > 0) r = std::min(r, (cy - 0.01) / std::sin(a) * (0.3 + 0.7 * unit(rng)));
+    double r = 0.1 + 2.4 * unit();
+    if (std::sin(a) > 0) r = std::min(r, (cy - 0.01) / std::sin(a) * (0.3 + 0.7 * unit()));
     chain.emplace_back(r * std::cos(a), -cy + r * std::sin(a));
   }
   chain.emplace_back(1, 0);
@@ -184,7 +183,7 @@ void ExpectBridgeDistancesMatchBruteForce(const Ring2d& chain, const std::string
 }
 
 TEST(ShortestPathsToBridgeTest, MatchesBruteForceOnStarPockets) {
-  std::mt19937 rng(99);
+  RandomEngine rng(99);
   for (int i = 0; i < 150; ++i) {
     const Ring2d chain = RandomStarPocket(3 + i % 50, rng);
     ExpectBridgeDistancesMatchBruteForce(chain, "star pocket " + std::to_string(i));
@@ -192,7 +191,7 @@ TEST(ShortestPathsToBridgeTest, MatchesBruteForceOnStarPockets) {
 }
 
 TEST(ShortestPathsToBridgeTest, MatchesBruteForceOnHullPockets) {
-  std::mt19937 rng(5);
+  RandomEngine rng(5);
   int pockets = 0;
   for (int i = 0; i < 120; ++i) {
     const std::vector<std::pair<std::string, Ring2d>> rings = {

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <map>
-#include <random>
 #include <string>
 #include <utility>
 
@@ -91,14 +90,14 @@ TEST(TriangulateRingTest, CollinearReflexVertices) {
   const Ring2d ell = {{0, 0}, {2, 0}, {4, 0}, {4, 1}, {3, 1}, {2, 1},
                       {1, 1}, {1, 2}, {1, 3}, {1, 4}, {0, 4}, {0, 2}};
   ExpectValidTriangulation(ell, "L shape");
-  std::mt19937 rng(7);
+  RandomEngine rng(7);
   for (int i = 0; i < 20; ++i) {
     ExpectValidTriangulation(RandomComb(3 + i, rng), "comb " + std::to_string(i));
   }
 }
 
 TEST(TriangulateRingTest, CombSpiralStarTwoOpt) {
-  std::mt19937 rng(11);
+  RandomEngine rng(11);
   for (int i = 0; i < 20; ++i) {
     ExpectValidTriangulation(RandomComb(2 + i, rng, /*jitter=*/true), "comb " + std::to_string(i));
     ExpectValidTriangulation(RandomSpiral(0.5 + 0.37 * i, rng), "spiral " + std::to_string(i));

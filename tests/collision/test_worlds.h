@@ -3,10 +3,10 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
-#include <random>
 #include <string>
 #include <vector>
 
+#include "base/random.h"
 #include "envs/generators.h"
 #include "envs/robot.h"
 #include "envs/triangle_mesh.h"
@@ -56,15 +56,16 @@ inline envs::TriangleMesh CubeMesh(double side) {
 /// Uniform SE(2) poses in `bounds`, seeded.
 inline std::vector<Eigen::Isometry2d> RandomPoses2d(const Eigen::AlignedBox2d& bounds, int count,
                                                     std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  RandomEngine rng(seed);
   std::vector<Eigen::Isometry2d> poses;
   poses.reserve(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i) {
+    // One draw per statement: the order of a call's arguments is unspecified.
+    Eigen::Array2d unit;
+    for (int k = 0; k < 2; ++k) unit[k] = UniformReal(rng, 0.0, 1.0);
     Eigen::Isometry2d pose = Eigen::Isometry2d::Identity();
-    pose.translation() = bounds.min() + (bounds.sizes().array() *
-                                         Eigen::Array2d(u(rng), u(rng))).matrix();
-    pose.linear() = Eigen::Rotation2Dd(2 * M_PI * u(rng) - M_PI).toRotationMatrix();
+    pose.translation() = bounds.min() + (bounds.sizes().array() * unit).matrix();
+    pose.linear() = Eigen::Rotation2Dd(UniformReal(rng, -M_PI, M_PI)).toRotationMatrix();
     poses.push_back(pose);
   }
   return poses;
@@ -73,16 +74,18 @@ inline std::vector<Eigen::Isometry2d> RandomPoses2d(const Eigen::AlignedBox2d& b
 /// Uniform SE(3) poses in `bounds` (uniform rotations), seeded.
 inline std::vector<Eigen::Isometry3d> RandomPoses3d(const Eigen::AlignedBox3d& bounds, int count,
                                                     std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::normal_distribution<double> n(0.0, 1.0);
+  RandomEngine rng(seed);
   std::vector<Eigen::Isometry3d> poses;
   poses.reserve(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i) {
+    // One draw per statement: the order of a call's arguments is unspecified.
+    Eigen::Array3d unit;
+    for (int k = 0; k < 3; ++k) unit[k] = UniformReal(rng, 0.0, 1.0);
+    Eigen::Vector4d wxyz;
+    for (int k = 0; k < 4; ++k) wxyz[k] = StandardNormal(rng);
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-    pose.translation() = bounds.min() + (bounds.sizes().array() *
-                                         Eigen::Array3d(u(rng), u(rng), u(rng))).matrix();
-    Eigen::Quaterniond q(n(rng), n(rng), n(rng), n(rng));
+    pose.translation() = bounds.min() + (bounds.sizes().array() * unit).matrix();
+    Eigen::Quaterniond q(wxyz[0], wxyz[1], wxyz[2], wxyz[3]);
     pose.linear() = q.normalized().toRotationMatrix();
     poses.push_back(pose);
   }

@@ -3,6 +3,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "test_util.h"
 
 namespace acdplan::envs {
@@ -30,6 +33,45 @@ TEST(Workspace2dYamlTest, InlinePolygonsHolesAndFiles) {
   EXPECT_DOUBLE_EQ(acd::Area(w.obstacles[0]), 8.0);
   EXPECT_GT(acd::SignedArea(w.obstacles[0].outer), 0.0);  // Re-oriented.
   EXPECT_DOUBLE_EQ(acd::Area(w.obstacles[1]), 4.0);
+}
+
+TEST(Workspace2dYamlTest, InvalidObstaclesAreRejectedUnlessRepaired) {
+  TempDir dir;
+  dir.Write("tile.wkt", "POLYGON ((6 6, 9 9, 9 6, 6 9, 6 6))");  // a bow tie
+  const std::string path = dir.Write("world.yaml",
+                                     "bounds: [0, 0, 10, 10]\n"
+                                     "obstacles:\n"
+                                     "  - polygon: [[1, 1], [4, 4], [4, 1], [1, 3]]  # a bow tie\n"
+                                     "  - file: tile.wkt\n");
+  EXPECT_THAT(ErrorOf([&] { LoadWorkspace2dYaml(path); }),
+              HasSubstr("world.yaml: obstacles[0]: outer ring is not simple"));
+  std::vector<std::string> notes;
+  acd::ReadPolygonsOptions repair;
+  repair.repair = true;
+  repair.notes = &notes;
+  const Workspace2d w = LoadWorkspace2dYaml(path, repair);
+  ASSERT_EQ(w.obstacles.size(), 4u);  // each bow tie: its two triangles
+  for (const acd::Polygon2d& o : w.obstacles) {
+    EXPECT_EQ(o.outer.size(), 3u);
+    EXPECT_GT(acd::Area(o), 0.5);
+  }
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_THAT(notes[0], HasSubstr("world.yaml: obstacles[0]: repaired: "));
+  EXPECT_THAT(notes[1], HasSubstr("tile.wkt: polygon 0: repaired: "));
+}
+
+TEST(Workspace2dYamlTest, ObstaclesWhoseRingsTouchAtAPointAreValid) {
+  TempDir dir;
+  // A hole touching the outer ring at (1, 2): OGC-valid.
+  const std::string path = dir.Write("world.yaml",
+                                     "bounds: [0, 0, 10, 10]\n"
+                                     "obstacles:\n"
+                                     "  - polygon: [[1, 1], [5, 1], [5, 5], [1, 5]]\n"
+                                     "    holes: [[[1, 2], [3, 2], [3, 4]]]\n");
+  const Workspace2d w = LoadWorkspace2dYaml(path);
+  double area = 0;
+  for (const acd::Polygon2d& o : w.obstacles) area += acd::Area(o);
+  EXPECT_DOUBLE_EQ(area, 16.0 - 2.0);
 }
 
 TEST(Workspace2dYamlTest, WriteThenLoadIsExact) {

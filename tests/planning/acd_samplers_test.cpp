@@ -3,19 +3,19 @@
 // budgets; no wall-clock limits.
 
 #include <gtest/gtest.h>
-
-#include <cstdio>
+#include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
 #include <ompl/base/spaces/SO2StateSpace.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/geometric/planners/prm/PRM.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
-#include <ompl/base/PlannerTerminationCondition.h>
-#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
+
+#include <cstdio>
 
 #include "acd/decompose2d.h"
 #include "base/input_error.h"
@@ -65,8 +65,8 @@ ob::SpaceInformationPtr PointSpace(const World& world) {
   space->setBounds(bounds);
   auto si = std::make_shared<ob::SpaceInformation>(space);
   const std::vector<acd::Polygon2d>* free_space = &world.free_space;
-  si->setStateValidityChecker(std::make_shared<CountingValidityChecker>(
-      si.get(), [free_space](const ob::State* s) {
+  si->setStateValidityChecker(
+      std::make_shared<CountingValidityChecker>(si.get(), [free_space](const ob::State* s) {
         const double* v = s->as<ob::RealVectorStateSpace::StateType>()->values;
         return testing::InsideFreeSpace(*free_space, Eigen::Vector2d(v[0], v[1]));
       }));
@@ -237,8 +237,7 @@ TEST(AcdStateSampler, RejectsUnsupportedSpacesAndBadOptions) {
     AcdStateSampler sampler(r2.get(), world.decomposition, options);
     FAIL() << "expected acdplan::InputError";
   } catch (const acdplan::InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("uniform_share"), std::string::npos)
-        << error.what();
+    EXPECT_NE(std::string(error.what()).find("uniform_share"), std::string::npos) << error.what();
   }
 }
 
@@ -320,20 +319,22 @@ TEST(Figure4Protocol, AcdConnectsTheDemoWorldUniformDoesNot) {
 // each) -- the measurements behind the demo world's choice.
 TEST(Figure4Protocol, WidthSweep) {
   for (double thickness : {0.5, 1.0, 2.0})
-  for (double width : {0.05, 0.1, 0.2, 0.3, 0.5}) {
-    envs::WallGapOptions wall;
-    wall.wall_thickness = thickness;
-    wall.passage_width = width;
-    const World world = Decomposed(envs::MakeWallWithGap(1, wall));
-    int acd = 0, uniform = 0;
-    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-      acd += ConnectsWithBudget(world, "acd", seed, 200);
-      uniform += ConnectsWithBudget(world, "uniform", seed, 200);
+    for (double width : {0.05, 0.1, 0.2, 0.3, 0.5}) {
+      envs::WallGapOptions wall;
+      wall.wall_thickness = thickness;
+      wall.passage_width = width;
+      const World world = Decomposed(envs::MakeWallWithGap(1, wall));
+      int acd = 0, uniform = 0;
+      for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        acd += ConnectsWithBudget(world, "acd", seed, 200);
+        uniform += ConnectsWithBudget(world, "uniform", seed, 200);
+      }
+      std::printf(
+          "wall_gap thickness %.1f width %.2f: acd %d/10, uniform %d/10 (components %zu, openings "
+          "%zu)\n",
+          thickness, width, acd, uniform, world.decomposition.components.size(),
+          world.decomposition.openings.size());
     }
-    std::printf("wall_gap thickness %.1f width %.2f: acd %d/10, uniform %d/10 (components %zu, openings %zu)\n",
-                thickness, width, acd, uniform, world.decomposition.components.size(),
-                world.decomposition.openings.size());
-  }
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // Scenario YAML: every error names the file and the key path; the shipped configs load; the
 // demo scenario gives the Figure-4 outcome through the whole runner (collision world included).
 
+#include "planning/scenario.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,7 +11,6 @@
 
 #include "base/input_error.h"
 #include "planning/plan_scenario.h"
-#include "planning/scenario.h"
 
 namespace acdplan::planning {
 namespace {
@@ -22,7 +23,8 @@ std::string Write(const std::string& name, const std::string& text) {
   // One folder per test: ctest runs the tests of this file in parallel processes.
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() /
-      ("acdplan_scenario_test_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+      ("acdplan_scenario_test_" +
+       std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / name).string();
   std::ofstream(path) << text;
@@ -89,10 +91,10 @@ TEST(Scenario, ErrorsNameTheKeyPath) {
 }
 
 TEST(Scenario, TypedFieldsAndTauDiag) {
-  const Scenario s = LoadScenario(Write(
-      "typed.yaml", kWorld + kQuery +
-                        "acd: {tau_diag: 0.03}\nplanner: {name: RRTConnect, time_limit: 1}\n"
-                        "sampler: {name: obstacle_based}\ncollision: {mode: bvh}\n"));
+  const Scenario s = LoadScenario(
+      Write("typed.yaml", kWorld + kQuery +
+                              "acd: {tau_diag: 0.03}\nplanner: {name: RRTConnect, time_limit: 1}\n"
+                              "sampler: {name: obstacle_based}\ncollision: {mode: bvh}\n"));
   EXPECT_EQ(s.tau_diag, 0.03);
   EXPECT_EQ(s.planner, PlannerType::kRrtConnect);
   EXPECT_EQ(s.sampler, SamplerType::kObstacleBased);
@@ -137,6 +139,23 @@ TEST(Scenario, UnknownNamesListTheKnownOnes) {
             std::string::npos);
 }
 
+TEST(Scenario, RepairKeyRepairsTheWorkspaceFileWithWarnings) {
+  const std::string dir = std::filesystem::path(Write("x.yaml", "")).parent_path().string();
+  std::ofstream(dir + "/tile.wkt") << "POLYGON ((4 4, 6 6, 6 4, 4 5.5, 4 4))";  // a bow tie
+  const std::string query = "start: [1, 1]\ngoal: [9, 9]\n";
+  EXPECT_NE(ErrorOf("workspace: tile.wkt\n" + query).find("tile.wkt: polygon 0: outer ring is not"),
+            std::string::npos);
+  const Scenario s = LoadScenario(Write("fixed.yaml", "workspace: tile.wkt\nrepair: true\n" + query));
+  EXPECT_EQ(s.workspace.obstacles.size(), 2u);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("tile.wkt: polygon 0: repaired: "), std::string::npos) << s.warnings[0];
+  EXPECT_NE(ErrorOf("workspace: tile.wkt\nrepair: maybe\n" + query)
+                .find("bad.yaml: repair: expected true or false, got 'maybe'"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "repair: true\n").find("bad.yaml: repair: only for a workspace file"),
+            std::string::npos);
+}
+
 TEST(Scenario, StartInCollisionIsAnInputError) {
   const Scenario s = LoadScenario(Write("wall.yaml", kWorld + "start: [5.0, 8.0]\ngoal: [7.5, 5]\n"
                                                               "planner: {samples: 10}\n"));
@@ -144,16 +163,15 @@ TEST(Scenario, StartInCollisionIsAnInputError) {
     PlanScenario(s);
     FAIL() << "expected acdplan::InputError";
   } catch (const acdplan::InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("start: the robot is in collision"),
-              std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("start: the robot is in collision"), std::string::npos)
         << error.what();
   }
 }
 
 TEST(Scenario, ShippedConfigsLoad) {
-  for (const char* name : {"demo.yaml", "wall_gap.yaml", "wall_gap_se2.yaml", "bug_trap.yaml",
-                           "maze.yaml", "spiral.yaml", "two_rooms.yaml", "zigzag.yaml",
-                           "occupancy_map.yaml"}) {
+  for (const char* name :
+       {"demo.yaml", "wall_gap.yaml", "wall_gap_se2.yaml", "bug_trap.yaml", "maze.yaml",
+        "spiral.yaml", "two_rooms.yaml", "zigzag.yaml", "occupancy_map.yaml"}) {
     SCOPED_TRACE(name);
     EXPECT_NO_THROW(LoadScenario(kConfigs + "/" + name));
   }

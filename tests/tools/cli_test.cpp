@@ -282,5 +282,19 @@ TEST_F(CliTest, EnvReadsTauRelAsTauDiagWithAWarning) {
             nlohmann::json::parse(Read(b)).at("components"));
 }
 
+TEST_F(CliTest, RepairMakesInvalidPolygonsValidAndSaysWhat) {
+  const fs::path tile = Write("tile.wkt", "POLYGON ((0 0, 4 4, 4 0, 0 3, 0 0))");  // a bow tie
+  for (const std::string& command : {std::string("decompose"), std::string("env")}) {
+    const RunResult strict = Acdplan(command + " " + Quote(tile.string()));
+    ExpectUsageError(strict);
+    EXPECT_NE(strict.err.find("outer ring is not simple"), std::string::npos) << strict.err;
+    const RunResult repaired = Acdplan(command + " " + Quote(tile.string()) + " --repair");
+    EXPECT_EQ(repaired.status, 0) << command << ": " << repaired.err;
+    EXPECT_NE(repaired.err.find("acdplan: " + tile.string() + ": polygon 0: repaired: "),
+              std::string::npos)
+        << command << ": " << repaired.err;
+  }
+}
+
 }  // namespace
 
