@@ -1,7 +1,7 @@
 #include "acd/component_locator2d.h"
 
-#include <algorithm>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 #include "acd/internal/ring_locator.h"
@@ -17,10 +17,14 @@ struct ComponentLocator2d::Impl {
   std::vector<int> cell_begin;  ///< Components of cell c: cell_items[cell_begin[c] .. [c + 1]).
   std::vector<int> cell_items;
 
-  /// The cell column (row) of coordinate `v` along `axis`, clamped to the grid.
+  /// The cell column (row) of coordinate `v` along `axis`, clamped to the grid in double
+  /// first: a far query point's offset may exceed int's range (converting it would be
+  /// undefined); NaN (an infinite offset times a zero scale) goes to cell 0.
   int Cell(double v, int axis, int count) const {
-    const double t = (v - box.min()[axis]) * cells_per_unit[axis];
-    return std::clamp(static_cast<int>(std::floor(t)), 0, count - 1);
+    const double t = std::floor((v - box.min()[axis]) * cells_per_unit[axis]);
+    if (!(t > 0.0)) return 0;
+    if (t >= count - 1) return count - 1;
+    return static_cast<int>(t);
   }
 };
 

@@ -4,8 +4,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "base/input_error.h"
 #include "acd/internal/text_parsing.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {
@@ -77,7 +77,9 @@ class GeoJsonWalker {
       for (size_t i = 0; i < features.size(); ++i) {
         const std::string feature_path = Index(member, i);
         const Json& feature = features[i];
-        if (!feature.is_object() || feature.value("type", std::string()) != "Feature") {
+        // Any JSON value may stand at "type"; only the string "Feature" makes a Feature (json's
+        // value() would throw its own type_error on a non-string).
+        if (!feature.is_object() || !feature.contains("type") || feature.at("type") != "Feature") {
           Fail(feature_path, "expected a Feature");
         }
         Object(feature, feature_path);

@@ -3,6 +3,7 @@
 #include <CGAL/Arr_non_caching_segment_traits_2.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_plus_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Polygon_2_algorithms.h>
@@ -22,8 +23,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "base/input_error.h"
 #include "acd/internal/text_parsing.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {
@@ -268,20 +269,25 @@ std::vector<EdgeRef> EdgesOf(const std::vector<IndexedRing>& rings, int first_ri
 // True when no two edges of all rings meet, except neighbouring edges of one ring at their
 // shared vertex. O(n log n): CGAL's surface sweep (Bentley-Ottmann) stopping at the first
 // interior intersection, plus a sort for vertices that coincide (which the sweep does not
-// report, since they meet at segment end points). The non-caching traits evaluate only
-// kernel predicates on the input points, so the answer is exact with Epick.
+// report, since they meet at segment end points). The sweep constructs intersection points and
+// orders them against the segments, so it runs on Epeck (exact constructions; the input doubles
+// convert exactly): with Epick's rounded constructions it misses crossings, e.g. it finds none
+// between (1, 0)-(1, 2) and (5, 4)-(0, 0), whose crossing (1, 0.8) is not a double.
 bool RingsAreDisjointAndSimple(const std::vector<IndexedRing>& rings) {
+  using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
   std::vector<CgalPoint> vertices;
-  std::vector<CgalSegment> segments;
+  std::vector<Exact::Segment_2> segments;
   for (const IndexedRing& ring : rings) {
     for (size_t i = 0; i < ring.size(); ++i) {
       vertices.push_back(ring.points[i]);
-      segments.emplace_back(ring.points[i], ring.points[(i + 1) % ring.size()]);
+      const CgalPoint& a = ring.points[i];
+      const CgalPoint& b = ring.points[(i + 1) % ring.size()];
+      segments.emplace_back(Exact::Point_2(a.x(), a.y()), Exact::Point_2(b.x(), b.y()));
     }
   }
   std::sort(vertices.begin(), vertices.end());
   if (std::adjacent_find(vertices.begin(), vertices.end()) != vertices.end()) return false;
-  CGAL::Arr_non_caching_segment_traits_2<Kernel> traits;
+  CGAL::Arr_non_caching_segment_traits_2<Exact> traits;
   return !CGAL::do_curves_intersect(segments.begin(), segments.end(), traits);
 }
 

@@ -50,7 +50,8 @@ namespace acdplan::acd {
 /// the k edge pairs whose x-ranges overlap, O(h * m + h^2) containment tests (bounding boxes
 /// filter the h^2), and an O(n log n) constrained triangulation with linear passes over it.
 /// All predicates are exact (CGAL's Epick kernel; the triangulation needs no constructions,
-/// since touching rings only meet at input vertices; ring orientation by the exact area sign).
+/// since touching rings only meet at input vertices; ring orientation by the exact area sign);
+/// the sweep, which orders constructed crossing points, runs on Epeck (exact constructions).
 /// Naming the offending edges after a failure can take O(n^2) in the worst case.
 ///
 /// @param where  names the element in messages, e.g. "monkey.poly: polygon 0".

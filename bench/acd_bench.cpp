@@ -29,11 +29,10 @@
 #include "acd/decompose2d.h"
 #include "acd/decomposition2d.h"
 #include "acd/decomposition_io.h"
-#include "base/input_error.h"
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
-
 #include "base/format.h"
+#include "base/input_error.h"
 #include "base/stopwatch.h"
 
 namespace acdplan::bench {
@@ -269,8 +268,8 @@ bool BenchOurs(const BenchInput& input, double tau_rel, const AcdBenchOptions& a
     } catch (const std::exception& error) {
       ok = false;
       row.note = std::string("failed: ") + error.what();
-      problems->push_back(input.name + ", tau_rel " + FormatSignificant(tau_rel, 6) + ", " + row.method +
-                          ": threw: " + error.what());
+      problems->push_back(input.name + ", tau_rel " + FormatSignificant(tau_rel, 6) + ", " +
+                          row.method + ": threw: " + error.what());
     }
     rows->push_back(row);
   }
@@ -304,7 +303,10 @@ void BenchCgal(const BenchInput& input, const AcdBenchOptions& args,
                                           PartitionTraits());
        }},
   };
-  for (const auto& [method, partition] : methods) {
+  for (const auto& entry : methods) {
+    // Not a structured binding: C++17 lambdas cannot capture one (clang rejects it).
+    const char* method = entry.first;
+    const auto& partition = entry.second;
     AcdBenchRow row = RowFor(input, method);
     if (input.holes > 0) {
       row.note = "n/a (holes)";
@@ -514,9 +516,9 @@ std::string CheckAcdMetric(const std::string& metric) {
   for (const char* known : kAcdMetrics) {
     if (name == known) return "";
   }
-  return "unknown metric '" + metric + "' (expected one of: components, convexity, median_ms, runs, " +
-         kCgalApprox + ".components, " + kCgalGreene + ".components, " + kCgalOptimal +
-         ".components)";
+  return "unknown metric '" + metric +
+         "' (expected one of: components, convexity, median_ms, runs, " + kCgalApprox +
+         ".components, " + kCgalGreene + ".components, " + kCgalOptimal + ".components)";
 }
 
 }  // namespace

@@ -5,12 +5,12 @@
 #include <filesystem>
 #include <sstream>
 
-#include "base/input_error.h"
-#include "bench/summary.h"
-#include "envs/load_workspace.h"
 #include "base/format.h"
+#include "base/input_error.h"
 #include "base/random.h"
 #include "base/yaml_file.h"
+#include "bench/summary.h"
+#include "envs/load_workspace.h"
 #include "planning/registry.h"
 #include "planning/scenario_yaml.h"
 
@@ -46,8 +46,8 @@ void ReadAcd(const YamlFile& file, const YAML::Node& node, const std::string& ke
 void ReadSamplerOptions(const YamlFile& file, const YAML::Node& node, const std::string& key,
                         AcdSamplerOptions* o) {
   file.CheckKeys(node, key,
-              {"uniform_share", "opening_weight", "centroid_spread", "opening_spread",
-               "max_attempts", "orientation"});
+                 {"uniform_share", "opening_weight", "centroid_spread", "opening_spread",
+                  "max_attempts", "orientation"});
   planning::ReadAcdSamplerOptions(file, node, key, o);
 }
 
@@ -55,8 +55,8 @@ void ReadSamplerOptions(const YamlFile& file, const YAML::Node& node, const std:
 void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& key,
                const Scenario& defaults, std::vector<BenchWorld>* worlds) {
   file.CheckKeys(node, key,
-              {"name", "scenario", "workspace", "start", "goal", "acd", "collision",
-               "passage_width", "passage_widths"});
+                 {"name", "scenario", "workspace", "start", "goal", "acd", "collision",
+                  "passage_width", "passage_widths"});
   auto child = [&](const char* name) { return YamlFile::Child(key, name); };
   BenchWorld world;
   world.scenario = defaults;
@@ -103,14 +103,14 @@ void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& 
       }
     } else {
       file.Fail(child("workspace"),
-             "expected a file name or {generator: ...}, got " + YamlFile::Shown(workspace_node));
+                "expected a file name or {generator: ...}, got " + YamlFile::Shown(workspace_node));
     }
     world.scenario.start = file.Numbers(node["start"], child("start"), "[x, y] or [x, y, yaw]");
     world.scenario.goal = file.Numbers(node["goal"], child("goal"), "[x, y] or [x, y, yaw]");
     for (const auto* q : {&world.scenario.start, &world.scenario.goal}) {
       if (q->size() != 2 && q->size() != 3) {
         file.Fail(child(q == &world.scenario.start ? "start" : "goal"),
-               "expected [x, y] or [x, y, yaw]");
+                  "expected [x, y] or [x, y, yaw]");
       }
     }
   }
@@ -130,8 +130,8 @@ void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& 
   }
   world.family = world.name;
   if (node["passage_width"]) {
-    world.passage_width = file.Number(node["passage_width"], child("passage_width"),
-                                   "a positive number", Positive);
+    world.passage_width =
+        file.Number(node["passage_width"], child("passage_width"), "a positive number", Positive);
   }
 
   if (!node["passage_widths"]) {
@@ -144,7 +144,8 @@ void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& 
     file.Fail(child("passage_widths"), "needs an inline workspace: {generator: ...}");
   }
   if (workspace_node["passage_width"]) {
-    file.Fail(child("workspace") + ".passage_width", "give passage_widths or passage_width, not both");
+    file.Fail(child("workspace") + ".passage_width",
+              "give passage_widths or passage_width, not both");
   }
   const std::vector<double> widths =
       file.Numbers(node["passage_widths"], child("passage_widths"), "a list of widths");
@@ -198,8 +199,7 @@ std::vector<int> Subset(const YamlFile& file, const YAML::Node& node, const std:
 
 /// The list of names at `key`, each parsed by `parse` (a planner or sampler name).
 template <typename Parse>
-auto ParsedList(const YamlFile& file, const YAML::Node& node, const std::string& key,
-                Parse parse) {
+auto ParsedList(const YamlFile& file, const YAML::Node& node, const std::string& key, Parse parse) {
   if (!node) file.Fail(key, "required");
   const std::vector<std::string> names = file.Strings(node, key);
   if (names.empty()) file.Fail(key, "expected at least one name");
@@ -225,8 +225,8 @@ BenchSpec LoadBenchSpec(const std::string& path) {
   const YamlFile file = YamlFile::Load(path);
   const YAML::Node& root = file.root();
   file.CheckKeys(root, "",
-              {"name", "description", "seed", "runs", "acd", "acd_sampler", "worlds", "robots",
-               "cases", "targets"});
+                 {"name", "description", "seed", "runs", "acd", "acd_sampler", "worlds", "robots",
+                  "cases", "targets"});
   BenchSpec spec;
   spec.path = path;
   if (!root["name"]) file.Fail("name", "required");
@@ -260,7 +260,7 @@ BenchSpec LoadBenchSpec(const std::string& path) {
       for (size_t k = 0; k < before; ++k) {
         if (spec.worlds[k].name == spec.worlds[j].name) {
           file.Fail(YamlFile::Item("worlds", i) + ".name",
-                 "duplicate world name '" + spec.worlds[j].name + "'");
+                    "duplicate world name '" + spec.worlds[j].name + "'");
         }
       }
     }
@@ -278,7 +278,13 @@ BenchSpec LoadBenchSpec(const std::string& path) {
       robot.acd_options = sampler_options;
       YAML::Node shape;  // The robot keys ReadRobot() knows.
       for (const auto& entry : node) {
-        const std::string k = entry.first.as<std::string>();
+        // A key may be any YAML node ("{[a]: 1}"); as<std::string>() would throw yaml-cpp's own
+        // exception on a non-scalar.
+        if (!entry.first.IsScalar()) {
+          file.Fail(key, "expected a mapping with string keys, got " +
+                             YamlFile::Shown(entry.first) + " as a key");
+        }
+        const std::string k = entry.first.Scalar();
         if (k == "name") {
           robot.name = file.String(entry.second, key + ".name");
         } else if (k == "orientation") {
@@ -294,9 +300,9 @@ BenchSpec LoadBenchSpec(const std::string& path) {
       }
       if (!SafeName(robot.name)) {
         file.Fail(key + ".name",
-               robot.name.empty()
-                   ? "required"
-                   : "expected letters, digits, '_', '-' or '.', got '" + robot.name + "'");
+                  robot.name.empty()
+                      ? "required"
+                      : "expected letters, digits, '_', '-' or '.', got '" + robot.name + "'");
       }
       robot.robot =
           planning::ReadRobot(file, shape.IsNull() ? YAML::Node(YAML::NodeType::Map) : shape, key);
@@ -343,7 +349,7 @@ BenchSpec LoadBenchSpec(const std::string& path) {
       }
       if (budgets[b]["time_limit"]) {
         budget.time_limit = file.Number(budgets[b]["time_limit"], bkey + ".time_limit",
-                                     "a positive number", Positive);
+                                        "a positive number", Positive);
       } else if (budgets[b]["samples"]) {
         budget.samples = static_cast<int>(
             file.Integer(budgets[b]["samples"], bkey + ".samples", "an integer >= 1", 1));
@@ -351,7 +357,8 @@ BenchSpec LoadBenchSpec(const std::string& path) {
           if (!planning::HonoursSampleBudget(planner)) {
             file.Fail(bkey + ".samples",
                       "a sample budget (the Figure-4 protocol) needs PRM, PRM_ACD or PRMstar, "
-                      "not " + planning::ToString(planner) + "; use time_limit");
+                      "not " +
+                          planning::ToString(planner) + "; use time_limit");
           }
         }
       } else {

@@ -142,7 +142,8 @@ std::string Target::Label() const {
 
 std::vector<Target> ReadTargets(const YamlFile& file, const YAML::Node& node,
                                 const std::string& key, const TargetVocabulary& vocabulary) {
-  if (!node.IsSequence()) file.Fail(key, "expected a list of targets, got " + YamlFile::Shown(node));
+  if (!node.IsSequence())
+    file.Fail(key, "expected a list of targets, got " + YamlFile::Shown(node));
   std::vector<Target> targets;
   for (size_t i = 0; i < node.size(); ++i) {
     const std::string item = YamlFile::Item(key, i);
@@ -154,7 +155,12 @@ std::vector<Target> ReadTargets(const YamlFile& file, const YAML::Node& node,
       const std::string wkey = YamlFile::Child(item, "where");
       if (!where.IsMap()) file.Fail(wkey, "expected a mapping, got " + YamlFile::Shown(where));
       for (const auto& entry : where) {
-        const std::string label = entry.first.as<std::string>();
+        // A key may be any YAML node; as<std::string>() would throw yaml-cpp's own exception.
+        if (!entry.first.IsScalar()) {
+          file.Fail(wkey, "expected a mapping with string keys, got " +
+                              YamlFile::Shown(entry.first) + " as a key");
+        }
+        const std::string label = entry.first.Scalar();
         const std::string lkey = YamlFile::Child(wkey, label);
         if (std::find(vocabulary.labels.begin(), vocabulary.labels.end(), label) ==
             vocabulary.labels.end()) {
@@ -170,8 +176,8 @@ std::vector<Target> ReadTargets(const YamlFile& file, const YAML::Node& node,
     if (const YAML::Node& conditions = t["if"]) {
       const std::string ckey = YamlFile::Child(item, "if");
       if (!conditions.IsSequence()) {
-        file.Fail(ckey,
-               "expected a list of {metric, compare, value}, got " + YamlFile::Shown(conditions));
+        file.Fail(ckey, "expected a list of {metric, compare, value}, got " +
+                            YamlFile::Shown(conditions));
       }
       for (size_t c = 0; c < conditions.size(); ++c) {
         const std::string ikey = YamlFile::Item(ckey, c);

@@ -1,5 +1,6 @@
 #include "envs/moving_ai_map.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -24,7 +25,8 @@ void Chomp(std::string& text) {
 }  // namespace
 
 OccupancyGrid ReadMovingAiMap(const std::string& path) {
-  std::istringstream in(ReadFile(path));
+  const std::string text = ReadFile(path);
+  std::istringstream in(text);
   int width = -1, height = -1;
   bool has_type = false;
   int line_number = 0;
@@ -69,7 +71,8 @@ OccupancyGrid ReadMovingAiMap(const std::string& path) {
   grid.width = width;
   grid.height = height;
   grid.resolution = 1.0;
-  grid.blocked.resize(static_cast<size_t>(width) * height);
+  // Up to 10^10 cells by the header; memory grows with the rows the file holds.
+  grid.blocked.reserve(std::min(static_cast<size_t>(width) * height, text.size()));
   for (int row = 0; row < height; ++row) {
     if (!std::getline(in, line)) {
       Fail(path, line_number + 1,
@@ -107,7 +110,7 @@ OccupancyGrid ReadMovingAiMap(const std::string& path) {
                    "' in column " + std::to_string(column) + " (free: . G S; blocked: @ O T W)");
         }
       }
-      grid.blocked[static_cast<size_t>(row) * width + column] = blocked ? 1 : 0;
+      grid.blocked.push_back(blocked ? 1 : 0);
     }
   }
   while (std::getline(in, line)) {

@@ -116,12 +116,16 @@ class EarClipper {
     cell_end_ = fill;
   }
 
-  int CellX(double x) const {
-    return std::clamp(static_cast<int>((x - min_x_) * inv_cell_x_), 0, nx_ - 1);
+  // Cells cover the reflex vertices' box; a point outside it (at any distance: its offset in
+  // cells may exceed int's range, where converting it would be undefined) is clamped in double
+  // first, into a border cell. NaN (an infinite offset times a zero scale) goes to cell 0.
+  static int ClampedCell(double t, int count) {
+    if (!(t > 0.0)) return 0;
+    if (t >= count - 1) return count - 1;
+    return static_cast<int>(t);
   }
-  int CellY(double y) const {
-    return std::clamp(static_cast<int>((y - min_y_) * inv_cell_y_), 0, ny_ - 1);
-  }
+  int CellX(double x) const { return ClampedCell((x - min_x_) * inv_cell_x_, nx_); }
+  int CellY(double y) const { return ClampedCell((y - min_y_) * inv_cell_y_, ny_); }
   int CellOf(int v) const { return CellY(p_[v].y()) * nx_ + CellX(p_[v].x()); }
 
   // Whether reflex vertex q prevents clipping the ear (a, b, c) (counter-clockwise).

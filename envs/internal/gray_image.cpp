@@ -31,7 +31,7 @@ class PgmHeader {
     }
     if (digits == 0 || value > 1000000000) {
       throw InputError(path_ + ": malformed PGM " + (in_header_ ? "header" : "data") +
-                            ": expected " + what);
+                       ": expected " + what);
     }
     return static_cast<int>(value);
   }
@@ -75,16 +75,16 @@ GrayImage ReadPgm(const std::string& path) {
   if (image.max_value < 1 || image.max_value > 65535) {
     throw InputError(path + ": malformed PGM header: maxval must be in [1, 65535]");
   }
+  // Up to 10^18 pixels by the header; memory is only taken for pixels the file holds.
   const size_t n = static_cast<size_t>(image.width) * image.height;
-  image.pixels.resize(n);
   if (binary) {
     // Exactly one whitespace byte separates maxval from the raster.
     size_t pos = header.pos_ + 1;
     const size_t bytes_per_pixel = image.max_value > 255 ? 2 : 1;
-    if (header.pos_ >= bytes.size() || bytes.size() - pos < n * bytes_per_pixel) {
-      throw InputError(path + ": truncated PGM data: expected " + std::to_string(n) +
-                            " pixels");
+    if (header.pos_ >= bytes.size() || (bytes.size() - pos) / bytes_per_pixel < n) {
+      throw InputError(path + ": truncated PGM data: expected " + std::to_string(n) + " pixels");
     }
+    image.pixels.resize(n);
     for (size_t i = 0; i < n; ++i) {
       unsigned value = static_cast<unsigned char>(bytes[pos++]);
       if (bytes_per_pixel == 2) value = (value << 8) | static_cast<unsigned char>(bytes[pos++]);
@@ -96,17 +96,17 @@ GrayImage ReadPgm(const std::string& path) {
       header.SkipSpaceAndComments();
       if (header.pos_ >= bytes.size()) {
         throw InputError(path + ": truncated PGM data: expected " + std::to_string(n) +
-                              " pixels, found " + std::to_string(i));
+                         " pixels, found " + std::to_string(i));
       }
-      image.pixels[i] =
-          static_cast<std::uint16_t>(std::min(header.Integer("a pixel value"), 65535));
+      image.pixels.push_back(
+          static_cast<std::uint16_t>(std::min(header.Integer("a pixel value"), 65535)));
     }
   }
   for (size_t i = 0; i < n; ++i) {
     if (image.pixels[i] > image.max_value) {
       throw InputError(path + ": PGM pixel " + std::to_string(i) + " value " +
-                            std::to_string(image.pixels[i]) + " exceeds maxval " +
-                            std::to_string(image.max_value));
+                       std::to_string(image.pixels[i]) + " exceeds maxval " +
+                       std::to_string(image.max_value));
     }
   }
   return image;
@@ -121,6 +121,17 @@ GrayImage ReadPng(const std::string& path) {
     const std::string reason = png.message;
     png_image_free(&png);
     throw InputError(path + ": cannot read PNG: " + reason);
+  }
+  // Deflate expands a byte to at most 1032 bytes, and a grey output pixel comes from at least
+  // one bit of decoded data (1-bit images), so a larger header is a truncated file; rejecting
+  // it here keeps a few bytes from asking for gigabytes.
+  constexpr size_t kMaxDeflateRatio = 1032;
+  const size_t pixels = static_cast<size_t>(png.width) * png.height;
+  if (pixels / 8 > kMaxDeflateRatio * bytes.size()) {
+    png_image_free(&png);
+    throw InputError(path + ": cannot read PNG: " + std::to_string(png.width) + " x " +
+                     std::to_string(png.height) + " pixels cannot come from " +
+                     std::to_string(bytes.size()) + " bytes (truncated file?)");
   }
   png.format = PNG_FORMAT_GRAY;
   GrayImage image;

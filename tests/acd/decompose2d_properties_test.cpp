@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -21,9 +22,10 @@
 #include "acd/check_decomposition.h"
 #include "acd/concavity.h"
 #include "acd/decompose2d.h"
-#include "base/input_error.h"
+#include "acd/poly_reader.h"
 #include "acd/prepare_polygon.h"
 #include "acd/read_polygons.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {
@@ -396,6 +398,31 @@ TEST(Decompose2dRepro, CheckDecompositionAcceptsNeedleNextToItsNeighbour) {
   decomposition.stats.convexity = area / hull_area;
   const DecompositionCheck check = CheckDecomposition({input}, decomposition);
   EXPECT_TRUE(check.ok()) << Problems(check);
+}
+
+// Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-far-vertex-grid-cell.poly):
+// vertices 10^7 and 5.3 * 10^7 away from the others put a point so far outside the triangulation
+// grid of the reflex vertices that its cell offset overflowed int (undefined behaviour, which
+// the sanitizer suite reports). Every measure must now decompose it validly.
+TEST(Decompose2dTest, VerticesFarOutsideTheReflexVerticesBox) {
+  std::istringstream in(
+      "1\n8 out\n0.000000 -13.000000\n10000000. -7.200000\n8.000000 3.000000\n"
+      "3.000015 9.000000\n-53000000 6.000000\n-3.000000 2.000000\n-8.000000 0.000000\n"
+      "-7.000000 -10.000000\n1 2 3 4 5 6 7 8\n");
+  const std::vector<Polygon2d> raw = ReadPoly(in, "far.poly");
+  ASSERT_EQ(raw.size(), 1u);
+  const std::vector<Polygon2d> input = PreparePolygons(raw[0], "far.poly");
+  ASSERT_EQ(input.size(), 1u);
+  for (const ConcavityMeasure measure : kMeasures) {
+    for (const double tau : {0.0, 0.05 * ReferenceRadius(input[0])}) {
+      Decompose2dOptions options;
+      options.tau = tau;
+      options.measure = measure;
+      const DecompositionCheck check = CheckDecomposition(input, Decompose2d(input, options));
+      EXPECT_TRUE(check.ok()) << ToString(measure) << ", tau " << tau << ": "
+                              << ::testing::PrintToString(check.problems);
+    }
+  }
 }
 
 TEST(Decompose2dTest, ComponentGraphIsSymmetric) {

@@ -83,6 +83,14 @@ TEST(GeoJsonReaderTest, StructureErrorsNameElementPath) {
               AllOf(HasSubstr("shape.geojson: invalid JSON"), HasSubstr("1e999")));
   EXPECT_THAT(ErrorOf(R"({"type": "FeatureCollection", "features": [{"type": "Polygon"}]})"),
               HasSubstr("shape.geojson: features[0]: expected a Feature"));
+  // A feature whose "type" is not a string (found by fuzz/fuzz_geojson_reader, which stopped on
+  // nlohmann::json's own type_error; fuzz/corpus/geojson_reader/regression-feature-type-object).
+  for (const char* type : {R"({"name": "a"})", "[]", "1", "null", "true"}) {
+    EXPECT_EQ(ErrorOf(std::string(R"({"type": "FeatureCollection", "features": [{"type": )") +
+                      type + R"(, "geometry": null}]})"),
+              "shape.geojson: features[0]: expected a Feature")
+        << type;
+  }
 }
 
 TEST(GeoJsonReaderTest, InvalidJsonNamesPosition) {

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -96,6 +97,28 @@ TEST(PreparePolygonTest, RejectsSelfIntersectingOuterRingNamingEdgesAndPoint) {
   EXPECT_THAT(ErrorOf({{{0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}),
               AllOf(HasSubstr("test.poly: polygon 0: outer ring is not simple"),
                     HasSubstr("edges (0,1) and (2,3) intersect at (1.5, 1.5)")));
+}
+
+// Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-bowtie-vertical-edge.wkt):
+// the crossing (1, 0.8) of a vertical edge and a sloped one is not a double, and the sweep on
+// Epick's rounded constructions missed it, so a bow-tie reached Decompose2d(). Every rotation
+// and both orientations of the ring are rejected.
+TEST(PreparePolygonTest, RejectsCrossingAtAPointThatIsNotADouble) {
+  Ring2d ring = {{0, 0}, {1, 0}, {1, 2}, {5, 4}};
+  for (int reversed = 0; reversed < 2; ++reversed) {
+    for (int rotation = 0; rotation < 4; ++rotation) {
+      EXPECT_THAT(ErrorOf({ring, {}}), AllOf(HasSubstr("test.poly: polygon 0: outer ring is not "
+                                                       "simple: edges"),
+                                             HasSubstr("intersect at (1, 0.8)")))
+          << "rotation " << rotation << ", reversed " << reversed;
+      std::rotate(ring.begin(), ring.begin() + 1, ring.end());
+    }
+    ring = Reversed(ring);
+  }
+  // The WKT the fuzzer found: "5 4\v 0 4" is x y z m, then (0 0) twice closes the ring.
+  EXPECT_EQ(ErrorOf({{{0, 0}, {1, 0}, {1, 2}, {5, 4}, {0, 0}, {0, 0}}, {}}),
+            "test.poly: polygon 0: outer ring is not simple: edges (1,2) and (3,0) intersect at "
+            "(1, 0.8)");
 }
 
 TEST(PreparePolygonTest, VertexIndicesAreThoseOfTheInput) {

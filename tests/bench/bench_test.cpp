@@ -82,6 +82,10 @@ TEST(BenchSpec, ErrorsNameTheFileAndKeyPath) {
   EXPECT_HAS(ErrorOf(kWorlds), "bad.yaml: cases: required");
   EXPECT_HAS(ErrorOf("name: t\n" + cases), "bad.yaml: worlds: required");
   EXPECT_HAS(ErrorOf(kWorlds + cases + "colour: red\n"), "bad.yaml: colour: unknown key");
+  // A list as a key (found by fuzz/fuzz_bench_yaml, which stopped on yaml-cpp's bad conversion;
+  // fuzz/corpus/bench_yaml/regression-sequence-as-robot-key.yaml).
+  EXPECT_HAS(ErrorOf(kWorlds + cases + "robots:\n  - {name: bar, [a]: 1}\n"),
+             "bad.yaml: robots[0]: expected a mapping with string keys, got a list as a key");
   EXPECT_HAS(ErrorOf(kWorlds + cases + "runs: 0\n"),
              "bad.yaml: runs: expected an integer >= 1, got '0'");
   EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [PRM, PRN], budgets: "

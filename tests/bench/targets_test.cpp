@@ -76,6 +76,10 @@ TEST(Targets, ErrorsNameTheFileAndKeyPath) {
   EXPECT_EQ(ErrorOf("targets: [" + ok + "]\n"), "");
   EXPECT_HAS(ErrorOf("goals: []\n"), "t.yaml: goals: unknown key (expected one of: targets)");
   EXPECT_HAS(ErrorOf("targets: 3\n"), "t.yaml: targets: expected a list of targets");
+  // A list as a key (the where: twin of fuzz_bench_yaml's finding in robots:).
+  EXPECT_HAS(ErrorOf("targets: [{where: {[a]: PRM}, metric: acd.success_rate, compare: '>=', "
+                     "value: 1}]\n"),
+             "t.yaml: targets[0].where: expected a mapping with string keys, got a list as a key");
   EXPECT_HAS(ErrorOf("targets: [" + ok + ", {metric: acd.success_rate, value: 1}]\n"),
              "t.yaml: targets[1].compare: required");
   EXPECT_HAS(ErrorOf("targets: [{metric: acd.success_rate, compare: '=>', value: 1}]\n"),
@@ -93,7 +97,8 @@ TEST(Targets, ErrorsNameTheFileAndKeyPath) {
              "t.yaml: targets[0].over: expected samplers or");
   EXPECT_HAS(ErrorOf("targets: [{where: {colour: red}, metric: acd.success_rate, compare: '>=', "
                      "value: 1}]\n"),
-             "t.yaml: targets[0].where.colour: unknown label 'colour' (expected one of: world, family, robot, "
+             "t.yaml: targets[0].where.colour: unknown label 'colour' (expected one of: world, "
+             "family, robot, "
              "planner, budget, budget_type)");
   EXPECT_HAS(ErrorOf("targets: [{if: [{metric: acd.runs, compare: '>'}], metric: "
                      "acd.success_rate, compare: '>=', value: 1}]\n"),

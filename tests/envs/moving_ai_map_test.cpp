@@ -88,6 +88,10 @@ TEST(MovingAiMapTest, Errors) {
               HasSubstr("bad.map:7: unexpected end of file: expected 3 map rows, found 2"));
   EXPECT_THAT(error("type octile\nheight 1\nwidth 3\nmap\n...\n@@@\n"),
               HasSubstr("bad.map:6: unexpected text after the 1 map rows"));
+  // The largest header without its rows: an error, not 10 GB of cells (a reproducer for
+  // fuzz/fuzz_moving_ai_map, fuzz/corpus/moving_ai_map/regression-oom-huge-header.map).
+  EXPECT_THAT(error("type octile\nheight 100000\nwidth 100000\nmap\n"),
+              HasSubstr("bad.map:5: unexpected end of file: expected 100000 map rows, found 0"));
   EXPECT_THAT(error("type octile\nheight 1\nwidth 3\ncolour blue\n"),
               HasSubstr("bad.map:4: unknown header line 'colour blue'"));
   EXPECT_THAT(error("type octile\nheight 1\nwidth 3\n"),

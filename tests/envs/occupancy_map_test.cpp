@@ -163,6 +163,33 @@ TEST(OccupancyMapTest, ImageErrors) {
               HasSubstr("f.png: cannot read PNG: "));
 }
 
+// Headers that promise more pixels than the file holds are errors before any memory is taken
+// for them (found by fuzz/fuzz_gray_image and fuzz/fuzz_occupancy_map, which stopped on
+// multi-gigabyte allocations; fuzz/corpus/gray_image/regression-*).
+TEST(OccupancyMapTest, HugeImageHeadersAreTruncatedFiles) {
+  TempDir dir;
+  auto error = [&](const std::string& image_name, const std::string& image) {
+    dir.Write(image_name, image);
+    const std::string path =
+        dir.Write("map.yaml", "image: " + image_name + "\nresolution: 1\norigin: [0, 0, 0]\n");
+    return ErrorOf([&] { ReadOccupancyMap(path); });
+  };
+  EXPECT_THAT(error("a.pgm", std::string("P5 2 885888886 255\n\0\0\xff\xff", 24)),
+              HasSubstr("a.pgm: truncated PGM data: expected 1771777772 pixels"));
+  EXPECT_THAT(error("b.pgm", "P2 48 402515405 7 0\n"),
+              HasSubstr("b.pgm: truncated PGM data: expected 19320739440 pixels, found 1"));
+  // 65536 x 40000 grey pixels, 10 zero bytes of image data.
+  const std::string png(
+      "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x01\x00\x00"
+      "\x00\x00\x9c\x40\x08\x00\x00\x00\x00\xa2\x75\x79\x85\x00\x00\x00\x0b\x49\x44\x41"
+      "\x54\x78\x9c\x63\x60\x80\x01\x00\x00\x0a\x00\x01\x7f\x80\x74\x5e\x00\x00\x00\x00"
+      "\x49\x45\x4e\x44\xae\x42\x60\x82",
+      68);
+  EXPECT_THAT(error("c.png", png),
+              HasSubstr("c.png: cannot read PNG: 65536 x 40000 pixels cannot come from 68 bytes "
+                        "(truncated file?)"));
+}
+
 TEST(OccupancyMapTest, SixteenBitPgm) {
   TempDir dir;
   std::string pgm = "P5 2 1 65535\n";
