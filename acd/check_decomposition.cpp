@@ -53,7 +53,6 @@
 #include "acd/internal/box_sweep.h"
 #include "acd/internal/exact_predicates.h"
 #include "acd/internal/ring_locator.h"
-
 #include "base/format.h"
 
 namespace acdplan::acd {

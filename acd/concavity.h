@@ -26,12 +26,12 @@ struct HoleConcavity {
 
 /// Concavity of a polygon: per outer vertex, per hole, and the maximum with its witness.
 struct Concavity2d {
-  std::vector<double> outer;        ///< Per outer-ring vertex [units]; 0 on the convex hull.
-  std::vector<int> hull;            ///< ConvexHullIndices() of the outer ring.
+  std::vector<double> outer;         ///< Per outer-ring vertex [units]; 0 on the convex hull.
+  std::vector<int> hull;             ///< ConvexHullIndices() of the outer ring.
   std::vector<HoleConcavity> holes;  ///< Per hole.
-  double value = 0.0;               ///< Max over notches and holes; 0 iff the polygon is convex.
-  int witness_hole = -1;            ///< Hole holding the maximum, or -1 for the outer ring.
-  int witness_vertex = -1;          ///< Outer vertex (a notch) holding the maximum, or -1.
+  double value = 0.0;                ///< Max over notches and holes; 0 iff the polygon is convex.
+  int witness_hole = -1;             ///< Hole holding the maximum, or -1 for the outer ring.
+  int witness_vertex = -1;           ///< Outer vertex (a notch) holding the maximum, or -1.
 };
 
 /// Measures the concavity of `polygon` (prepared: outer CCW, holes CW). A notch is a vertex

@@ -21,8 +21,8 @@ struct Decompose2dOptions {
   /// the input's ReferenceRadius(), so the chosen cuts do not depend on the input's units (on
   /// nazca_monkey, radius 81.7, that unit is 0.82, close to the raw units s_c = 0.1 was tuned in).
   double score_concavity = 0.1;
-  double score_distance = 1.0;   ///< s_d of the diagonal score; > 0.
-  bool steiner_cuts = true;      ///< Let a cut end on an edge (a new vertex) when it scores best.
+  double score_distance = 1.0;  ///< s_d of the diagonal score; > 0.
+  bool steiner_cuts = true;     ///< Let a cut end on an edge (a new vertex) when it scores best.
 };
 
 /// Splits `polygon` (prepared by PreparePolygon()) into components whose concavity is at most

@@ -11,11 +11,11 @@ namespace acdplan::acd {
 
 /// A leaf of the decomposition: a tau-convex piece of the input.
 struct Component2d {
-  Polygon2d polygon;   ///< Boundary counter-clockwise; holes (clockwise) only while unresolved.
-  Ring2d hull;         ///< Convex hull of the boundary, counter-clockwise, no collinear vertices.
+  Polygon2d polygon;  ///< Boundary counter-clockwise; holes (clockwise) only while unresolved.
+  Ring2d hull;        ///< Convex hull of the boundary, counter-clockwise, no collinear vertices.
   Point2d centroid = Point2d::Zero();  ///< Area centroid of `polygon`.
   double concavity = 0.0;  ///< Concavity of `polygon` under the measure used [units]; 0 if convex.
-  int source = 0;      ///< Index of the input polygon this component came from.
+  int source = 0;          ///< Index of the input polygon this component came from.
 };
 
 /// A maximal segment shared by two leaf components: an opening between them.
@@ -32,22 +32,22 @@ struct Cut2d {
 /// A node of the hierarchy tree (Ch. III, Fig. 9(b)). Internal nodes keep their piece and the
 /// cut(s) that split it, so coarser levels of detail can be read back.
 struct HierarchyNode2d {
-  Polygon2d piece;            ///< The piece at this node.
-  double concavity = 0.0;     ///< Its concavity [units].
+  Polygon2d piece;         ///< The piece at this node.
+  double concavity = 0.0;  ///< Its concavity [units].
   /// At a leaf, the piece's most concave point; at an internal node, the feature its cut(s)
   /// resolved (the most concave point unless no valid cut started there).
   Point2d witness = Point2d::Zero();
-  std::vector<Cut2d> cuts;    ///< One cut (an outer notch) or two (a hole split at p, cw(p)).
-  int parent = -1;            ///< Index of the parent node; -1 at a root.
+  std::vector<Cut2d> cuts;     ///< One cut (an outer notch) or two (a hole split at p, cw(p)).
+  int parent = -1;             ///< Index of the parent node; -1 at a root.
   int children[2] = {-1, -1};  ///< Indices of the two children; -1 at a leaf.
-  int component = -1;         ///< Index into Decomposition2d::components at a leaf.
-  int depth = 0;              ///< 0 at a root.
+  int component = -1;          ///< Index into Decomposition2d::components at a leaf.
+  int depth = 0;               ///< 0 at a root.
 };
 
 /// Summary figures (DESIGN.md's decomposition JSON "stats").
 struct DecompositionStats2d {
-  int vertices = 0;          ///< Vertices of the (cleaned) input.
-  int notches = 0;           ///< Reflex vertices of the input (outer and hole boundaries).
+  int vertices = 0;  ///< Vertices of the (cleaned) input.
+  int notches = 0;   ///< Reflex vertices of the input (outer and hole boundaries).
   int components = 0;
   double max_concavity = 0.0;  ///< Largest component concavity [units].
   double convexity = 1.0;      ///< Sum of component areas / sum of their hull areas (Eqn. 4.4).

@@ -125,7 +125,8 @@ std::string DecompositionToSvg(const Decomposition2d& decomposition,
       << "\" stroke-linecap=\"round\">\n";
   for (const Opening2d& opening : decomposition.openings) {
     svg << "<line x1=\"" << canvas.X(opening.a.x()) << "\" y1=\"" << canvas.Y(opening.a.y())
-        << "\" x2=\"" << canvas.X(opening.b.x()) << "\" y2=\"" << canvas.Y(opening.b.y()) << "\"/>\n";
+        << "\" x2=\"" << canvas.X(opening.b.x()) << "\" y2=\"" << canvas.Y(opening.b.y())
+        << "\"/>\n";
   }
   svg << "</g>\n";
 
@@ -144,8 +145,8 @@ std::string DecompositionToSvg(const Decomposition2d& decomposition,
     if (root < 0 || root >= node_count) continue;
     const HierarchyNode2d& node = decomposition.tree[root];
     if (node.children[0] < 0) continue;
-    svg << "<circle class=\"most-concave-notch\" cx=\"" << canvas.X(node.witness.x())
-        << "\" cy=\"" << canvas.Y(node.witness.y()) << "\" r=\"" << N::Number(root_radius)
+    svg << "<circle class=\"most-concave-notch\" cx=\"" << canvas.X(node.witness.x()) << "\" cy=\""
+        << canvas.Y(node.witness.y()) << "\" r=\"" << N::Number(root_radius)
         << "\" fill=\"none\" stroke=\"#d01010\" stroke-width=\"" << N::Number(2.5 * thin)
         << "\"><title>most concave notch: concavity " << Short(node.concavity)
         << "</title></circle>\n";

@@ -9,8 +9,8 @@ namespace acdplan::acd {
 
 /// Labels that go into the JSON and the picture's caption.
 struct DecompositionLabels {
-  std::string input;       ///< Input file name as given.
-  double tau_rel = -1.0;   ///< tau relative to ReferenceRadius(); < 0 when tau was absolute.
+  std::string input;      ///< Input file name as given.
+  double tau_rel = -1.0;  ///< tau relative to ReferenceRadius(); < 0 when tau was absolute.
 };
 
 /// The decomposition JSON ("format": "acdplan.decomposition2d/1"), exactly as in DESIGN.md.

@@ -6,8 +6,8 @@
 #include <string_view>
 #include <vector>
 
-#include "base/input_error.h"
 #include "acd/internal/text_parsing.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "base/format.h"
-#include "base/input_error.h"
 #include "acd/internal/text_parsing.h"
 #include "acd/prepare_polygon.h"
+#include "base/format.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {
@@ -221,8 +221,7 @@ RepairedPolygon RepairPolygon(const Polygon2d& raw, const std::string& where) {
   }
   result.changes.push_back(where + ": repaired: " + rule + ": rebuilt by the even-odd rule into " +
                            std::to_string(result.polygons.size()) + " polygon(s) with " +
-                           std::to_string(holes) + " hole(s), area " +
-                           FormatSignificant(area, 15));
+                           std::to_string(holes) + " hole(s), area " + FormatSignificant(area, 15));
   return result;
 }
 

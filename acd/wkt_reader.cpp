@@ -4,8 +4,8 @@
 #include <iterator>
 #include <string>
 
-#include "base/input_error.h"
 #include "acd/internal/text_parsing.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {

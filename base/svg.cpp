@@ -78,7 +78,8 @@ std::string ComponentFill(int k) {
 
 SvgCanvas::SvgCanvas(const Eigen::AlignedBox2d& bounds, const SvgCanvasOptions& options)
     : bounds_(bounds), options_(options) {
-  if (bounds_.isEmpty()) bounds_ = Eigen::AlignedBox2d(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero());
+  if (bounds_.isEmpty())
+    bounds_ = Eigen::AlignedBox2d(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero());
   const double size = bounds_.sizes().maxCoeff();
   scale_ = size > 0.0 ? options_.pixels / size : 1.0;
 }
@@ -118,8 +119,7 @@ std::string SvgCanvas::Finish(const std::vector<std::string>& caption,
                         (caption.empty() ? 0.0 : margin / 2);
   std::ostringstream svg;
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << Number(width) << "\" height=\""
-      << Number(height) << "\" viewBox=\"0 0 " << Number(width) << " " << Number(height)
-      << "\">\n";
+      << Number(height) << "\" viewBox=\"0 0 " << Number(width) << " " << Number(height) << "\">\n";
   if (!title.empty()) svg << "<title>" << EscapeXml(title) << "</title>\n";
   svg << "<rect width=\"" << Number(width) << "\" height=\"" << Number(height)
       << "\" fill=\"#ffffff\"/>\n"

@@ -70,8 +70,8 @@ double YamlFile::Number(const YAML::Node& node, const std::string& key, const st
   return value;
 }
 
-long long YamlFile::Integer(const YAML::Node& node, const std::string& key,
-                            const std::string& rule, long long min) const {
+long long YamlFile::Integer(const YAML::Node& node, const std::string& key, const std::string& rule,
+                            long long min) const {
   long long value = 0;
   if (!IsScalar(node) || !YAML::convert<long long>::decode(node, value) || value < min) {
     Fail(key, "expected " + rule + ", got " + Shown(node));
@@ -100,14 +100,13 @@ std::vector<double> YamlFile::Numbers(const YAML::Node& node, const std::string&
   return values;
 }
 
-std::vector<double> YamlFile::Numbers(const YAML::Node& node, const std::string& key,
-                                      size_t count, const std::string& what) const {
+std::vector<double> YamlFile::Numbers(const YAML::Node& node, const std::string& key, size_t count,
+                                      const std::string& what) const {
   std::vector<double> values;
   bool ok = IsSequence(node) && node.size() == count;
   for (size_t i = 0; ok && i < count; ++i) {
     double value = 0.0;
-    ok = IsScalar(node[i]) && YAML::convert<double>::decode(node[i], value) &&
-         std::isfinite(value);
+    ok = IsScalar(node[i]) && YAML::convert<double>::decode(node[i], value) && std::isfinite(value);
     values.push_back(value);
   }
   if (!ok) {

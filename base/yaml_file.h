@@ -3,11 +3,11 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "base/input_error.h"
-
 #include <initializer_list>
 #include <string>
 #include <vector>
+
+#include "base/input_error.h"
 
 namespace acdplan {
 
@@ -44,7 +44,8 @@ class YamlFile {
   /// A finite number for which `accept` holds (any finite number when null); else
   /// "expected <rule>, got <node>".
   double Number(const YAML::Node& node, const std::string& key,
-                const std::string& rule = "a finite number", bool (*accept)(double) = nullptr) const;
+                const std::string& rule = "a finite number",
+                bool (*accept)(double) = nullptr) const;
   /// An integer >= `min`; else "expected <rule>, got <node>".
   long long Integer(const YAML::Node& node, const std::string& key, const std::string& rule,
                     long long min) const;

@@ -10,16 +10,15 @@
 #include <ostream>
 #include <random>
 
+#include "base/format.h"
 #include "base/input_error.h"
+#include "base/json_number.h"
+#include "base/random.h"
+#include "base/stopwatch.h"
 #include "collision/collision_world.h"
 #include "collision/point_locator.h"
 #include "envs/generators.h"
 #include "envs/mesh_loader.h"
-
-#include "base/format.h"
-#include "base/json_number.h"
-#include "base/random.h"
-#include "base/stopwatch.h"
 
 namespace acdplan::bench {
 namespace {
@@ -34,7 +33,6 @@ using collision::PointLocator;
 using collision::TriangleCount;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 
 template <class Pose>
 void TimeModes(const CollisionWorld& world, const std::vector<Pose>& poses,
@@ -125,7 +123,9 @@ std::string Fixed(double value, int decimals) {
   return std::isnan(value) ? "n/a" : FormatFixed(value, decimals);
 }
 
-std::string Percent(double rate) { return std::isnan(rate) ? "n/a" : FormatFixed(100 * rate, 2) + "%"; }
+std::string Percent(double rate) {
+  return std::isnan(rate) ? "n/a" : FormatFixed(100 * rate, 2) + "%";
+}
 
 }  // namespace
 
@@ -272,14 +272,13 @@ std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows,
       "| hulls FP rate | mismatches | exact pts/s | hull pts/s | (x exact) | hull error |\n"
       "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const BenchCollisionRow& r : rows) {
-    out += "| " + r.world + " | " + std::to_string(r.hulls) + " | " +
-           Fixed(r.bvh_checks_per_s, 0) + " | " + Fixed(r.hulls_checks_per_s, 0) +
-           " | " + Fixed(r.hulls_checks_per_s / r.bvh_checks_per_s, 2) + " | " +
+    out += "| " + r.world + " | " + std::to_string(r.hulls) + " | " + Fixed(r.bvh_checks_per_s, 0) +
+           " | " + Fixed(r.hulls_checks_per_s, 0) + " | " +
+           Fixed(r.hulls_checks_per_s / r.bvh_checks_per_s, 2) + " | " +
            Fixed(r.hulls_exact_checks_per_s, 0) + " | " +
            Fixed(r.hulls_exact_checks_per_s / r.bvh_checks_per_s, 2) + " | " +
-           Percent(r.hulls_false_positive_rate) + " | " +
-           std::to_string(r.hulls_exact_mismatches) + " | " +
-           Fixed(r.locate_exact_points_per_s, 0) + " | " +
+           Percent(r.hulls_false_positive_rate) + " | " + std::to_string(r.hulls_exact_mismatches) +
+           " | " + Fixed(r.locate_exact_points_per_s, 0) + " | " +
            Fixed(r.locate_hulls_points_per_s, 0) + " | " +
            Fixed(r.locate_hulls_points_per_s / r.locate_exact_points_per_s, 1) + " | " +
            Percent(r.locate_hulls_error_rate) + " |\n";

@@ -24,7 +24,7 @@ void MergeBenchRecords(const std::vector<std::string>& dirs, BenchManifest* mani
     } else {
       auto differ = [&](const std::string& what, const std::string& a, const std::string& b) {
         throw InputError(manifest_path + ": " + what + ": '" + b + "' differs from '" + a +
-                              "' in " + (std::filesystem::path(dirs[0]) / "bench.json").string());
+                         "' in " + (std::filesystem::path(dirs[0]) / "bench.json").string());
       };
       if (m.name != manifest->name) differ("name", manifest->name, m.name);
       if (m.seed != manifest->seed) {
@@ -55,9 +55,9 @@ void MergeBenchRecords(const std::vector<std::string>& dirs, BenchManifest* mani
       auto it = seen.find(key);
       if (it != seen.end()) {
         throw InputError(runs_path + ": run " + std::to_string(r.run) + " of case " +
-                              std::to_string(r.case_index) + " (" + r.what.world + "/" +
-                              r.what.robot + "/" + r.what.sampler + "/" + r.what.planner + "/" +
-                              r.what.budget + ") is also in " + it->second);
+                         std::to_string(r.case_index) + " (" + r.what.world + "/" + r.what.robot +
+                         "/" + r.what.sampler + "/" + r.what.planner + "/" + r.what.budget +
+                         ") is also in " + it->second);
       }
       seen.emplace(key, runs_path);
       records->push_back(r);

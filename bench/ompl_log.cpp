@@ -86,7 +86,7 @@ std::string BenchOmplLog(const BenchManifest& m, const std::vector<BenchRecord>&
     for (const BenchRecord* r : rs) {
       const bool finished = r->status == RunStatus::kSolved || r->status == RunStatus::kUnsolved;
       // OMPL's PlannerStatus: 4 timeout (budget used up), 6 exact solution, 7 crash, 8 abort.
-      const int status = r->solved                             ? 6
+      const int status = r->solved                           ? 6
                          : r->status == RunStatus::kUnsolved ? 4
                          : r->status == RunStatus::kCrashed  ? 7
                                                              : 8;

@@ -35,7 +35,7 @@ void WriteBenchOutputs(const std::string& dir, const BenchManifest& manifest,
   }
   for (const std::string& world : worlds) {
     WriteFileAtomically((d / BenchOmplLogName(world)).string(),
-                             BenchOmplLog(manifest, records, world));
+                        BenchOmplLog(manifest, records, world));
   }
   // Logs of worlds this run does not have (an earlier run into the same folder) would be
   // mistaken for its results.

@@ -154,7 +154,7 @@ std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path) {
     const std::string where = path + ":" + std::to_string(number);
     if (f.size() != kColumnCount) {
       throw InputError(where + ": expected " + std::to_string(kColumnCount) + " fields, got " +
-                            std::to_string(f.size()));
+                       std::to_string(f.size()));
     }
     size_t column = 0;
     try {
@@ -186,7 +186,7 @@ std::vector<BenchRecord> ReadBenchRecordsCsv(const std::string& path) {
       records.push_back(r);
     } catch (const std::exception&) {
       throw InputError(where + ": column " + kColumns[column] + ": cannot read '" + f[column] +
-                            "'");
+                       "'");
     }
   }
   return records;

@@ -17,12 +17,11 @@
 #include <sstream>
 
 #include "base/input_error.h"
+#include "base/stopwatch.h"
 #include "collision/collision_mode.h"
 #include "collision/collision_world.h"
 #include "collision/obstacle_set.h"
 #include "planning/plan_scenario.h"
-
-#include "base/stopwatch.h"
 
 namespace acdplan::bench {
 
@@ -92,8 +91,8 @@ void CheckQueries(const BenchSpec& spec) {
       const std::vector<double> q =
           Fitted(which[0] == 's' ? world.scenario.start : world.scenario.goal, robot.robot);
       if (!Fits(check, robot.robot, bounds, Pose(q))) {
-        throw InputError(spec.path + ": worlds: " + world.name + ": robot " + robot.name +
-                              ": " + which + ": the robot is in collision or out of bounds there");
+        throw InputError(spec.path + ": worlds: " + world.name + ": robot " + robot.name + ": " +
+                         which + ": the robot is in collision or out of bounds there");
       }
     }
   }
@@ -288,7 +287,7 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
         r.collision_checks = checks;
       } else {
         r.status = WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM ? RunStatus::kTimeout
-                                                                       : RunStatus::kCrashed;
+                                                                      : RunStatus::kCrashed;
         if (options.progress) {
           *options.progress << (tty ? "\n" : "") << "bench: run " << r.run << " of " << c.Key(spec)
                             << " (seed " << r.seed << ") " << ToString(r.status)

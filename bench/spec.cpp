@@ -37,8 +37,8 @@ void ReadAcd(const YamlFile& file, const YAML::Node& node, const std::string& ke
   file.CheckKeys(node, key, {"tau_diag", "tau_rel", "measure"});
   s->tau_diag = planning::ReadTauDiag(file, node, key, s->tau_diag, &s->warnings);
   if (node["measure"]) {
-    s->measure = file.Parsed(node["measure"], YamlFile::Child(key, "measure"),
-                          acd::ParseConcavityMeasure);
+    s->measure =
+        file.Parsed(node["measure"], YamlFile::Child(key, "measure"), acd::ParseConcavityMeasure);
   }
 }
 
@@ -118,9 +118,8 @@ void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& 
   if (node["collision"]) {
     file.CheckKeys(node["collision"], child("collision"), {"mode"});
     if (node["collision"]["mode"]) {
-      world.scenario.collision_mode = file.Parsed(node["collision"]["mode"],
-                                               child("collision") + ".mode",
-                                               collision::ParseCollisionMode);
+      world.scenario.collision_mode = file.Parsed(
+          node["collision"]["mode"], child("collision") + ".mode", collision::ParseCollisionMode);
     }
   }
   if (node["name"]) world.name = file.String(node["name"], child("name"));

@@ -101,9 +101,9 @@ struct BenchSpec {
 
 /// Reads and validates a benchmark file; loads (generates) its worlds.
 /// @throws InputError "<file>: <key path>: <rule>", e.g. "b.yaml: cases[0].planners[1]:
-///         unknown planner 'PRN' (expected one of: ...)", for syntax errors (with the line), unknown keys,
-///         wrong types, out-of-range values, unknown or duplicate names, a sample budget with a
-///         planner other than PRM / PRMstar, and errors of a world or scenario file.
+///         unknown planner 'PRN' (expected one of: ...)", for syntax errors (with the line),
+///         unknown keys, wrong types, out-of-range values, unknown or duplicate names, a sample
+///         budget with a planner other than PRM / PRMstar, and errors of a world or scenario file.
 BenchSpec LoadBenchSpec(const std::string& path);
 
 /// Which part of the runs to do: runs k (global index) with k % count == index - 1.

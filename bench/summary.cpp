@@ -83,7 +83,6 @@ std::vector<Group> Groups(const std::vector<BenchCaseSummary>& cases) {
   return groups;
 }
 
-
 std::string Shards(const BenchManifest& m) {
   std::string text;
   for (const std::string& s : m.shards) text += (text.empty() ? "" : ", ") + s;
@@ -140,8 +139,8 @@ std::string CheckPlanningMetric(const std::string& metric) {
     const std::string planner = sampler.substr(0, slash);
     const std::vector<std::string> planners = planning::PlannerNames();
     if (std::find(planners.begin(), planners.end(), planner) == planners.end()) {
-      return "unknown planner '" + planner + "' in '" + metric + "' (expected one of: " + JoinNames(planners) +
-             ")";
+      return "unknown planner '" + planner + "' in '" + metric +
+             "' (expected one of: " + JoinNames(planners) + ")";
     }
     sampler = sampler.substr(slash + 1);
   }
@@ -149,8 +148,8 @@ std::string CheckPlanningMetric(const std::string& metric) {
   samplers.push_back("best_other");
   samplers.push_back("fastest_other");
   if (std::find(samplers.begin(), samplers.end(), sampler) == samplers.end()) {
-    return "unknown sampler '" + sampler + "' in '" + metric + "' (expected one of: " + JoinNames(samplers) +
-           ")";
+    return "unknown sampler '" + sampler + "' in '" + metric +
+           "' (expected one of: " + JoinNames(samplers) + ")";
   }
   return "";
 }

@@ -20,11 +20,11 @@
 // not have makes the target not apply to it; a metric the row has but could not measure
 // (NaN, e.g. a median time without a solved run) misses.
 
-#include "base/yaml_file.h"
-
 #include <map>
 #include <string>
 #include <vector>
+
+#include "base/yaml_file.h"
 
 namespace acdplan::bench {
 
@@ -70,8 +70,8 @@ struct TargetVocabulary {
 
 /// Reads the `targets:` list at `node` (key path `key`, e.g. "targets") of `file`.
 /// @throws InputError "<file>: <key path>: <rule>", e.g. "b.yaml: targets[1].compare:
-///         unknown comparison '=>' (expected one of: <, <=, >, >=, ==, !=)", for unknown keys, missing or
-///         malformed fields, unknown labels or metrics.
+///         unknown comparison '=>' (expected one of: <, <=, >, >=, ==, !=)", for unknown keys,
+///         missing or malformed fields, unknown labels or metrics.
 std::vector<Target> ReadTargets(const YamlFile& file, const YAML::Node& node,
                                 const std::string& key, const TargetVocabulary& vocabulary);
 

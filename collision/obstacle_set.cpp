@@ -13,11 +13,11 @@ ObstacleSet BuildObstacleSet(const envs::Workspace2d& workspace,
                              const ObstacleSetOptions& options) {
   if (!(options.tau >= 0) || !std::isfinite(options.tau)) {
     throw InputError("BuildObstacleSet(): tau must be finite and >= 0, got " +
-                          std::to_string(options.tau));
+                     std::to_string(options.tau));
   }
   if (!(options.extrusion_height > 0) || !std::isfinite(options.extrusion_height)) {
     throw InputError("BuildObstacleSet(): extrusion_height must be finite and > 0, got " +
-                          std::to_string(options.extrusion_height));
+                     std::to_string(options.extrusion_height));
   }
   const double h = options.extrusion_height;
   ObstacleSet set;

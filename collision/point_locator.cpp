@@ -3,7 +3,6 @@
 #include <optional>
 
 #include "base/enum_names.h"
-
 #include "collision/internal/hull_tree.h"
 #include "collision/internal/solid_locator.h"
 

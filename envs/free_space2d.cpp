@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "base/input_error.h"
 #include "acd/prepare_polygon.h"
+#include "base/input_error.h"
 
 namespace acdplan::envs {
 namespace {
@@ -124,7 +124,7 @@ std::vector<acd::Polygon2d> FreeSpace2d(const Workspace2d& workspace,
   const Workspace2d prepared = PrepareWorkspace2d(workspace, "FreeSpace2d()");
   if (!std::isfinite(options.pinch_gap) || !(options.pinch_gap > 0.0)) {
     throw InputError("FreeSpace2d(): pinch_gap must be finite and > 0, got " +
-                          std::to_string(options.pinch_gap));
+                     std::to_string(options.pinch_gap));
   }
   const double gap = options.pinch_gap * prepared.bounds.diagonal().norm();
 

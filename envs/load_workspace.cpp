@@ -4,8 +4,8 @@
 #include <cctype>
 #include <filesystem>
 
-#include "base/input_error.h"
 #include "acd/read_polygons.h"
+#include "base/input_error.h"
 #include "base/yaml_file.h"
 #include "envs/mesh_loader.h"
 #include "envs/moving_ai_map.h"
@@ -66,7 +66,7 @@ Workspace2d LoadWorkspace2d(const std::string& path, const acd::ReadPolygonsOpti
     return workspace;
   }
   throw InputError(path + ": unknown world file extension '" + extension +
-                        "' (expected .yaml, .yml, .map, .poly, .wkt, .geojson or .json)");
+                   "' (expected .yaml, .yml, .map, .poly, .wkt, .geojson or .json)");
 }
 
 World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygons) {

@@ -19,14 +19,13 @@ namespace acdplan::envs {
 /// files it names) are read: strictly by default; with `repair`, invalid ones are made valid
 /// (acd::RepairPolygon) and each change is a line of `notes`.
 /// @throws InputError from the loader, or for an unknown extension.
-Workspace2d LoadWorkspace2d(const std::string& path,
-                            const acd::ReadPolygonsOptions& polygons = {});
+Workspace2d LoadWorkspace2d(const std::string& path, const acd::ReadPolygonsOptions& polygons = {});
 
 /// A world of either dimension, and what kind of file it came from.
 struct World {
-  int dimension = 2;          ///< 2: `workspace2d` holds it; 3: `workspace3d`.
-  std::string kind;           ///< "workspace", "occupancy map", "Moving AI map",
-                              ///< "polygon file", "3D workspace" or "mesh".
+  int dimension = 2;  ///< 2: `workspace2d` holds it; 3: `workspace3d`.
+  std::string kind;   ///< "workspace", "occupancy map", "Moving AI map",
+                      ///< "polygon file", "3D workspace" or "mesh".
   Workspace2d workspace2d;
   Workspace3d workspace3d;
 };

@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "base/input_error.h"
-#include "envs/internal/gray_image.h"
 #include "base/yaml_file.h"
+#include "envs/internal/gray_image.h"
 
 namespace acdplan::envs {
 
@@ -22,12 +22,10 @@ OccupancyGrid ReadOccupancyMap(const std::string& yaml_path, const OccupancyMapO
   const std::string image_name = file.String(root["image"], "image");
   const double resolution = file.Number(root["resolution"], "resolution");
   if (!(resolution > 0.0)) file.Fail("resolution", "expected a number > 0");
-  const std::vector<double> origin =
-      file.Numbers(root["origin"], "origin", 3, "[x, y, yaw]");
+  const std::vector<double> origin = file.Numbers(root["origin"], "origin", 3, "[x, y, yaw]");
   if (origin[2] != 0.0) file.Fail("origin", "yaw must be 0 (rotated maps are not supported)");
   const double occupied_thresh =
-      root["occupied_thresh"] ? file.Number(root["occupied_thresh"], "occupied_thresh")
-                              : 0.65;
+      root["occupied_thresh"] ? file.Number(root["occupied_thresh"], "occupied_thresh") : 0.65;
   const double free_thresh =
       root["free_thresh"] ? file.Number(root["free_thresh"], "free_thresh") : 0.196;
   if (occupied_thresh < 0.0 || occupied_thresh > 1.0) {

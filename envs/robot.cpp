@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "acd/prepare_polygon.h"
 #include "base/enum_names.h"
 #include "base/input_error.h"
-#include "acd/prepare_polygon.h"
 
 namespace acdplan::envs {
 
@@ -13,8 +13,7 @@ Robot Robot::Point() { return Robot{}; }
 
 Robot Robot::Disc(double radius) {
   if (!std::isfinite(radius) || !(radius > 0.0)) {
-    throw InputError("Robot::Disc(): radius must be finite and > 0, got " +
-                          std::to_string(radius));
+    throw InputError("Robot::Disc(): radius must be finite and > 0, got " + std::to_string(radius));
   }
   Robot robot;
   robot.shape = RobotShape::kDisc;
@@ -67,7 +66,9 @@ constexpr std::array<EnumName<RobotShape>, 4> kShapes = {{
 
 std::string ToString(RobotShape shape) { return NameOf(kShapes, shape); }
 
-RobotShape ParseRobotShape(const std::string& name) { return ValueOf(kShapes, name, "robot shape"); }
+RobotShape ParseRobotShape(const std::string& name) {
+  return ValueOf(kShapes, name, "robot shape");
+}
 
 acd::Polygon2d Transformed(const acd::Polygon2d& polygon, const Eigen::Isometry2d& pose) {
   auto move = [&pose](const acd::Ring2d& ring) {

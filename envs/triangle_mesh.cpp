@@ -23,8 +23,7 @@ void CheckTriangleMesh(const TriangleMesh& mesh, const std::string& where) {
       const int index = mesh.triangles(f, k);
       if (index < 0 || index >= n) {
         throw InputError(where + ": triangle " + std::to_string(f) + ": index " +
-                              std::to_string(index) + " out of range [0, " + std::to_string(n) +
-                              ")");
+                         std::to_string(index) + " out of range [0, " + std::to_string(n) + ")");
       }
     }
   }

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "base/input_error.h"
 #include "acd/prepare_polygon.h"
+#include "base/input_error.h"
 
 namespace acdplan::envs {
 

@@ -34,7 +34,8 @@ acd::Ring2d ReadRing(const YamlFile& file, const YAML::Node& node, const std::st
 std::string FormatRing(const acd::Ring2d& ring) {
   std::string text = "[";
   for (size_t i = 0; i < ring.size(); ++i) {
-    text += (i ? ", [" : "[") + FormatShortest(ring[i].x()) + ", " + FormatShortest(ring[i].y()) + "]";
+    text +=
+        (i ? ", [" : "[") + FormatShortest(ring[i].x()) + ", " + FormatShortest(ring[i].y()) + "]";
   }
   return text + "]";
 }
@@ -50,7 +51,7 @@ std::string Quoted(const std::string& text) {
 
 std::string Description(const YamlFile& file) {
   return file.root()["description"] ? file.String(file.root()["description"], "description")
-                                  : std::string();
+                                    : std::string();
 }
 
 const YAML::Node Obstacles(const YamlFile& file) {
@@ -92,7 +93,8 @@ Workspace2d LoadWorkspace2dYaml(const std::string& path, const acd::ReadPolygons
     if (const YAML::Node holes = entry["holes"]) {
       if (!holes.IsSequence()) file.Fail(YamlFile::Child(key, "holes"), "expected a list of rings");
       for (size_t h = 0; h < holes.size(); ++h) {
-        polygon.holes.push_back(ReadRing(file, holes[h], YamlFile::Item(YamlFile::Child(key, "holes"), h)));
+        polygon.holes.push_back(
+            ReadRing(file, holes[h], YamlFile::Item(YamlFile::Child(key, "holes"), h)));
       }
     }
     // Rings may touch at points (OGC-valid): the obstacle may become several polygons.
@@ -135,8 +137,8 @@ Workspace3d LoadWorkspace3dYaml(const std::string& path) {
   const YamlFile file = YamlFile::Load(path);
   file.CheckKeys(file.root(), "", {"description", "bounds", "obstacles"});
   if (!file.root()["bounds"]) file.Fail("bounds", "missing required key");
-  const std::vector<double> b = file.Numbers(file.root()["bounds"], "bounds", 6,
-                                                  "[xmin, ymin, zmin, xmax, ymax, zmax]");
+  const std::vector<double> b =
+      file.Numbers(file.root()["bounds"], "bounds", 6, "[xmin, ymin, zmin, xmax, ymax, zmax]");
   if (!(b[0] < b[3]) || !(b[1] < b[4]) || !(b[2] < b[5])) {
     file.Fail("bounds", "expected xmin < xmax, ymin < ymax and zmin < zmax");
   }

@@ -6,9 +6,9 @@ namespace acdplan::envs {
 
 WorldSvg::WorldSvg(const Eigen::AlignedBox2d& bounds) : canvas_(bounds) {
   const Eigen::Vector2d sizes = bounds.sizes() * canvas_.scale();
-  canvas_.Add("<rect x=\"" + X(bounds.min().x()) + "\" y=\"" + Y(bounds.max().y()) +
-              "\" width=\"" + SvgCanvas::Number(sizes.x()) + "\" height=\"" +
-              SvgCanvas::Number(sizes.y()) + "\" fill=\"white\" stroke=\"black\"/>\n");
+  canvas_.Add("<rect x=\"" + X(bounds.min().x()) + "\" y=\"" + Y(bounds.max().y()) + "\" width=\"" +
+              SvgCanvas::Number(sizes.x()) + "\" height=\"" + SvgCanvas::Number(sizes.y()) +
+              "\" fill=\"white\" stroke=\"black\"/>\n");
 }
 
 std::string WorldSvg::PathData(const acd::Polygon2d& polygon) const {

@@ -6,8 +6,8 @@
 
 namespace acdplan::planning {
 
-AcdPrm::AcdPrm(const ompl::base::SpaceInformationPtr& si,
-               const acd::Decomposition2d& decomposition, bool star, std::uint64_t seed)
+AcdPrm::AcdPrm(const ompl::base::SpaceInformationPtr& si, const acd::Decomposition2d& decomposition,
+               bool star, std::uint64_t seed)
     : PRM(si, star),
       locator_(decomposition),
       adjacent_(acd::ComponentGraph(decomposition)),

@@ -1,17 +1,16 @@
 #pragma once
 // PRM_ACD: OMPL's PRM with the roadmap connections of dissertation Algorithm 10.
 
-#include <Eigen/Geometry>
 #include <ompl/geometric/planners/prm/PRM.h>
 
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <functional>
 #include <vector>
 
-#include "base/random.h"
-
 #include "acd/component_locator2d.h"
 #include "acd/decomposition2d.h"
+#include "base/random.h"
 
 namespace acdplan::planning {
 

@@ -25,7 +25,7 @@ std::string ToString(AcdOrientation orientation) { return NameOf(kOrientations, 
 void CheckAcdSamplerOptions(const AcdSamplerOptions& o) {
   auto fail = [](const std::string& field, const std::string& rule, double value) {
     throw InputError("AcdSamplerOptions: " + field + ": expected " + rule + ", got " +
-                          std::to_string(value));
+                     std::to_string(value));
   };
   if (!(o.uniform_share >= 0 && o.uniform_share <= 1)) {
     fail("uniform_share", "a number in [0, 1]", o.uniform_share);

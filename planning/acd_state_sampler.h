@@ -3,12 +3,13 @@
 // OMPL state sampler, without validity checks -- for the planners that draw from the state
 // space's sampler rather than a valid-state sampler (RRT, RRTConnect, RRT*, LazyPRM, ...).
 
+#include <ompl/base/StateSampler.h>
+
 #include <cstdint>
 #include <memory>
-#include <ompl/base/StateSampler.h>
-#include "base/random.h"
 
 #include "acd/decomposition2d.h"
+#include "base/random.h"
 #include "planning/acd_sampler_options.h"
 
 namespace acdplan::planning {

@@ -3,9 +3,10 @@
 // valid-state sampler -- the robot placed around ACD component centroids and openings, kept
 // if collision free.
 
+#include <ompl/base/ValidStateSampler.h>
+
 #include <cstdint>
 #include <memory>
-#include <ompl/base/ValidStateSampler.h>
 
 #include "acd/decomposition2d.h"
 #include "planning/acd_sampler_options.h"

@@ -4,8 +4,7 @@
 
 namespace acdplan::planning {
 
-CountingValidityChecker::CountingValidityChecker(ompl::base::SpaceInformation* si,
-                                                 Predicate valid)
+CountingValidityChecker::CountingValidityChecker(ompl::base::SpaceInformation* si, Predicate valid)
     : ompl::base::StateValidityChecker(si), valid_(std::move(valid)) {}
 
 bool CountingValidityChecker::isValid(const ompl::base::State* state) const {

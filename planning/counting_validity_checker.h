@@ -1,10 +1,11 @@
 #pragma once
 // A state validity checker that counts its calls (the "collision checks" of every report).
 
+#include <ompl/base/StateValidityChecker.h>
+
 #include <atomic>
 #include <cstdint>
 #include <functional>
-#include <ompl/base/StateValidityChecker.h>
 
 namespace acdplan::planning {
 

@@ -1,11 +1,12 @@
 #include "planning/install_acd_samplers.h"
 
-#include <atomic>
 #include <ompl/base/SpaceInformation.h>
 
+#include <atomic>
+
+#include "base/random.h"
 #include "planning/acd_state_sampler.h"
 #include "planning/acd_valid_state_sampler.h"
-#include "base/random.h"
 #include "planning/internal/acd_targets.h"
 #include "planning/internal/space_access.h"
 
@@ -22,14 +23,13 @@ void InstallTargets(const std::shared_ptr<ompl::base::SpaceInformation>& si,
   auto counter = std::make_shared<std::atomic<std::uint64_t>>(0);
   si->getStateSpace()->setStateSamplerAllocator(
       [targets, seed, counter](const ompl::base::StateSpace* space) {
-        return std::make_shared<AcdStateSampler>(space, targets,
-                                                 DeriveSeed(seed, (*counter)++));
+        return std::make_shared<AcdStateSampler>(space, targets, DeriveSeed(seed, (*counter)++));
       });
   if (valid_sampler) {
     si->setValidStateSamplerAllocator(
         [targets, seed, counter, attempts](const ompl::base::SpaceInformation* info) {
-          return std::make_shared<AcdValidStateSampler>(
-              info, targets, DeriveSeed(seed, (*counter)++), attempts);
+          return std::make_shared<AcdValidStateSampler>(info, targets,
+                                                        DeriveSeed(seed, (*counter)++), attempts);
         });
   }
 }

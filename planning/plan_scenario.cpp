@@ -1,9 +1,5 @@
 #include "planning/plan_scenario.h"
 
-#include <chrono>
-#include <cmath>
-#include <map>
-#include <nlohmann/json.hpp>
 #include <ompl/base/Planner.h>
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/ProblemDefinition.h>
@@ -14,16 +10,21 @@
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "acd/decompose2d.h"
+#include "base/format.h"
 #include "base/input_error.h"
+#include "base/stopwatch.h"
 #include "collision/collision_mode.h"
 #include "collision/collision_world.h"
 #include "collision/obstacle_set.h"
 #include "envs/free_space2d.h"
-#include "base/format.h"
-#include "base/stopwatch.h"
 #include "envs/world_svg.h"
 #include "planning/counting_validity_checker.h"
 #include "planning/registry.h"
@@ -144,7 +145,8 @@ PlanResult PlanScenario(const Scenario& scenario) {
   } else {
     auto pdef = std::make_shared<ob::ProblemDefinition>(si);
     pdef->setStartAndGoalStates(start, goal);
-    ob::PlannerPtr planner = MakePlanner(scenario.planner, si, &result.decomposition, scenario.seed);
+    ob::PlannerPtr planner =
+        MakePlanner(scenario.planner, si, &result.decomposition, scenario.seed);
     planner->setProblemDefinition(pdef);
     planner->setup();
     const ob::PlannerStatus status = planner->solve(scenario.time_limit);
@@ -167,7 +169,8 @@ PlanResult PlanScenario(const Scenario& scenario) {
       result.vertices.push_back(reals);
       std::vector<unsigned int> out;
       data.getEdges(i, out);
-      for (unsigned int j : out) result.edges.emplace_back(static_cast<int>(i), static_cast<int>(j));
+      for (unsigned int j : out)
+        result.edges.emplace_back(static_cast<int>(i), static_cast<int>(j));
     }
   }
   result.collision_checks = checker->checks();
@@ -242,11 +245,11 @@ std::string PlanResultToSvg(const Scenario& scenario, const PlanResult& result) 
   robot_at(scenario.goal, "#862e9c");
   svg << "<circle id=\"start\" cx=\"" << f.X(scenario.start[0]) << "\" cy=\""
       << f.Y(scenario.start[1]) << "\" r=\"6\" fill=\"#2b8a3e\"/>\n";
-  svg << "<circle id=\"goal\" cx=\"" << f.X(scenario.goal[0]) << "\" cy=\""
-      << f.Y(scenario.goal[1]) << "\" r=\"6\" fill=\"#862e9c\"/>\n";
+  svg << "<circle id=\"goal\" cx=\"" << f.X(scenario.goal[0]) << "\" cy=\"" << f.Y(scenario.goal[1])
+      << "\" r=\"6\" fill=\"#862e9c\"/>\n";
   f.Add(svg.str());
-  return f.Finish(ToString(result.sampler) + " + " + ToString(result.planner) + ", " + result.budget + ": " +
-                  (result.solved ? "solved" : "not solved") + " (" +
+  return f.Finish(ToString(result.sampler) + " + " + ToString(result.planner) + ", " +
+                  result.budget + ": " + (result.solved ? "solved" : "not solved") + " (" +
                   std::to_string(result.samples) + " samples, " +
                   std::to_string(result.components) + " components, " +
                   std::to_string(result.openings) + " openings)");

@@ -13,18 +13,18 @@ namespace acdplan::planning {
 
 /// What PlanScenario() did and found.
 struct PlanResult {
-  bool solved = false;         ///< Exact solution (time budget) / start and goal connected
-                               ///< (sample budget).
+  bool solved = false;  ///< Exact solution (time budget) / start and goal connected
+                        ///< (sample budget).
   SamplerType sampler = SamplerType::kAcd;
   PlannerType planner = PlannerType::kPrm;
-  std::string budget;          ///< "200 samples" or "5 s".
-  double time_s = 0.0;         ///< Wall time of the whole run, decomposition included [s].
+  std::string budget;             ///< "200 samples" or "5 s".
+  double time_s = 0.0;            ///< Wall time of the whole run, decomposition included [s].
   double decomposition_ms = 0.0;  ///< Free space + ACD [ms].
-  std::uint64_t samples = 0;   ///< Sample budget: collision-free samples placed; time budget:
-                               ///< vertices of the planner's roadmap or tree(s).
+  std::uint64_t samples = 0;      ///< Sample budget: collision-free samples placed; time budget:
+                                  ///< vertices of the planner's roadmap or tree(s).
   std::uint64_t collision_checks = 0;  ///< State validity checks (samples and motions).
-  double path_length = 0.0;    ///< In the state space's metric (SE(2): OMPL's weighted sum); 0
-                               ///< without a solution.
+  double path_length = 0.0;  ///< In the state space's metric (SE(2): OMPL's weighted sum); 0
+                             ///< without a solution.
   int components = 0, openings = 0;
   std::vector<std::vector<double>> path;      ///< States from start to goal (x, y[, yaw]).
   std::vector<std::vector<double>> vertices;  ///< Roadmap / tree vertices (for pictures).

@@ -1,7 +1,5 @@
 #include "planning/registry.h"
 
-#include <array>
-#include <stdexcept>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/samplers/BridgeTestValidStateSampler.h>
 #include <ompl/base/samplers/GaussianValidStateSampler.h>
@@ -18,6 +16,9 @@
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/geometric/planners/rrt/RRTstar.h>
 #include <ompl/geometric/planners/sbl/SBL.h>
+
+#include <array>
+#include <stdexcept>
 
 #include "base/enum_names.h"
 #include "base/input_error.h"
@@ -128,8 +129,7 @@ std::vector<std::string> PlannerNames() { return NamesOf(kPlannerNames); }
 bool HonoursSampleBudget(PlannerType planner) { return Entry(planner).sample_budget; }
 
 void InstallSampler(SamplerType sampler, const std::shared_ptr<ob::SpaceInformation>& si,
-                    const acd::Decomposition2d& decomposition,
-                    const AcdSamplerOptions& options) {
+                    const acd::Decomposition2d& decomposition, const AcdSamplerOptions& options) {
   if (sampler == SamplerType::kAcd) {
     InstallAcdSamplers(si, decomposition, options);
     return;

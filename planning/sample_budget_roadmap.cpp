@@ -1,10 +1,11 @@
 #include "planning/sample_budget_roadmap.h"
 
-#include <map>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/planners/prm/PRM.h>
+
+#include <map>
 #include <stdexcept>
 
 #include "planning/acd_prm.h"
@@ -17,9 +18,9 @@ namespace {
 template <typename Prm>
 class Budget : public Prm {
  public:
-  using Prm::Prm;
   using Prm::addMilestone;
   using Prm::constructSolution;
+  using Prm::Prm;
   using Prm::sameComponent;
 };
 

@@ -18,20 +18,20 @@ namespace acdplan::planning {
 
 /// Options for BuildSampleBudgetRoadmap(); `{}` is invalid only in `samples`.
 struct SampleBudgetOptions {
-  int samples = 200;           ///< Collision-free samples to place; >= 1.
-  bool star = false;           ///< Connect with PRM*'s k = e(1 + 1/d) log n rule, else k = 10.
+  int samples = 200;  ///< Collision-free samples to place; >= 1.
+  bool star = false;  ///< Connect with PRM*'s k = e(1 + 1/d) log n rule, else k = 10.
   /// If set, connect as PRM_ACD (planning/acd_prm.h) with this decomposition of the workspace.
   const acd::Decomposition2d* acd_connections = nullptr;
-  std::uint64_t seed = 1;      ///< Seed of PRM_ACD's random picks.
-  int max_failed_calls = 0;    ///< Give up after this many failed sample() calls in a row;
-                               ///< 0 = 10 * samples + 100.
+  std::uint64_t seed = 1;    ///< Seed of PRM_ACD's random picks.
+  int max_failed_calls = 0;  ///< Give up after this many failed sample() calls in a row;
+                             ///< 0 = 10 * samples + 100.
 };
 
 /// What BuildSampleBudgetRoadmap() found.
 struct SampleBudgetRoadmap {
-  bool solved = false;        ///< Start and goal are in one connected component.
-  int samples = 0;            ///< Collision-free samples placed (== options.samples unless
-                              ///< the sampler gave up).
+  bool solved = false;  ///< Start and goal are in one connected component.
+  int samples = 0;      ///< Collision-free samples placed (== options.samples unless
+                        ///< the sampler gave up).
   std::vector<std::vector<double>> vertices;  ///< Roadmap states (space->copyToReals);
                                               ///< start, goal and the samples.
   std::vector<std::pair<int, int>> edges;     ///< Roadmap edges (indices into `vertices`).

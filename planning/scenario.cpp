@@ -19,7 +19,8 @@ void CheckScenario(const Scenario& s) {
          "a sample budget (the Figure-4 protocol) needs PRM, PRM_ACD or PRMstar, not " +
              ToString(s.planner) + "; use time_limit");
   }
-  if (s.samples <= 0 && !(s.time_limit > 0)) fail("planner.time_limit", "expected a positive number");
+  if (s.samples <= 0 && !(s.time_limit > 0))
+    fail("planner.time_limit", "expected a positive number");
   if (!(s.tau_diag >= 0)) fail("acd.tau_diag", "expected a number >= 0");
   const size_t dims = s.robot.shape == envs::RobotShape::kPolygon ? 3 : 2;
   const std::string form = dims == 3 ? "[x, y, yaw] (a polygon robot plans in SE(2))" : "[x, y]";
@@ -35,8 +36,9 @@ void CheckScenario(const Scenario& s) {
 Scenario LoadScenario(const std::string& path) {
   const YamlFile file = YamlFile::Load(path);
   const YAML::Node& root = file.root();
-  file.CheckKeys(root, "", {"description", "workspace", "repair", "robot", "start", "goal",
-                            "acd", "planner", "sampler", "collision", "seed"});
+  file.CheckKeys(root, "",
+                 {"description", "workspace", "repair", "robot", "start", "goal", "acd", "planner",
+                  "sampler", "collision", "seed"});
   Scenario s;
   s.path = path;
   if (root["description"]) s.description = file.String(root["description"], "description");

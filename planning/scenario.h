@@ -41,7 +41,7 @@ namespace acdplan::planning {
 ///   collision: {mode: hulls+exact}   # bvh | hulls | hulls+exact
 ///   seed: 1                          # integer >= 0: samplers (and the CLI's OMPL seed)
 struct Scenario {
-  std::string path;         ///< The file it was read from ("" if built in code).
+  std::string path;  ///< The file it was read from ("" if built in code).
   std::string description;
   std::string workspace_label;  ///< The workspace file, or "generator <name> (seed s)".
   envs::Workspace2d workspace;

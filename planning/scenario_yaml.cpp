@@ -15,12 +15,12 @@ envs::Workspace2d ReadGeneratedWorkspace(const YamlFile& file, const YAML::Node&
       node["seed"] ? file.Integer(node["seed"], child("seed"), "an integer >= 0", 0) : 1;
   envs::GeneratorParameters parameters;
   if (node["passage_width"]) {
-    parameters.passage_width = file.Number(node["passage_width"], child("passage_width"),
-                                           "a positive number", Positive);
+    parameters.passage_width =
+        file.Number(node["passage_width"], child("passage_width"), "a positive number", Positive);
   }
   if (node["wall_thickness"]) {
-    parameters.wall_thickness = file.Number(node["wall_thickness"], child("wall_thickness"),
-                                            "a positive number", Positive);
+    parameters.wall_thickness =
+        file.Number(node["wall_thickness"], child("wall_thickness"), "a positive number", Positive);
   }
   *label = "generator " + name + " (seed " + std::to_string(seed) + ")";
   try {
@@ -34,20 +34,20 @@ void ReadAcdSamplerOptions(const YamlFile& file, const YAML::Node& node, const s
                            AcdSamplerOptions* options) {
   auto child = [&key](const char* name) { return YamlFile::Child(key, name); };
   if (node["uniform_share"]) {
-    options->uniform_share = file.Number(node["uniform_share"], child("uniform_share"), "a number in [0, 1]",
-                                UnitInterval);
+    options->uniform_share = file.Number(node["uniform_share"], child("uniform_share"),
+                                         "a number in [0, 1]", UnitInterval);
   }
   if (node["opening_weight"]) {
-    options->opening_weight = file.Number(node["opening_weight"], child("opening_weight"), "a number >= 0",
-                                 NonNegative);
+    options->opening_weight =
+        file.Number(node["opening_weight"], child("opening_weight"), "a number >= 0", NonNegative);
   }
   if (node["centroid_spread"]) {
     options->centroid_spread = file.Number(node["centroid_spread"], child("centroid_spread"),
-                                  "a positive number", Positive);
+                                           "a positive number", Positive);
   }
   if (node["opening_spread"]) {
-    options->opening_spread = file.Number(node["opening_spread"], child("opening_spread"),
-                                 "a positive number", Positive);
+    options->opening_spread =
+        file.Number(node["opening_spread"], child("opening_spread"), "a positive number", Positive);
   }
   if (node["max_attempts"]) {
     options->max_attempts = static_cast<int>(

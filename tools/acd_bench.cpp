@@ -28,15 +28,14 @@ int Run(const bench::AcdBenchOptions& options, const std::string& json_path,
   std::error_code ec;
   if (options.files.empty() && !std::filesystem::is_directory(options.data_dir, ec)) {
     throw InputError("--data " + options.data_dir +
-                          ": not a folder (the default is relative to the working directory: "
-                          "run from the repository, or give --data DIR or polygon files)");
+                     ": not a folder (the default is relative to the working directory: "
+                     "run from the repository, or give --data DIR or polygon files)");
   }
   if (!json_path.empty()) {
     // Fail before the (minutes long) runs rather than after them.
     const std::filesystem::path parent = std::filesystem::path(json_path).parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent, ec)) {
-      throw InputError("--json " + json_path + ": folder " + parent.string() +
-                            " does not exist");
+      throw InputError("--json " + json_path + ": folder " + parent.string() + " does not exist");
     }
   }
   std::vector<bench::Target> targets;

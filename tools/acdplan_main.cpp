@@ -20,11 +20,11 @@
 #include "acd/decompose2d.h"
 #include "acd/decomposition2d.h"
 #include "acd/decomposition_io.h"
+#include "acd/polygon2d.h"
+#include "acd/read_polygons.h"
 #include "base/file_io.h"
 #include "base/input_error.h"
 #include "base/stopwatch.h"
-#include "acd/polygon2d.h"
-#include "acd/read_polygons.h"
 #include "bench/collision_bench.h"
 #include "bench/merge.h"
 #include "bench/outputs.h"
@@ -56,8 +56,8 @@ struct DecomposeArguments {
   bool repair = false;
 };
 
-/// A CLI11 check from a parser that throws acdplan::InputError, so the value is checked while parsing
-/// and the message names the option ("--measure: unknown concavity measure 'x' ...").
+/// A CLI11 check from a parser that throws acdplan::InputError, so the value is checked while
+/// parsing and the message names the option ("--measure: unknown concavity measure 'x' ...").
 template <typename Parse>
 CLI::Validator ParsedBy(Parse parse) {
   return CLI::Validator(
@@ -105,7 +105,7 @@ int RunDecompose(const DecomposeArguments& args) {
   CheckOutputPath("--json", args.json_path);
   CheckOutputPath("--svg", args.svg_path);
 
-  std::vector<double> radii;  // As written in the file: the dissertation's tables use these.
+  std::vector<double> radii;       // As written in the file: the dissertation's tables use these.
   std::vector<std::string> notes;  // Reader warnings and repair changes, one line each.
   acd::ReadPolygonsOptions read_options;
   read_options.repair = args.repair;
@@ -184,10 +184,11 @@ int RunBenchCollision(acdplan::bench::BenchCollisionOptions options, const std::
   namespace bench = acdplan::bench;
   std::error_code ec;
   if (!options.mesh_dir.empty() && !std::filesystem::is_directory(options.mesh_dir, ec)) {
-    throw acdplan::InputError("--mesh-dir " + options.mesh_dir +
-                          ": not a folder (the default is relative to the working directory: run "
-                          "from the repository, or give --mesh-dir DIR, or --mesh-dir '' to skip "
-                          "3D)");
+    throw acdplan::InputError(
+        "--mesh-dir " + options.mesh_dir +
+        ": not a folder (the default is relative to the working directory: run "
+        "from the repository, or give --mesh-dir DIR, or --mesh-dir '' to skip "
+        "3D)");
   }
   std::vector<bench::Target> targets;
   if (!targets_path.empty()) {
@@ -241,27 +242,27 @@ int RunPlan(const PlanArguments& args) {
     throw acdplan::InputError(error.what());
   }
   std::printf("scenario          %s\n", args.scenario.c_str());
-  if (!scenario.description.empty()) std::printf("description       %s\n", scenario.description.c_str());
+  if (!scenario.description.empty())
+    std::printf("description       %s\n", scenario.description.c_str());
   std::printf("workspace         %s\n", scenario.workspace_label.c_str());
   std::printf("robot             %s\n", acdplan::envs::ToString(scenario.robot.shape).c_str());
   std::printf("sampler           %s\n", planning::ToString(result.sampler).c_str());
   std::printf("planner           %s (%s, seed %llu)\n", planning::ToString(result.planner).c_str(),
-              result.budget.c_str(),
-              static_cast<unsigned long long>(scenario.seed));
+              result.budget.c_str(), static_cast<unsigned long long>(scenario.seed));
   std::printf("acd               %d components, %d openings, %.3f ms\n", result.components,
               result.openings, result.decomposition_ms);
   std::printf("samples           %llu\n", static_cast<unsigned long long>(result.samples));
   std::printf("collision checks  %llu\n", static_cast<unsigned long long>(result.collision_checks));
   std::printf("solved            %s\n", result.solved ? "yes" : "no");
   if (result.solved) {
-    std::printf("path              %zu states, length %.6g\n", result.path.size(), result.path_length);
+    std::printf("path              %zu states, length %.6g\n", result.path.size(),
+                result.path_length);
   }
   std::printf("time              %.3f s\n", result.time_s);
   if (!args.json_path.empty()) std::printf("wrote             %s\n", args.json_path.c_str());
   if (!args.svg_path.empty()) std::printf("wrote             %s\n", args.svg_path.c_str());
   return result.solved ? 0 : 3;
 }
-
 
 /// What `acdplan bench` / `bench-merge` were asked to do.
 struct BenchArguments {
@@ -454,9 +455,11 @@ int main(int argc, char** argv) {
                               "YAML file of targets to check (e.g. "
                               "configs/bench/collision_targets.yaml; bench/targets.h)");
   bench_collision->add_option("--poses", bench_options.poses, "Random poses per world and robot")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   bench_collision->add_option("--points", bench_options.points, "Random points per world")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   bench_collision->add_option("--seed", bench_options.seed, "Seed of worlds and poses")
       ->capture_default_str();
   bench_collision
@@ -484,10 +487,11 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   CLI::Option* plan_time =
       plan->add_option("--time", plan_args.time, "Time budget [s]")->check(CLI::PositiveNumber);
-  CLI::Option* plan_samples = plan->add_option(
-      "--samples", plan_args.samples,
-      "Sample budget: a PRM roadmap of exactly N collision-free samples, solved iff start and "
-      "goal are connected (dissertation Fig. 4)")->check(CLI::PositiveNumber);
+  CLI::Option* plan_samples = plan->add_option("--samples", plan_args.samples,
+                                               "Sample budget: a PRM roadmap of exactly N "
+                                               "collision-free samples, solved iff start and "
+                                               "goal are connected (dissertation Fig. 4)")
+                                  ->check(CLI::PositiveNumber);
   plan_time->excludes(plan_samples);
   plan->add_option("--json", plan_args.json_path, "Write the result as JSON here");
   plan->add_option("--svg", plan_args.svg_path, "Write an SVG picture here (2D)");
@@ -512,8 +516,9 @@ int main(int argc, char** argv) {
                    "shards' folders with bench-merge")
       ->capture_default_str()
       ->check(ParsedBy(acdplan::bench::ParseBenchShard));
-  bench->add_option("--jobs", bench_args.jobs,
-                    "Runs in parallel (child processes); more than free cores inflates times")
+  bench
+      ->add_option("--jobs", bench_args.jobs,
+                   "Runs in parallel (child processes); more than free cores inflates times")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   bench->add_flag("--no-plots", bench_args.no_plots, "Skip tools/plot_bench.py");

@@ -1,9 +1,10 @@
 #include "tools/env_command.h"
 
+#include <yaml-cpp/yaml.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <yaml-cpp/yaml.h>
 
 #include "acd/concavity_measure.h"
 #include "acd/decompose2d.h"
@@ -81,10 +82,10 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
   const double tau_diag = args.tau_diag >= 0 ? args.tau_diag
                           : scenario         ? scenario->tau_diag
                                              : kDefaultTauDiag;
-  const acd::ConcavityMeasure measure =
-      !args.measure.empty() ? acd::ParseConcavityMeasure(args.measure)
-      : scenario            ? scenario->measure
-                            : acd::ConcavityMeasure::kShortestPath;
+  const acd::ConcavityMeasure measure = !args.measure.empty()
+                                            ? acd::ParseConcavityMeasure(args.measure)
+                                        : scenario ? scenario->measure
+                                                   : acd::ConcavityMeasure::kShortestPath;
   const double diagonal = workspace.bounds.sizes().norm();
 
   Stopwatch stopwatch;
@@ -123,8 +124,8 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
   Line("obstacles", Count(workspace.obstacles.size(), "polygon") + ", " +
                         std::to_string(obstacle_vertices) + " vertices, " +
                         Count(obstacle_holes, "hole"));
-  Line("free space", Count(free_space.size(), "region") + ", " + Count(free_holes, "hole") +
-                         ", " + Short(100.0 * free_area / bounds_area) + "% of the bounds (" +
+  Line("free space", Count(free_space.size(), "region") + ", " + Count(free_holes, "hole") + ", " +
+                         Short(100.0 * free_area / bounds_area) + "% of the bounds (" +
                          Milliseconds(free_space_ms) + ")");
   Line("decomposition", "tau " + Short(options.tau) + " (tau_diag " + Short(tau_diag) +
                             " x bounds diagonal " + Short(diagonal) + "), measure " +
@@ -133,8 +134,8 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
                             std::to_string(decomposition.openings.size()) + " openings (" +
                             Milliseconds(decomposition_ms) + ")");
   if (!decomposition.openings.empty()) Line("narrowest gap", Short(narrowest));
-  Line("obstacle hulls", std::to_string(obstacles.pieces.size()) + " from " +
-                             obstacles.hulls_source);
+  Line("obstacle hulls",
+       std::to_string(obstacles.pieces.size()) + " from " + obstacles.hulls_source);
   if (scenario) {
     const envs::Robot& robot = scenario->robot;
     std::string text = ToString(robot.shape);
@@ -145,15 +146,14 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
     }
     Line("robot", text);
     Line("planner", planning::ToString(scenario->planner) + " with the " +
-                           planning::ToString(scenario->sampler) + " sampler");
+                        planning::ToString(scenario->sampler) + " sampler");
   }
 
   if (!args.svg_path.empty()) {
-    const std::string caption = args.input + ": " +
-                                std::to_string(decomposition.components.size()) +
-                                " components, " + std::to_string(decomposition.openings.size()) +
-                                " openings (orange), tau_diag " + Short(tau_diag) + ", " +
-                                acd::ToString(measure);
+    const std::string caption =
+        args.input + ": " + std::to_string(decomposition.components.size()) + " components, " +
+        std::to_string(decomposition.openings.size()) + " openings (orange), tau_diag " +
+        Short(tau_diag) + ", " + acd::ToString(measure);
     WriteOutput(args.svg_path, envs::WorldToSvg(workspace, decomposition, caption));
     Line("wrote", args.svg_path);
   }
@@ -178,10 +178,11 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
   return 0;
 }
 
-int Report3d(const EnvArguments& args, const std::string& kind, const envs::Workspace3d& workspace) {
+int Report3d(const EnvArguments& args, const std::string& kind,
+             const envs::Workspace3d& workspace) {
   if (!args.svg_path.empty()) {
     throw acdplan::InputError("--svg " + args.svg_path + ": " + args.input +
-                          " is a 3D world; pictures are drawn for 2D worlds only");
+                              " is a 3D world; pictures are drawn for 2D worlds only");
   }
   const collision::ObstacleSet obstacles = collision::BuildObstacleSet(workspace);
   long vertices = 0;
@@ -229,9 +230,9 @@ CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
                       "else 0.02)")
           ->check(CLI::NonNegativeNumber);
   // The older spelling, kept working: tau_rel means the reference radius in `decompose`.
-  CLI::Option* tau_rel = env->add_option("--tau-rel", args->tau_rel,
-                                         "Older spelling of --tau-diag (prints a warning)")
-                             ->check(CLI::NonNegativeNumber);
+  CLI::Option* tau_rel =
+      env->add_option("--tau-rel", args->tau_rel, "Older spelling of --tau-diag (prints a warning)")
+          ->check(CLI::NonNegativeNumber);
   tau_diag->excludes(tau_rel);
   tau_rel->excludes(tau_diag);
   env->add_option("--measure", args->measure, "Concavity measure: sl, sp, h1 or h2")

@@ -20,7 +20,8 @@ std::vector<Interval> IntervalsOnCut(const Decomposition2d& d, const Cut2d& cut,
   std::vector<Interval> intervals;
   if (length == 0.0) return intervals;
   const Point2d unit = axis / length;
-  const double scale = std::max({length, cut.from.cwiseAbs().maxCoeff(), cut.to.cwiseAbs().maxCoeff()});
+  const double scale =
+      std::max({length, cut.from.cwiseAbs().maxCoeff(), cut.to.cwiseAbs().maxCoeff()});
   const double tolerance = 1e-9 * scale;
   for (int c = first; c < last; ++c) {
     const Ring2d& ring = d.components[c].polygon.outer;
@@ -79,8 +80,8 @@ std::vector<Opening2d> FindOpenings(const Decomposition2d& d) {
               std::abs(t0 - last_t1) * length <= tolerance) {
             found.back().b = cut.from + t1 * (cut.to - cut.from);
           } else {
-            found.push_back({cut.from + t0 * (cut.to - cut.from), cut.from + t1 * (cut.to - cut.from),
-                             ca, cb});
+            found.push_back(
+                {cut.from + t0 * (cut.to - cut.from), cut.from + t1 * (cut.to - cut.from), ca, cb});
           }
           last_t1 = t1;
         }

@@ -16,8 +16,8 @@ struct ResolveOptions {
   double score_distance = 1.0;   ///< s_d.
   /// The length the score divides concavity by, so that ranking cuts is scale invariant.
   double concavity_unit = 1.0;
-  bool steiner_cuts = true;      ///< Allow a cut to end on an edge (a new vertex).
-  double tau = 0.0;              ///< Notches deeper than tau still need a cut of their own.
+  bool steiner_cuts = true;  ///< Allow a cut to end on an edge (a new vertex).
+  double tau = 0.0;          ///< Notches deeper than tau still need a cut of their own.
   /// Score factor for a diagonal that also resolves its other end, a notch deeper than tau: such
   /// a cut does the work of two, so it counts double (fewer pieces, as in Chazelle's X-patterns;
   /// at tau = 0 it takes nazca_monkey from 474 to 387 pieces).
@@ -42,7 +42,7 @@ struct Resolution {
 ///    the next iteration would make at cw(p), the pocket's deepest point, Fig. 19).
 /// Both pieces are simple, counter-clockwise, with the remaining holes distributed.
 /// Returns false only when no valid cut exists for any notch or hole (never for valid input).
-bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity,
-             const ResolveOptions& options, Resolution* resolution);
+bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const ResolveOptions& options,
+             Resolution* resolution);
 
 }  // namespace acdplan::acd::internal

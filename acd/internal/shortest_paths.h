@@ -10,8 +10,8 @@ namespace acdplan::acd::internal {
 
 /// Shortest-path tree inside a simple polygon from one of its vertices.
 struct ShortestPathTree {
-  std::vector<int> parent;        ///< Previous vertex on the path to the source; -1 at the source.
-  std::vector<double> distance;   ///< Geodesic distance to the source [units].
+  std::vector<int> parent;       ///< Previous vertex on the path to the source; -1 at the source.
+  std::vector<double> distance;  ///< Geodesic distance to the source [units].
 };
 
 /// Shortest paths from vertex `source` to every vertex of the simple, counter-clockwise `ring`,

@@ -31,8 +31,8 @@ class HullTree {
  private:
   struct Node {
     Eigen::AlignedBox3d box;
-    int first = 0;   // leaf: first hull in order_; inner: right child index
-    int count = 0;   // leaf: number of hulls; inner: 0
+    int first = 0;  // leaf: first hull in order_; inner: right child index
+    int count = 0;  // leaf: number of hulls; inner: 0
   };
   int Build(std::vector<int>& ids, int begin, int end,
             const std::vector<Eigen::AlignedBox3d>& boxes);
@@ -42,8 +42,8 @@ class HullTree {
   bool Visit(const Eigen::Vector3d& p, F&& visit) const;
 
   std::vector<Node> nodes_;
-  std::vector<int> order_;                   // hull ids in leaf order
-  std::vector<int> hull_plane_begin_{0};     // planes of hull i: [begin[i], begin[i + 1])
+  std::vector<int> order_;                // hull ids in leaf order
+  std::vector<int> hull_plane_begin_{0};  // planes of hull i: [begin[i], begin[i + 1])
   std::vector<Eigen::Vector4d, Eigen::aligned_allocator<Eigen::Vector4d>> planes_;
 };
 

@@ -8,14 +8,13 @@
 #include <CGAL/convex_hull_3.h>
 
 #include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <list>
 #include <map>
 #include <numeric>
-#include <tuple>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 namespace acdplan::collision::internal {

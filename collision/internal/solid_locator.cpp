@@ -52,8 +52,8 @@ PolygonLocator2d::PolygonLocator2d(const acd::Polygon2d& polygon) {
 bool PolygonLocator2d::Contains(const Eigen::Vector2d& p) const {
   if (!box_.contains(p)) return false;
   const int slabs = static_cast<int>(slab_begin_.size()) - 1;
-  const int s = std::clamp(
-      static_cast<int>(std::floor((p.y() - box_.min().y()) / slab_height_)), 0, slabs - 1);
+  const int s = std::clamp(static_cast<int>(std::floor((p.y() - box_.min().y()) / slab_height_)), 0,
+                           slabs - 1);
   const Kernel::Point_2 q(p.x(), p.y());
   bool inside = false;
   for (int k = slab_begin_[static_cast<size_t>(s)]; k < slab_begin_[static_cast<size_t>(s) + 1];
@@ -121,8 +121,7 @@ bool MeshLocator3d::Contains(const Eigen::Vector3d& p) const {
 }
 
 ExactObstacleLocator::ExactObstacleLocator(const ObstacleSet& obstacles, bool skip_open)
-    : dimension_(obstacles.dimension),
-      obstacle_count_(static_cast<int>(obstacles.meshes.size())) {
+    : dimension_(obstacles.dimension), obstacle_count_(static_cast<int>(obstacles.meshes.size())) {
   if (dimension_ == 2) {
     for (const acd::Polygon2d& polygon : obstacles.polygons) polygons_.emplace_back(polygon);
     return;
@@ -139,8 +138,7 @@ ExactObstacleLocator::ExactObstacleLocator(const ObstacleSet& obstacles, bool sk
       throw InputError(
           "PointLocator(): exact point location needs closed obstacle meshes: obstacle " +
           std::to_string(piece.obstacle) + " (connected component " + std::to_string(i) +
-          ") is open: " + std::to_string(bad) +
-          " edges are not shared by exactly two triangles");
+          ") is open: " + std::to_string(bad) + " edges are not shared by exactly two triangles");
     }
     pieces_.emplace_back(piece.solid);
     piece_obstacle_.push_back(piece.obstacle);

@@ -74,8 +74,7 @@ AcdDraw AcdTargets::Draw(RandomEngine& rng) const {
   return DrawAround(rng, targets_[index]);
 }
 
-AcdDraw AcdTargets::DrawNear(RandomEngine& rng, const Eigen::Vector2d& near,
-                             double radius) const {
+AcdDraw AcdTargets::DrawNear(RandomEngine& rng, const Eigen::Vector2d& near, double radius) const {
   if (targets_.empty() || UniformReal(rng, 0.0, 1.0) < options_.uniform_share) return AcdDraw{};
   double sum = 0;
   std::vector<std::pair<double, size_t>> candidates;

@@ -3,10 +3,10 @@
 
 #include <Eigen/Core>
 #include <cstdint>
-#include "base/random.h"
 #include <vector>
 
 #include "acd/decomposition2d.h"
+#include "base/random.h"
 #include "planning/acd_sampler_options.h"
 
 namespace acdplan::planning::internal {

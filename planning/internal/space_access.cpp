@@ -1,10 +1,11 @@
 #include "planning/internal/space_access.h"
 
-#include <Eigen/Geometry>
-#include <cmath>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
 #include <stdexcept>
 
 namespace acdplan::planning::internal {
@@ -57,8 +58,7 @@ Eigen::Quaterniond RandomRotation(RandomEngine& rng) {
   const double u1 = UniformReal(rng, 0, 1), u2 = UniformReal(rng, 0, 2 * M_PI),
                u3 = UniformReal(rng, 0, 2 * M_PI);
   const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-  return Eigen::Quaterniond(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2),
-                            b * std::sin(u3));
+  return Eigen::Quaterniond(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2), b * std::sin(u3));
 }
 
 Eigen::Quaterniond GetRotation(const ob::State* state) {
@@ -74,8 +74,7 @@ void SetRotation(ob::State* state, const Eigen::Quaterniond& q_in) {
 
 /// `base` turned by an angle (`angle_of(rng)`) about a random axis.
 template <typename Angle>
-Eigen::Quaterniond Perturbed(const Eigen::Quaterniond& base, RandomEngine& rng,
-                             Angle angle_of) {
+Eigen::Quaterniond Perturbed(const Eigen::Quaterniond& base, RandomEngine& rng, Angle angle_of) {
   const double x = StandardNormal(rng), y = StandardNormal(rng), z = StandardNormal(rng);
   Eigen::Vector3d axis(x, y, z);
   if (axis.norm() < 1e-12) axis = Eigen::Vector3d::UnitZ();
@@ -115,8 +114,8 @@ void SampleUniform(SpaceKind kind, const ob::StateSpace* space, ob::State* state
   }
 }
 
-bool SetFromDraw(SpaceKind kind, const ob::StateSpace* space, const AcdDraw& draw,
-                 ob::State* state, RandomEngine& rng) {
+bool SetFromDraw(SpaceKind kind, const ob::StateSpace* space, const AcdDraw& draw, ob::State* state,
+                 RandomEngine& rng) {
   const ob::RealVectorBounds& bounds = Bounds(kind, space);
   for (int i = 0; i < 2; ++i) {
     if (draw.position[i] < bounds.low[i] || draw.position[i] > bounds.high[i]) return false;
@@ -176,8 +175,9 @@ void SampleUniformNear(SpaceKind kind, const ob::StateSpace* space, ob::State* s
     state->as<ob::SE2StateSpace::StateType>()->setYaw(std::remainder(yaw, 2 * M_PI));
   } else if (kind == SpaceKind::kSE3) {
     const double limit = std::min(distance, M_PI);
-    SetRotation(state, Perturbed(GetRotation(near), rng,
-                                 [limit](RandomEngine& g) { return UniformReal(g, -limit, limit); }));
+    SetRotation(state, Perturbed(GetRotation(near), rng, [limit](RandomEngine& g) {
+                  return UniformReal(g, -limit, limit);
+                }));
   }
 }
 

@@ -1,10 +1,11 @@
 #pragma once
 // Reading and writing the states of the spaces the ACD samplers support (private to planning).
 
-#include <Eigen/Core>
 #include <ompl/base/StateSpace.h>
-#include "base/random.h"
 
+#include <Eigen/Core>
+
+#include "base/random.h"
 #include "planning/internal/acd_targets.h"
 
 namespace acdplan::planning::internal {
@@ -16,8 +17,8 @@ enum class SpaceKind { kRealVector2, kRealVector3, kSE2, kSE3 };
 SpaceKind Classify(const ompl::base::StateSpace* space);
 
 /// Uniform over the space's bounds (uniform yaw / uniform rotation).
-void SampleUniform(SpaceKind kind, const ompl::base::StateSpace* space,
-                   ompl::base::State* state, RandomEngine& rng);
+void SampleUniform(SpaceKind kind, const ompl::base::StateSpace* space, ompl::base::State* state,
+                   RandomEngine& rng);
 
 /// Writes `draw` (a target-based draw) into `state`: x, y from the draw; z (3D) uniform over
 /// the bounds; the yaw from the draw if it has one, else uniform; SE(3) rotations uniform (or
@@ -40,8 +41,7 @@ void SampleUniformNear(SpaceKind kind, const ompl::base::StateSpace* space,
 
 /// Gaussian around `mean`, `stddev` per coordinate (rotation: random axis, Gaussian angle),
 /// clipped to the bounds.
-void SampleGaussian(SpaceKind kind, const ompl::base::StateSpace* space,
-                    ompl::base::State* state, const ompl::base::State* mean, double stddev,
-                    RandomEngine& rng);
+void SampleGaussian(SpaceKind kind, const ompl::base::StateSpace* space, ompl::base::State* state,
+                    const ompl::base::State* mean, double stddev, RandomEngine& rng);
 
 }  // namespace acdplan::planning::internal

@@ -1,8 +1,8 @@
 #include "acd/component_locator2d.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <string>
 

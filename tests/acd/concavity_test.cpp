@@ -7,9 +7,7 @@
 namespace acdplan::acd {
 namespace {
 
-Polygon2d Square(double side) {
-  return {{{0, 0}, {side, 0}, {side, side}, {0, side}}, {}};
-}
+Polygon2d Square(double side) { return {{{0, 0}, {side, 0}, {side, side}, {0, side}}, {}}; }
 
 // A square with a V-shaped dent in its top edge: the notch (5, 6) lies 4 below the bridge.
 Polygon2d DentedSquare() { return {{{0, 0}, {10, 0}, {10, 10}, {5, 6}, {0, 10}}, {}}; }
@@ -18,8 +16,7 @@ Polygon2d DentedSquare() { return {{{0, 0}, {10, 0}, {10, 10}, {5, 6}, {0, 10}},
 // (2..6 x 6..8) hides the pocket's far corner (2,2) from the bridge, so the straight line from
 // there to the bridge crosses the polygon while the shortest path goes round the lip.
 Polygon2d Hook() {
-  return {{{0, 0}, {10, 0}, {10, 10}, {8, 10}, {8, 2}, {2, 2}, {2, 6}, {6, 6}, {6, 8}, {0, 8}},
-          {}};
+  return {{{0, 0}, {10, 0}, {10, 10}, {8, 10}, {8, 2}, {2, 2}, {2, 6}, {6, 6}, {6, 8}, {0, 8}}, {}};
 }
 
 TEST(ConcavityTest, ConvexPolygonHasZeroConcavityAndNoWitness) {
@@ -123,11 +120,11 @@ TEST(ConcavityTest, DeeperHolesAreReachedThroughShallowerOnes) {
 }
 
 TEST(ConcavityTest, IsNotchIgnoresRoundingNoiseButNotRealDents) {
-  EXPECT_FALSE(IsNotch({0, 0}, {1, 0}, {2, 0}));            // Collinear.
-  EXPECT_FALSE(IsNotch({0, 0}, {1, -1}, {2, 0}));           // Left turn: convex.
-  EXPECT_TRUE(IsNotch({0, 0}, {1, 1}, {2, 0}));             // Right turn: a notch.
-  EXPECT_TRUE(IsNotch({0, 0}, {1, 1e-6}, {2, 0}));          // A small but real dent.
-  EXPECT_FALSE(IsNotch({0, 0}, {1e6, 1e-8}, {2e6, 0}));     // Rounding noise at 1e6.
+  EXPECT_FALSE(IsNotch({0, 0}, {1, 0}, {2, 0}));         // Collinear.
+  EXPECT_FALSE(IsNotch({0, 0}, {1, -1}, {2, 0}));        // Left turn: convex.
+  EXPECT_TRUE(IsNotch({0, 0}, {1, 1}, {2, 0}));          // Right turn: a notch.
+  EXPECT_TRUE(IsNotch({0, 0}, {1, 1e-6}, {2, 0}));       // A small but real dent.
+  EXPECT_FALSE(IsNotch({0, 0}, {1e6, 1e-8}, {2e6, 0}));  // Rounding noise at 1e6.
 }
 
 TEST(ConcavityTest, HullIndicesSkipVerticesOnHullEdges) {

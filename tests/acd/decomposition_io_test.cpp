@@ -215,7 +215,11 @@ TEST(DecompositionToSvgTest, FlipsTheYAxis) {
   // SVG y. The drawing spans [0, 7] x [0, 2] (900 / 7 pixels per unit) after a 36-pixel
   // margin, so y = 0 maps to SVG y 36 + 2 x 900 / 7 = 293.143.
   const std::string svg = DecompositionToSvg(HandBuilt(), {"l.poly", -1.0});
-  EXPECT_NE(svg.find("d=\"M36,293.143 L293.143,293.143 L293.143,228.857 L164.571,228.857 L36,228.857 Z\""), std::string::npos) << svg;
+  EXPECT_NE(
+      svg.find(
+          "d=\"M36,293.143 L293.143,293.143 L293.143,228.857 L164.571,228.857 L36,228.857 Z\""),
+      std::string::npos)
+      << svg;
   EXPECT_EQ(svg.find("tau_rel"), std::string::npos);
 }
 

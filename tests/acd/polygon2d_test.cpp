@@ -29,7 +29,8 @@ TEST(Polygon2dTest, CentroidAccountsForHoles) {
 
 TEST(Polygon2dTest, CentroidIsStableFarFromTheOrigin) {
   Polygon2d p;
-  for (const Point2d& v : Ring2d{{0, 0}, {1, 0}, {1, 1}, {0, 1}}) p.outer.push_back(v + Point2d(1e8, -1e8));
+  for (const Point2d& v : Ring2d{{0, 0}, {1, 0}, {1, 1}, {0, 1}})
+    p.outer.push_back(v + Point2d(1e8, -1e8));
   const Point2d c = Centroid(p);
   EXPECT_NEAR(c.x(), 1e8 + 0.5, 1e-6);
   EXPECT_NEAR(c.y(), -1e8 + 0.5, 1e-6);

@@ -50,8 +50,9 @@ TEST(ReadPolygonsTest, DispatchesByExtensionCaseInsensitiveAndPrepares) {
 }
 
 TEST(ReadPolygonsTest, FileErrors) {
-  EXPECT_THAT(ErrorOf("/nonexistent/shape.poly"),
-              HasSubstr("/nonexistent/shape.poly: cannot read the file: No such file or directory"));
+  EXPECT_THAT(
+      ErrorOf("/nonexistent/shape.poly"),
+      HasSubstr("/nonexistent/shape.poly: cannot read the file: No such file or directory"));
   EXPECT_THAT(ErrorOf("shape.svg"), HasSubstr("shape.svg: unknown polygon file extension '.svg'"));
   const std::string empty = WriteTemp("empty.wkt", "POLYGON EMPTY");
   EXPECT_THAT(ErrorOf(empty), HasSubstr("empty.wkt: no polygon in file"));

@@ -9,8 +9,8 @@
 
 #include "acd/check_decomposition.h"
 #include "acd/decompose2d.h"
-#include "base/input_error.h"
 #include "acd/prepare_polygon.h"
+#include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {

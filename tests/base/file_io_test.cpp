@@ -80,9 +80,8 @@ TEST_F(FileIoTest, WriteFailsClearlyOnAnUnwritablePath) {
   const fs::path below_file = dir_ / "file" / "out.svg";
   const std::string below =
       MessageOf<std::runtime_error>([&] { WriteFileAtomically(below_file.string(), "x"); });
-  EXPECT_EQ(below.rfind(below_file.string() + ": cannot write the file: cannot create the folder",
-                        0),
-            0u)
+  EXPECT_EQ(
+      below.rfind(below_file.string() + ": cannot write the file: cannot create the folder", 0), 0u)
       << below;
   EXPECT_EQ(FileCount(), 1);
 }

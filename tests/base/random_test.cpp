@@ -68,8 +68,8 @@ TEST(Random, StandardNormalHasUnitMoments) {
     within1 += std::fabs(x) < 1.0 ? 1 : 0;
   }
   const double mean = sum / n, variance = sum2 / n - mean * mean;
-  EXPECT_NEAR(mean, 0.0, 0.015);      // sd of the mean 0.0022
-  EXPECT_NEAR(variance, 1.0, 0.02);   // sd of the variance 0.0032
+  EXPECT_NEAR(mean, 0.0, 0.015);     // sd of the mean 0.0022
+  EXPECT_NEAR(variance, 1.0, 0.02);  // sd of the variance 0.0032
   EXPECT_NEAR(within1 / n, 0.6827, 0.006);
 }
 

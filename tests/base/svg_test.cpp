@@ -44,7 +44,8 @@ TEST(SvgCanvas, WidensForALongCaptionAndSurvivesAnEmptyDrawing) {
 }
 
 TEST(Svg, EscapesXmlAndDropsControlCharacters) {
-  EXPECT_EQ(EscapeXml("<a href='x'>&\"\x01\tok\n"), "&lt;a href=&apos;x&apos;&gt;&amp;&quot;\tok\n");
+  EXPECT_EQ(EscapeXml("<a href='x'>&\"\x01\tok\n"),
+            "&lt;a href=&apos;x&apos;&gt;&amp;&quot;\tok\n");
 }
 
 TEST(Svg, ComponentFillsAreDistinctHexColours) {

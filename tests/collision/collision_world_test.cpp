@@ -213,11 +213,10 @@ TEST_P(VhacdMeshes, HullsExactEqualsBvhAndHullsAreConservative) {
   workspace.obstacles.push_back(
       envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + GetParam() + ".obj"));
   const Eigen::AlignedBox3d box = envs::BoundingBox(workspace.obstacles[0]);
-  workspace.bounds = Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(),
-                                         box.max() + 0.1 * box.sizes());
+  workspace.bounds =
+      Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
   auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));
-  const CollisionWorld world(set,
-                             envs::Robot::Mesh(testing::CubeMesh(0.05 * box.sizes().norm())));
+  const CollisionWorld world(set, envs::Robot::Mesh(testing::CubeMesh(0.05 * box.sizes().norm())));
   int mismatches = 0, missed = 0, collisions = 0;
   const int count = testing::kPosesPerWorld / 10;
   for (const auto& pose : testing::RandomPoses3d(workspace.bounds, count, 99)) {

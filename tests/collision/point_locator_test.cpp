@@ -28,13 +28,13 @@ std::shared_ptr<const ObstacleSet> FrameWorld() {
 TEST(PointLocator2d, ExactOnAPolygonWithAHole) {
   const PointLocator exact(FrameWorld(), LocateMethod::kExact);
   EXPECT_TRUE(exact.Inside(Eigen::Vector2d(0.5, 0.5)));
-  EXPECT_FALSE(exact.Inside(Eigen::Vector2d(2, 2)));     // in the hole
+  EXPECT_FALSE(exact.Inside(Eigen::Vector2d(2, 2)));  // in the hole
   EXPECT_FALSE(exact.Inside(Eigen::Vector2d(-1, 2)));
-  EXPECT_TRUE(exact.Inside(Eigen::Vector2d(4, 2)));      // on the outer boundary
-  EXPECT_TRUE(exact.Inside(Eigen::Vector2d(1, 2)));      // on the hole's boundary
-  EXPECT_TRUE(exact.Inside(Eigen::Vector2d(2, 0)));      // on a horizontal edge
-  EXPECT_TRUE(exact.Inside(Eigen::Vector2d(0, 0)));      // a vertex
-  EXPECT_TRUE(exact.Inside(Eigen::Vector2d(0.5, 1)));    // level with the hole's lower edge
+  EXPECT_TRUE(exact.Inside(Eigen::Vector2d(4, 2)));    // on the outer boundary
+  EXPECT_TRUE(exact.Inside(Eigen::Vector2d(1, 2)));    // on the hole's boundary
+  EXPECT_TRUE(exact.Inside(Eigen::Vector2d(2, 0)));    // on a horizontal edge
+  EXPECT_TRUE(exact.Inside(Eigen::Vector2d(0, 0)));    // a vertex
+  EXPECT_TRUE(exact.Inside(Eigen::Vector2d(0.5, 1)));  // level with the hole's lower edge
   EXPECT_FALSE(exact.Inside(Eigen::Vector2d(4 + 1e-15 * 4, 2)));
 }
 
@@ -54,8 +54,7 @@ TEST(PointLocator2d, HullsNeverSayOutsideWhereExactSaysInsideOnBuiltInWorlds) {
     auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));
     const PointLocator exact(set, LocateMethod::kExact), hulls(set, LocateMethod::kHulls);
     int missed = 0, wrong = 0, inside = 0;
-    for (const auto& pose :
-         testing::RandomPoses2d(workspace.bounds, testing::kPosesPerWorld, 31)) {
+    for (const auto& pose : testing::RandomPoses2d(workspace.bounds, testing::kPosesPerWorld, 31)) {
       const Eigen::Vector2d p = pose.translation();
       const bool e = exact.Inside(p), h = hulls.Inside(p);
       missed += e && !h;
@@ -79,8 +78,8 @@ TEST(PointLocator2d, ExactMatchesAPlainCrossingTestOnAMaze) {
       auto ring = [&](const acd::Ring2d& r) {
         for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
           if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
-              p.x() < (r[j].x() - r[i].x()) * (p.y() - r[i].y()) / (r[j].y() - r[i].y()) +
-                          r[i].x()) {
+              p.x() <
+                  (r[j].x() - r[i].x()) * (p.y() - r[i].y()) / (r[j].y() - r[i].y()) + r[i].x()) {
             in = !in;
           }
         }

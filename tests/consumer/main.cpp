@@ -56,7 +56,8 @@ int main() {
   // The README's example.
   auto free_space = acdplan::envs::FreeSpace2d(world);
   auto acd = acdplan::acd::Decompose2d(free_space, {/*tau=*/0.2});
-  acdplan::planning::AcdSamplerOptions options;  options.seed = 42;
+  acdplan::planning::AcdSamplerOptions options;
+  options.seed = 42;
   acdplan::planning::InstallAcdSamplers(setup.getSpaceInformation(), acd, options);
   setup.setPlanner(std::make_shared<og::PRM>(setup.getSpaceInformation()));
 

@@ -114,16 +114,20 @@ TEST(GeneratorsTest, ByNameAppliesTheSetParametersOnly) {
   MazeOptions maze;
   maze.passage_width = 0.3;  // wall_thickness 0 keeps the default
   p.wall_thickness = 0.0;
-  EXPECT_EQ(GenerateWorkspace2d("maze", 4, p).obstacles[0].outer, MakeMaze(4, maze).obstacles[0].outer);
+  EXPECT_EQ(GenerateWorkspace2d("maze", 4, p).obstacles[0].outer,
+            MakeMaze(4, maze).obstacles[0].outer);
 }
 
 TEST(GeneratorsTest, Errors) {
-  EXPECT_THAT(ErrorOf([] { GenerateWorkspace2d("castle", 1); }),
-              HasSubstr("GenerateWorkspace2d(): unknown generator 'castle' (expected one of: wall_gap, "
-                        "zigzag, bug_trap, two_rooms, spiral, maze)"));
+  EXPECT_THAT(
+      ErrorOf([] { GenerateWorkspace2d("castle", 1); }),
+      HasSubstr("GenerateWorkspace2d(): unknown generator 'castle' (expected one of: wall_gap, "
+                "zigzag, bug_trap, two_rooms, spiral, maze)"));
   EXPECT_THAT(ErrorOf([] { GenerateWorkspace2d("maze", 1, {-1}); }),
               HasSubstr("passage_width must be >= 0"));
-  EXPECT_THAT(ErrorOf([] { GenerateWorkspace2d("zigzag", 1, {0, 0.5}); }),
+  EXPECT_THAT(ErrorOf([] {
+                GenerateWorkspace2d("zigzag", 1, {0, 0.5});
+              }),
               HasSubstr("GenerateWorkspace2d(): wall_thickness is not an option of generator "
                         "'zigzag'"));
   WallGapOptions gap;

@@ -10,9 +10,9 @@
 
 #include "acd/check_decomposition.h"
 #include "acd/decompose2d.h"
-#include "base/input_error.h"
 #include "acd/polygon2d.h"
 #include "acd/prepare_polygon.h"
+#include "base/input_error.h"
 
 namespace acdplan::envs::testing {
 

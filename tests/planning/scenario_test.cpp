@@ -145,14 +145,17 @@ TEST(Scenario, RepairKeyRepairsTheWorkspaceFileWithWarnings) {
   const std::string query = "start: [1, 1]\ngoal: [9, 9]\n";
   EXPECT_NE(ErrorOf("workspace: tile.wkt\n" + query).find("tile.wkt: polygon 0: outer ring is not"),
             std::string::npos);
-  const Scenario s = LoadScenario(Write("fixed.yaml", "workspace: tile.wkt\nrepair: true\n" + query));
+  const Scenario s =
+      LoadScenario(Write("fixed.yaml", "workspace: tile.wkt\nrepair: true\n" + query));
   EXPECT_EQ(s.workspace.obstacles.size(), 2u);
   ASSERT_EQ(s.warnings.size(), 1u);
-  EXPECT_NE(s.warnings[0].find("tile.wkt: polygon 0: repaired: "), std::string::npos) << s.warnings[0];
+  EXPECT_NE(s.warnings[0].find("tile.wkt: polygon 0: repaired: "), std::string::npos)
+      << s.warnings[0];
   EXPECT_NE(ErrorOf("workspace: tile.wkt\nrepair: maybe\n" + query)
                 .find("bad.yaml: repair: expected true or false, got 'maybe'"),
             std::string::npos);
-  EXPECT_NE(ErrorOf(kWorld + kQuery + "repair: true\n").find("bad.yaml: repair: only for a workspace file"),
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "repair: true\n")
+                .find("bad.yaml: repair: only for a workspace file"),
             std::string::npos);
 }
 

@@ -189,10 +189,14 @@ TEST_F(CliTest, EnvReportsA2dWorldAndDrawsItsDecomposition) {
 }
 
 TEST_F(CliTest, EnvLoadsEveryKindOfWorld) {
-  const fs::path grid = Write("grid.map", "type octile\nheight 3\nwidth 5\nmap\n.....\n.@@@.\n.....\n");
-  const fs::path world3d = Write("world3d.yaml", "bounds: [-2, -2, -2, 2, 2, 2]\nobstacles:\n"
-                                                 "  - mesh: " + kMeshes + "box-thick.obj\n"
-                                                 "    scale: 0.01\n    translation: [-3.7, -0.34, 0]\n");
+  const fs::path grid =
+      Write("grid.map", "type octile\nheight 3\nwidth 5\nmap\n.....\n.@@@.\n.....\n");
+  const fs::path world3d = Write("world3d.yaml",
+                                 "bounds: [-2, -2, -2, 2, 2, 2]\nobstacles:\n"
+                                 "  - mesh: " +
+                                     kMeshes +
+                                     "box-thick.obj\n"
+                                     "    scale: 0.01\n    translation: [-3.7, -0.34, 0]\n");
   const struct {
     std::string file, kind;
     int dimension;
@@ -207,7 +211,8 @@ TEST_F(CliTest, EnvLoadsEveryKindOfWorld) {
   };
   for (const auto& world : worlds) {
     const fs::path json_path = dir_ / "report.json";
-    const RunResult run = Acdplan("env " + Quote(world.file) + " --json " + Quote(json_path.string()));
+    const RunResult run =
+        Acdplan("env " + Quote(world.file) + " --json " + Quote(json_path.string()));
     ASSERT_EQ(run.status, 0) << world.file << "\n" << run.err;
     EXPECT_NE(run.out.find(world.kind), std::string::npos) << run.out;
     const nlohmann::json j = nlohmann::json::parse(Read(json_path));
@@ -242,8 +247,8 @@ TEST_F(CliTest, EnvErrorsNameTheFileAndTheRule) {
 
 TEST_F(CliTest, TheSameErrorReadsTheSameInEveryCommand) {
   // A missing file, to decompose, env and plan alike.
-  for (const std::string& command : {std::string("decompose"), std::string("env"),
-                                     std::string("plan")}) {
+  for (const std::string& command :
+       {std::string("decompose"), std::string("env"), std::string("plan")}) {
     const std::string missing =
         (dir_ / (command == "decompose" ? "none.poly" : "none.yaml")).string();
     const RunResult run = Acdplan(command + " " + Quote(missing));
@@ -275,8 +280,7 @@ TEST_F(CliTest, EnvReadsTauRelAsTauDiagWithAWarning) {
   EXPECT_NE(diag.out.find("tau_diag 0.05 x bounds diagonal"), std::string::npos) << diag.out;
   const RunResult rel = Acdplan("env " + world + " --tau-rel 0.05 --json " + Quote(b.string()));
   ASSERT_EQ(rel.status, 0) << rel.err;
-  EXPECT_NE(rel.err.find("warning: --tau-rel is read as --tau-diag"), std::string::npos)
-      << rel.err;
+  EXPECT_NE(rel.err.find("warning: --tau-rel is read as --tau-diag"), std::string::npos) << rel.err;
   EXPECT_EQ(nlohmann::json::parse(Read(a)).at("tau_diag"), 0.05);
   EXPECT_EQ(nlohmann::json::parse(Read(a)).at("components"),
             nlohmann::json::parse(Read(b)).at("components"));
@@ -297,4 +301,3 @@ TEST_F(CliTest, RepairMakesInvalidPolygonsValidAndSaysWhat) {
 }
 
 }  // namespace
-
