@@ -105,19 +105,6 @@ std::vector<Eigen::Vector3d> RandomPoints(const Eigen::AlignedBox3d& box, int co
   return points;
 }
 
-envs::TriangleMesh Cube(double side) {
-  envs::TriangleMesh mesh;
-  mesh.vertices.resize(8, 3);
-  for (int i = 0; i < 8; ++i) {
-    mesh.vertices.row(i) << ((i & 1) ? 0.5 : -0.5) * side, ((i & 2) ? 0.5 : -0.5) * side,
-        ((i & 4) ? 0.5 : -0.5) * side;
-  }
-  mesh.triangles.resize(12, 3);
-  mesh.triangles << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2,
-      2, 4, 6, 1, 3, 5, 3, 7, 5;
-  return mesh;
-}
-
 /// A table figure with `decimals` decimals; "n/a" when it could not be measured.
 std::string Fixed(double value, int decimals) {
   return std::isnan(value) ? "n/a" : FormatFixed(value, decimals);
@@ -205,7 +192,7 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
       pose.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
       poses.push_back(pose);
     }
-    const CollisionWorld world(set, envs::Robot::Mesh(Cube(0.05 * box.sizes().norm())));
+    const CollisionWorld world(set, envs::Robot::Mesh(envs::Cube(0.05 * box.sizes().norm())));
     TimeModes(world, poses, &row);
     TimeLocation(set, RandomPoints(workspace.bounds, options.points, false, rng), &row);
     if (progress) *progress << "bench-collision: " << row.world << " done\n" << std::flush;

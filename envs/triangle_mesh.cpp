@@ -12,6 +12,23 @@ Eigen::AlignedBox3d BoundingBox(const TriangleMesh& mesh) {
   return box;
 }
 
+TriangleMesh Cube(double side) {
+  TriangleMesh mesh;
+  mesh.vertices.resize(8, 3);
+  for (int i = 0; i < 8; ++i) {  // Bit k of i: the +side/2 end of axis k.
+    mesh.vertices.row(i) << ((i & 1) ? 0.5 : -0.5) * side, ((i & 2) ? 0.5 : -0.5) * side,
+        ((i & 4) ? 0.5 : -0.5) * side;
+  }
+  mesh.triangles.resize(12, 3);
+  mesh.triangles << 0, 2, 1, 1, 2, 3,  // z-
+      4, 5, 6, 5, 7, 6,                // z+
+      0, 1, 4, 1, 5, 4,                // y-
+      2, 6, 3, 3, 6, 7,                // y+
+      0, 4, 2, 2, 4, 6,                // x-
+      1, 3, 5, 3, 7, 5;                // x+
+  return mesh;
+}
+
 void CheckTriangleMesh(const TriangleMesh& mesh, const std::string& where) {
   if (mesh.triangles.rows() == 0) throw InputError(where + ": mesh has no triangles");
   if (!mesh.vertices.allFinite()) {

@@ -17,6 +17,10 @@ struct TriangleMesh {
 /// Axis-aligned bounding box of the vertices (empty box for an empty mesh).
 Eigen::AlignedBox3d BoundingBox(const TriangleMesh& mesh);
 
+/// A cube of side `side` [units] centred on the origin, axis-aligned, 8 vertices and 12
+/// triangles counter-clockwise seen from outside (a robot or obstacle for tests and benchmarks).
+TriangleMesh Cube(double side);
+
 /// Checks that `mesh` has at least one triangle, finite coordinates and every index in
 /// [0, #V).
 /// @throws InputError "<where>: <rule>", e.g. "cup.obj: triangle 4: index 17 out of

@@ -56,10 +56,8 @@ class PgmHeader {
   const std::string& bytes_;
 };
 
-}  // namespace
-
-GrayImage ReadPgm(const std::string& path) {
-  const std::string bytes = ReadFile(path);
+/// A PGM image from the bytes of file `path` (named in messages).
+GrayImage PgmFromBytes(const std::string& path, const std::string& bytes) {
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '2' && bytes[1] != '5')) {
     throw InputError(path + ": not a PGM image (expected magic 'P2' or 'P5')");
   }
@@ -112,8 +110,8 @@ GrayImage ReadPgm(const std::string& path) {
   return image;
 }
 
-GrayImage ReadPng(const std::string& path) {
-  const std::string bytes = ReadFile(path);
+/// A PNG image from the bytes of file `path` (named in messages).
+GrayImage PngFromBytes(const std::string& path, const std::string& bytes) {
   png_image png;
   std::memset(&png, 0, sizeof png);
   png.version = PNG_IMAGE_VERSION;
@@ -148,11 +146,19 @@ GrayImage ReadPng(const std::string& path) {
   return image;
 }
 
+}  // namespace
+
+GrayImage ReadPgm(const std::string& path) { return PgmFromBytes(path, ReadFile(path)); }
+
+GrayImage ReadPng(const std::string& path) { return PngFromBytes(path, ReadFile(path)); }
+
 GrayImage ReadGrayImage(const std::string& path) {
-  const std::string bytes = ReadFile(path);
+  const std::string bytes = ReadFile(path);  // Read once, whichever format it holds.
   static const unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (bytes.size() >= 8 && std::memcmp(bytes.data(), kPngSignature, 8) == 0) return ReadPng(path);
-  return ReadPgm(path);
+  if (bytes.size() >= 8 && std::memcmp(bytes.data(), kPngSignature, 8) == 0) {
+    return PngFromBytes(path, bytes);
+  }
+  return PgmFromBytes(path, bytes);
 }
 
 }  // namespace acdplan::envs::internal

@@ -35,23 +35,8 @@ inline envs::Robot LRobot() {
   return envs::Robot::Polygon(outline);
 }
 
-/// A cube mesh of side `side` centred on the body origin, faces CCW seen from outside.
-inline envs::TriangleMesh CubeMesh(double side) {
-  envs::TriangleMesh mesh;
-  mesh.vertices.resize(8, 3);
-  for (int i = 0; i < 8; ++i) {
-    mesh.vertices.row(i) << ((i & 1) ? 0.5 : -0.5) * side, ((i & 2) ? 0.5 : -0.5) * side,
-        ((i & 4) ? 0.5 : -0.5) * side;
-  }
-  mesh.triangles.resize(12, 3);
-  mesh.triangles << 0, 2, 1, 1, 2, 3,  // z-
-      4, 5, 6, 5, 7, 6,                // z+
-      0, 1, 4, 1, 5, 4,                // y-
-      2, 6, 3, 3, 6, 7,                // y+
-      0, 4, 2, 2, 4, 6,                // x-
-      1, 3, 5, 3, 7, 5;                // x+
-  return mesh;
-}
+/// A cube mesh of side `side` centred on the body origin (envs::Cube).
+inline envs::TriangleMesh CubeMesh(double side) { return envs::Cube(side); }
 
 /// Uniform SE(2) poses in `bounds`, seeded.
 inline std::vector<Eigen::Isometry2d> RandomPoses2d(const Eigen::AlignedBox2d& bounds, int count,
