@@ -174,7 +174,7 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
     const std::string path = (std::filesystem::path(options.mesh_dir) / file).string();
     envs::Workspace3d workspace;
     workspace.obstacles.push_back(envs::ReadMesh(path));
-    const Eigen::AlignedBox3d box = envs::BoundingBox(workspace.obstacles[0]);
+    const Eigen::AlignedBox3d box = acd::BoundingBox(workspace.obstacles[0]);
     workspace.bounds =
         Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
     auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));
@@ -192,7 +192,7 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
       pose.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
       poses.push_back(pose);
     }
-    const CollisionWorld world(set, envs::Robot::Mesh(envs::Cube(0.05 * box.sizes().norm())));
+    const CollisionWorld world(set, envs::Robot::Mesh(acd::Cube(0.05 * box.sizes().norm())));
     TimeModes(world, poses, &row);
     TimeLocation(set, RandomPoints(workspace.bounds, options.points, false, rng), &row);
     if (progress) *progress << "bench-collision: " << row.world << " done\n" << std::flush;

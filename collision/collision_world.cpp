@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "acd/concavity.h"
+#include "acd/convex_hull3d.h"
 #include "acd/decompose2d.h"
 #include "base/input_error.h"
 #include "collision/internal/hull_tree.h"
@@ -26,10 +27,10 @@ namespace {
 
 using Geometry = std::shared_ptr<fcl::CollisionGeometryd>;
 
-Geometry MakeBvh(const std::vector<const envs::TriangleMesh*>& meshes) {
+Geometry MakeBvh(const std::vector<const acd::TriangleMesh*>& meshes) {
   auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
   model->beginModel();
-  for (const envs::TriangleMesh* mesh : meshes) {
+  for (const acd::TriangleMesh* mesh : meshes) {
     std::vector<fcl::Vector3d> v;
     std::vector<fcl::Triangle> t;
     for (Eigen::Index i = 0; i < mesh->vertices.rows(); ++i) v.push_back(mesh->vertices.row(i));
@@ -43,7 +44,7 @@ Geometry MakeBvh(const std::vector<const envs::TriangleMesh*>& meshes) {
   return model;
 }
 
-Geometry MakeConvex(const envs::TriangleMesh& hull) {
+Geometry MakeConvex(const acd::TriangleMesh& hull) {
   auto v = std::make_shared<std::vector<fcl::Vector3d>>();
   for (Eigen::Index i = 0; i < hull.vertices.rows(); ++i) v->push_back(hull.vertices.row(i));
   auto f = std::make_shared<std::vector<int>>();
@@ -196,7 +197,7 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
       m.robot_hull = m.robot_exact;
       break;
     case envs::RobotShape::kPolygon: {
-      const envs::TriangleMesh prism = internal::ExtrudePolygon(robot.polygon, -h / 4, h / 4);
+      const acd::TriangleMesh prism = internal::ExtrudePolygon(robot.polygon, -h / 4, h / 4);
       m.robot_exact = MakeBvh({&prism});
       m.robot_hull = MakeConvex(
           internal::ExtrudeConvexRing(acd::ConvexHull(robot.polygon.outer), -h / 4, h / 4));
@@ -210,13 +211,13 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
       break;
     }
     case envs::RobotShape::kMesh: {
-      envs::CheckTriangleMesh(robot.mesh, "CollisionWorld(): robot mesh");
+      acd::CheckTriangleMesh(robot.mesh, "CollisionWorld(): robot mesh");
       m.robot_exact = MakeBvh({&robot.mesh});
       std::vector<Eigen::Vector3d> points;
       for (Eigen::Index i = 0; i < robot.mesh.vertices.rows(); ++i) {
         points.push_back(robot.mesh.vertices.row(i).transpose());
       }
-      m.robot_hull = MakeConvex(internal::ConvexHull3(points, 1e-9));
+      m.robot_hull = MakeConvex(acd::ConvexHull3(points, 1e-9));
       m.witness = robot.mesh.vertices.row(robot.mesh.triangles(0, 0)).transpose();
       if (internal::IsClosedMesh(robot.mesh)) m.robot_locator.emplace(robot.mesh);
       break;
@@ -224,7 +225,7 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
   }
 
   // Obstacles.
-  std::vector<const envs::TriangleMesh*> meshes;
+  std::vector<const acd::TriangleMesh*> meshes;
   for (const auto& mesh : set.meshes) meshes.push_back(&mesh);
   m.all_bvh = MakeBvh(meshes);
   m.exact_locator.emplace(set, /*skip_open=*/true);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "acd/convex_hull3d.h"
 #include "acd/decompose2d.h"
 #include "base/input_error.h"
 #include "collision/internal/mesh_building.h"
@@ -47,7 +48,7 @@ ObstacleSet BuildObstacleSet(const envs::Workspace2d& workspace,
       piece.convex = component.polygon.holes.empty() &&
                      component.hull.size() == component.polygon.outer.size();
       piece.hull = internal::ExtrudeConvexRing(component.hull, -h / 2, h / 2);
-      piece.planes = internal::HullPlanes(piece.hull);
+      piece.planes = acd::HullPlanes(piece.hull);
       for (Eigen::Index i = 0; i < piece.hull.vertices.rows(); ++i) {
         piece.box.extend(Eigen::Vector3d(piece.hull.vertices.row(i).transpose()));
       }
@@ -65,13 +66,13 @@ ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace) {
   set.hulls_source = "connected components (no 3D ACD yet)";
   const double thickness = 1e-6 * std::max(workspace.bounds.sizes().norm(), 1e-300);
   for (size_t k = 0; k < workspace.obstacles.size(); ++k) {
-    envs::CheckTriangleMesh(workspace.obstacles[k],
-                            "BuildObstacleSet(): obstacle " + std::to_string(k));
+    acd::CheckTriangleMesh(workspace.obstacles[k],
+                           "BuildObstacleSet(): obstacle " + std::to_string(k));
     // Welded, so that copies of a vertex split at a normal or UV seam do not cut the surface
     // into open pieces.
-    const envs::TriangleMesh mesh = internal::WeldVertices(workspace.obstacles[k]);
+    const acd::TriangleMesh mesh = internal::WeldVertices(workspace.obstacles[k]);
     set.meshes.push_back(mesh);
-    for (envs::TriangleMesh& component : internal::ConnectedComponents(mesh)) {
+    for (acd::TriangleMesh& component : internal::ConnectedComponents(mesh)) {
       ObstaclePiece piece;
       piece.obstacle = static_cast<int>(k);
       piece.closed = internal::IsClosedMesh(component);
@@ -79,8 +80,8 @@ ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace) {
       for (Eigen::Index i = 0; i < component.vertices.rows(); ++i) {
         points.push_back(component.vertices.row(i).transpose());
       }
-      piece.hull = internal::ConvexHull3(points, thickness);
-      piece.planes = internal::HullPlanes(piece.hull);
+      piece.hull = acd::ConvexHull3(points, thickness);
+      piece.planes = acd::HullPlanes(piece.hull);
       for (Eigen::Index i = 0; i < piece.hull.vertices.rows(); ++i) {
         piece.box.extend(Eigen::Vector3d(piece.hull.vertices.row(i).transpose()));
       }

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "acd/polygon2d.h"
-#include "envs/triangle_mesh.h"
+#include "acd/triangle_mesh.h"
 #include "envs/workspace2d.h"
 #include "envs/workspace3d.h"
 
@@ -27,15 +27,15 @@ struct ObstacleSetOptions {
 /// One convex piece of an obstacle: an ACD component (2D) or a connected component of the
 /// obstacle's surface (3D, until a 3D ACD exists), with its convex hull.
 struct ObstaclePiece {
-  int obstacle = 0;          ///< Index of the obstacle this piece belongs to.
-  envs::TriangleMesh solid;  ///< The piece's own surface: 2D the extruded component polygon
-                             ///< (closed), 3D the component's triangles.
-  bool closed = true;        ///< `solid` is a closed 2-manifold (inside/outside is defined).
+  int obstacle = 0;         ///< Index of the obstacle this piece belongs to.
+  acd::TriangleMesh solid;  ///< The piece's own surface: 2D the extruded component polygon
+                            ///< (closed), 3D the component's triangles.
+  bool closed = true;       ///< `solid` is a closed 2-manifold (inside/outside is defined).
   /// `solid` is convex, so it equals `hull` (2D: every vertex of the component is a strict
   /// vertex of its hull, decided with exact predicates; 3D: never claimed).
   bool convex = false;
-  envs::TriangleMesh hull;  ///< Convex hull of `solid`, closed, faces counter-clockwise
-                            ///< seen from outside.
+  acd::TriangleMesh hull;  ///< Convex hull of `solid`, closed, faces counter-clockwise
+                           ///< seen from outside.
   /// #H by 4 half-spaces (n, d) with unit outward n: the hull is { x : n . x <= d for all rows }.
   Eigen::Matrix<double, Eigen::Dynamic, 4> planes;
   Eigen::AlignedBox3d box;  ///< Bounding box of `hull`.
@@ -44,12 +44,12 @@ struct ObstaclePiece {
 
 /// A workspace's obstacles, ready for collision checking and point location.
 struct ObstacleSet {
-  int dimension = 2;                       ///< 2 or 3.
-  Eigen::AlignedBox3d bounds;              ///< Workspace bounds (2D: z in [-h/2, h/2]).
-  double extrusion_height = 1.0;           ///< 2D: the prism height used [units].
-  std::vector<acd::Polygon2d> polygons;    ///< 2D: the obstacles (prepared).
-  std::vector<envs::TriangleMesh> meshes;  ///< Exact obstacle surfaces (2D: extruded prisms).
-  std::vector<ObstaclePiece> pieces;       ///< Convex pieces of every obstacle.
+  int dimension = 2;                      ///< 2 or 3.
+  Eigen::AlignedBox3d bounds;             ///< Workspace bounds (2D: z in [-h/2, h/2]).
+  double extrusion_height = 1.0;          ///< 2D: the prism height used [units].
+  std::vector<acd::Polygon2d> polygons;   ///< 2D: the obstacles (prepared).
+  std::vector<acd::TriangleMesh> meshes;  ///< Exact obstacle surfaces (2D: extruded prisms).
+  std::vector<ObstaclePiece> pieces;      ///< Convex pieces of every obstacle.
   /// Where the hulls come from, for reports: "ACD (Decompose2d, tau = 0.02)" in 2D,
   /// "connected components (no 3D ACD yet)" in 3D.
   std::string hulls_source;
@@ -66,7 +66,7 @@ ObstacleSet BuildObstacleSet(const envs::Workspace2d& workspace,
 /// after merging vertices at identical positions) of each obstacle mesh, with its 3D convex hull
 /// (CGAL convex_hull_3). Open meshes are accepted here (`closed` is false); exact point location on
 /// them is refused later.
-/// @throws InputError if a mesh fails envs::CheckTriangleMesh().
+/// @throws InputError if a mesh fails acd::CheckTriangleMesh().
 ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace);
 
 /// The number of obstacle triangles (sum over `meshes`).

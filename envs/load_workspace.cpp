@@ -75,8 +75,8 @@ World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygon
   if (IsMeshExtension(extension)) {
     world.dimension = 3;
     world.kind = "mesh";
-    TriangleMesh mesh = ReadMesh(path);
-    Eigen::AlignedBox3d box = BoundingBox(mesh);
+    acd::TriangleMesh mesh = ReadMesh(path);
+    Eigen::AlignedBox3d box = acd::BoundingBox(mesh);
     const double margin = 0.1 * box.sizes().maxCoeff();
     box.min().array() -= margin;
     box.max().array() += margin;

@@ -13,7 +13,7 @@
 
 namespace acdplan::envs {
 
-TriangleMesh ReadMesh(const std::string& path) {
+acd::TriangleMesh ReadMesh(const std::string& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) {
     const bool exists = std::filesystem::exists(path, error);
@@ -50,12 +50,12 @@ TriangleMesh ReadMesh(const std::string& path) {
     }
   }
   if (triangles.empty()) throw InputError(path + ": no triangles in file");
-  TriangleMesh result;
+  acd::TriangleMesh result;
   result.vertices.resize(static_cast<Eigen::Index>(vertices.size()), 3);
   result.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
   for (size_t i = 0; i < vertices.size(); ++i) result.vertices.row(i) = vertices[i].transpose();
   for (size_t i = 0; i < triangles.size(); ++i) result.triangles.row(i) = triangles[i].transpose();
-  CheckTriangleMesh(result, path);
+  acd::CheckTriangleMesh(result, path);
   return result;
 }
 

@@ -28,8 +28,8 @@ Robot Robot::Polygon(const acd::Polygon2d& outline) {
   return robot;
 }
 
-Robot Robot::Mesh(const TriangleMesh& surface) {
-  CheckTriangleMesh(surface, "Robot::Mesh()");
+Robot Robot::Mesh(const acd::TriangleMesh& surface) {
+  acd::CheckTriangleMesh(surface, "Robot::Mesh()");
   Robot robot;
   robot.shape = RobotShape::kMesh;
   robot.mesh = surface;
@@ -82,8 +82,8 @@ acd::Polygon2d Transformed(const acd::Polygon2d& polygon, const Eigen::Isometry2
   return result;
 }
 
-TriangleMesh Transformed(const TriangleMesh& mesh, const Eigen::Isometry3d& pose) {
-  TriangleMesh result = mesh;
+acd::TriangleMesh Transformed(const acd::TriangleMesh& mesh, const Eigen::Isometry3d& pose) {
+  acd::TriangleMesh result = mesh;
   for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
     result.vertices.row(i) = (pose * Eigen::Vector3d(mesh.vertices.row(i).transpose())).transpose();
   }

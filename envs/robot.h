@@ -5,7 +5,7 @@
 #include <string>
 
 #include "acd/polygon2d.h"
-#include "envs/triangle_mesh.h"
+#include "acd/triangle_mesh.h"
 
 namespace acdplan::envs {
 
@@ -23,7 +23,7 @@ struct Robot {
   RobotShape shape = RobotShape::kPoint;
   double radius = 0.0;     ///< kDisc: radius [units], > 0.
   acd::Polygon2d polygon;  ///< kPolygon: body-frame outline, prepared (CCW, holes CW).
-  TriangleMesh mesh;       ///< kMesh: body-frame surface.
+  acd::TriangleMesh mesh;  ///< kMesh: body-frame surface.
 
   static Robot Point();
   /// @throws InputError unless `radius` is finite and > 0.
@@ -31,8 +31,8 @@ struct Robot {
   /// Prepares `outline` (acd::PreparePolygon).
   /// @throws InputError if it is not a valid polygon.
   static Robot Polygon(const acd::Polygon2d& outline);
-  /// @throws InputError if CheckTriangleMesh() fails.
-  static Robot Mesh(const TriangleMesh& surface);
+  /// @throws InputError if acd::CheckTriangleMesh() fails.
+  static Robot Mesh(const acd::TriangleMesh& surface);
 
   /// Largest distance from the body origin to the robot's geometry (0 for a point) [units].
   double BoundingRadius() const;
@@ -54,6 +54,6 @@ bool InsideBounds(const Robot& robot, const Eigen::AlignedBox2d& bounds,
 acd::Polygon2d Transformed(const acd::Polygon2d& polygon, const Eigen::Isometry2d& pose);
 
 /// `mesh` moved by the SE(3) `pose`.
-TriangleMesh Transformed(const TriangleMesh& mesh, const Eigen::Isometry3d& pose);
+acd::TriangleMesh Transformed(const acd::TriangleMesh& mesh, const Eigen::Isometry3d& pose);
 
 }  // namespace acdplan::envs

@@ -165,7 +165,7 @@ Workspace3d LoadWorkspace3dYaml(const std::string& path) {
           file.Numbers(entry["translation"], YamlFile::Child(key, "translation"), 3, "[x, y, z]");
       translation << t[0], t[1], t[2];
     }
-    TriangleMesh mesh = ReadMesh(file.ResolvePath(name));
+    acd::TriangleMesh mesh = ReadMesh(file.ResolvePath(name));
     for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
       mesh.vertices.row(v) = mesh.vertices.row(v) * scale + translation;
     }

@@ -186,7 +186,7 @@ int Report3d(const EnvArguments& args, const std::string& kind,
   }
   const collision::ObstacleSet obstacles = collision::BuildObstacleSet(workspace);
   long vertices = 0;
-  for (const envs::TriangleMesh& mesh : workspace.obstacles) vertices += mesh.vertices.rows();
+  for (const acd::TriangleMesh& mesh : workspace.obstacles) vertices += mesh.vertices.rows();
   int open_pieces = 0;
   for (const collision::ObstaclePiece& piece : obstacles.pieces) open_pieces += !piece.closed;
 

@@ -2,12 +2,9 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/convex_hull_3.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <list>
@@ -75,19 +72,9 @@ void AddRingWalls(const acd::Ring2d& ring, int bottom0, int top0, int ring_offse
   }
 }
 
-envs::TriangleMesh ToMesh(const std::vector<Eigen::Vector3d>& v,
-                          const std::vector<Eigen::Vector3i>& t) {
-  envs::TriangleMesh mesh;
-  mesh.vertices.resize(static_cast<Eigen::Index>(v.size()), 3);
-  for (size_t i = 0; i < v.size(); ++i) mesh.vertices.row(static_cast<Eigen::Index>(i)) = v[i];
-  mesh.triangles.resize(static_cast<Eigen::Index>(t.size()), 3);
-  for (size_t i = 0; i < t.size(); ++i) mesh.triangles.row(static_cast<Eigen::Index>(i)) = t[i];
-  return mesh;
-}
-
 }  // namespace
 
-envs::TriangleMesh ExtrudePolygon(const acd::Polygon2d& polygon, double z0, double z1) {
+acd::TriangleMesh ExtrudePolygon(const acd::Polygon2d& polygon, double z0, double z1) {
   std::vector<const acd::Ring2d*> rings{&polygon.outer};
   for (const acd::Ring2d& hole : polygon.holes) rings.push_back(&hole);
   std::vector<Eigen::Vector2d> flat;
@@ -127,10 +114,10 @@ envs::TriangleMesh ExtrudePolygon(const acd::Polygon2d& polygon, double z0, doub
     tris.emplace_back(n + a, n + b, n + c);  // CDT faces are CCW: top cap faces +z
     tris.emplace_back(a, c, b);              // bottom cap faces -z
   }
-  return ToMesh(v, tris);
+  return acd::MakeTriangleMesh(v, tris);
 }
 
-envs::TriangleMesh ExtrudeConvexRing(const acd::Ring2d& hull, double z0, double z1) {
+acd::TriangleMesh ExtrudeConvexRing(const acd::Ring2d& hull, double z0, double z1) {
   const int n = static_cast<int>(hull.size());
   std::vector<Eigen::Vector3d> v;
   for (const auto& p : hull) v.emplace_back(p.x(), p.y(), z0);
@@ -141,76 +128,10 @@ envs::TriangleMesh ExtrudeConvexRing(const acd::Ring2d& hull, double z0, double 
     tris.emplace_back(n, n + i, n + i + 1);
     tris.emplace_back(0, i + 1, i);
   }
-  return ToMesh(v, tris);
+  return acd::MakeTriangleMesh(v, tris);
 }
 
-envs::TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thickness) {
-  if (points.empty()) throw std::logic_error("ConvexHull3(): no points");
-  // Thicken a flat or degenerate set along its missing principal directions, so the hull is a
-  // solid (FCL's GJK and the half-space test both want a volume).
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const auto& p : points) mean += p;
-  mean /= static_cast<double>(points.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const auto& p : points) cov += (p - mean) * (p - mean).transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-  const double largest = std::max(eig.eigenvalues()(2), 0.0);
-  std::vector<Kernel::Point_3> pts;
-  pts.reserve(points.size() * 2);
-  for (const auto& p : points) pts.emplace_back(p.x(), p.y(), p.z());
-  for (int axis = 0; axis < 3; ++axis) {
-    const double spread = std::sqrt(std::max(eig.eigenvalues()(axis), 0.0));
-    if (spread > 1e-9 * std::sqrt(largest) && largest > 0) continue;
-    const Eigen::Vector3d dir = eig.eigenvectors().col(axis) * thickness;
-    const size_t count = pts.size();
-    for (size_t i = 0; i < count; ++i) {
-      pts.emplace_back(pts[i].x() + dir.x(), pts[i].y() + dir.y(), pts[i].z() + dir.z());
-    }
-  }
-  CGAL::Surface_mesh<Kernel::Point_3> hull;
-  CGAL::convex_hull_3(pts.begin(), pts.end(), hull);
-  std::vector<Eigen::Vector3d> v;
-  std::map<CGAL::Surface_mesh<Kernel::Point_3>::Vertex_index, int> index;
-  for (auto vi : hull.vertices()) {
-    const auto& p = hull.point(vi);
-    index[vi] = static_cast<int>(v.size());
-    v.emplace_back(p.x(), p.y(), p.z());
-  }
-  std::vector<Eigen::Vector3i> tris;
-  for (auto f : hull.faces()) {
-    std::vector<int> ids;
-    for (auto vi : CGAL::vertices_around_face(hull.halfedge(f), hull)) ids.push_back(index[vi]);
-    for (size_t i = 1; i + 1 < ids.size(); ++i) tris.emplace_back(ids[0], ids[i], ids[i + 1]);
-  }
-  return ToMesh(v, tris);
-}
-
-Eigen::Matrix<double, Eigen::Dynamic, 4> HullPlanes(const envs::TriangleMesh& hull) {
-  std::vector<Eigen::Vector4d> planes;
-  for (Eigen::Index f = 0; f < hull.triangles.rows(); ++f) {
-    const Eigen::Vector3d a = hull.vertices.row(hull.triangles(f, 0));
-    const Eigen::Vector3d b = hull.vertices.row(hull.triangles(f, 1));
-    const Eigen::Vector3d c = hull.vertices.row(hull.triangles(f, 2));
-    Eigen::Vector3d n = (b - a).cross(c - a);
-    const double len = n.norm();
-    if (!(len > 0)) continue;  // a sliver face adds no constraint its neighbours lack
-    n /= len;
-    const double d = n.dot(a);
-    bool duplicate = false;
-    for (const auto& q : planes) {
-      if (q.head<3>().dot(n) > 1 - 1e-12 && std::abs(q(3) - d) <= 1e-12 * (1 + std::abs(d))) {
-        duplicate = true;
-        break;
-      }
-    }
-    if (!duplicate) planes.emplace_back(n.x(), n.y(), n.z(), d);
-  }
-  Eigen::Matrix<double, Eigen::Dynamic, 4> out(static_cast<Eigen::Index>(planes.size()), 4);
-  for (size_t i = 0; i < planes.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = planes[i];
-  return out;
-}
-
-envs::TriangleMesh WeldVertices(const envs::TriangleMesh& mesh) {
+acd::TriangleMesh WeldVertices(const acd::TriangleMesh& mesh) {
   std::map<std::tuple<double, double, double>, int> index;
   std::vector<Eigen::Vector3d> v;
   std::vector<int> remap(static_cast<size_t>(mesh.vertices.rows()));
@@ -227,10 +148,10 @@ envs::TriangleMesh WeldVertices(const envs::TriangleMesh& mesh) {
                               remap[static_cast<size_t>(mesh.triangles(f, 2))]);
     if (tri(0) != tri(1) && tri(1) != tri(2) && tri(0) != tri(2)) t.push_back(tri);
   }
-  return ToMesh(v, t);
+  return acd::MakeTriangleMesh(v, t);
 }
 
-std::vector<envs::TriangleMesh> ConnectedComponents(const envs::TriangleMesh& mesh) {
+std::vector<acd::TriangleMesh> ConnectedComponents(const acd::TriangleMesh& mesh) {
   const int nv = static_cast<int>(mesh.vertices.rows());
   std::vector<int> parent(static_cast<size_t>(nv));
   std::iota(parent.begin(), parent.end(), 0);
@@ -255,7 +176,7 @@ std::vector<envs::TriangleMesh> ConnectedComponents(const envs::TriangleMesh& me
     if (inserted) tris.emplace_back();
     tris[it->second].push_back(mesh.triangles.row(f).transpose());
   }
-  std::vector<envs::TriangleMesh> out;
+  std::vector<acd::TriangleMesh> out;
   for (const auto& component : tris) {
     std::map<int, int> remap;
     std::vector<Eigen::Vector3d> v;
@@ -269,12 +190,12 @@ std::vector<envs::TriangleMesh> ConnectedComponents(const envs::TriangleMesh& me
       }
       t.push_back(r);
     }
-    out.push_back(ToMesh(v, t));
+    out.push_back(acd::MakeTriangleMesh(v, t));
   }
   return out;
 }
 
-bool IsClosedMesh(const envs::TriangleMesh& mesh, int* bad_edges) {
+bool IsClosedMesh(const acd::TriangleMesh& mesh, int* bad_edges) {
   std::map<std::pair<int, int>, int> uses;
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
     for (int k = 0; k < 3; ++k) {

@@ -86,7 +86,7 @@ struct MeshLocator3d::Impl {
   std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>> side;
 };
 
-MeshLocator3d::MeshLocator3d(const envs::TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
+MeshLocator3d::MeshLocator3d(const acd::TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
   std::vector<Impl::Mesh::Vertex_index> vs;
   for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
     const Eigen::Vector3d p = mesh.vertices.row(i);

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "acd/polygon2d.h"
+#include "acd/triangle_mesh.h"
 #include "collision/obstacle_set.h"
-#include "envs/triangle_mesh.h"
 
 namespace acdplan::collision::internal {
 
@@ -40,7 +40,7 @@ class PolygonLocator2d {
 class MeshLocator3d {
  public:
   /// Requires IsClosedMesh(mesh).
-  explicit MeshLocator3d(const envs::TriangleMesh& mesh);
+  explicit MeshLocator3d(const acd::TriangleMesh& mesh);
   ~MeshLocator3d();
   MeshLocator3d(MeshLocator3d&&) noexcept;
   MeshLocator3d& operator=(MeshLocator3d&&) noexcept;

@@ -212,7 +212,7 @@ TEST_P(VhacdMeshes, HullsExactEqualsBvhAndHullsAreConservative) {
   envs::Workspace3d workspace;
   workspace.obstacles.push_back(
       envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + GetParam() + ".obj"));
-  const Eigen::AlignedBox3d box = envs::BoundingBox(workspace.obstacles[0]);
+  const Eigen::AlignedBox3d box = acd::BoundingBox(workspace.obstacles[0]);
   workspace.bounds =
       Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
   auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));

@@ -76,9 +76,9 @@ TEST(ObstacleSet2d, RejectsBadOptions) {
 TEST(ObstacleSet3d, OnePiecePerConnectedComponentAndSaysSo) {
   envs::Workspace3d world;
   world.bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-5, -5, -5), Eigen::Vector3d(5, 5, 5));
-  envs::TriangleMesh two = testing::CubeMesh(1.0);
+  acd::TriangleMesh two = testing::CubeMesh(1.0);
   // A second, disjoint cube in the same mesh.
-  envs::TriangleMesh other = testing::CubeMesh(1.0);
+  acd::TriangleMesh other = testing::CubeMesh(1.0);
   two.vertices.conservativeResize(16, 3);
   two.vertices.bottomRows(8) = other.vertices.rowwise() + Eigen::RowVector3d(3, 0, 0);
   two.triangles.conservativeResize(24, 3);
@@ -94,8 +94,8 @@ TEST(ObstacleSet3d, OnePiecePerConnectedComponentAndSaysSo) {
 
 TEST(ObstacleSet3d, VerticesSplitAtSeamsAreWelded) {
   // Each triangle with its own three vertices, as a file with per-face normals reads.
-  const envs::TriangleMesh cube = testing::CubeMesh(1.0);
-  envs::TriangleMesh split;
+  const acd::TriangleMesh cube = testing::CubeMesh(1.0);
+  acd::TriangleMesh split;
   split.vertices.resize(36, 3);
   split.triangles.resize(12, 3);
   for (int f = 0; f < 12; ++f) {
@@ -116,7 +116,7 @@ TEST(ObstacleSet3d, VerticesSplitAtSeamsAreWelded) {
 TEST(ObstacleSet3d, FlatComponentGetsAThinSolidHull) {
   envs::Workspace3d world;
   world.bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1));
-  envs::TriangleMesh quad;
+  acd::TriangleMesh quad;
   quad.vertices.resize(4, 3);
   quad.vertices << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
   quad.triangles.resize(2, 3);
@@ -132,7 +132,7 @@ TEST(ObstacleSet3d, FlatComponentGetsAThinSolidHull) {
 TEST(ObstacleSet3d, RejectsAnInvalidMesh) {
   envs::Workspace3d world;
   world.bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1));
-  envs::TriangleMesh bad = testing::CubeMesh(1.0);
+  acd::TriangleMesh bad = testing::CubeMesh(1.0);
   bad.triangles(4, 1) = 17;
   world.obstacles.push_back(bad);
   EXPECT_NE(ErrorOf([&] { BuildObstacleSet(world); }).find("BuildObstacleSet(): obstacle 0"),

@@ -96,10 +96,10 @@ TEST(PointLocator2d, ExactMatchesAPlainCrossingTestOnAMaze) {
   }
 }
 
-envs::Workspace3d MeshWorld(const envs::TriangleMesh& mesh) {
+envs::Workspace3d MeshWorld(const acd::TriangleMesh& mesh) {
   envs::Workspace3d w;
   w.obstacles.push_back(mesh);
-  const Eigen::AlignedBox3d box = envs::BoundingBox(mesh);
+  const Eigen::AlignedBox3d box = acd::BoundingBox(mesh);
   w.bounds = Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
   return w;
 }
@@ -113,7 +113,7 @@ TEST(PointLocator3d, ExactOnACube) {
 }
 
 TEST(PointLocator3d, ExactRefusesAnOpenMesh) {
-  envs::TriangleMesh open = testing::CubeMesh(2);
+  acd::TriangleMesh open = testing::CubeMesh(2);
   open.triangles.conservativeResize(10, 3);  // drop the x+ face
   auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(MeshWorld(open)));
   try {
@@ -132,8 +132,8 @@ TEST(PointLocator3d, ExactRefusesAnOpenMesh) {
 
 TEST(PointLocator3d, NestedShellsBoundACavity) {
   // A cube inside a cube, both in one mesh: the space between them is the solid.
-  envs::TriangleMesh outer = testing::CubeMesh(4), inner = testing::CubeMesh(2);
-  envs::TriangleMesh both = outer;
+  acd::TriangleMesh outer = testing::CubeMesh(4), inner = testing::CubeMesh(2);
+  acd::TriangleMesh both = outer;
   both.vertices.conservativeResize(16, 3);
   both.vertices.bottomRows(8) = inner.vertices;
   both.triangles.conservativeResize(24, 3);

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "acd/triangle_mesh.h"
 #include "base/random.h"
 #include "envs/generators.h"
 #include "envs/robot.h"
-#include "envs/triangle_mesh.h"
 
 namespace acdplan::collision::testing {
 
@@ -35,8 +35,8 @@ inline envs::Robot LRobot() {
   return envs::Robot::Polygon(outline);
 }
 
-/// A cube mesh of side `side` centred on the body origin (envs::Cube).
-inline envs::TriangleMesh CubeMesh(double side) { return envs::Cube(side); }
+/// A cube mesh of side `side` centred on the body origin (acd::Cube).
+inline acd::TriangleMesh CubeMesh(double side) { return acd::Cube(side); }
 
 /// Uniform SE(2) poses in `bounds`, seeded.
 inline std::vector<Eigen::Isometry2d> RandomPoses2d(const Eigen::AlignedBox2d& bounds, int count,

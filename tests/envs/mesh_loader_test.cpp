@@ -31,18 +31,18 @@ const char* kTriangleStl =
 
 TEST(ReadMeshTest, ReadsObjOffPlyStl) {
   TempDir dir;
-  const TriangleMesh cube = ReadMesh(dir.Write("cube.obj", kCubeObj));
+  const acd::TriangleMesh cube = ReadMesh(dir.Write("cube.obj", kCubeObj));
   EXPECT_EQ(cube.triangles.rows(), 12);
-  EXPECT_EQ(BoundingBox(cube).min(), Eigen::Vector3d(0, 0, 0));
-  EXPECT_EQ(BoundingBox(cube).max(), Eigen::Vector3d(1, 1, 1));
+  EXPECT_EQ(acd::BoundingBox(cube).min(), Eigen::Vector3d(0, 0, 0));
+  EXPECT_EQ(acd::BoundingBox(cube).max(), Eigen::Vector3d(1, 1, 1));
   for (const auto& [name, text] : {std::pair{"t.off", kTetraOff}, std::pair{"t.ply", kTetraPly}}) {
-    const TriangleMesh tetra = ReadMesh(dir.Write(name, text));
+    const acd::TriangleMesh tetra = ReadMesh(dir.Write(name, text));
     EXPECT_EQ(tetra.triangles.rows(), 4) << name;
-    EXPECT_EQ(BoundingBox(tetra).max(), Eigen::Vector3d(1, 1, 1)) << name;
+    EXPECT_EQ(acd::BoundingBox(tetra).max(), Eigen::Vector3d(1, 1, 1)) << name;
   }
-  const TriangleMesh triangle = ReadMesh(dir.Write("t.stl", kTriangleStl));
+  const acd::TriangleMesh triangle = ReadMesh(dir.Write("t.stl", kTriangleStl));
   EXPECT_EQ(triangle.triangles.rows(), 1);
-  EXPECT_EQ(BoundingBox(triangle).max(), Eigen::Vector3d(2, 3, 0));
+  EXPECT_EQ(acd::BoundingBox(triangle).max(), Eigen::Vector3d(2, 3, 0));
 }
 
 // One triangle in glTF 2.0 with an embedded buffer, and in COLLADA.
@@ -74,16 +74,16 @@ const char* kTriangleDae = R"(<?xml version="1.0" encoding="utf-8"?>
 
 TEST(ReadMeshTest, ReadsGltfAndCollada) {
   TempDir dir;
-  const TriangleMesh gltf = ReadMesh(dir.Write("t.gltf", kTriangleGltf));
+  const acd::TriangleMesh gltf = ReadMesh(dir.Write("t.gltf", kTriangleGltf));
   ASSERT_EQ(gltf.triangles.rows(), 1);
-  EXPECT_EQ(BoundingBox(gltf).max(), Eigen::Vector3d(1, 1, 5));  // Node transform applied.
-  const TriangleMesh dae = ReadMesh(dir.Write("t.dae", kTriangleDae));
+  EXPECT_EQ(acd::BoundingBox(gltf).max(), Eigen::Vector3d(1, 1, 5));  // Node transform applied.
+  const acd::TriangleMesh dae = ReadMesh(dir.Write("t.dae", kTriangleDae));
   ASSERT_EQ(dae.triangles.rows(), 1);
-  EXPECT_DOUBLE_EQ(BoundingBox(dae).sizes().maxCoeff(), 1.0);
+  EXPECT_DOUBLE_EQ(acd::BoundingBox(dae).sizes().maxCoeff(), 1.0);
 }
 
 TEST(ReadMeshTest, ReadsSharedMeshes) {
-  const TriangleMesh cup = ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/cup.obj");
+  const acd::TriangleMesh cup = ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/cup.obj");
   EXPECT_GT(cup.triangles.rows(), 100);
   CheckTriangleMesh(cup, "cup.obj");
 }
@@ -101,7 +101,7 @@ TEST(ReadMeshTest, Errors) {
 }
 
 TEST(CheckTriangleMeshTest, Errors) {
-  TriangleMesh mesh;
+  acd::TriangleMesh mesh;
   EXPECT_EQ(ErrorOf([&] { CheckTriangleMesh(mesh, "m"); }), "m: mesh has no triangles");
   mesh.vertices.resize(3, 3);
   mesh.vertices.setZero();

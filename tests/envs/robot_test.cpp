@@ -22,7 +22,7 @@ TEST(RobotTest, ShapesAndBoundingRadius) {
   EXPECT_EQ(box.shape, RobotShape::kPolygon);
   EXPECT_GT(acd::SignedArea(box.polygon.outer), 0.0);
   EXPECT_DOUBLE_EQ(box.BoundingRadius(), std::sqrt(5.0));
-  TriangleMesh tri;
+  acd::TriangleMesh tri;
   tri.vertices.resize(3, 3);
   tri.vertices << 0, 0, 0, 3, 0, 0, 0, 4, 0;
   tri.triangles.resize(1, 3);
@@ -36,7 +36,7 @@ TEST(RobotTest, Transformed) {
   const Eigen::Isometry2d pose = Eigen::Translation2d(5, 0) * Eigen::Rotation2Dd(M_PI / 2);
   const acd::Polygon2d moved = Transformed(square, pose);
   EXPECT_TRUE(moved.outer[1].isApprox(Eigen::Vector2d(5, 1)));
-  TriangleMesh tri;
+  acd::TriangleMesh tri;
   tri.vertices.resize(1, 3);
   tri.vertices << 1, 0, 0;
   const Eigen::Isometry3d pose3(Eigen::Translation3d(0, 0, 2));
@@ -51,7 +51,7 @@ TEST(RobotTest, Errors) {
                 Robot::Polygon({{{0, 0}, {2, 2}, {2, 0}, {0, 1}}, {}});
               }),
               HasSubstr("Robot::Polygon(): outer ring is not simple"));
-  EXPECT_THAT(ErrorOf([] { Robot::Mesh(TriangleMesh{}); }),
+  EXPECT_THAT(ErrorOf([] { Robot::Mesh(acd::TriangleMesh{}); }),
               HasSubstr("Robot::Mesh(): mesh has no triangles"));
 }
 

@@ -1,11 +1,12 @@
 #pragma once
-// A triangle mesh: the 3D obstacle and robot geometry.
+// A triangle mesh: the input of the 3D decomposition and the 3D obstacle and robot geometry.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <string>
+#include <vector>
 
-namespace acdplan::envs {
+namespace acdplan::acd {
 
 /// An indexed triangle mesh (libigl's V, F convention).
 struct TriangleMesh {
@@ -13,6 +14,10 @@ struct TriangleMesh {
   Eigen::Matrix<int, Eigen::Dynamic, 3> triangles;    ///< #F by 3 indices into `vertices`,
                                                       ///< counter-clockwise seen from outside.
 };
+
+/// The mesh with vertex rows `vertices` and triangle rows `triangles`.
+TriangleMesh MakeTriangleMesh(const std::vector<Eigen::Vector3d>& vertices,
+                              const std::vector<Eigen::Vector3i>& triangles);
 
 /// Axis-aligned bounding box of the vertices (empty box for an empty mesh).
 Eigen::AlignedBox3d BoundingBox(const TriangleMesh& mesh);
@@ -27,4 +32,4 @@ TriangleMesh Cube(double side);
 ///         range [0, 12)".
 void CheckTriangleMesh(const TriangleMesh& mesh, const std::string& where);
 
-}  // namespace acdplan::envs
+}  // namespace acdplan::acd

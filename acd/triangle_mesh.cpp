@@ -1,8 +1,22 @@
-#include "envs/triangle_mesh.h"
+#include "acd/triangle_mesh.h"
 
 #include "base/input_error.h"
 
-namespace acdplan::envs {
+namespace acdplan::acd {
+
+TriangleMesh MakeTriangleMesh(const std::vector<Eigen::Vector3d>& vertices,
+                              const std::vector<Eigen::Vector3i>& triangles) {
+  TriangleMesh mesh;
+  mesh.vertices.resize(static_cast<Eigen::Index>(vertices.size()), 3);
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    mesh.vertices.row(static_cast<Eigen::Index>(i)) = vertices[i];
+  }
+  mesh.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    mesh.triangles.row(static_cast<Eigen::Index>(i)) = triangles[i];
+  }
+  return mesh;
+}
 
 Eigen::AlignedBox3d BoundingBox(const TriangleMesh& mesh) {
   Eigen::AlignedBox3d box;
@@ -46,4 +60,4 @@ void CheckTriangleMesh(const TriangleMesh& mesh, const std::string& where) {
   }
 }
 
-}  // namespace acdplan::envs
+}  // namespace acdplan::acd

@@ -1,0 +1,83 @@
+#include "acd/convex_hull3d.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_hull_3.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace acdplan::acd {
+namespace {
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+}  // namespace
+
+TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thickness) {
+  if (points.empty()) throw std::logic_error("ConvexHull3(): no points");
+  // Thicken a flat or degenerate set along its missing principal directions, so the hull is a
+  // solid (FCL's GJK and the half-space test both want a volume).
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const auto& p : points) cov += (p - mean) * (p - mean).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  const double largest = std::max(eig.eigenvalues()(2), 0.0);
+  std::vector<Kernel::Point_3> pts;
+  pts.reserve(points.size() * 2);
+  for (const auto& p : points) pts.emplace_back(p.x(), p.y(), p.z());
+  for (int axis = 0; axis < 3; ++axis) {
+    const double spread = std::sqrt(std::max(eig.eigenvalues()(axis), 0.0));
+    if (spread > 1e-9 * std::sqrt(largest) && largest > 0) continue;
+    const Eigen::Vector3d dir = eig.eigenvectors().col(axis) * thickness;
+    const size_t count = pts.size();
+    for (size_t i = 0; i < count; ++i) {
+      pts.emplace_back(pts[i].x() + dir.x(), pts[i].y() + dir.y(), pts[i].z() + dir.z());
+    }
+  }
+  CGAL::Surface_mesh<Kernel::Point_3> hull;
+  CGAL::convex_hull_3(pts.begin(), pts.end(), hull);
+  std::vector<Eigen::Vector3d> v;
+  std::map<CGAL::Surface_mesh<Kernel::Point_3>::Vertex_index, int> index;
+  for (auto vi : hull.vertices()) {
+    const auto& p = hull.point(vi);
+    index[vi] = static_cast<int>(v.size());
+    v.emplace_back(p.x(), p.y(), p.z());
+  }
+  std::vector<Eigen::Vector3i> tris;
+  for (auto f : hull.faces()) {
+    std::vector<int> ids;
+    for (auto vi : CGAL::vertices_around_face(hull.halfedge(f), hull)) ids.push_back(index[vi]);
+    for (size_t i = 1; i + 1 < ids.size(); ++i) tris.emplace_back(ids[0], ids[i], ids[i + 1]);
+  }
+  return MakeTriangleMesh(v, tris);
+}
+
+Eigen::Matrix<double, Eigen::Dynamic, 4> HullPlanes(const TriangleMesh& hull) {
+  std::vector<Eigen::Vector4d> planes;
+  for (Eigen::Index f = 0; f < hull.triangles.rows(); ++f) {
+    const Eigen::Vector3d a = hull.vertices.row(hull.triangles(f, 0));
+    const Eigen::Vector3d b = hull.vertices.row(hull.triangles(f, 1));
+    const Eigen::Vector3d c = hull.vertices.row(hull.triangles(f, 2));
+    Eigen::Vector3d n = (b - a).cross(c - a);
+    const double len = n.norm();
+    if (!(len > 0)) continue;  // a sliver face adds no constraint its neighbours lack
+    n /= len;
+    const double d = n.dot(a);
+    bool duplicate = false;
+    for (const auto& q : planes) {
+      if (q.head<3>().dot(n) > 1 - 1e-12 && std::abs(q(3) - d) <= 1e-12 * (1 + std::abs(d))) {
+        duplicate = true;
+        break;
+      }
+    }
+    if (!duplicate) planes.emplace_back(n.x(), n.y(), n.z(), d);
+  }
+  Eigen::Matrix<double, Eigen::Dynamic, 4> out(static_cast<Eigen::Index>(planes.size()), 4);
+  for (size_t i = 0; i < planes.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = planes[i];
+  return out;
+}
+}  // namespace acdplan::acd

@@ -1,0 +1,21 @@
+#pragma once
+// 3D convex hulls as triangle meshes, and their half-space form.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "acd/triangle_mesh.h"
+
+namespace acdplan::acd {
+
+/// Convex hull of `points` (CGAL convex_hull_3) as a closed triangle mesh, faces CCW seen from
+/// outside. A flat or degenerate point set is thickened by `thickness` [units] along its missing
+/// principal directions first, so that the hull bounds a volume when thickness > 0; with
+/// thickness 0 the hull of a flat set stays flat (volume 0). Requires >= 1 point.
+TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thickness);
+
+/// Outward half-spaces (n, d), |n| = 1, of the closed convex mesh `hull`: one row per face
+/// (coplanar faces merged); the hull is { x : n . x <= d for every row }.
+Eigen::Matrix<double, Eigen::Dynamic, 4> HullPlanes(const TriangleMesh& hull);
+
+}  // namespace acdplan::acd

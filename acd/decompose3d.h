@@ -1,0 +1,28 @@
+#pragma once
+// 3D approximate convex decomposition of polyhedra (dissertation Ch. V, Algorithm 1).
+
+#include "acd/decomposition3d.h"
+#include "acd/prepare_mesh.h"
+
+namespace acdplan::acd {
+
+/// Options for Decompose3d(); tau must be set (> 0 unless the input is convex).
+struct Decompose3dOptions {
+  double tau = 0.0;  ///< Concavity tolerated per component [units]; >= 0.
+  /// Partition the surface into nearly convex patches (surface ACD) even when the input is a
+  /// solid. Open or otherwise non-solid inputs always get the surface ACD.
+  bool surface = false;
+  /// > 0: after the decomposition, merge the adjacent pair whose merged hull adds the least
+  /// volume until at most this many components remain (a cap for physics engines; the merged
+  /// components may then exceed tau). 0 = no cap.
+  int max_hulls = 0;
+};
+
+/// Splits every part of `prepared` into components whose concavity is at most `options.tau`,
+/// resolving the most concave feature first (Algorithm 1): solid ACD (Sec. V.B-C) when
+/// `prepared.solid()` and not `options.surface`, else surface ACD. The same input and options
+/// give the same output, bit for bit.
+/// @throws InputError if an option is out of range.
+Decomposition3d Decompose3d(const PreparedMesh& prepared, const Decompose3dOptions& options);
+
+}  // namespace acdplan::acd

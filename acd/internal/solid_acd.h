@@ -1,0 +1,15 @@
+#pragma once
+// Solid ACD (dissertation Sec. V.B-C): splits a solid into nearly convex pieces by plane cuts.
+// Internal: Decompose3d() dispatches here.
+
+#include "acd/decomposition3d.h"
+#include "acd/prepare_mesh.h"
+
+namespace acdplan::acd::internal {
+
+/// Splits every part of `prepared` (prepared.solid() holds) into closed pieces whose concavity
+/// is at most `tau` [units]. Fills components, openings (the cut polygons two pieces share),
+/// tree, roots and stats (stats.surface = false; time_ms is left to the caller).
+Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau);
+
+}  // namespace acdplan::acd::internal
