@@ -26,7 +26,8 @@ Json VectorToJson(const Eigen::Vector3d& p) { return Json::array({p.x(), p.y(), 
 Json MeshToJson(const TriangleMesh& mesh) {
   Json vertices = Json::array();
   for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
-    vertices.push_back(Json::array({mesh.vertices(i, 0), mesh.vertices(i, 1), mesh.vertices(i, 2)}));
+    vertices.push_back(
+        Json::array({mesh.vertices(i, 0), mesh.vertices(i, 1), mesh.vertices(i, 2)}));
   }
   Json triangles = Json::array();
   for (Eigen::Index i = 0; i < mesh.triangles.rows(); ++i) {
@@ -84,7 +85,7 @@ void PutF32(std::vector<std::uint8_t>* bytes, float value) {
 constexpr int kFloat = 5126, kUnsignedInt = 5125;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 constexpr int kTriangles = 4;
-constexpr std::uint32_t kGlbMagic = 0x46546C67;  // "glTF"
+constexpr std::uint32_t kGlbMagic = 0x46546C67;   // "glTF"
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
 constexpr std::uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
 
@@ -152,8 +153,8 @@ class GlbBuilder {
   int AddMaterial(const std::string& name, const Eigen::Vector3d& rgb, double alpha,
                   bool double_sided) {
     Json pbr;
-    pbr["baseColorFactor"] = Json::array(
-        {SrgbToLinear(rgb[0]), SrgbToLinear(rgb[1]), SrgbToLinear(rgb[2]), alpha});
+    pbr["baseColorFactor"] =
+        Json::array({SrgbToLinear(rgb[0]), SrgbToLinear(rgb[1]), SrgbToLinear(rgb[2]), alpha});
     pbr["metallicFactor"] = 0.0;
     pbr["roughnessFactor"] = 0.8;
     Json material;
@@ -300,14 +301,13 @@ std::string Decomposition3dToJson(const Decomposition3d& decomposition,
   json["openings"] = std::move(openings);
 
   const DecompositionStats3d& stats = decomposition.stats;
-  json["stats"] = {{"vertices", stats.vertices},
-                   {"triangles", stats.triangles},
-                   {"components", stats.components},
-                   {"volume", stats.volume},
-                   {"hull_volume", stats.hull_volume},
-                   {"max_concavity", stats.max_concavity},
-                   {"surface", stats.surface},
-                   {"time_ms", stats.time_ms}};
+  json["stats"] = {{"vertices", stats.vertices},       {"triangles", stats.triangles},
+                   {"components", stats.components},   {"volume", stats.volume},
+                   {"hull_volume", stats.hull_volume}, {"max_concavity", stats.max_concavity},
+                   {"surface", stats.surface},         {"time_ms", stats.time_ms}};
+
+  // Extension, as in 2D: the component adjacency graph of the openings.
+  json["graph"] = ComponentGraph(decomposition);
   return json.dump() + "\n";
 }
 
@@ -335,8 +335,8 @@ ObjFiles Decomposition3dToObj(const Decomposition3d& decomposition, const std::s
     written += mesh.vertices.rows();
   };
   auto add_material = [&](const std::string& name, const Eigen::Vector3d& rgb, double alpha) {
-    const std::string kd = FormatSignificant(rgb[0], 4) + " " + FormatSignificant(rgb[1], 4) +
-                           " " + FormatSignificant(rgb[2], 4);
+    const std::string kd = FormatSignificant(rgb[0], 4) + " " + FormatSignificant(rgb[1], 4) + " " +
+                           FormatSignificant(rgb[2], 4);
     mtl << "newmtl " << name << "\nKa " << kd << "\nKd " << kd << "\nKs 0 0 0\n"
         << "d " << FormatSignificant(alpha, 4) << "\nTr " << FormatSignificant(1.0 - alpha, 4)
         << "\nillum 1\n\n";

@@ -86,11 +86,13 @@ Decomposition3d OpenL() {
   d.tau = 0.05;
   d.max_hulls = 4;
   Component3d floor;
-  floor.mesh = MakeTriangleMesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
+  floor.mesh =
+      MakeTriangleMesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
   floor.hull = floor.mesh;
   floor.centroid = {0.5, 0.5, 0};
   Component3d wall;
-  wall.mesh = MakeTriangleMesh({{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}}, {{0, 2, 1}, {0, 3, 2}});
+  wall.mesh =
+      MakeTriangleMesh({{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}}, {{0, 2, 1}, {0, 3, 2}});
   wall.hull = wall.mesh;
   wall.centroid = {0, 0.5, 0.5};
   wall.source = 0;
@@ -109,8 +111,7 @@ Decomposition3d OpenL() {
 }
 
 bool IsVector3(const json& p) {
-  return p.is_array() && p.size() == 3 && p[0].is_number() && p[1].is_number() &&
-         p[2].is_number();
+  return p.is_array() && p.size() == 3 && p[0].is_number() && p[1].is_number() && p[2].is_number();
 }
 
 /// The mesh JSON {"vertices", "triangles"} holds exactly `mesh`.
@@ -178,6 +179,9 @@ TEST(Decomposition3dToJsonTest, FollowsTheContract) {
   EXPECT_EQ(stats.at("max_concavity").get<double>(), 0.30000000000000004);
   EXPECT_EQ(stats.at("surface"), false);
   EXPECT_EQ(stats.at("time_ms").get<double>(), 1.25);
+
+  // Extension, as in 2D.
+  EXPECT_EQ(j.at("graph"), json::parse("[[1], [0]]"));
 }
 
 TEST(Decomposition3dToJsonTest, SurfaceDecomposition) {
@@ -222,6 +226,7 @@ TEST(Decomposition3dToJsonTest, EmptyDecompositionIsValid) {
   const json j = json::parse(Decomposition3dToJson(Decomposition3d{}, {}));
   EXPECT_TRUE(j.at("components").empty());
   EXPECT_TRUE(j.at("openings").empty());
+  EXPECT_TRUE(j.at("graph").empty());
   EXPECT_EQ(j.at("stats").at("components"), 0);
 }
 
@@ -406,7 +411,8 @@ int ExpectGlbMesh(const Glb& glb, const json& node, const TriangleMesh& mesh) {
   const json& gltf = glb.gltf;
   const json& primitive = gltf.at("meshes").at(node.at("mesh").get<int>()).at("primitives").at(0);
   EXPECT_EQ(primitive.at("mode"), 4);
-  const json& positions = gltf.at("accessors").at(primitive.at("attributes").at("POSITION").get<int>());
+  const json& positions =
+      gltf.at("accessors").at(primitive.at("attributes").at("POSITION").get<int>());
   const json& indices = gltf.at("accessors").at(primitive.at("indices").get<int>());
   EXPECT_EQ(positions.at("componentType"), 5126);
   EXPECT_EQ(positions.at("type"), "VEC3");
@@ -447,7 +453,8 @@ int ExpectGlbMesh(const Glb& glb, const json& node, const TriangleMesh& mesh) {
   const size_t i0 = index_view.at("byteOffset").get<size_t>();
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
     for (int c = 0; c < 3; ++c) {
-      EXPECT_EQ(U32(glb.bin, i0 + 12 * f + 4 * c), static_cast<std::uint32_t>(mesh.triangles(f, c)));
+      EXPECT_EQ(U32(glb.bin, i0 + 12 * f + 4 * c),
+                static_cast<std::uint32_t>(mesh.triangles(f, c)));
     }
   }
   return primitive.at("material").get<int>();
@@ -559,7 +566,8 @@ void ExpectWellFormed(const std::string& svg) {
 /// Triangles of `d` that face a viewer at azimuth 35, elevation 25 degrees (+y up).
 int FrontFacing(const Decomposition3d& d) {
   const double pi = std::acos(-1.0), az = 35 * pi / 180, el = 25 * pi / 180;
-  const Eigen::Vector3d view(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+  const Eigen::Vector3d view(std::cos(el) * std::sin(az), std::sin(el),
+                             std::cos(el) * std::cos(az));
   int n = 0;
   for (const Component3d& c : d.components) {
     for (Eigen::Index f = 0; f < c.mesh.triangles.rows(); ++f) {
@@ -597,8 +605,8 @@ TEST(Decomposition3dToSvgTest, OnePolygonPerVisibleTriangleAndACaption) {
   // Coordinates rounded to 0.1 px.
   const std::regex points("points=\"([^\"]*)\"");
   int checked = 0;
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), points);
-       it != std::sregex_iterator(); ++it, ++checked) {
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), points); it != std::sregex_iterator();
+       ++it, ++checked) {
     EXPECT_TRUE(std::regex_match((*it)[1].str(), std::regex(R"((-?\d+(\.\d)?,-?\d+(\.\d)? ?){3})")))
         << (*it)[1];
   }
@@ -636,8 +644,7 @@ TEST(Decomposition3dToSvgTest, PaintsFarTrianglesFirst) {
   ASSERT_EQ(fills.size(), 2u);
   EXPECT_NE(fills[0], fills[1]);
   std::swap(d.components[0], d.components[1]);  // now the near one is component 0
-  const std::vector<std::string> swapped =
-      PolygonFills(Decomposition3dToSvg(d, {"two.obj", -1.0}));
+  const std::vector<std::string> swapped = PolygonFills(Decomposition3dToSvg(d, {"two.obj", -1.0}));
   ASSERT_EQ(swapped.size(), 2u);
   // Same shading (same normal), colours by component index: painting order follows depth,
   // so the component painted last is the near one in both pictures.
