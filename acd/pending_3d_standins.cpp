@@ -108,8 +108,6 @@ std::vector<std::vector<int>> ComponentGraph(const Decomposition3d& decompositio
   return graph;
 }
 
-DecompositionCheck CheckDecomposition3d(const PreparedMesh&, const Decomposition3d&) {
-  return {};
-}
+DecompositionCheck CheckDecomposition3d(const PreparedMesh&, const Decomposition3d&) { return {}; }
 
 }  // namespace acdplan::acd

@@ -370,6 +370,19 @@ TEST_F(CliTest, DecomposesAMeshAndWritesEveryOutput) {
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_NE(svg.find("solid ACD"), std::string::npos);
   EXPECT_NE(svg.find("<polygon"), std::string::npos);
+
+  // A mesh reader (assimp, through decompose itself) reads the OBJ and glTF outputs back:
+  // every triangle of every component and hull.
+  size_t triangles = 0;
+  for (const nlohmann::json& c : j.at("components")) {
+    triangles += c.at("mesh").at("triangles").size() + c.at("hull").at("triangles").size();
+  }
+  for (const char* name : {"box.obj", "box.glb"}) {
+    const RunResult back = Acdplan("decompose " + Quote((out / name).string()) + " --surface");
+    EXPECT_EQ(back.status, 0) << name << ": " << back.err;
+    EXPECT_NE(back.out.find(" " + std::to_string(triangles) + " triangles)"), std::string::npos)
+        << name << ": " << back.out;
+  }
 }
 
 TEST_F(CliTest, EveryMeshFormatByItsExtension) {
