@@ -165,7 +165,7 @@ int RunDecompose3d(const Decompose3dArguments& args) {
   Line("prepared", Count(prepared.mesh.vertices.rows(), "vertex", "vertices") + ", " +
                        Count(prepared.mesh.triangles.rows(), "triangle") + ", " +
                        Count(static_cast<long long>(prepared.parts.size()), "part") + ", " +
-                       Short(prepare_ms) + " ms");
+                       FormatSignificant(prepare_ms, 3) + " ms");
   for (const std::string& note : prepared.notes) Line("  changed", note);
   if (prepared.defects.none()) {
     Line("defects", "none");
