@@ -171,9 +171,15 @@ class GlbBuilder {
     Json gltf;
     gltf["asset"] = {{"version", "2.0"}, {"generator", "acdplan"}};
     gltf["scene"] = 0;
-    Json scene_nodes = Json::array();
-    for (std::size_t i = 0; i < nodes_.size(); ++i) scene_nodes.push_back(i);
-    gltf["scenes"] = Json::array({{{"nodes", std::move(scene_nodes)}}});
+    // glTF arrays, when present, are not empty (spec 5.x, minItems 1): an empty decomposition
+    // is one empty scene.
+    Json scene = Json::object();
+    if (!nodes_.empty()) {
+      Json scene_nodes = Json::array();
+      for (std::size_t i = 0; i < nodes_.size(); ++i) scene_nodes.push_back(i);
+      scene["nodes"] = std::move(scene_nodes);
+    }
+    gltf["scenes"] = Json::array({std::move(scene)});
     if (!nodes_.empty()) {
       gltf["nodes"] = nodes_;
       gltf["meshes"] = meshes_;
