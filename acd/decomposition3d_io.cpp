@@ -268,6 +268,81 @@ std::string Hex(const Eigen::Vector3d& rgb) {
   return buffer;
 }
 
+/// The openings of a solid decomposition as a test "does this triangle of component k lie in
+/// one of its openings?". Such a triangle is part of a cut face inside the union of the
+/// components, never seen from outside: the preview drops it, so that a large cut triangle
+/// cannot poke through the surface in front of it (the painter's algorithm orders triangles by
+/// their centroids only).
+class InteriorFaces {
+ public:
+  InteriorFaces(const Decomposition3d& decomposition, double length)
+      : by_component_(decomposition.components.size()), tolerance_(1e-7 * length) {
+    const int n = static_cast<int>(decomposition.components.size());
+    for (const Opening3d& opening : decomposition.openings) {
+      const double norm = opening.normal.norm();
+      if (opening.polygon.size() < 3 || !(norm > 0.0)) continue;  // Surface ACD: polylines.
+      Flat flat;
+      flat.normal = opening.normal / norm;
+      flat.offset = flat.normal.dot(opening.polygon[0]);
+      // An orthonormal basis of the plane, for the 2D point-in-polygon test.
+      flat.u = flat.normal.unitOrthogonal();
+      flat.v = flat.normal.cross(flat.u);
+      for (const Eigen::Vector3d& p : opening.polygon) {
+        flat.ring.emplace_back(p.dot(flat.u), p.dot(flat.v));
+      }
+      const int index = static_cast<int>(flats_.size());
+      flats_.push_back(std::move(flat));
+      for (int k : {opening.component_a, opening.component_b}) {
+        if (k >= 0 && k < n) by_component_[k].push_back(index);
+      }
+    }
+  }
+
+  /// True when the triangle `p` of component `k` lies in the plane of one of k's openings,
+  /// with its centroid inside that opening.
+  bool Contains(int k, const Eigen::Vector3d p[3]) const {
+    for (int index : by_component_[k]) {
+      const Flat& flat = flats_[index];
+      bool on_plane = true;
+      for (int c = 0; c < 3; ++c) {
+        on_plane = on_plane && std::abs(flat.normal.dot(p[c]) - flat.offset) <= tolerance_;
+      }
+      if (!on_plane) continue;
+      const Eigen::Vector3d centroid = (p[0] + p[1] + p[2]) / 3.0;
+      if (Inside(flat.ring, Eigen::Vector2d(centroid.dot(flat.u), centroid.dot(flat.v)))) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  struct Flat {
+    Eigen::Vector3d normal, u, v;
+    double offset = 0.0;
+    std::vector<Eigen::Vector2d> ring;
+  };
+
+  /// Crossing-number test; a centroid is never on the ring's boundary for a non-degenerate
+  /// triangle inside it, so the boundary convention does not matter here.
+  static bool Inside(const std::vector<Eigen::Vector2d>& ring, const Eigen::Vector2d& q) {
+    bool inside = false;
+    for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+      const Eigen::Vector2d& a = ring[i];
+      const Eigen::Vector2d& b = ring[j];
+      if ((a.y() > q.y()) != (b.y() > q.y()) &&
+          q.x() < a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y())) {
+        inside = !inside;
+      }
+    }
+    return inside;
+  }
+
+  std::vector<std::vector<int>> by_component_;
+  std::vector<Flat> flats_;
+  double tolerance_;
+};
+
 }  // namespace
 
 std::string Decomposition3dToJson(const Decomposition3d& decomposition,
@@ -388,6 +463,14 @@ std::string Decomposition3dToSvg(const Decomposition3d& decomposition,
   // viewer is hidden behind the front ones, so it is dropped (half the file). Surface patches
   // are open: both sides show, shaded by the side seen.
   const bool cull = !decomposition.stats.surface;
+  Eigen::AlignedBox3d extent;
+  for (const Component3d& component : decomposition.components) {
+    for (Eigen::Index i = 0; i < component.mesh.vertices.rows(); ++i) {
+      const Eigen::Vector3d p = component.mesh.vertices.row(i).transpose();
+      if (p.allFinite()) extent.extend(p);
+    }
+  }
+  const InteriorFaces interior(decomposition, extent.isEmpty() ? 0.0 : extent.diagonal().norm());
   std::vector<Facet> facets;
   Eigen::AlignedBox2d bounds;
   const int n = static_cast<int>(decomposition.components.size());
@@ -411,6 +494,7 @@ std::string Decomposition3dToSvg(const Decomposition3d& decomposition,
       if (!(length > 0.0)) continue;
       const double facing = normal.dot(view.toward_viewer);
       if (cull && !(facing > 0.0)) continue;
+      if (cull && interior.Contains(k, p)) continue;
       Facet facet;
       facet.component = k;
       facet.triangle = f;

@@ -598,12 +598,14 @@ TEST(Decomposition3dToSvgTest, OnePolygonPerVisibleTriangleAndACaption) {
   const std::string svg = Decomposition3dToSvg(d, {"shapes/box&co.obj", 0.025});
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   ExpectWellFormed(svg);
-  // Back faces dropped: each cube shows its +x, +y and +z sides, two triangles each.
+  // Back faces dropped: each cube faces the viewer with its +x, +y and +z sides, two
+  // triangles each; the first cube's +x side is the opening, inside the box, dropped too.
   EXPECT_EQ(FrontFacing(d), 12);
-  EXPECT_EQ(Count(svg, "<polygon"), 12);
-  // Flat shading: the three visible sides of a cube get three different shades.
+  EXPECT_EQ(Count(svg, "<polygon"), 10);
+  // Flat shading: the visible sides of a cube get different shades (the first cube shows
+  // two, the second three).
   const std::vector<std::string> painted = PolygonFills(svg);
-  EXPECT_EQ(std::set<std::string>(painted.begin(), painted.end()).size(), 2u * 3u);
+  EXPECT_EQ(std::set<std::string>(painted.begin(), painted.end()).size(), 2u + 3u);
   // Coordinates rounded to 0.1 px.
   const std::regex points("points=\"([^\"]*)\"");
   int checked = 0;
@@ -612,7 +614,7 @@ TEST(Decomposition3dToSvgTest, OnePolygonPerVisibleTriangleAndACaption) {
     EXPECT_TRUE(std::regex_match((*it)[1].str(), std::regex(R"((-?\d+(\.\d)?,-?\d+(\.\d)? ?){3})")))
         << (*it)[1];
   }
-  EXPECT_EQ(checked, 12);
+  EXPECT_EQ(checked, 10);
   // Caption: input (escaped), tau, tau_rel, ACD kind, components, volume ratio, time.
   EXPECT_NE(svg.find("shapes/box&amp;co.obj"), std::string::npos);
   EXPECT_NE(svg.find("tau 0.1 (tau_rel 0.025)"), std::string::npos);
@@ -620,6 +622,22 @@ TEST(Decomposition3dToSvgTest, OnePolygonPerVisibleTriangleAndACaption) {
   EXPECT_NE(svg.find("hull volume / volume 1"), std::string::npos);
   EXPECT_NE(svg.find("max concavity 0.3"), std::string::npos);
   EXPECT_NE(svg.find("1.25 ms"), std::string::npos);
+}
+
+TEST(Decomposition3dToSvgTest, OnlyFacesInsideAnOpeningAreInterior) {
+  Decomposition3d d = TwoCubes();
+  d.openings.clear();
+  EXPECT_EQ(Count(Decomposition3dToSvg(d, {"box.obj", -1.0}), "<polygon"), 12);
+  // An opening covering only the half y <= 0.5 of the shared side: of the first cube's two
+  // triangles there (acd::Cube), the one with its centroid at y = 1/3 is interior, the one
+  // at y = 2/3 is not.
+  d = TwoCubes();
+  d.openings[0].polygon = {{1, 0, 0}, {1, 0.5, 0}, {1, 0.5, 1}, {1, 0, 1}};
+  EXPECT_EQ(Count(Decomposition3dToSvg(d, {"box.obj", -1.0}), "<polygon"), 11);
+  // A plane off by more than the tolerance: nothing is interior.
+  d = TwoCubes();
+  for (Eigen::Vector3d& p : d.openings[0].polygon) p.x() += 1e-3;
+  EXPECT_EQ(Count(Decomposition3dToSvg(d, {"box.obj", -1.0}), "<polygon"), 12);
 }
 
 TEST(Decomposition3dToSvgTest, SurfacePatchesShowBothSides) {
