@@ -1,7 +1,6 @@
-// TEMPORARY, branch io3d only: crude stand-ins for PrepareMesh, RequireSolid,
-// ReferenceRadius (engineer "mesh"), Decompose3d, ComponentGraph (engineer "solid") and
-// CheckDecomposition3d (engineer "surface"), so that `acdplan decompose MESH` links and its
-// tests run before those land. The integrator deletes this file (and its line in
+// TEMPORARY, branch io3d only: crude stand-ins for Decompose3d, ComponentGraph (engineer
+// "solid") and CheckDecomposition3d (engineer "surface"), so that `acdplan decompose MESH` links
+// and its tests run before those land. The integrator deletes this file (and its line in
 // acd/CMakeLists.txt) when merging; io3d deletes it itself when it merges main with them.
 
 #include <algorithm>
@@ -21,43 +20,6 @@
 #include "base/stopwatch.h"
 
 namespace acdplan::acd {
-
-PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& options,
-                         const std::string& where) {
-  CheckTriangleMesh(mesh, where);
-  PreparedMesh prepared;
-  prepared.mesh = mesh;
-  prepared.parts = {mesh};
-  std::map<std::pair<int, int>, int> faces;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    for (int c = 0; c < 3; ++c) {
-      const int a = mesh.triangles(f, c), b = mesh.triangles(f, (c + 1) % 3);
-      ++faces[{std::min(a, b), std::max(a, b)}];
-    }
-  }
-  for (const auto& [edge, count] : faces) {
-    const bool boundary = count == 1, non_manifold = count > 2;
-    prepared.defects.boundary_edges += boundary;
-    prepared.defects.non_manifold_edges += non_manifold;
-    if ((boundary || non_manifold) && prepared.defects.first.empty()) {
-      prepared.defects.first = "edge " + std::to_string(edge.first) + "-" +
-                               std::to_string(edge.second) + " has " + std::to_string(count) +
-                               " faces (a solid needs exactly 2)";
-    }
-  }
-  if (options.repair) prepared.notes.push_back("repair: stand-in, nothing changed");
-  return prepared;
-}
-
-void RequireSolid(const PreparedMesh& prepared, const std::string& where) {
-  if (prepared.solid()) return;
-  throw InputError(where + ": not a solid: " + prepared.defects.first +
-                   " (use --repair to close holes and remove self-intersections, or --surface)");
-}
-
-double ReferenceRadius(const TriangleMesh& mesh) {
-  return 0.5 * BoundingBox(mesh).diagonal().norm();
-}
 
 Decomposition3d Decompose3d(const PreparedMesh& prepared, const Decompose3dOptions& options) {
   if (!(options.tau >= 0) || !std::isfinite(options.tau)) {

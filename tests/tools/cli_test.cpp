@@ -542,4 +542,55 @@ TEST_F(CliTest, MeshErrorsNameTheFileAndTheRule) {
   EXPECT_EQ(FileCount(), 3);
 }
 
+TEST_F(CliTest, RepairMakesMeshesSolidAndSaysWhat) {
+  // Two cubes that cross each other: closed, but self-intersecting.
+  const fs::path crossing = Write(
+      "crossing.obj", BoxObj({0, 0, 0}, {1, 1, 1}) + BoxObj({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}, 9));
+  const RunResult strict = Acdplan("decompose " + Quote(crossing.string()));
+  ExpectUsageError(strict);
+  EXPECT_NE(strict.err.find(crossing.string() + ": not a solid: faces "), std::string::npos)
+      << strict.err;
+  EXPECT_NE(strict.err.find("intersect"), std::string::npos) << strict.err;
+
+  const fs::path json_path = dir_ / "union.json";
+  RunResult run = Acdplan("decompose " + Quote(crossing.string()) + " --repair --json " +
+                          Quote(json_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("  changed"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("solid ACD (closed, manifold, no self-intersections after --repair)"),
+            std::string::npos)
+      << run.out;
+  // The union of the two cubes: 1 + 1 - 1/8.
+  const nlohmann::json j = nlohmann::json::parse(Read(json_path));
+  EXPECT_NEAR(j.at("stats").at("volume").get<double>(), 1.875, 1e-9);
+
+  run = Acdplan("decompose " + Quote(crossing.string()) + " --surface");
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("self-intersecting face pair"), std::string::npos) << run.out;
+
+  // An open box: surface ACD as it is, solid ACD once --repair closes its hole.
+  const fs::path open_box = Write("open_box.obj", BoxObj({0, 0, 0}, {1, 1, 1}, 1, true));
+  run = Acdplan("decompose " + Quote(open_box.string()) + " --repair --json " +
+                Quote(json_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("after --repair"), std::string::npos) << run.out;
+  EXPECT_NEAR(nlohmann::json::parse(Read(json_path)).at("stats").at("volume").get<double>(), 1.0,
+              1e-9);
+}
+
+TEST_F(CliTest, DecomposesACorpusMesh) {
+  // cube-notch.obj repeats its vertices per face (split normals): preparation merges them.
+  const fs::path json_path = dir_ / "cube-notch.json";
+  const RunResult run = Acdplan("decompose " + Quote(kMeshes + "cube-notch.obj") +
+                                " --tau-rel 0.02 --check --json " + Quote(json_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("duplicate vertices"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("solid ACD"), std::string::npos) << run.out;
+  const nlohmann::json j = nlohmann::json::parse(Read(json_path));
+  EXPECT_EQ(j.at("stats").at("surface"), false);
+  EXPECT_GE(j.at("stats").at("hull_volume").get<double>(),
+            j.at("stats").at("volume").get<double>() * (1 - 1e-9));
+  EXPECT_LE(j.at("stats").at("max_concavity").get<double>(), j.at("tau").get<double>() * 1.000001);
+}
+
 }  // namespace
