@@ -591,6 +591,18 @@ TEST_F(CliTest, DecomposesACorpusMesh) {
   EXPECT_GE(j.at("stats").at("hull_volume").get<double>(),
             j.at("stats").at("volume").get<double>() * (1 - 1e-9));
   EXPECT_LE(j.at("stats").at("max_concavity").get<double>(), j.at("tau").get<double>() * 1.000001);
+
+  // A cap on the number of hulls.
+  const RunResult capped =
+      Acdplan("decompose " + Quote(kMeshes + "cube-notch.obj") +
+              " --tau-rel 0.02 --max-hulls 2 --json " + Quote(json_path.string()));
+  ASSERT_EQ(capped.status, 0) << capped.err;
+  const nlohmann::json k = nlohmann::json::parse(Read(json_path));
+  EXPECT_EQ(k.at("max_hulls"), 2);
+  EXPECT_GE(k.at("components").size(), 1u);
+  EXPECT_LE(k.at("components").size(), 2u);
+  EXPECT_NEAR(k.at("stats").at("volume").get<double>(), j.at("stats").at("volume").get<double>(),
+              1e-9 * j.at("stats").at("volume").get<double>());
 }
 
 }  // namespace
