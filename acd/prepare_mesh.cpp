@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <optional>
 #include <tuple>
 #include <utility>
 
@@ -408,8 +409,9 @@ TriangleMesh CloseHoles(const Diagnosis& d, std::vector<std::string>* notes) {
 
 // Replaces each group of closed shells that cross each other by their union. Shells that
 // cross themselves are left as they are (their repair would need autorefinement, which is
-// not robust enough in CGAL 5.5 to run on untrusted input).
-TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* notes) {
+// not robust enough in CGAL 5.5 to run on untrusted input). Empty when nothing was united.
+std::optional<TriangleMesh> UniteCrossingShells(const Diagnosis& d,
+                                                std::vector<std::string>* notes) {
   const int count = static_cast<int>(d.patches.size());
   std::vector<int> patch_of(static_cast<size_t>(d.mesh.triangles.rows()));
   for (int p = 0; p < count; ++p) {
@@ -523,7 +525,9 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
     }
     if (d.defects.boundary_edges == 0 && d.defects.non_manifold_edges == 0 &&
         d.defects.self_intersections > 0) {
-      d = Recheck(UniteCrossingShells(d, &prepared.notes), where, &prepared.notes);
+      if (const auto united = UniteCrossingShells(d, &prepared.notes)) {
+        d = Recheck(*united, where, &prepared.notes);
+      }
     }
     if (!d.defects.none()) {
       prepared.notes.push_back("repair: still not a solid: " + d.defects.first);

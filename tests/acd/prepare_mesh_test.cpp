@@ -354,6 +354,54 @@ TEST(PrepareMeshTest, ResultDoesNotDependOnTriangleOrder) {
   EXPECT_DOUBLE_EQ(MeshVolume(a.mesh), MeshVolume(b.mesh));
 }
 
+TEST(PrepareMeshTest, AMoebiusBandIsAnOpenPatchAndRepairDoesNotCrash) {
+  // 12 quads around a circle with a half twist: one boundary loop of 24 edges, not orientable.
+  const int n = 12;
+  std::vector<Eigen::Vector3d> v;
+  std::vector<Eigen::Vector3i> t;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    const Eigen::Vector3d centre(3 * std::cos(a), 3 * std::sin(a), 0);
+    const Eigen::Vector3d across = std::cos(a / 2) * Eigen::Vector3d(std::cos(a), std::sin(a), 0) +
+                                   std::sin(a / 2) * Eigen::Vector3d::UnitZ();
+    v.push_back(centre + across);
+    v.push_back(centre - across);
+  }
+  for (int i = 0; i < n; ++i) {
+    const int a = 2 * i, b = 2 * i + 1;
+    // The last quad meets the first with its sides swapped: the half twist.
+    const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    t.emplace_back(a, b, d);
+    t.emplace_back(a, d, c);
+  }
+  const TriangleMesh band = MakeTriangleMesh(v, t);
+  const PreparedMesh prepared = PrepareMesh(band);
+  EXPECT_FALSE(prepared.solid());
+  EXPECT_EQ(prepared.defects.boundary_edges, 2 * n);
+  ASSERT_EQ(prepared.parts.size(), 1u);
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{false});
+  PreparedMesh repaired;
+  ASSERT_NO_THROW(repaired = PrepareMesh(band, Repair()));
+  EXPECT_FALSE(repaired.parts.empty());
+}
+
+TEST(PrepareMeshTest, RepairLeavesAShellThatCrossesItself) {
+  // teddy.obj is closed and manifold, but one shell crosses itself in 6 pairs of faces: the
+  // union cannot mend that, and autorefinement is not used.
+  const TriangleMesh teddy =
+      envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/teddy.obj");
+  const PreparedMesh prepared = PrepareMesh(teddy, Repair(), "teddy.obj");
+  EXPECT_FALSE(prepared.solid());
+  EXPECT_EQ(prepared.defects.boundary_edges, 0);
+  EXPECT_EQ(prepared.defects.non_manifold_edges, 0);
+  EXPECT_EQ(prepared.defects.self_intersections, 6);
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{true});
+  EXPECT_TRUE(HasNote(prepared, "repair: left 1 shell that crosses itself (first: faces "));
+  EXPECT_TRUE(HasNote(prepared, "repair: still not a solid: faces "));
+  EXPECT_THAT(ErrorOf([&] { RequireSolid(prepared, "teddy.obj"); }),
+              HasSubstr("teddy.obj: not a solid: faces "));
+}
+
 TEST(ReferenceRadiusTest, CubeOfSideTwoHasRadiusSqrtThree) {
   EXPECT_NEAR(ReferenceRadius(Cube(2)), std::sqrt(3.0), 1e-12);
   EXPECT_NEAR(ReferenceRadius(CubeAt(2, {100, -50, 7})), std::sqrt(3.0), 1e-12);
