@@ -43,6 +43,7 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
@@ -223,6 +224,29 @@ double ConcavityLowerBound(const TriangleMesh& mesh) {
   return best;
 }
 
+// How far `p` lies outside the closed convex mesh `hull`: 0 when no facet has `p` strictly on
+// its outer side (exact orientation), else the largest exact distance to such a facet's plane.
+double ExactHullExcess(const TriangleMesh& hull, const Eigen::Vector3d& p) {
+  using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
+  const Point3 q(p.x(), p.y(), p.z());
+  double excess = 0.0;
+  for (Eigen::Index f = 0; f < hull.triangles.rows(); ++f) {
+    const Eigen::Vector3d a = Corner(hull, f, 0), b = Corner(hull, f, 1), c = Corner(hull, f, 2);
+    const Point3 pa(a.x(), a.y(), a.z()), pb(b.x(), b.y(), b.z()), pc(c.x(), c.y(), c.z());
+    // Outside a face counter-clockwise seen from outside: (b - a) x (c - a) . (q - a) > 0.
+    if (CGAL::collinear(pa, pb, pc) || CGAL::orientation(pa, pb, pc, q) != CGAL::POSITIVE) {
+      continue;
+    }
+    const Exact::Plane_3 plane(Exact::Point_3(a.x(), a.y(), a.z()),
+                               Exact::Point_3(b.x(), b.y(), b.z()),
+                               Exact::Point_3(c.x(), c.y(), c.z()));
+    const double d2 =
+        CGAL::to_double(CGAL::squared_distance(plane, Exact::Point_3(p.x(), p.y(), p.z())));
+    excess = std::max(excess, std::sqrt(d2));
+  }
+  return excess;
+}
+
 // Newell's normal (length = twice the area) of a closed polygon.
 Eigen::Vector3d NewellNormal(const std::vector<Eigen::Vector3d>& polygon) {
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
@@ -265,8 +289,8 @@ class Checker {
     std::unique_ptr<Tree> tree;
   };
   struct ComponentInfo {
-    bool usable = false;       // Well formed, from an existing part.
-    bool solid_ok = false;     // Closed, outward, no self-intersection (solid ACD).
+    bool usable = false;    // Well formed, from an existing part.
+    bool solid_ok = false;  // Closed, outward, no self-intersection (solid ACD).
     std::unique_ptr<Mesh> mesh;
     std::unique_ptr<SideOf> side;
     std::unique_ptr<Tree> tree;
@@ -360,12 +384,15 @@ class Checker {
       Eigen::Vector3d worst = Eigen::Vector3d::Zero();
       for (Eigen::Index v = 0; v < c.mesh.vertices.rows(); ++v) {
         const Eigen::Vector3d p = c.mesh.vertices.row(v).transpose();
+        double excess = 0.0;
         for (Eigen::Index r = 0; r < planes.rows(); ++r) {
-          const double excess = planes.row(r).head<3>().dot(p) - planes(r, 3);
-          if (excess > outside) {
-            outside = excess;
-            worst = p;
-          }
+          excess = std::max(excess, planes.row(r).head<3>().dot(p) - planes(r, 3));
+        }
+        // A sliver hull facet has a badly rounded plane: confirm exactly before reporting.
+        if (excess > tol) excess = ExactHullExcess(c.hull, p);
+        if (excess > outside) {
+          outside = excess;
+          worst = p;
         }
       }
       if (outside > tol) {
@@ -400,8 +427,8 @@ class Checker {
         if (!(c.concavity <= limit)) {
           problems_.Add(Name(i) + "concavity " + Num(c.concavity) + " > tau " + Num(d_.tau));
         } else if (!(lower <= limit)) {
-          problems_.Add(Name(i) + "re-measured concavity " + Num(lower) + " > tau " +
-                        Num(d_.tau) + " (distance of a vertex or face centroid to the hull boundary)");
+          problems_.Add(Name(i) + "re-measured concavity " + Num(lower) + " > tau " + Num(d_.tau) +
+                        " (distance of a vertex or face centroid to the hull boundary)");
         }
       }
 
@@ -453,8 +480,8 @@ class Checker {
       std::optional<Mesh> mesh = ToCgal(input_.parts[static_cast<size_t>(p)]);
       part.mesh = std::make_unique<Mesh>(mesh ? std::move(*mesh) : Mesh());
       part.side = std::make_unique<SideOf>(*part.mesh);
-      part.tree = std::make_unique<Tree>(faces(*part.mesh).first, faces(*part.mesh).second,
-                                         *part.mesh);
+      part.tree =
+          std::make_unique<Tree>(faces(*part.mesh).first, faces(*part.mesh).second, *part.mesh);
       part.tree->accelerate_distance_queries();
     }
     return part;
@@ -602,8 +629,8 @@ class Checker {
         continue;
       }
       if (!info_[static_cast<size_t>(a)].usable || !info_[static_cast<size_t>(b)].usable) continue;
-      const double tol = parts_[static_cast<size_t>(d_.components[static_cast<size_t>(a)].source)]
-                             .tolerance;
+      const double tol =
+          parts_[static_cast<size_t>(d_.components[static_cast<size_t>(a)].source)].tolerance;
       if (surface_) {
         if (opening.polygon.size() < 2) {
           problems_.Add(label + "a polyline needs >= 2 vertices");
@@ -644,11 +671,12 @@ class Checker {
         ComponentInfo& info = info_[static_cast<size_t>(side)];
         if (!info.solid_ok) continue;
         if (!info.tree) {
-          info.tree = std::make_unique<Tree>(faces(*info.mesh).first, faces(*info.mesh).second,
-                                             *info.mesh);
+          info.tree =
+              std::make_unique<Tree>(faces(*info.mesh).first, faces(*info.mesh).second, *info.mesh);
         }
         for (const Eigen::Vector3d& x : opening.polygon) {
-          const double distance = std::sqrt(info.tree->squared_distance(Point3(x.x(), x.y(), x.z())));
+          const double distance =
+              std::sqrt(info.tree->squared_distance(Point3(x.x(), x.y(), x.z())));
           if (distance > tol) {
             problems_.Add(label + "vertex " + Pt(x) + " is not on the boundary of component " +
                           std::to_string(side) + " (distance " + Num(distance) + ")");

@@ -220,7 +220,7 @@ std::vector<std::vector<int>> ConnectedPieces(const SurfacePart& part,
 }
 
 Eigen::Vector3d AnyPerpendicular(const Eigen::Vector3d& n) {
-  const Eigen::Vector3d axis = std::abs(n.x()) < 0.6 ? Eigen::Vector3d::UnitX()
+  const Eigen::Vector3d axis = std::abs(n.x()) < 0.6   ? Eigen::Vector3d::UnitX()
                                : std::abs(n.y()) < 0.6 ? Eigen::Vector3d::UnitY()
                                                        : Eigen::Vector3d::UnitZ();
   return n.cross(axis).normalized();
@@ -330,8 +330,8 @@ TriangleMesh ClosedHull(const std::vector<Eigen::Vector3d>& points) {
   return hull;
 }
 
-Component3d MakeComponent(const SurfacePart& part, const std::vector<int>& faces,
-                          double concavity, int source) {
+Component3d MakeComponent(const SurfacePart& part, const std::vector<int>& faces, double concavity,
+                          int source) {
   std::map<int, int> index;
   std::vector<Eigen::Vector3d> vertices;
   std::vector<Eigen::Vector3i> triangles;
@@ -398,8 +398,9 @@ void AddOpenings(const SurfacePart& part, const std::vector<int>& face_component
         int v = start, e = first;
         while (true) {
           used[static_cast<size_t>(e)] = true;
-          const int w = list[static_cast<size_t>(e)].first == v ? list[static_cast<size_t>(e)].second
-                                                                : list[static_cast<size_t>(e)].first;
+          const int w = list[static_cast<size_t>(e)].first == v
+                            ? list[static_cast<size_t>(e)].second
+                            : list[static_cast<size_t>(e)].first;
           chain.push_back(w);
           v = w;
           const std::vector<int>& next = adjacent[v];

@@ -222,7 +222,7 @@ TEST(CheckDecomposition3dTest, ReportsConcavityAboveTau) {
     for (double z : {0.0, 1.0}) {
       for (Eigen::Vector3d p : profile) v.push_back({p.x(), p.y(), z});
     }
-    std::vector<Eigen::Vector3i> t = {{0, 2, 1}, {0, 3, 2}, {0, 5, 3}, {5, 4, 3},      // bottom
+    std::vector<Eigen::Vector3i> t = {{0, 2, 1}, {0, 3, 2}, {0, 5, 3},  {5, 4, 3},     // bottom
                                       {6, 7, 8}, {6, 8, 9}, {6, 9, 11}, {11, 9, 10}};  // top
     for (int i = 0; i < 6; ++i) {
       const int j = (i + 1) % 6;
@@ -263,8 +263,8 @@ struct SplitSquare {
   PreparedMesh input;
   Decomposition3d d;
   SplitSquare() {
-    const TriangleMesh square = MakeTriangleMesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
-                                                 {{0, 1, 2}, {0, 2, 3}});
+    const TriangleMesh square =
+        MakeTriangleMesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
     input = Prepared(square);
     input.defects.boundary_edges = 4;
     d.tau = 0.0;
