@@ -49,8 +49,7 @@ class DisjointSets {
   }
   int Find(int x) {
     while (parent_[static_cast<size_t>(x)] != x) {
-      parent_[static_cast<size_t>(x)] =
-          parent_[static_cast<size_t>(parent_[static_cast<size_t>(x)])];
+      parent_[static_cast<size_t>(x)] = parent_[static_cast<size_t>(parent_[static_cast<size_t>(x)])];
       x = parent_[static_cast<size_t>(x)];
     }
     return x;
@@ -94,8 +93,8 @@ TriangleMesh ExtractFaces(const TriangleMesh& mesh, const std::vector<int>& face
 
 struct Cleaned {
   TriangleMesh mesh;
-  int merged = 0;                             // Vertices merged into another at the same position.
-  int unreferenced = 0;                       // Distinct positions no kept triangle uses.
+  int merged = 0;        // Vertices merged into another at the same position.
+  int unreferenced = 0;  // Distinct positions no kept triangle uses.
   int degenerate = 0, first_degenerate = -1;  // Triangles of the input.
   int duplicate = 0, first_duplicate = -1;
 };
@@ -126,9 +125,7 @@ Cleaned Clean(const TriangleMesh& in) {
     out.merged += same;
   }
 
-  auto point = [&](int v) {
-    return Epick::Point_3(in.vertices(v, 0), in.vertices(v, 1), in.vertices(v, 2));
-  };
+  auto point = [&](int v) { return Epick::Point_3(in.vertices(v, 0), in.vertices(v, 1), in.vertices(v, 2)); };
   std::vector<Eigen::Vector3i> kept;
   std::vector<int> kept_from;
   for (int f = 0; f < nf; ++f) {
@@ -187,8 +184,8 @@ Cleaned Clean(const TriangleMesh& in) {
 void NoteCleaning(const Cleaned& c, const std::string& of, std::vector<std::string>* notes) {
   if (c.merged > 0) notes->push_back("merged " + Plural(c.merged, "duplicate vertex") + of);
   if (c.degenerate > 0) {
-    notes->push_back("dropped " + Plural(c.degenerate, "degenerate face") + " (first: face " +
-                     std::to_string(c.first_degenerate) + of + ")");
+    notes->push_back("dropped " + Plural(c.degenerate, "degenerate face") +
+                     " (first: face " + std::to_string(c.first_degenerate) + of + ")");
   }
   if (c.duplicate > 0) {
     notes->push_back("dropped " + Plural(c.duplicate, "duplicate face") + " (first: face " +
@@ -208,8 +205,8 @@ struct Diagnosis {
   // Patches: triangles connected across edges with exactly two triangles, ascending, in order
   // of their lowest triangle.
   std::vector<std::vector<int>> patches;
-  std::vector<bool> closed;                    // Per patch: no edge of it has 1 or 3+ triangles.
-  std::vector<bool> orientable;                // Per patch.
+  std::vector<bool> closed;      // Per patch: no edge of it has 1 or 3+ triangles.
+  std::vector<bool> orientable;  // Per patch.
   std::vector<std::pair<int, int>> crossings;  // IntersectingFacePairs().
   std::vector<std::vector<int>> parts;         // Triangles of each part, ascending.
   int cavities = 0;
@@ -217,9 +214,7 @@ struct Diagnosis {
   MeshDefects defects;
 };
 
-void FlipFace(TriangleMesh* mesh, int f) {
-  std::swap(mesh->triangles(f, 1), mesh->triangles(f, 2));
-}
+void FlipFace(TriangleMesh* mesh, int f) { std::swap(mesh->triangles(f, 1), mesh->triangles(f, 2)); }
 
 // Orients each patch consistently (breadth first from its lowest triangle, which keeps its
 // orientation) and each closed patch outward (exact volume sign).
@@ -235,8 +230,7 @@ void OrientPatches(Diagnosis* d) {
     for (size_t head = 0; head < queue.size(); ++head) {
       const int f = queue[head];
       for (int k = 0; k < 3; ++k) {
-        const MeshEdge& e = table.edges[static_cast<size_t>(
-            table.face_edges[static_cast<size_t>(f)][static_cast<size_t>(k)])];
+        const MeshEdge& e = table.edges[static_cast<size_t>(table.face_edges[static_cast<size_t>(f)][static_cast<size_t>(k)])];
         if (e.count != 2) continue;
         const int g = table.faces[static_cast<size_t>(e.first)] == f
                           ? table.faces[static_cast<size_t>(e.first + 1)]
@@ -341,8 +335,7 @@ Diagnosis Diagnose(const TriangleMesh& cleaned) {
       if (!first_non_manifold) first_non_manifold = &e;
     }
     for (int i = 0; i < e.count; ++i) {
-      d.closed[static_cast<size_t>(
-          patch_of[static_cast<size_t>(d.edges.faces[static_cast<size_t>(e.first + i)])])] = false;
+      d.closed[static_cast<size_t>(patch_of[static_cast<size_t>(d.edges.faces[static_cast<size_t>(e.first + i)])])] = false;
     }
   }
   OrientPatches(&d);
@@ -352,8 +345,8 @@ Diagnosis Diagnose(const TriangleMesh& cleaned) {
   auto edge_message = [&](const MeshEdge& e) {
     const Eigen::Vector3d mid =
         (d.mesh.vertices.row(e.a) + d.mesh.vertices.row(e.b)).transpose() / 2;
-    return "edge " + std::to_string(e.a) + "-" + std::to_string(e.b) + " at " + At(mid) + " has " +
-           Plural(e.count, "face") + " (a solid's edges have exactly 2)";
+    return "edge " + std::to_string(e.a) + "-" + std::to_string(e.b) + " at " + At(mid) +
+           " has " + Plural(e.count, "face") + " (a solid's edges have exactly 2)";
   };
   if (first_boundary) {
     d.defects.first = edge_message(*first_boundary);
@@ -372,8 +365,7 @@ Diagnosis Diagnose(const TriangleMesh& cleaned) {
     d.parts = d.patches;
   }
   for (int f = 0; f < nf; ++f) {
-    d.flipped +=
-        internal::RunsForward(cleaned, f, d.mesh.triangles(f, 0), d.mesh.triangles(f, 1)) ? 0 : 1;
+    d.flipped += internal::RunsForward(cleaned, f, d.mesh.triangles(f, 0), d.mesh.triangles(f, 1)) ? 0 : 1;
   }
   return d;
 }
@@ -459,8 +451,7 @@ TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* n
         vertices.push_back(united->vertices.row(v).transpose());
       }
       for (Eigen::Index f = 0; f < united->triangles.rows(); ++f) {
-        triangles.push_back(united->triangles.row(f).transpose() +
-                            Eigen::Vector3i::Constant(offset));
+        triangles.push_back(united->triangles.row(f).transpose() + Eigen::Vector3i::Constant(offset));
       }
       continue;
     }
@@ -471,16 +462,17 @@ TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* n
     }
   }
   if (united_groups > 0) {
-    notes->push_back("repair: united " + Plural(united_shells, "crossing closed shell") + " into " +
-                     Plural(united_groups, "solid"));
+    notes->push_back("repair: united " + Plural(united_shells, "crossing closed shell") +
+                     " into " + Plural(united_groups, "solid"));
   }
   if (failed_groups > 0) {
     notes->push_back("repair: could not unite " + Plural(failed_groups, "group") +
                      " of crossing shells (the union would not be manifold)");
   }
   if (self_crossing > 0) {
-    notes->push_back("repair: left " + Plural(self_crossing, "shell") + " that cross themselves" +
-                     first_self + " (only crossings between shells are removed)");
+    notes->push_back("repair: left " + Plural(self_crossing, "shell") +
+                     " that cross themselves" + first_self +
+                     " (only crossings between shells are removed)");
   }
   return MakeTriangleMesh(vertices, triangles);
 }
@@ -505,7 +497,8 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
   const Cleaned cleaned = Clean(mesh);
   if (cleaned.mesh.triangles.rows() == 0) {
     throw InputError(where + ": mesh has no face of positive area (all " +
-                     Plural(static_cast<int>(mesh.triangles.rows()), "face") + " are degenerate)");
+                     Plural(static_cast<int>(mesh.triangles.rows()), "face") +
+                     " are degenerate)");
   }
   NoteCleaning(cleaned, "", &prepared.notes);
   Diagnosis d = Diagnose(cleaned.mesh);
@@ -530,10 +523,11 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
     prepared.notes.push_back("found " + Plural(static_cast<int>(d.parts.size()), "solid part") +
                              (d.cavities > 0 ? " with " + Plural(d.cavities, "cavity") : ""));
   } else {
-    prepared.notes.push_back("found " + Plural(static_cast<int>(d.parts.size()), "surface patch") +
-                             ": " + Plural(d.defects.boundary_edges, "boundary edge") + ", " +
-                             Plural(d.defects.non_manifold_edges, "non-manifold edge") + ", " +
-                             Plural(d.defects.self_intersections, "self-intersection"));
+    prepared.notes.push_back(
+        "found " + Plural(static_cast<int>(d.parts.size()), "surface patch") + ": " +
+        Plural(d.defects.boundary_edges, "boundary edge") + ", " +
+        Plural(d.defects.non_manifold_edges, "non-manifold edge") + ", " +
+        Plural(d.defects.self_intersections, "self-intersection"));
   }
   for (const auto& faces : d.parts) prepared.parts.push_back(ExtractFaces(d.mesh, faces));
   prepared.mesh = std::move(d.mesh);
@@ -543,8 +537,7 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
 
 void RequireSolid(const PreparedMesh& prepared, const std::string& where) {
   if (prepared.solid()) return;
-  const std::string what =
-      prepared.defects.first.empty() ? "it has no part" : prepared.defects.first;
+  const std::string what = prepared.defects.first.empty() ? "it has no part" : prepared.defects.first;
   throw InputError(where + ": not a solid: " + what +
                    " (use --repair to close holes and remove self-intersections, or --surface)");
 }

@@ -27,8 +27,8 @@ struct BorderHalfedge {
 
 // Chains the border halfedges into simple loops (vertex lists). Halfedges that do not close
 // into a loop are counted in `*broken`.
-std::vector<std::vector<const BorderHalfedge*>> TraceLoops(
-    const std::vector<BorderHalfedge>& border, int* broken) {
+std::vector<std::vector<const BorderHalfedge*>> TraceLoops(const std::vector<BorderHalfedge>& border,
+                                                           int* broken) {
   std::multimap<int, size_t> outgoing;  // Ordered: the lowest halfedge is followed first.
   for (size_t i = 0; i < border.size(); ++i) outgoing.emplace(border[i].from, i);
   std::vector<bool> used(border.size(), false);
@@ -137,7 +137,8 @@ std::optional<TriangleMesh> UniteClosedShells(const TriangleMesh& mesh,
   for (const Mesh::Vertex_index v : united.vertices()) {
     const Epeck::Point_3& p = united.point(v);
     index[v] = static_cast<int>(vertices.size());
-    vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                          CGAL::to_double(p.z()));
   }
   std::vector<Eigen::Vector3i> triangles;
   for (const Mesh::Face_index f : united.faces()) {

@@ -55,8 +55,7 @@ TriangleMesh WithoutTriangles(const TriangleMesh& mesh, const std::vector<int>& 
     }
   }
   out.triangles.resize(static_cast<Eigen::Index>(kept.size()), 3);
-  for (size_t i = 0; i < kept.size(); ++i)
-    out.triangles.row(static_cast<Eigen::Index>(i)) = kept[i];
+  for (size_t i = 0; i < kept.size(); ++i) out.triangles.row(static_cast<Eigen::Index>(i)) = kept[i];
   return out;
 }
 
@@ -180,9 +179,9 @@ TEST(PrepareMeshTest, OrientsAFarThinSlabOutward) {
 
 TEST(PrepareMeshTest, DropsDegenerateAndDuplicateFaces) {
   TriangleMesh cube = AppendVertex(Cube(2), Eigen::Vector3d(0, -1, -1));  // Midpoint of 0-1.
-  cube = AppendTriangle(cube, Eigen::Vector3i(0, 8, 1));                  // Collinear.
-  cube = AppendTriangle(cube, Eigen::Vector3i(2, 2, 3));                  // Repeated index.
-  cube = AppendTriangle(cube, Eigen::Vector3i(3, 2, 1));                  // Face 1 reversed.
+  cube = AppendTriangle(cube, Eigen::Vector3i(0, 8, 1));                   // Collinear.
+  cube = AppendTriangle(cube, Eigen::Vector3i(2, 2, 3));                   // Repeated index.
+  cube = AppendTriangle(cube, Eigen::Vector3i(3, 2, 1));                   // Face 1 reversed.
   const PreparedMesh prepared = PrepareMesh(cube);
   EXPECT_TRUE(prepared.solid());
   EXPECT_EQ(prepared.mesh.triangles.rows(), 12);
@@ -332,7 +331,8 @@ TEST(PrepareMeshTest, BoxWithACavityIsOnePartOfTwoShells) {
 }
 
 TEST(PrepareMeshTest, AnIslandInACavityIsASecondPart) {
-  const TriangleMesh shells = Join(Join(Cube(8), CubeAt(4, {0, 0, 0})), CubeAt(2, {0, 0, 0}));
+  const TriangleMesh shells =
+      Join(Join(Cube(8), CubeAt(4, {0, 0, 0})), CubeAt(2, {0, 0, 0}));
   const PreparedMesh prepared = PrepareMesh(shells);
   EXPECT_TRUE(prepared.solid());
   ASSERT_EQ(prepared.parts.size(), 2u);
