@@ -219,6 +219,82 @@ std::vector<std::vector<int>> ConnectedPieces(const SurfacePart& part,
   return pieces;
 }
 
+double FaceArea(const SurfacePart& part, int f) {
+  const Eigen::Vector3d a = part.Vertex(part.Corner(f, 0));
+  return 0.5 *
+         (part.Vertex(part.Corner(f, 1)) - a).cross(part.Vertex(part.Corner(f, 2)) - a).norm();
+}
+
+// A plane through a wavy surface leaves, besides the main piece of each side, slivers where
+// the surface crosses the plane back and forth (faces are assigned by their centroids). Each
+// piece smaller than kFragment of the patch's area, other than the largest of its side, joins the
+// piece it shares most edges with (smallest first; ties to the lower index). The largest piece
+// of each side never joins another, so at least two pieces remain and each is smaller than the
+// patch: the recursion still progresses.
+constexpr double kFragment = 0.05;
+std::vector<std::vector<int>> AbsorbFragments(const SurfacePart& part,
+                                              std::vector<std::vector<int>> pieces,
+                                              const std::vector<int>& piece_side) {
+  const int n = static_cast<int>(pieces.size());
+  if (n <= 2) return pieces;
+  std::vector<double> area(static_cast<size_t>(n), 0.0);
+  std::map<int, int> owner;  // face -> piece
+  double total = 0.0;
+  for (int i = 0; i < n; ++i) {
+    for (int f : pieces[static_cast<size_t>(i)]) {
+      area[static_cast<size_t>(i)] += FaceArea(part, f);
+      owner[f] = i;
+    }
+    total += area[static_cast<size_t>(i)];
+  }
+  std::array<int, 2> main = {-1, -1};
+  for (int i = 0; i < n; ++i) {
+    int& m = main[static_cast<size_t>(piece_side[static_cast<size_t>(i)])];
+    if (m < 0 || area[static_cast<size_t>(i)] > area[static_cast<size_t>(m)]) m = i;
+  }
+  std::vector<int> root(static_cast<size_t>(n));
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&root](int i) {
+    while (root[static_cast<size_t>(i)] != i) i = root[static_cast<size_t>(i)];
+    return i;
+  };
+  std::vector<std::pair<double, int>> order;
+  for (int i = 0; i < n; ++i) {
+    if (i != main[0] && i != main[1] && area[static_cast<size_t>(i)] < kFragment * total) {
+      order.emplace_back(area[static_cast<size_t>(i)], i);
+    }
+  }
+  std::sort(order.begin(), order.end());
+  for (const auto& [a, i] : order) {
+    std::map<int, int> shared;  // neighbouring piece (root) -> shared edges
+    for (int f : pieces[static_cast<size_t>(i)]) {
+      for (int g : part.Neighbours(f)) {
+        const auto it = owner.find(g);
+        if (it == owner.end()) continue;
+        const int r = find(it->second);
+        if (r != find(i)) ++shared[r];
+      }
+    }
+    int best = -1;
+    for (const auto& [r, count] : shared) {
+      if (best < 0 || count > shared[best]) best = r;
+    }
+    if (best >= 0) root[static_cast<size_t>(find(i))] = best;
+  }
+  std::map<int, std::vector<int>> merged;  // root -> faces
+  for (int i = 0; i < n; ++i) {
+    auto& faces = merged[find(i)];
+    faces.insert(faces.end(), pieces[static_cast<size_t>(i)].begin(),
+                 pieces[static_cast<size_t>(i)].end());
+  }
+  std::vector<std::vector<int>> out;
+  for (auto& [r, faces] : merged) {
+    std::sort(faces.begin(), faces.end());
+    out.push_back(std::move(faces));
+  }
+  return out;
+}
+
 Eigen::Vector3d AnyPerpendicular(const Eigen::Vector3d& n) {
   const Eigen::Vector3d axis = std::abs(n.x()) < 0.6   ? Eigen::Vector3d::UnitX()
                                : std::abs(n.y()) < 0.6 ? Eigen::Vector3d::UnitY()
@@ -448,9 +524,14 @@ void DecomposePart(const TriangleMesh& mesh, int source, double tau, Decompositi
     Split split = Resolve(part, faces, m);
     out->tree[id].cut = split.plane;
     std::vector<std::vector<int>> pieces;
-    for (const auto& side : split.sides) {
-      for (auto& piece : ConnectedPieces(part, side)) pieces.push_back(std::move(piece));
+    std::vector<int> piece_side;
+    for (int side = 0; side < 2; ++side) {
+      for (auto& piece : ConnectedPieces(part, split.sides[side])) {
+        pieces.push_back(std::move(piece));
+        piece_side.push_back(side);
+      }
     }
+    pieces = AbsorbFragments(part, std::move(pieces), piece_side);
     // Children in the order of their pieces; pushed reversed so the first is processed first
     // and the leaves come out in depth-first order.
     std::vector<int> children;
