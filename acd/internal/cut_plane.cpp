@@ -3,14 +3,12 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <numeric>
 #include <tuple>
 #include <utility>
 
-#include "acd/convex_hull3d.h"
+#include "acd/internal/canonical_hull.h"
 #include "acd/mesh_measures.h"
 
 namespace acdplan::acd::internal {
@@ -45,12 +43,12 @@ struct SideScore {
 // vertices (`count` first points; the rest are section points).
 void ScorePiece(const std::vector<Eigen::Vector3d>& points, size_t count, SideScore* score) {
   if (points.size() < 4) return;
-  const TriangleMesh hull = ConvexHull3(points, 0.0);
-  if (hull.triangles.rows() < 4) return;
-  const double volume = MeshVolume(hull);
+  const CanonicalHull hull = MakeCanonicalHull(points);
+  if (hull.mesh.triangles.rows() < 4 || hull.planes.rows() < 4) return;
+  const double volume = MeshVolume(hull.mesh);
   if (!(volume > 0)) return;
   score->hull_volume += volume;
-  const Eigen::Matrix<double, Eigen::Dynamic, 4> planes = HullPlanes(hull);
+  const Eigen::Matrix<double, Eigen::Dynamic, 4>& planes = hull.planes;
   for (size_t i = 0; i < count; ++i) {
     double d = 1e300;
     for (Eigen::Index j = 0; j < planes.rows(); ++j) {
@@ -70,11 +68,12 @@ SideScore ScoreSide(const TriangleMesh& mesh, const Eigen::VectorXd& s, int sign
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int x) {
     while (parent[static_cast<size_t>(x)] != x) {
-      x = parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
+      x = parent[static_cast<size_t>(x)] =
+          parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
     }
     return x;
   };
-  std::vector<char> joined(static_cast<size_t>(n), 0);  // an in-plane vertex on one of its edges
+  std::vector<char> joined(static_cast<size_t>(n), 0);     // an in-plane vertex on one of its edges
   std::vector<std::pair<int, Eigen::Vector3d>> crossings;  // (vertex on this side, point)
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
     for (int k = 0; k < 3; ++k) {
@@ -87,8 +86,9 @@ SideScore ScoreSide(const TriangleMesh& mesh, const Eigen::VectorXd& s, int sign
         if (ra != rb) parent[static_cast<size_t>(std::max(ra, rb))] = std::min(ra, rb);
       } else if (sa * sb < 0) {
         const double t = s(a) / (s(a) - s(b));
-        crossings.emplace_back(sa == sign ? a : b, mesh.vertices.row(a).transpose() +
-                                                       t * (mesh.vertices.row(b) - mesh.vertices.row(a)).transpose());
+        crossings.emplace_back(sa == sign ? a : b,
+                               mesh.vertices.row(a).transpose() +
+                                   t * (mesh.vertices.row(b) - mesh.vertices.row(a)).transpose());
       }
     }
   }
@@ -154,7 +154,8 @@ std::vector<Plane3d> RankCutPlanes(const TriangleMesh& mesh, const SolidConcavit
         if (mesh.triangles(f, k) != concavity.witness_vertex) continue;
         AddCandidate(face_normal(static_cast<int>(f)), w, &candidates);
         for (int other : {mesh.triangles(f, (k + 1) % 3), mesh.triangles(f, (k + 2) % 3)}) {
-          edges[{std::min(other, concavity.witness_vertex), std::max(other, concavity.witness_vertex)}]
+          edges[{std::min(other, concavity.witness_vertex),
+                 std::max(other, concavity.witness_vertex)}]
               .push_back(static_cast<int>(f));
         }
       }
@@ -183,14 +184,16 @@ std::vector<Plane3d> RankCutPlanes(const TriangleMesh& mesh, const SolidConcavit
     const Plane3d& plane = candidates[c];
     const Eigen::Index n = mesh.vertices.rows();
     Eigen::VectorXd s(n);
-    for (Eigen::Index i = 0; i < n; ++i) s(i) = plane.normal.dot(mesh.vertices.row(i).transpose()) - plane.offset;
+    for (Eigen::Index i = 0; i < n; ++i)
+      s(i) = plane.normal.dot(mesh.vertices.row(i).transpose()) - plane.offset;
     const SideScore lo = ScoreSide(mesh, s, -1, tol), hi = ScoreSide(mesh, s, 1, tol);
     if (!lo.valid || !hi.valid) continue;
     const double worst = std::max(lo.concavity, hi.concavity);
-    const long long level = worst <= tau ? 0 : 1 + static_cast<long long>(std::floor((worst - tau) / bin));
-    if (std::getenv("ACD_DEBUG")) std::fprintf(stderr, "cand %zu n=(%g %g %g) lvl %g vol %.17g\n", c, plane.normal.x(), plane.normal.y(), plane.normal.z(), std::max(lo.concavity, hi.concavity), lo.hull_volume + hi.hull_volume);
+    const long long level =
+        worst <= tau ? 0 : 1 + static_cast<long long>(std::floor((worst - tau) / bin));
     // Volumes equal to rounding are ties.
-    keys.emplace_back(level, std::llround((lo.hull_volume + hi.hull_volume) / volume_unit), static_cast<int>(c));
+    keys.emplace_back(level, std::llround((lo.hull_volume + hi.hull_volume) / volume_unit),
+                      static_cast<int>(c));
   }
   std::sort(keys.begin(), keys.end());
   std::vector<Plane3d> ranked;

@@ -29,7 +29,8 @@ using Fb = CGAL::Constrained_triangulation_face_base_2<ExactKernel, Fbi>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 // Section loops of a valid solid meet at most in vertices; the exact tag keeps the
 // triangulation valid even if rounding-free inputs were to make two of them cross.
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<ExactKernel, Tds, CGAL::Exact_intersections_tag>;
+using Cdt =
+    CGAL::Constrained_Delaunay_triangulation_2<ExactKernel, Tds, CGAL::Exact_intersections_tag>;
 
 struct UnionFind {
   explicit UnionFind(int n) : parent(static_cast<size_t>(n)) {
@@ -51,18 +52,22 @@ struct UnionFind {
 };
 
 // Labels each triangle with its shell (edge-connected set), numbered by smallest triangle.
+// Only edges with exactly two faces join: two lobes touching along an edge (a cut through
+// the edge where they meet) stay apart.
 std::vector<int> ShellLabels(const std::vector<Tri>& triangles, int* count) {
   const int n = static_cast<int>(triangles.size());
   UnionFind uf(n);
-  std::map<std::pair<int, int>, int> first_face;
+  std::map<std::pair<int, int>, std::vector<int>> edge_faces;
   for (int f = 0; f < n; ++f) {
     for (int k = 0; k < 3; ++k) {
       int a = triangles[static_cast<size_t>(f)][static_cast<size_t>(k)];
       int b = triangles[static_cast<size_t>(f)][static_cast<size_t>((k + 1) % 3)];
       if (a > b) std::swap(a, b);
-      auto [it, inserted] = first_face.emplace(std::make_pair(a, b), f);
-      if (!inserted) uf.Unite(f, it->second);
+      edge_faces[{a, b}].push_back(f);
     }
+  }
+  for (const auto& [edge, faces] : edge_faces) {
+    if (faces.size() == 2) uf.Unite(faces[0], faces[1]);
   }
   std::vector<int> label(static_cast<size_t>(n), -1);
   std::map<int, int> root_label;
@@ -76,7 +81,8 @@ std::vector<int> ShellLabels(const std::vector<Tri>& triangles, int* count) {
 }
 
 // The piece made of `triangles` over `points`, with only the vertices it uses.
-ExactPiece Compact(const std::vector<Point3>& points, const std::vector<Tri>& triangles) {
+ExactPiece Compact(const std::vector<Point3>& points, const std::vector<Eigen::Vector3d>& rounded,
+                   const std::vector<Tri>& triangles) {
   ExactPiece out;
   std::vector<int> index(points.size(), -1);
   out.triangles.reserve(triangles.size());
@@ -87,12 +93,54 @@ ExactPiece Compact(const std::vector<Point3>& points, const std::vector<Tri>& tr
       if (slot < 0) {
         slot = static_cast<int>(out.points.size());
         out.points.push_back(points[static_cast<size_t>(t[static_cast<size_t>(k)])]);
+        out.rounded.push_back(rounded[static_cast<size_t>(t[static_cast<size_t>(k)])]);
       }
       u[static_cast<size_t>(k)] = slot;
     }
     out.triangles.push_back(u);
   }
   return out;
+}
+
+// Gives each extra fan of faces around a vertex its own copy of the vertex, so a solid that
+// touches itself in a vertex (a plane tangent there) has a manifold surface.
+void SplitPinchedVertices(ExactPiece* piece) {
+  std::vector<std::vector<std::pair<int, int>>> corners(piece->points.size());  // (face, k)
+  for (size_t f = 0; f < piece->triangles.size(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      corners[static_cast<size_t>(piece->triangles[f][static_cast<size_t>(k)])].emplace_back(
+          static_cast<int>(f), k);
+    }
+  }
+  const size_t original = piece->points.size();
+  for (size_t v = 0; v < original; ++v) {
+    const auto& around = corners[v];
+    if (around.size() < 2) continue;
+    // Faces around v are joined when they share an edge at v (the same other endpoint).
+    UnionFind uf(static_cast<int>(around.size()));
+    std::map<int, int> by_neighbour;
+    for (size_t i = 0; i < around.size(); ++i) {
+      const Tri& t = piece->triangles[static_cast<size_t>(around[i].first)];
+      for (int step : {1, 2}) {
+        const int other = t[static_cast<size_t>((around[i].second + step) % 3)];
+        auto [it, inserted] = by_neighbour.emplace(other, static_cast<int>(i));
+        if (!inserted) uf.Unite(static_cast<int>(i), it->second);
+      }
+    }
+    std::map<int, int> copy;  // fan root -> vertex index
+    for (size_t i = 0; i < around.size(); ++i) {
+      const int root = uf.Find(static_cast<int>(i));
+      auto [it, inserted] = copy.emplace(root, static_cast<int>(v));
+      if (inserted && root != uf.Find(0)) {
+        it->second = static_cast<int>(piece->points.size());
+        piece->points.push_back(piece->points[v]);
+        piece->rounded.push_back(piece->rounded[v]);
+      }
+      piece
+          ->triangles[static_cast<size_t>(around[i].first)][static_cast<size_t>(around[i].second)] =
+          it->second;
+    }
+  }
 }
 
 Eigen::Vector3d Approx(const Point3& p) {
@@ -104,7 +152,7 @@ FT Coordinate(const Point3& p, int axis) { return axis == 0 ? p.x() : (axis == 1
 // The cap closing `below`'s section: the region bounded by the boundary edges of `below`
 // (all in `plane`), triangulated with outward normal +n (seen from `below`).
 std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Plane_3& plane,
-                            std::vector<Point3>* points) {
+                            std::vector<Point3>* points, std::vector<Eigen::Vector3d>* rounded) {
   std::map<std::pair<int, int>, int> net;  // +1 per a->b with a < b, -1 per b->a
   for (const Tri& t : below) {
     for (int k = 0; k < 3; ++k) {
@@ -137,7 +185,8 @@ std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Pl
     auto it = handle.find(id);
     if (it != handle.end()) return it->second;
     const Point3& p = (*points)[static_cast<size_t>(id)];
-    Cdt::Vertex_handle vh = cdt.insert(ExactKernel::Point_2(Coordinate(p, u_axis), Coordinate(p, v_axis)));
+    Cdt::Vertex_handle vh =
+        cdt.insert(ExactKernel::Point_2(Coordinate(p, u_axis), Coordinate(p, v_axis)));
     vh->info() = id;
     handle.emplace(id, vh);
     return vh;
@@ -188,12 +237,12 @@ std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Pl
         std::array<FT, 3> xyz;
         xyz[static_cast<size_t>(u_axis)] = u;
         xyz[static_cast<size_t>(v_axis)] = v;
-        xyz[static_cast<size_t>(drop)] =
-            -(coef[static_cast<size_t>(u_axis)] * u + coef[static_cast<size_t>(v_axis)] * v +
-              plane.d()) /
-            coef[static_cast<size_t>(drop)];
+        xyz[static_cast<size_t>(drop)] = -(coef[static_cast<size_t>(u_axis)] * u +
+                                           coef[static_cast<size_t>(v_axis)] * v + plane.d()) /
+                                         coef[static_cast<size_t>(drop)];
         vh->info() = static_cast<int>(points->size());
         points->emplace_back(xyz[0], xyz[1], xyz[2]);
+        rounded->push_back(Approx(points->back()));
       }
       t[static_cast<size_t>(i)] = vh->info();
     }
@@ -207,11 +256,13 @@ std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Pl
 // direction; used only to give a cavity shell, disjoint from every other shell, its owner).
 bool InsideShell(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& v,
                  const std::vector<Tri>& triangles) {
-  const Eigen::Vector3d dir = Eigen::Vector3d(0.5773502691896258, 0.5773912345, 0.5772987654).normalized();
+  const Eigen::Vector3d dir =
+      Eigen::Vector3d(0.5773502691896258, 0.5773912345, 0.5772987654).normalized();
   int crossings = 0;
   for (const Tri& t : triangles) {
     const Eigen::Vector3d& a = v[static_cast<size_t>(t[0])];
-    const Eigen::Vector3d e1 = v[static_cast<size_t>(t[1])] - a, e2 = v[static_cast<size_t>(t[2])] - a;
+    const Eigen::Vector3d e1 = v[static_cast<size_t>(t[1])] - a,
+                          e2 = v[static_cast<size_t>(t[2])] - a;
     const Eigen::Vector3d h = dir.cross(e2);
     const double det = e1.dot(h);
     if (std::abs(det) < 1e-300) continue;
@@ -233,6 +284,7 @@ ExactPiece ToExact(const TriangleMesh& mesh) {
   piece.points.reserve(static_cast<size_t>(mesh.vertices.rows()));
   for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
     piece.points.emplace_back(mesh.vertices(i, 0), mesh.vertices(i, 1), mesh.vertices(i, 2));
+    piece.rounded.emplace_back(mesh.vertices.row(i));
   }
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
     piece.triangles.push_back({mesh.triangles(f, 0), mesh.triangles(f, 1), mesh.triangles(f, 2)});
@@ -244,7 +296,7 @@ TriangleMesh ToDouble(const ExactPiece& piece) {
   TriangleMesh mesh;
   mesh.vertices.resize(static_cast<Eigen::Index>(piece.points.size()), 3);
   for (size_t i = 0; i < piece.points.size(); ++i) {
-    mesh.vertices.row(static_cast<Eigen::Index>(i)) = Approx(piece.points[i]).transpose();
+    mesh.vertices.row(static_cast<Eigen::Index>(i)) = piece.rounded[i].transpose();
   }
   mesh.triangles.resize(static_cast<Eigen::Index>(piece.triangles.size()), 3);
   for (size_t f = 0; f < piece.triangles.size(); ++f) {
@@ -258,9 +310,23 @@ TriangleMesh ToDouble(const ExactPiece& piece) {
 void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, ExactPiece* below,
                   ExactPiece* above) {
   std::vector<Point3> points = piece.points;
+  std::vector<Eigen::Vector3d> rounded = piece.rounded;
   std::vector<int> side(points.size());
+  // A vertex within kSnap of the plane (relative to the piece's size) counts as on it: a plane
+  // through a vertex of a mesh whose "zero" coordinates are 6e-17 would otherwise shave off
+  // pieces of volume 1e-18. Each vertex is classified once, so both halves and the cap agree
+  // on the topology; the cap is then planar to within kSnap. The rest is exact.
+  constexpr double kSnap = 1e-12;
+  Eigen::AlignedBox3d box;
+  for (const auto& r : rounded) box.extend(r);
+  const Eigen::Vector3d n(CGAL::to_double(plane.a()), CGAL::to_double(plane.b()),
+                          CGAL::to_double(plane.c()));
+  const double snap = kSnap * box.diagonal().norm() * n.norm();
+  const double offset = CGAL::to_double(plane.d());
   for (size_t i = 0; i < points.size(); ++i) {
-    side[i] = static_cast<int>(plane.oriented_side(points[i]));
+    side[i] = std::abs(n.dot(rounded[i]) + offset) <= snap
+                  ? 0
+                  : static_cast<int>(plane.oriented_side(points[i]));
   }
   auto height = [&](int i) {
     const Point3& p = points[static_cast<size_t>(i)];
@@ -278,6 +344,7 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
     const int id = static_cast<int>(points.size());
     points.emplace_back(p.x() + (q.x() - p.x()) * t, p.y() + (q.y() - p.y()) * t,
                         p.z() + (q.z() - p.z()) * t);
+    rounded.push_back(Approx(points.back()));
     side.push_back(0);
     crossing.emplace(std::make_pair(a, b), id);
     return id;
@@ -320,13 +387,13 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
     for (size_t i = 1; i + 1 < neg.size(); ++i) lower.push_back({neg[0], neg[i], neg[i + 1]});
     for (size_t i = 1; i + 1 < pos.size(); ++i) upper.push_back({pos[0], pos[i], pos[i + 1]});
   }
-  std::vector<Tri> cap = SectionCap(lower, plane, &points);
+  std::vector<Tri> cap = SectionCap(lower, plane, &points, &rounded);
   for (const Tri& t : cap) {
     lower.push_back(t);
     upper.push_back({t[0], t[2], t[1]});
   }
-  *below = Compact(points, lower);
-  *above = Compact(points, upper);
+  *below = Compact(points, rounded, lower);
+  *above = Compact(points, rounded, upper);
 }
 
 std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
@@ -336,20 +403,29 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
   for (size_t f = 0; f < piece.triangles.size(); ++f) {
     shells[static_cast<size_t>(label[f])].push_back(piece.triangles[f]);
   }
-  if (count == 1) return {piece};
-  std::vector<Eigen::Vector3d> v(piece.points.size());
-  for (size_t i = 0; i < v.size(); ++i) v[i] = Approx(piece.points[i]);
+  if (count == 1) {
+    ExactPiece out = piece;
+    SplitPinchedVertices(&out);
+    return {out};
+  }
+  const std::vector<Eigen::Vector3d>& v = piece.rounded;
   std::vector<double> volume(static_cast<size_t>(count), 0.0);
   for (int s = 0; s < count; ++s) {
     const Eigen::Vector3d& o = v[static_cast<size_t>(shells[static_cast<size_t>(s)][0][0])];
     for (const Tri& t : shells[static_cast<size_t>(s)]) {
-      volume[static_cast<size_t>(s)] += (v[static_cast<size_t>(t[0])] - o)
-                                            .dot((v[static_cast<size_t>(t[1])] - o)
-                                                     .cross(v[static_cast<size_t>(t[2])] - o)) /
-                                        6.0;
+      volume[static_cast<size_t>(s)] +=
+          (v[static_cast<size_t>(t[0])] - o)
+              .dot((v[static_cast<size_t>(t[1])] - o).cross(v[static_cast<size_t>(t[2])] - o)) /
+          6.0;
     }
   }
   // Each outer shell starts a solid; each cavity joins the smallest outer shell around it.
+  // A shell is a cavity only if clearly inward: a sliver's rounding-level volume is not.
+  double largest = 0;
+  for (double x : volume) largest = std::max(largest, std::abs(x));
+  for (double& x : volume) {
+    if (x < 0 && -x <= 1e-9 * largest) x = 0;
+  }
   std::vector<int> owner(static_cast<size_t>(count), -1);
   for (int s = 0; s < count; ++s) {
     if (volume[static_cast<size_t>(s)] >= 0) owner[static_cast<size_t>(s)] = s;
@@ -360,16 +436,9 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
     int best = -1;
     for (int o = 0; o < count; ++o) {
       if (volume[static_cast<size_t>(o)] < 0) continue;
-      if (best >= 0 && volume[static_cast<size_t>(o)] >= volume[static_cast<size_t>(best)]) continue;
+      if (best >= 0 && volume[static_cast<size_t>(o)] >= volume[static_cast<size_t>(best)])
+        continue;
       if (InsideShell(p, v, shells[static_cast<size_t>(o)])) best = o;
-    }
-    if (best < 0) {  // rounding: fall back on the largest outer shell
-      for (int o = 0; o < count; ++o) {
-        if (volume[static_cast<size_t>(o)] >= 0 &&
-            (best < 0 || volume[static_cast<size_t>(o)] > volume[static_cast<size_t>(best)])) {
-          best = o;
-        }
-      }
     }
     owner[static_cast<size_t>(s)] = best < 0 ? s : best;
   }
@@ -379,10 +448,12 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
     std::vector<Tri> tris;
     for (int t = 0; t < count; ++t) {
       if (owner[static_cast<size_t>(t)] == s) {
-        tris.insert(tris.end(), shells[static_cast<size_t>(t)].begin(), shells[static_cast<size_t>(t)].end());
+        tris.insert(tris.end(), shells[static_cast<size_t>(t)].begin(),
+                    shells[static_cast<size_t>(t)].end());
       }
     }
-    out.push_back(Compact(piece.points, tris));
+    out.push_back(Compact(piece.points, piece.rounded, tris));
+    SplitPinchedVertices(&out.back());
   }
   return out;
 }
@@ -397,7 +468,8 @@ ShellTopology Topology(const std::vector<std::array<int, 3>>& triangles) {
     const auto s = static_cast<size_t>(label[f]);
     ++faces[s];
     for (int k = 0; k < 3; ++k) {
-      int a = triangles[f][static_cast<size_t>(k)], b = triangles[f][static_cast<size_t>((k + 1) % 3)];
+      int a = triangles[f][static_cast<size_t>(k)],
+          b = triangles[f][static_cast<size_t>((k + 1) % 3)];
       vertices[s][a] = 1;
       if (a > b) std::swap(a, b);
       edges[s][{a, b}] = 1;
@@ -406,7 +478,8 @@ ShellTopology Topology(const std::vector<std::array<int, 3>>& triangles) {
   ShellTopology out;
   out.shells = count;
   for (size_t s = 0; s < static_cast<size_t>(count); ++s) {
-    const int chi = static_cast<int>(vertices[s].size()) - static_cast<int>(edges[s].size()) + faces[s];
+    const int chi =
+        static_cast<int>(vertices[s].size()) - static_cast<int>(edges[s].size()) + faces[s];
     out.genus += std::max(0, (2 - chi) / 2);
   }
   return out;

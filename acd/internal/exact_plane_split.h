@@ -18,20 +18,25 @@ using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
 /// measurements show double-rounded clip chains break after two levels of oblique cuts.
 struct ExactPiece {
   std::vector<ExactKernel::Point_3> points;
+  /// Each point rounded to doubles once, when it was made: a lazy exact number's
+  /// approximation tightens whenever a predicate forces its exact value, so rounding later
+  /// could give two pieces sharing a point two different doubles.
+  std::vector<Eigen::Vector3d> rounded;
   std::vector<std::array<int, 3>> triangles;  ///< Counter-clockwise seen from outside.
 };
 
 /// The exact copy of `mesh`.
 ExactPiece ToExact(const TriangleMesh& mesh);
 
-/// `piece` with every coordinate rounded to the nearest double.
+/// `piece` with its rounded coordinates.
 TriangleMesh ToDouble(const ExactPiece& piece);
 
 /// The two closed halves of `piece` on either side of `plane`: `below` is the part on the
 /// negative side, `above` the part on the positive side; either may be empty. Vertices are
-/// classified with exact oriented_side; crossing edges are split at their exact intersection
-/// points; faces lying in the plane go to the side their solid lies on. The section (one
-/// polygon with holes per loop nesting) is triangulated once by a constrained Delaunay
+/// classified with exact oriented_side, except that a vertex within 1e-12 of the piece's
+/// size of the plane counts as on it (no rounding-level slivers); crossing edges are split at their
+/// exact intersection points; faces lying in the plane go to the side their solid lies on. The
+/// section (one polygon with holes per loop nesting) is triangulated once by a constrained Delaunay
 /// triangulation in the plane and given to both halves, reversed for `above`, so the halves
 /// share an identical interface. O(n log n) for n triangles.
 void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, ExactPiece* below,

@@ -9,7 +9,7 @@
 #include <tuple>
 #include <utility>
 
-#include "acd/convex_hull3d.h"
+#include "acd/internal/canonical_hull.h"
 #include "acd/internal/cut_plane.h"
 #include "acd/internal/exact_plane_split.h"
 #include "acd/internal/solid_concavity.h"
@@ -54,8 +54,9 @@ Component3d MakeComponent(const Piece& piece, int source) {
   c.hull = piece.concavity.hull;
   if (c.hull.triangles.rows() == 0) {
     std::vector<Eigen::Vector3d> points;
-    for (Eigen::Index i = 0; i < c.mesh.vertices.rows(); ++i) points.emplace_back(c.mesh.vertices.row(i));
-    c.hull = ConvexHull3(points, 0.0);
+    for (Eigen::Index i = 0; i < c.mesh.vertices.rows(); ++i)
+      points.emplace_back(c.mesh.vertices.row(i));
+    c.hull = MakeCanonicalHull(points).mesh;
   }
   c.centroid = MeshCentroid(c.mesh, true);
   c.volume = MeshVolume(c.mesh);
@@ -67,7 +68,8 @@ Component3d MakeComponent(const Piece& piece, int source) {
 
 // The pieces `piece` falls into when cut by `plane` (each half split into its connected solids).
 std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane) {
-  const ExactKernel::Plane_3 exact(plane.normal.x(), plane.normal.y(), plane.normal.z(), -plane.offset);
+  const ExactKernel::Plane_3 exact(plane.normal.x(), plane.normal.y(), plane.normal.z(),
+                                   -plane.offset);
   ExactPiece below, above;
   SplitByPlane(piece, exact, &below, &above);
   if (below.triangles.empty() || above.triangles.empty()) return {};
@@ -78,8 +80,9 @@ std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane) {
 
 // Algorithm 1 on part `source`: pieces wait in a max-heap by concavity (ties: creation order),
 // the most concave is resolved by one plane cut, its pieces are measured and pushed.
-void DecomposePart(const TriangleMesh& part, int source, double tau, Decomposition3d* out,
-                   std::map<int, Component3d>* leaves) {
+void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_internal,
+                   Decomposition3d* out, std::map<int, Component3d>* leaves,
+                   std::map<int, Component3d>* internal_nodes) {
   std::vector<Piece> pieces;
   auto add_node = [&](Piece piece, int parent) {
     HierarchyNode3d node;
@@ -139,7 +142,8 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, Decompositi
           genus += t.genus;
           shells += t.shells - 1;
         }
-        if (genus < piece.topology.genus || (genus == piece.topology.genus && shells < piece.topology.shells - 1)) {
+        if (genus < piece.topology.genus ||
+            (genus == piece.topology.genus && shells < piece.topology.shells - 1)) {
           parts = std::move(result);
           chosen = plane;
           break;
@@ -158,21 +162,88 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, Decompositi
     const int node = piece.node;
     out->tree[static_cast<size_t>(node)].cut = chosen;
     piece.exact = {};
+    if (keep_internal) (*internal_nodes)[node] = MakeComponent(piece, source);
     piece.mesh = {};
     live += static_cast<int>(parts.size()) - 1;
     for (ExactPiece& p : parts) settle(add_node(MakePiece(std::move(p), tau), node));
   }
 }
 
+// The max_hulls cap: walks the hierarchy back up (its levels of detail, Fig. 9), each time
+// collapsing the internal node whose children are all leaves and whose piece's hull adds the
+// least volume over its children's hulls, until at most `max_hulls` leaves remain (or only
+// roots do). The collapsed node's own piece is the exact union of its children.
+void CapHulls(int max_hulls, Decomposition3d* out, std::map<int, Component3d>* leaves,
+              std::map<int, Component3d>* internal_nodes) {
+  int count = static_cast<int>(leaves->size());
+  while (count > max_hulls) {
+    int best = -1;
+    double best_added = 0;
+    for (const auto& [x, merged] : *internal_nodes) {
+      const HierarchyNode3d& node = out->tree[static_cast<size_t>(x)];
+      if (node.component == -2) continue;  // collapsed already
+      double children = 0;
+      bool all_leaves = true;
+      for (int c : node.children) {
+        const auto it = leaves->find(c);
+        if (it == leaves->end()) {
+          all_leaves = false;
+          break;
+        }
+        children += it->second.hull_volume;
+      }
+      if (!all_leaves) continue;
+      const double added = merged.hull_volume - children;
+      if (best < 0 || added < best_added) best = x, best_added = added;
+    }
+    if (best < 0) break;
+    HierarchyNode3d& node = out->tree[static_cast<size_t>(best)];
+    for (int c : node.children) leaves->erase(c);
+    count -= static_cast<int>(node.children.size()) - 1;
+    node.children.clear();
+    node.cut = Plane3d{};
+    node.component = -2;
+    (*leaves)[best] = std::move(internal_nodes->at(best));
+  }
+  // Drop the nodes below collapsed ones, renumbering the rest in their order.
+  std::vector<int> id(out->tree.size(), -1);
+  std::vector<HierarchyNode3d> tree;
+  std::vector<int> stack(out->roots.rbegin(), out->roots.rend());
+  std::vector<int> order;
+  while (!stack.empty()) {
+    const int x = stack.back();
+    stack.pop_back();
+    order.push_back(x);
+    const auto& children = out->tree[static_cast<size_t>(x)].children;
+    for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back(*it);
+  }
+  std::sort(order.begin(), order.end());
+  for (int x : order)
+    id[static_cast<size_t>(x)] = static_cast<int>(tree.size()),
+    tree.push_back(out->tree[static_cast<size_t>(x)]);
+  for (HierarchyNode3d& node : tree) {
+    if (node.parent >= 0) node.parent = id[static_cast<size_t>(node.parent)];
+    for (int& c : node.children) c = id[static_cast<size_t>(c)];
+  }
+  for (int& r : out->roots) r = id[static_cast<size_t>(r)];
+  std::map<int, Component3d> renumbered;
+  for (auto& [x, c] : *leaves) renumbered[id[static_cast<size_t>(x)]] = std::move(c);
+  *leaves = std::move(renumbered);
+  out->tree = std::move(tree);
+}
+
 }  // namespace
 
-Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau) {
+Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max_hulls) {
   Decomposition3d out;
   out.tau = tau;
-  std::map<int, Component3d> leaves;  // by tree node
+  out.max_hulls = max_hulls;
+  std::map<int, Component3d> leaves, internal_nodes;  // by tree node
   for (size_t p = 0; p < prepared.parts.size(); ++p) {
-    DecomposePart(prepared.parts[p], static_cast<int>(p), tau, &out, &leaves);
+    DecomposePart(prepared.parts[p], static_cast<int>(p), tau, max_hulls > 0, &out, &leaves,
+                  &internal_nodes);
   }
+  if (max_hulls > 0) CapHulls(max_hulls, &out, &leaves, &internal_nodes);
   // Number the leaves in depth-first order of the tree.
   for (int root : out.roots) {
     std::vector<int> stack = {root};

@@ -5,8 +5,9 @@
 #include <map>
 #include <numeric>
 #include <utility>
+#include <vector>
 
-#include "acd/convex_hull3d.h"
+#include "acd/internal/canonical_hull.h"
 #include "acd/mesh_measures.h"
 
 namespace acdplan::acd::internal {
@@ -39,12 +40,13 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
   if (n < 4 || nf < 4) return out;
   std::vector<Eigen::Vector3d> points(static_cast<size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i) points[static_cast<size_t>(i)] = mesh.vertices.row(i);
-  out.hull = ConvexHull3(points, 0.0);
+  CanonicalHull hull = MakeCanonicalHull(points);
+  out.hull = std::move(hull.mesh);
   out.hull_volume = MeshVolume(out.hull);
   const double scale = BoundingBox(mesh).diagonal().norm();
   const double tol = 1e-9 * scale;
   if (out.hull.triangles.rows() < 4 || !(out.hull_volume > tol * scale * scale)) return out;
-  const Eigen::Matrix<double, Eigen::Dynamic, 4> planes = HullPlanes(out.hull);
+  const Eigen::Matrix<double, Eigen::Dynamic, 4>& planes = hull.planes;
   const int m = static_cast<int>(planes.rows());
   auto depth = [&](const Eigen::Vector3d& p, int j) {
     return planes(j, 3) - planes.row(j).head<3>().dot(p);
@@ -79,7 +81,8 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
     const auto& b = on[static_cast<size_t>(mesh.triangles(f, 1))];
     const auto& c = on[static_cast<size_t>(mesh.triangles(f, 2))];
     for (int j : a) {
-      if (std::find(b.begin(), b.end(), j) != b.end() && std::find(c.begin(), c.end(), j) != c.end()) {
+      if (std::find(b.begin(), b.end(), j) != b.end() &&
+          std::find(c.begin(), c.end(), j) != c.end()) {
         on_hull[static_cast<size_t>(f)] = 1;
         const Eigen::Vector3d p0 = mesh.vertices.row(mesh.triangles(f, 0));
         const Eigen::Vector3d p1 = mesh.vertices.row(mesh.triangles(f, 1));
@@ -92,13 +95,16 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
   std::vector<char> bridge(static_cast<size_t>(m), 0);
   for (int j = 0; j < m; ++j) {
     const double area = facet_area[static_cast<size_t>(j)];
-    bridge[static_cast<size_t>(j)] = covered[static_cast<size_t>(j)] < area - (1e-7 * area + tol * scale);
+    bridge[static_cast<size_t>(j)] =
+        covered[static_cast<size_t>(j)] < area - (1e-7 * area + tol * scale);
   }
   // Pockets: off-hull faces connected through shared edges.
   std::vector<int> parent(static_cast<size_t>(nf));
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int x) {
-    while (parent[static_cast<size_t>(x)] != x) x = parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
+    while (parent[static_cast<size_t>(x)] != x)
+      x = parent[static_cast<size_t>(x)] =
+          parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
     return x;
   };
   std::map<std::pair<int, int>, int> edge_face;
@@ -116,7 +122,8 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
   }
   std::map<int, std::vector<int>> pockets;  // root -> faces, in face order
   for (Eigen::Index f = 0; f < nf; ++f) {
-    if (!on_hull[static_cast<size_t>(f)]) pockets[find(static_cast<int>(f))].push_back(static_cast<int>(f));
+    if (!on_hull[static_cast<size_t>(f)])
+      pockets[find(static_cast<int>(f))].push_back(static_cast<int>(f));
   }
   const double spacing = tau > 0 ? tau : scale / 8;
   for (const auto& [root, faces] : pockets) {

@@ -11,12 +11,12 @@ namespace acdplan::acd::internal {
 
 /// The measure of one piece and where it is deepest.
 struct SolidConcavity {
-  double value = 0.0;                                  ///< Largest depth [units]; 0 if convex.
+  double value = 0.0;                                 ///< Largest depth [units]; 0 if convex.
   Eigen::Vector3d witness = Eigen::Vector3d::Zero();  ///< The most concave point.
-  int witness_vertex = -1;         ///< Its vertex, or -1 when a face sample won.
-  int witness_face = -1;           ///< A pocket face at the witness (-1 if convex).
-  std::vector<int> pocket_faces;   ///< The faces of the witness's pocket.
-  TriangleMesh hull;               ///< The convex hull of the piece.
+  int witness_vertex = -1;                            ///< Its vertex, or -1 when a face sample won.
+  int witness_face = -1;          ///< A pocket face at the witness (-1 if convex).
+  std::vector<int> pocket_faces;  ///< The faces of the witness's pocket.
+  TriangleMesh hull;              ///< The convex hull of the piece.
   double hull_volume = 0.0;
 };
 

@@ -150,7 +150,8 @@ void ComputeOpenings(Decomposition3d* decomposition) {
         const bool forward = a < b;  // a is below: the normal n points from a into b
         opening.normal = forward ? n : Eigen::Vector3d(-n);
         if (!forward) std::reverse(outline.begin(), outline.end());
-        for (const Point2& q : outline) opening.polygon.push_back(u * q.x() + v * q.y() + n * offset);
+        for (const Point2& q : outline)
+          opening.polygon.push_back(u * q.x() + v * q.y() + n * offset);
         opening.area = area;
         found.emplace_back(opening.component_a, opening.component_b, node, std::move(opening));
       }

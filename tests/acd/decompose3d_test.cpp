@@ -182,7 +182,8 @@ TEST(Decompose3d, RejectsBadOptions) {
         try {
           Decompose3d(cube, options);
         } catch (const InputError& e) {
-          EXPECT_NE(std::string(e.what()).find("tau must be a finite number >= 0"), std::string::npos);
+          EXPECT_NE(std::string(e.what()).find("tau must be a finite number >= 0"),
+                    std::string::npos);
           throw;
         }
       },

@@ -30,7 +30,9 @@ inline TriangleMesh Extrude(const Ring2d& ring, double height) {
 }
 
 /// An L-shaped block: [0,2]x[0,1] plus [0,1]x[1,2], height 1.
-inline TriangleMesh LBlock() { return Extrude({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 1.0); }
+inline TriangleMesh LBlock() {
+  return Extrude({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 1.0);
+}
 
 /// A U-shaped block: a 3x1 base with two 1x1 posts, height 1.
 inline TriangleMesh UBlock() {
@@ -76,7 +78,8 @@ inline TriangleMesh Concatenate(const TriangleMesh& a, const TriangleMesh& b) {
   out.vertices.resize(a.vertices.rows() + b.vertices.rows(), 3);
   out.vertices << a.vertices, b.vertices;
   out.triangles.resize(a.triangles.rows() + b.triangles.rows(), 3);
-  out.triangles << a.triangles, (b.triangles.array() + static_cast<int>(a.vertices.rows())).matrix();
+  out.triangles << a.triangles,
+      (b.triangles.array() + static_cast<int>(a.vertices.rows())).matrix();
   return out;
 }
 
