@@ -458,6 +458,22 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
   return out;
 }
 
+bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles) {
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(3 * triangles.size());
+  for (const Tri& t : triangles) {
+    for (int k = 0; k < 3; ++k) edges.emplace_back(t[static_cast<size_t>(k)], t[static_cast<size_t>((k + 1) % 3)]);
+  }
+  std::sort(edges.begin(), edges.end());
+  for (size_t i = 0; i < edges.size(); ++i) {
+    if (i + 1 < edges.size() && edges[i + 1] == edges[i]) return false;
+    if (!std::binary_search(edges.begin(), edges.end(), std::make_pair(edges[i].second, edges[i].first))) {
+      return false;
+    }
+  }
+  return true;
+}
+
 ShellTopology Topology(const std::vector<std::array<int, 3>>& triangles) {
   int count = 0;
   const std::vector<int> label = ShellLabels(triangles, &count);

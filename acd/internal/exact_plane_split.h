@@ -47,6 +47,10 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
 /// smallest triangle index, so the order is deterministic.
 std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece);
 
+/// Whether every directed edge of `triangles` is met by its reverse exactly once (closed,
+/// edge-manifold, consistently oriented).
+bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles);
+
 /// Shells of `mesh` (edge-connected triangle sets) and the sum of their genera,
 /// (2 - V + E - F) / 2 per shell.
 struct ShellTopology {

@@ -75,6 +75,11 @@ std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane) {
   if (below.triangles.empty() || above.triangles.empty()) return {};
   std::vector<ExactPiece> out = ConnectedSolids(below);
   for (ExactPiece& p : ConnectedSolids(above)) out.push_back(std::move(p));
+  // A section the cap could not close cleanly (constraints that overlap or cross, which a
+  // valid solid's section should not have) rejects the plane rather than leak an open piece.
+  for (const ExactPiece& p : out) {
+    if (!IsClosedSurface(p.triangles)) return {};
+  }
   return out;
 }
 

@@ -2,6 +2,11 @@
 // Small closed meshes with known decompositions for the solid ACD tests.
 
 #include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include "acd/internal/triangulate_ring.h"
@@ -89,6 +94,56 @@ inline PreparedMesh PreparedSolid(const TriangleMesh& mesh) {
   prepared.mesh = mesh;
   prepared.parts = {mesh};
   return prepared;
+}
+
+}  // namespace acdplan::acd::test
+
+namespace acdplan::acd::test {
+
+/// A minimal OBJ reader for acd-only tests: `v` and `f` lines (polygons fanned, `a/b/c` and
+/// negative indices understood), vertices at identical positions merged, faces that repeat a
+/// vertex dropped. Returns an empty mesh if the file cannot be read.
+inline TriangleMesh ReadObjForTest(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<Eigen::Vector3d> raw;
+  std::vector<Eigen::Vector3i> faces;
+  std::string line;
+  std::vector<std::vector<int>> polygons;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if (tag == "v") {
+      Eigen::Vector3d p;
+      s >> p.x() >> p.y() >> p.z();
+      raw.push_back(p);
+    } else if (tag == "f") {
+      std::vector<int> poly;
+      std::string token;
+      while (s >> token) {
+        const int i = std::stoi(token.substr(0, token.find('/')));
+        poly.push_back(i < 0 ? static_cast<int>(raw.size()) + i : i - 1);
+      }
+      polygons.push_back(poly);
+    }
+  }
+  std::map<std::tuple<double, double, double>, int> weld;
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<int> id(raw.size());
+  for (size_t i = 0; i < raw.size(); ++i) {
+    auto [it, inserted] = weld.emplace(std::make_tuple(raw[i].x(), raw[i].y(), raw[i].z()),
+                                       static_cast<int>(vertices.size()));
+    if (inserted) vertices.push_back(raw[i]);
+    id[i] = it->second;
+  }
+  for (const auto& poly : polygons) {
+    for (size_t k = 1; k + 1 < poly.size(); ++k) {
+      const Eigen::Vector3i t(id[static_cast<size_t>(poly[0])], id[static_cast<size_t>(poly[k])],
+                              id[static_cast<size_t>(poly[k + 1])]);
+      if (t(0) != t(1) && t(1) != t(2) && t(0) != t(2)) faces.push_back(t);
+    }
+  }
+  return MakeTriangleMesh(vertices, faces);
 }
 
 }  // namespace acdplan::acd::test
