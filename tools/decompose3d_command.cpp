@@ -95,16 +95,19 @@ int RunDecompose3d(const Decompose3dArguments& args) {
   // Solid or surface ACD. An open surface bounds no volume: the surface ACD is the only one
   // that applies. A closed mesh that is not a solid (non-manifold edges, self-intersections)
   // most likely means a modelling error the user should know about: an error unless asked
-  // to repair it or to decompose the surface.
+  // to repair it or to decompose the surface. What --repair cannot mend gets the surface
+  // ACD: the user asked for a result, and the report says why it is not the solid one.
   std::string why;
   if (args.surface) {
     why = "surface ACD (--surface)";
   } else if (prepared.solid()) {
     why = "solid ACD (closed, manifold, no self-intersections" +
           std::string(args.repair ? " after --repair)" : ")");
+  } else if (args.repair) {
+    why = "surface ACD (--repair could not make a solid: " + prepared.defects.first + ")";
   } else if (prepared.defects.boundary_edges > 0) {
     why = "surface ACD (open: " + Count(prepared.defects.boundary_edges, "boundary edge") +
-          (args.repair ? " left after --repair" : "") + "; open meshes get the surface ACD)";
+          "; open meshes get the surface ACD)";
   } else {
     acd::RequireSolid(prepared, args.input);  // Throws, naming the defect and the way out.
   }

@@ -35,9 +35,10 @@ std::string MtlPathFor(const std::string& obj_path);
 /// Which ACD runs (README "The decompose command on meshes"):
 ///  - the prepared mesh is a solid (closed, manifold, no self-intersections; after repair with
 ///    --repair) and --surface is not given: the solid ACD;
-///  - --surface, or the prepared mesh is open (boundary edges): the surface ACD;
-///  - otherwise (closed, but non-manifold or self-intersecting): an InputError naming the
-///    defect (acd::RequireSolid()).
+///  - --surface, or the prepared mesh is open (boundary edges), or --repair could not make it
+///    a solid: the surface ACD;
+///  - otherwise (closed, but non-manifold or self-intersecting, no --repair): an InputError
+///    naming the defect (acd::RequireSolid()).
 /// @return the exit status: 0 done; 1 when --check finds a problem (nothing is written).
 /// @throws InputError for an unreadable or unusable mesh, a bad option or an unwritable
 ///         output path (exit status 2).

@@ -578,6 +578,21 @@ TEST_F(CliTest, RepairMakesMeshesSolidAndSaysWhat) {
               1e-9);
 }
 
+TEST_F(CliTest, WhatRepairCannotMendGetsTheSurfaceAcd) {
+  // teddy.obj is closed but one of its shells crosses itself, which repair leaves alone.
+  const std::string teddy = kMeshes + "teddy.obj";
+  const RunResult strict = Acdplan("decompose " + Quote(teddy));
+  ExpectUsageError(strict);
+  EXPECT_NE(strict.err.find(teddy + ": not a solid: faces "), std::string::npos) << strict.err;
+  const fs::path json_path = dir_ / "teddy.json";
+  const RunResult run = Acdplan("decompose " + Quote(teddy) + " --repair --tau-rel 0.2 --json " +
+                                Quote(json_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("surface ACD (--repair could not make a solid: faces "), std::string::npos)
+      << run.out;
+  EXPECT_EQ(nlohmann::json::parse(Read(json_path)).at("stats").at("surface"), true);
+}
+
 TEST_F(CliTest, DecomposesACorpusMesh) {
   // cube-notch.obj repeats its vertices per face (split normals): preparation merges them.
   const fs::path json_path = dir_ / "cube-notch.json";
