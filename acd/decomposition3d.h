@@ -39,7 +39,7 @@ struct Plane3d {
 
 /// A node of the hierarchy tree (Ch. III, Fig. 9(b)), as in 2D.
 struct HierarchyNode3d {
-  double concavity = 0.0;                              ///< Of the piece at this node [units].
+  double concavity = 0.0;                             ///< Of the piece at this node [units].
   Eigen::Vector3d witness = Eigen::Vector3d::Zero();  ///< Its most concave point.
   Plane3d cut;                ///< At an internal node: the plane that split the piece.
   int parent = -1;            ///< -1 at a root.
@@ -62,8 +62,8 @@ struct DecompositionStats3d {
 
 /// Everything Decompose3d() returns.
 struct Decomposition3d {
-  double tau = 0.0;   ///< Absolute tolerance used [units].
-  int max_hulls = 0;  ///< The cap asked for; 0 = none.
+  double tau = 0.0;                     ///< Absolute tolerance used [units].
+  int max_hulls = 0;                    ///< The cap asked for; 0 = none.
   std::vector<Component3d> components;  ///< The leaves, in depth-first order of the tree.
   std::vector<Opening3d> openings;
   std::vector<HierarchyNode3d> tree;
