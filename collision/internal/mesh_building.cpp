@@ -210,4 +210,42 @@ bool IsClosedMesh(const acd::TriangleMesh& mesh, int* bad_edges) {
   return bad == 0 && mesh.triangles.rows() > 0;
 }
 
+acd::TriangleMesh SubMesh(const acd::TriangleMesh& mesh, const std::vector<int>& triangles) {
+  std::vector<int> index(static_cast<size_t>(mesh.vertices.rows()), -1);
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<Eigen::Vector3i> faces;
+  for (int f : triangles) {
+    Eigen::Vector3i face;
+    for (int k = 0; k < 3; ++k) {
+      int& i = index[static_cast<size_t>(mesh.triangles(f, k))];
+      if (i < 0) {
+        i = static_cast<int>(vertices.size());
+        vertices.push_back(mesh.vertices.row(mesh.triangles(f, k)).transpose());
+      }
+      face[k] = i;
+    }
+    faces.push_back(face);
+  }
+  return acd::MakeTriangleMesh(vertices, faces);
+}
+
+bool EqualsItsHull(const acd::TriangleMesh& piece, const acd::TriangleMesh& hull) {
+  auto point = [](const acd::TriangleMesh& mesh, Eigen::Index i) {
+    return Kernel::Point_3(mesh.vertices(i, 0), mesh.vertices(i, 1), mesh.vertices(i, 2));
+  };
+  std::vector<Kernel::Point_3> corners;
+  for (Eigen::Index i = 0; i < hull.vertices.rows(); ++i) corners.push_back(point(hull, i));
+  for (Eigen::Index f = 0; f < piece.triangles.rows(); ++f) {
+    const Kernel::Point_3 a = point(piece, piece.triangles(f, 0));
+    const Kernel::Point_3 b = point(piece, piece.triangles(f, 1));
+    const Kernel::Point_3 c = point(piece, piece.triangles(f, 2));
+    if (CGAL::collinear(a, b, c)) continue;  // No plane; its edges lie on neighbouring faces.
+    // POSITIVE: in front of the counter-clockwise face, i.e. outside the piece at this face.
+    for (const Kernel::Point_3& corner : corners) {
+      if (CGAL::orientation(a, b, c, corner) == CGAL::POSITIVE) return false;
+    }
+  }
+  return piece.triangles.rows() > 0;
+}
+
 }  // namespace acdplan::collision::internal

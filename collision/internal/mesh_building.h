@@ -32,4 +32,15 @@ std::vector<acd::TriangleMesh> ConnectedComponents(const acd::TriangleMesh& mesh
 /// with one or more than two triangles.
 bool IsClosedMesh(const acd::TriangleMesh& mesh, int* bad_edges = nullptr);
 
+/// The triangles `triangles` (row indices) of `mesh`, with only the vertices they use.
+acd::TriangleMesh SubMesh(const acd::TriangleMesh& mesh, const std::vector<int>& triangles);
+
+/// True if the closed mesh `piece` equals `hull`, its convex hull: every face of `piece` spans a
+/// supporting plane of `hull` with `hull` on its inner side (no vertex of `hull` strictly
+/// outside, by CGAL's exact orientation predicate on the double coordinates), so the surface of
+/// `piece` lies in the boundary of `hull`, and a closed surface inside the boundary of a convex
+/// body is all of it. Requires IsClosedMesh(piece) and faces counter-clockwise seen from
+/// outside. O(faces x hull vertices), stopping at the first face that fails.
+bool EqualsItsHull(const acd::TriangleMesh& piece, const acd::TriangleMesh& hull);
+
 }  // namespace acdplan::collision::internal
