@@ -29,6 +29,7 @@ struct ObstacleSetOptions {
   double tau_rel_3d = 0.05;
 };
 
+<<<<<<< HEAD
 /// 3D: a connected component of an obstacle's surface (triangles sharing a vertex, after merging
 /// vertices at identical positions), the exact geometry the ACD pieces stand for.
 struct ObstacleComponent {
@@ -40,13 +41,25 @@ struct ObstacleComponent {
 /// One nearly convex piece of an obstacle, an ACD component, with its convex hull: 2D a component
 /// of Decompose2d; 3D a component of Decompose3d (a solid ACD piece of a closed obstacle
 /// component, a surface ACD patch of an open one).
+=======
+/// One convex piece of an obstacle: an ACD component (2D) or a part of the obstacle's surface
+/// (3D, until a 3D ACD exists: a part of acd::PrepareMesh(), a solid with its cavities or a
+/// surface patch), with its convex hull.
+>>>>>>> main
 struct ObstaclePiece {
   int obstacle = 0;         ///< Index of the obstacle this piece belongs to.
   int component = -1;       ///< 3D: index into ObstacleSet::components; -1 in 2D.
   acd::TriangleMesh solid;  ///< The piece's own surface: 2D the extruded component polygon
+<<<<<<< HEAD
                             ///< (closed), 3D the ACD component's mesh (a solid piece with its
                             ///< cut faces, closed; or a surface patch, open).
   bool closed = true;       ///< `solid` is a closed 2-manifold (inside/outside is defined).
+=======
+                            ///< (closed), 3D the part's triangles.
+  /// `solid` is closed: every edge has two triangles, so inside/outside is defined by ray
+  /// parity (acd::PreparedMesh::closed_parts).
+  bool closed = true;
+>>>>>>> main
   /// `solid` is convex, so it equals `hull` (2D: every vertex of the component is a strict
   /// vertex of its hull; 3D: a closed piece every face of which lies in a facet plane of its
   /// hull, with the same orientation; both decided with exact predicates). A hull hit on a
@@ -90,6 +103,7 @@ struct ObstacleSet {
 ObstacleSet BuildObstacleSet(const envs::Workspace2d& workspace,
                              const ObstacleSetOptions& options = {});
 
+<<<<<<< HEAD
 /// Builds the pieces of a 3D workspace. Each obstacle mesh is welded (vertices at identical
 /// positions merged) and split into connected components; each component is prepared
 /// (acd::PrepareMesh) and decomposed (acd::Decompose3d, tau = options.tau_rel_3d x its
@@ -103,6 +117,16 @@ ObstacleSet BuildObstacleSet(const envs::Workspace2d& workspace,
 /// @throws InputError if a mesh fails acd::CheckTriangleMesh() or tau_rel_3d is not > 0.
 ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace,
                              const ObstacleSetOptions& options = {});
+=======
+/// Builds the pieces of a 3D workspace: one piece per part of each obstacle mesh as
+/// acd::PrepareMesh() finds them (without repair: a solid with its cavities, or an edge-connected
+/// surface patch of a mesh that is not a solid), with its 3D convex hull (CGAL convex_hull_3).
+/// `meshes` holds the cleaned meshes. Meshes that are not solids are accepted here (`closed` is
+/// false); exact point location on them is refused later.
+/// @throws InputError if a mesh fails acd::CheckTriangleMesh() or has no face of positive
+///         area.
+ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace);
+>>>>>>> main
 
 /// The number of obstacle triangles (sum over `meshes`).
 int TriangleCount(const ObstacleSet& obstacles);

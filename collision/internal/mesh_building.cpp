@@ -6,13 +6,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
-#include <cmath>
 #include <list>
-#include <map>
-#include <numeric>
-#include <stdexcept>
-#include <tuple>
-#include <utility>
 
 namespace acdplan::collision::internal {
 namespace {
@@ -131,6 +125,7 @@ acd::TriangleMesh ExtrudeConvexRing(const acd::Ring2d& hull, double z0, double z
   return acd::MakeTriangleMesh(v, tris);
 }
 
+<<<<<<< HEAD
 acd::TriangleMesh WeldVertices(const acd::TriangleMesh& mesh) {
   std::map<std::tuple<double, double, double>, int> index;
   std::vector<Eigen::Vector3d> v;
@@ -248,4 +243,6 @@ bool EqualsItsHull(const acd::TriangleMesh& piece, const acd::TriangleMesh& hull
   return piece.triangles.rows() > 0;
 }
 
+=======
+>>>>>>> main
 }  // namespace acdplan::collision::internal

@@ -1,9 +1,8 @@
 #pragma once
-// Triangle meshes for the collision module: prisms from polygons, connected
-// components, closedness. Internal.
+// Prisms from polygons for the collision module (2D obstacles and robots as solids). Internal;
+// cleaning, parts and closedness of 3D meshes are acd::PrepareMesh()'s.
 
 #include <Eigen/Core>
-#include <vector>
 
 #include "acd/polygon2d.h"
 #include "acd/triangle_mesh.h"
@@ -18,6 +17,7 @@ acd::TriangleMesh ExtrudePolygon(const acd::Polygon2d& polygon, double z0, doubl
 /// fans; faces CCW seen from outside.
 acd::TriangleMesh ExtrudeConvexRing(const acd::Ring2d& hull, double z0, double z1);
 
+<<<<<<< HEAD
 /// `mesh` with vertices at identical positions merged (exact comparison) and triangles that
 /// collapse to fewer than three distinct vertices dropped. Mesh files split a vertex wherever
 /// its normal or texture coordinate changes; for geometry those copies are one vertex.
@@ -43,4 +43,6 @@ acd::TriangleMesh SubMesh(const acd::TriangleMesh& mesh, const std::vector<int>&
 /// outside. O(faces x hull vertices), stopping at the first face that fails.
 bool EqualsItsHull(const acd::TriangleMesh& piece, const acd::TriangleMesh& hull);
 
+=======
+>>>>>>> main
 }  // namespace acdplan::collision::internal
