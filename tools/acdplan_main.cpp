@@ -536,6 +536,11 @@ int main(int argc, char** argv) {
   bench_collision->add_option("--seed", bench_options.seed, "Seed of worlds and poses")
       ->capture_default_str();
   bench_collision
+      ->add_option("--tau-rel-3d", bench_options.tau_rel_3d,
+                   "3D obstacle ACD tau relative to each connected component's reference radius")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-9, 1e6));
+  bench_collision
       ->add_option("--mesh-dir", bench_options.mesh_dir,
                    "Folder of .obj meshes used as 3D obstacles (relative to the working "
                    "directory); '' to skip 3D")
