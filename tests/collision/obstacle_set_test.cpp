@@ -9,6 +9,7 @@
 
 #include "acd/convex_hull3d.h"
 #include "acd/mesh_measures.h"
+#include "acd/prepare_mesh.h"
 #include "base/input_error.h"
 #include "collision/internal/mesh_building.h"
 #include "collision/point_locator.h"
@@ -213,7 +214,7 @@ TEST(ObstacleSet3d, EqualsItsHullIsExact) {
   corners.emplace_back(0, 0, 1 - 1e-12);
   for (int k = 0; k < 4; ++k) faces.emplace_back(ring[k], ring[(k + 1) % 4], 8);
   const acd::TriangleMesh dented = acd::MakeTriangleMesh(corners, faces);
-  ASSERT_TRUE(internal::IsClosedMesh(dented));
+  ASSERT_TRUE(acd::PrepareMesh(dented).solid());
   EXPECT_FALSE(internal::EqualsItsHull(dented, acd::ConvexHull3(Points(dented), 0.0)));
   // The same fan without the dent is convex (coplanar faces are fine).
   acd::TriangleMesh flat = dented;
@@ -238,7 +239,7 @@ TEST(ObstacleSet3d, EqualsItsHullIsExact) {
     f.emplace_back(a, c, d);
   }
   const acd::TriangleMesh schoenhardt = acd::MakeTriangleMesh(v, f);
-  ASSERT_TRUE(internal::IsClosedMesh(schoenhardt));
+  ASSERT_TRUE(acd::PrepareMesh(schoenhardt).solid());
   const acd::TriangleMesh hull = acd::ConvexHull3(v, 0.0);
   EXPECT_EQ(hull.vertices.rows(), 6);
   EXPECT_FALSE(internal::EqualsItsHull(schoenhardt, hull));
