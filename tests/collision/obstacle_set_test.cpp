@@ -170,7 +170,9 @@ TEST(ObstacleSet3d, ACubeIsOneConvexSolidPiece) {
 
 TEST(ObstacleSet3d, ConvexPiecesLieInsideTheObstacle) {
   // Claimed convex pieces skip the exact confirmation: their hulls must be inside the obstacle.
-  for (const char* name : {"cube-notch", "box-thick", "torus1"}) {
+  std::vector<std::string> names = {"cube-notch", "box-thick"};
+  if (!testing::kSanitizerBuild) names.push_back("torus1");
+  for (const std::string& name : names) {
     SCOPED_TRACE(name);
     const envs::Workspace3d world =
         MeshWorld(envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name + ".obj"));
