@@ -22,7 +22,7 @@ struct Polygon2d {
 };
 
 /// Signed area of `ring`: positive when counter-clockwise (shoelace formula). Relative error
-/// below 1e-12 and an exact sign (0 only for zero area) for coordinates of magnitude 1e-145 ..
+/// below 2e-11 and an exact sign (0 only for zero area) for coordinates of magnitude 1e-145 ..
 /// 1e153: a double-precision sum with an error bound, and an exact expansion sum where the
 /// terms cancel beyond that bound (huge, thin spikes). O(n).
 double SignedArea(const Ring2d& ring);
