@@ -430,13 +430,18 @@ TEST(Decompose2dTest, VerticesFarOutsideTheReflexVerticesBox) {
 // cancel far beyond double precision. The decompositions were right (the exact area sums agree:
 // 2191.5 for the spike, 5e58 + 5 for the wedge); the double-precision SignedArea() was not, so
 // CheckDecomposition() saw an input area of 2075.5 and a component of zero area. Every measure
-// must now decompose both validly, with the exact input area.
+// must now decompose both validly, with the exact input area. Coordinates above 1e100 are
+// rejected by PreparePolygons() (regression-overflowing-coordinate.wkt).
 TEST(Decompose2dTest, HugeCoordinatesWhoseAreaTermsCancel) {
   const fs::path corpus = fs::path(ACDPLAN_SOURCE_DIR) / "fuzz" / "corpus" / "decompose2d";
+  // The last: the wedge at the largest magnitude PreparePolygons() accepts (1e100).
   const std::pair<std::string, double> cases[] = {{"regression-huge-spike-area.poly", 2191.5},
-                                                  {"regression-zero-area-component.wkt", 5e58}};
+                                                  {"regression-zero-area-component.wkt", 5e58},
+                                                  {"", 1e100 + 98.5}};
   for (const auto& [file, area] : cases) {
-    const std::vector<Polygon2d> input = ReadPolygons((corpus / file).string());
+    const std::vector<Polygon2d> input =
+        !file.empty() ? ReadPolygons((corpus / file).string())
+                      : PreparePolygons({{{0, 0}, {1, 4}, {1, 2}, {1e100, 199}, {0, 4}}, {}}, "w");
     ASSERT_EQ(input.size(), 1u) << file;
     EXPECT_EQ(Area(input[0]), area) << file;
     for (const ConcavityMeasure measure : kMeasures) {
