@@ -321,6 +321,7 @@ Diagnosis Diagnose(const TriangleMesh& cleaned) {
                  d.edges.faces[static_cast<size_t>(e.first + 1)]);
     }
   }
+  // A set's root is its lowest triangle, met first: patch_of[root] is set before its members.
   std::vector<int> patch_of(static_cast<size_t>(nf), -1);
   for (int f = 0; f < nf; ++f) {
     const int root = sets.Find(f);

@@ -45,10 +45,11 @@ std::vector<std::vector<const BorderHalfedge*>> TraceLoops(
       position[h.from] = path.size();
       path.push_back(&h);
       auto found = position.find(h.to);
-      if (found != position.end()) {  // Back at a vertex of the path: a loop closes.
-        loops.emplace_back(path.begin() + static_cast<std::ptrdiff_t>(found->second), path.end());
-        for (size_t i = found->second; i < path.size(); ++i) position.erase(path[i]->from);
-        path.resize(found->second);
+      if (found != position.end()) {         // Back at a vertex of the path: a loop closes.
+        const size_t begin = found->second;  // Copied: the loop below erases `found`.
+        loops.emplace_back(path.begin() + static_cast<std::ptrdiff_t>(begin), path.end());
+        for (size_t i = begin; i < path.size(); ++i) position.erase(path[i]->from);
+        path.resize(begin);
         if (path.empty()) break;
       }
       // Continue from the end of the path (h.to, or the vertex a closed loop returned to).
