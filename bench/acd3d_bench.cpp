@@ -229,7 +229,15 @@ void RunCell(const std::function<std::string()>& work, const Acd3dBenchOptions& 
   if (out.contains("problems")) {
     const std::vector<std::string> check = out["problems"].get<std::vector<std::string>>();
     row->check = check.empty() ? "ok" : "FAIL (" + std::to_string(check.size()) + ")";
-    for (const std::string& problem : check) problems->push_back(where + ": check: " + problem);
+    // The first few per cell: a broken decomposition can have a problem per component.
+    constexpr size_t kShown = 3;
+    for (size_t i = 0; i < check.size() && i < kShown; ++i) {
+      problems->push_back(where + ": check: " + check[i]);
+    }
+    if (check.size() > kShown) {
+      problems->push_back(where + ": check: ... and " + std::to_string(check.size() - kShown) +
+                          " more");
+    }
   }
 }
 
@@ -370,6 +378,9 @@ Acd3dBenchResult RunAcd3dBench(const Acd3dBenchOptions& options, std::ostream* p
       if (!Wanted(options, method) || !(is_solid ? solid : surface)) continue;
       for (double tau_rel : tau_rels) {
         Acd3dBenchRow row = RowFor(mesh, method);
+        // What should run, so that a failed cell still groups with its mesh's other settings
+        // (targets' any_of); the cell reports what did run.
+        row.mode = !is_solid ? "surface" : mesh.input == kRepairable ? "solid (repaired)" : "solid";
         row.tau_rel = tau_rel;
         row.tau = tau_rel * mesh.radius;
         const double tau = *row.tau;
@@ -382,6 +393,7 @@ Acd3dBenchResult RunAcd3dBench(const Acd3dBenchOptions& options, std::ostream* p
     }
     if (result.vhacd) {
       Acd3dBenchRow row = RowFor(mesh, kVhacd);
+      row.mode = "voxels";
       RunCell([&] { return VhacdWork(mesh, options); }, options, &row, &result.problems);
       report(row);
       result.rows.push_back(row);
