@@ -29,7 +29,8 @@ bool IsClosed(const TriangleMesh& mesh) {
 }
 
 TriangleMesh Load(const std::string& name) {
-  TriangleMesh mesh = test::ReadObjForTest(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name + ".obj");
+  TriangleMesh mesh =
+      test::ReadObjForTest(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name + ".obj");
   if (MeshVolume(mesh) < 0) mesh.triangles.col(1).swap(mesh.triangles.col(2));
   return mesh;
 }
@@ -97,9 +98,12 @@ TEST(Decompose3dMetamorphic, TransformsKeepTheComponentCount) {
   const Eigen::Matrix3d rotation =
       Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   EXPECT_EQ(Solve(Transformed(mesh, rotation, {0, 0, 0}), tau).components.size(), count);
-  EXPECT_EQ(Solve(Transformed(mesh, Eigen::Matrix3d::Identity(), {1e3, -7, 0.25}), tau).components.size(), count);
+  EXPECT_EQ(
+      Solve(Transformed(mesh, Eigen::Matrix3d::Identity(), {1e3, -7, 0.25}), tau).components.size(),
+      count);
   for (double s : {1e-3, 1e3}) {
-    EXPECT_EQ(Solve(Transformed(mesh, s * Eigen::Matrix3d::Identity(), {0, 0, 0}), s * tau).components.size(),
+    EXPECT_EQ(Solve(Transformed(mesh, s * Eigen::Matrix3d::Identity(), {0, 0, 0}), s * tau)
+                  .components.size(),
               count)
         << "scale " << s;
   }
@@ -111,7 +115,8 @@ TEST(Decompose3dMetamorphic, TransformsKeepTheComponentCount) {
   for (Eigen::Index i = 0; i < n; ++i) shuffled.vertices.row(n - 1 - i) = mesh.vertices.row(i);
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
     for (int k = 0; k < 3; ++k) {
-      shuffled.triangles(mesh.triangles.rows() - 1 - f, k) = static_cast<int>(n - 1 - mesh.triangles(f, k));
+      shuffled.triangles(mesh.triangles.rows() - 1 - f, k) =
+          static_cast<int>(n - 1 - mesh.triangles(f, k));
     }
   }
   EXPECT_EQ(Solve(shuffled, tau).components.size(), count);
@@ -122,7 +127,8 @@ TEST(Decompose3dMetamorphic, TransformsKeepTheComponentCount) {
 TEST(Decompose3dMetamorphic, TorusScaledByEightScalesExactly) {
   const TriangleMesh torus = test::Torus(2.0, 1.0, 16, 8);
   const Decomposition3d a = Solve(torus, 0.3);
-  const Decomposition3d b = Solve(Transformed(torus, 8 * Eigen::Matrix3d::Identity(), {0, 0, 0}), 2.4);
+  const Decomposition3d b =
+      Solve(Transformed(torus, 8 * Eigen::Matrix3d::Identity(), {0, 0, 0}), 2.4);
   ASSERT_EQ(a.components.size(), b.components.size());
   EXPECT_NEAR(b.stats.volume, 512 * a.stats.volume, 1e-9 * b.stats.volume);
   EXPECT_NEAR(b.stats.hull_volume, 512 * a.stats.hull_volume, 1e-9 * b.stats.hull_volume);
