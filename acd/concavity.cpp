@@ -55,11 +55,14 @@ std::vector<Pocket> FindPockets(const Ring2d& ring, const std::vector<int>& hull
     const int gap = (end - begin + n) % n;
     if (gap <= 1) continue;
     int start = begin;
-    for (int step = 1; step < gap; ++step) {
-      const int i = (begin + step) % n;
+    int since_start = 0;  // (i - start) mod n, without a division per vertex.
+    for (int step = 1, i = begin; step < gap; ++step) {
+      i = i + 1 == n ? 0 : i + 1;
+      ++since_start;
       if (Orientation(ring[begin], ring[end], ring[i]) == 0) {
-        if ((i - start + n) % n > 1) pockets.push_back({start, i});
+        if (since_start > 1) pockets.push_back({start, i});
         start = i;
+        since_start = 0;
       }
     }
     if ((end - start + n) % n > 1) pockets.push_back({start, end});
@@ -322,10 +325,21 @@ std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
 bool IsNotch(const Point2d& prev, const Point2d& v, const Point2d& next) {
   if (Orientation(prev, v, next) >= 0) return false;
   const Point2d chord = next - prev;
-  const double length = chord.norm();
   const double noise = kRoundingNoise * std::max(1.0, MaxAbsCoordinate(prev, v, next));
+  const double cross = Cross(chord, v - prev);
+  // The same comparison squared, without the square root and the division (this runs for every
+  // candidate of every cut): decided when clear of a relative band of 1e-9, far wider than the
+  // few ulps either form errs by; inside the band, and where squares could overflow or
+  // underflow, the form below decides.
+  const double length2 = chord.squaredNorm();
+  if (length2 >= 1e-150 && length2 <= 1e150 && std::abs(cross) <= 1e150 && noise <= 1e75) {
+    const double lhs = cross * cross, rhs = noise * noise * length2;
+    if (lhs > rhs * (1.0 + 1e-9)) return true;
+    if (lhs < rhs * (1.0 - 1e-9)) return false;
+  }
+  const double length = std::sqrt(length2);
   if (length == 0.0) return (v - prev).norm() > noise;  // A spike back onto itself.
-  return std::abs(Cross(chord, v - prev)) / length > noise;
+  return std::abs(cross) / length > noise;
 }
 
 int CountNotches(const Polygon2d& polygon) {

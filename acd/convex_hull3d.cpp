@@ -17,21 +17,35 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thickness) {
   if (points.empty()) throw std::logic_error("ConvexHull3(): no points");
+  // Distinct points only, and three points hulled here: CGAL 5.5.1's convex_hull_3 reads and
+  // writes freed list nodes (valgrind) for some sets of exactly three points, and thickening by
+  // 0 would only repeat points.
+  std::vector<Eigen::Vector3d> distinct = points;
+  std::sort(distinct.begin(), distinct.end(),
+            [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+              return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+            });
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  if (distinct.size() == 3 && thickness == 0) {
+    const bool collinear = (distinct[1] - distinct[0]).cross(distinct[2] - distinct[0]).norm() == 0;
+    return collinear ? MakeTriangleMesh(distinct, {})
+                     : MakeTriangleMesh(distinct, {Eigen::Vector3i(0, 1, 2)});
+  }
   // Thicken a flat or degenerate set along its missing principal directions, so the hull is a
   // solid (FCL's GJK and the half-space test both want a volume).
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const auto& p : points) mean += p;
-  mean /= static_cast<double>(points.size());
+  for (const auto& p : distinct) mean += p;
+  mean /= static_cast<double>(distinct.size());
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const auto& p : points) cov += (p - mean) * (p - mean).transpose();
+  for (const auto& p : distinct) cov += (p - mean) * (p - mean).transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
   const double largest = std::max(eig.eigenvalues()(2), 0.0);
   std::vector<Kernel::Point_3> pts;
-  pts.reserve(points.size() * 2);
-  for (const auto& p : points) pts.emplace_back(p.x(), p.y(), p.z());
+  pts.reserve(distinct.size() * 2);
+  for (const auto& p : distinct) pts.emplace_back(p.x(), p.y(), p.z());
   for (int axis = 0; axis < 3; ++axis) {
     const double spread = std::sqrt(std::max(eig.eigenvalues()(axis), 0.0));
-    if (spread > 1e-9 * std::sqrt(largest) && largest > 0) continue;
+    if ((spread > 1e-9 * std::sqrt(largest) && largest > 0) || !(thickness > 0)) continue;
     const Eigen::Vector3d dir = eig.eigenvectors().col(axis) * thickness;
     const size_t count = pts.size();
     for (size_t i = 0; i < count; ++i) {
@@ -53,7 +67,27 @@ TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thic
     for (auto vi : CGAL::vertices_around_face(hull.halfedge(f), hull)) ids.push_back(index[vi]);
     for (size_t i = 1; i + 1 < ids.size(); ++i) tris.emplace_back(ids[0], ids[i], ids[i + 1]);
   }
-  return MakeTriangleMesh(v, tris);
+  // CGAL's element order depends on memory addresses: sort vertices by position and triangles by
+  // their (rotated) indices, so the same points give the same mesh in every run.
+  std::vector<int> order(v.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::sort(order.begin(), order.end(), [&v](int a, int b) {
+    return std::lexicographical_compare(v[a].data(), v[a].data() + 3, v[b].data(), v[b].data() + 3);
+  });
+  std::vector<int> rank(v.size());
+  std::vector<Eigen::Vector3d> sorted(v.size());
+  for (size_t i = 0; i < order.size(); ++i) {
+    rank[static_cast<size_t>(order[i])] = static_cast<int>(i);
+    sorted[i] = v[static_cast<size_t>(order[i])];
+  }
+  for (Eigen::Vector3i& t : tris) {
+    t = Eigen::Vector3i(rank[t(0)], rank[t(1)], rank[t(2)]);
+    while (t(0) > t(1) || t(0) > t(2)) t = Eigen::Vector3i(t(1), t(2), t(0));
+  }
+  std::sort(tris.begin(), tris.end(), [](const Eigen::Vector3i& a, const Eigen::Vector3i& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  });
+  return MakeTriangleMesh(sorted, tris);
 }
 
 Eigen::Matrix<double, Eigen::Dynamic, 4> HullPlanes(const TriangleMesh& hull) {
@@ -75,6 +109,16 @@ Eigen::Matrix<double, Eigen::Dynamic, 4> HullPlanes(const TriangleMesh& hull) {
       }
     }
     if (!duplicate) planes.emplace_back(n.x(), n.y(), n.z(), d);
+  }
+  // Each plane moved out to the hull's support in its direction: the normal of a sliver facet
+  // (three nearly collinear corners, which cuts of nearly coplanar pieces produce) is rounding
+  // noise, so its plane through the facet can cut through the hull (measured: 0.17 on a torus
+  // piece of size 1.7). As a supporting plane, whatever its direction, it keeps every hull point
+  // inside; for a sound facet it moves by rounding only.
+  for (Eigen::Vector4d& plane : planes) {
+    for (Eigen::Index i = 0; i < hull.vertices.rows(); ++i) {
+      plane(3) = std::max(plane(3), plane.head<3>().dot(hull.vertices.row(i).transpose()));
+    }
   }
   Eigen::Matrix<double, Eigen::Dynamic, 4> out(static_cast<Eigen::Index>(planes.size()), 4);
   for (size_t i = 0; i < planes.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = planes[i];

@@ -21,7 +21,10 @@ struct Polygon2d {
   std::vector<Ring2d> holes;  ///< Hole boundaries, clockwise.
 };
 
-/// Signed area of `ring`: positive when counter-clockwise (shoelace formula).
+/// Signed area of `ring`: positive when counter-clockwise (shoelace formula). Relative error
+/// below 2e-11 and an exact sign (0 only for zero area) for coordinates of magnitude 1e-145 ..
+/// 1e153: a double-precision sum with an error bound, and an exact expansion sum where the
+/// terms cancel beyond that bound (huge, thin spikes). O(n).
 double SignedArea(const Ring2d& ring);
 
 /// Area of `polygon`: outer area minus the holes' areas.

@@ -723,8 +723,16 @@ std::vector<Polygon2d> PrepareTouching(std::vector<IndexedRing> rings, const std
 
 }  // namespace
 
+// Largest |coordinate| accepted. The measures of a polygon multiply coordinate differences:
+// areas and squared distances square them, the centroid's first moments cube them. Beyond 1e100
+// a difference is up to 2e100 and its cube 8e300, so a ring's moment sum would overflow a
+// double (1.8e308) and centroids, then areas and distances, turn into inf or NaN (a vertex at
+// 5e185 did). Such coordinates carry no geometry a double computation can measure, so they are
+// rejected, not decomposed.
+constexpr double kMaxCoordinate = 1e100;
+
 std::vector<Polygon2d> PreparePolygons(const Polygon2d& raw, const std::string& where) {
-  // 1. Every coordinate finite.
+  // 1. Every coordinate finite and at most kMaxCoordinate in magnitude.
   const size_t ring_count = 1 + raw.holes.size();
   auto raw_ring = [&](size_t r) -> const Ring2d& { return r == 0 ? raw.outer : raw.holes[r - 1]; };
   for (size_t r = 0; r < ring_count; ++r) {
@@ -733,6 +741,12 @@ std::vector<Polygon2d> PreparePolygons(const Polygon2d& raw, const std::string& 
       if (!std::isfinite(ring[i].x()) || !std::isfinite(ring[i].y())) {
         Fail(where, RingName(static_cast<int>(r)) + ": vertex " + std::to_string(i) +
                         " is not finite " + internal::FormatPoint(ring[i]));
+      }
+      if (std::max(std::abs(ring[i].x()), std::abs(ring[i].y())) > kMaxCoordinate) {
+        Fail(where, RingName(static_cast<int>(r)) + ": vertex " + std::to_string(i) + " " +
+                        internal::FormatPoint(ring[i]) +
+                        " is too far from the origin (|coordinate| > 1e100: products of "
+                        "coordinates would overflow)");
       }
     }
   }

@@ -28,7 +28,8 @@ namespace acdplan::acd {
 /// without pinches stays whole, with its holes). The cuts are not openings of the
 /// decomposition.
 ///
-/// Still rejected (InputError), checked in this order: a non-finite coordinate; a ring with
+/// Still rejected (InputError), checked in this order: a non-finite coordinate, or one of
+/// magnitude above 1e100 (products of coordinates would overflow a double); a ring with
 /// fewer than 3 distinct, non-collinear vertices or zero area; a ring crossing itself, or
 /// overlapping itself along a segment ("is not simple"); a hole crossing or overlapping the
 /// outer ring ("touches or crosses the outer ring", the strict rule's wording); a hole outside

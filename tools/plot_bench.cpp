@@ -59,6 +59,16 @@ int RunProgram(const std::vector<std::string>& argv, bool quiet) {
   return WIFSIGNALED(status) ? 128 + WTERMSIG(status) : 127;
 }
 
+std::string FindPlotPython(const std::string& env_python) {
+  if (!env_python.empty()) return env_python;
+  // The PATH's python3 may be a user's own (pyenv, a venv) without matplotlib while the
+  // system's has it (Debian's python3-matplotlib).
+  for (const char* candidate : {"python3", "/usr/bin/python3"}) {
+    if (RunProgram({candidate, "-c", "import matplotlib"}, true) == 0) return candidate;
+  }
+  return "";
+}
+
 void PlotBench(const std::string& dir, std::ostream* log) {
   auto say = [&](const std::string& text) {
     if (log) *log << text << "\n";
@@ -74,14 +84,17 @@ void PlotBench(const std::string& dir, std::ostream* log) {
         " (set ACDPLAN_PLOT_BENCH)");
     return;
   }
-  if (RunProgram({"python3", "-c", "import matplotlib"}, true) != 0) {
-    say("bench: no plots: python3 with matplotlib is not available (Debian: apt-get install "
-        "python3-matplotlib); run tools/plot_bench.py " +
+  const char* env_python = std::getenv("ACDPLAN_PYTHON");
+  const std::string python = FindPlotPython(env_python ? env_python : "");
+  if (python.empty()) {
+    say("bench: no plots: no python3 with matplotlib (PATH's python3, /usr/bin/python3; "
+        "Debian: apt-get install python3-matplotlib; or set ACDPLAN_PYTHON); run "
+        "tools/plot_bench.py " +
         dir + " later");
     return;
   }
-  if (RunProgram({"python3", script, dir}, false) != 0) {
-    say("bench: the plot script failed: python3 " + script + " " + dir);
+  if (RunProgram({python, script, dir}, false) != 0) {
+    say("bench: the plot script failed: " + python + " " + script + " " + dir);
   }
 }
 

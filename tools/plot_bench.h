@@ -23,7 +23,12 @@ std::string FindPlotBenchScript(const std::string& executable, const std::string
 /// signal n ended it.
 int RunProgram(const std::vector<std::string>& argv, bool quiet);
 
-/// Plots the output folder `dir` with the script FindPlotBenchScript() finds and python3, and
+/// The Python interpreter for the plots: `env_python` ($ACDPLAN_PYTHON) if not empty, else the
+/// first of PATH's python3 and /usr/bin/python3 that imports matplotlib; "" if neither does.
+std::string FindPlotPython(const std::string& env_python);
+
+/// Plots the output folder `dir` with the script FindPlotBenchScript() finds and the
+/// interpreter FindPlotPython() finds, and
 /// says on `log` what it did or why it could not (no script, no matplotlib, script failed).
 void PlotBench(const std::string& dir, std::ostream* log);
 

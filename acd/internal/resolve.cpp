@@ -61,6 +61,46 @@ bool IsIncident(const Endpoint& e, int ring, int edge, int n) {
   return edge == e.index || Next(edge, n) == e.index;
 }
 
+// The boundary edges a cut is tested against. Most notches are resolved by their first or
+// second candidate, so the first few queries scan the edges (one pass, a box test each), which
+// is cheaper than building the grid (several passes and allocations); the grid is built once
+// queries keep coming (a hole's fallbacks try many pairs). Both report every edge whose box
+// meets the padded box of the segment, so the cut tests that follow decide alike.
+class EdgeQuery {
+ public:
+  explicit EdgeQuery(const Polygon2d& polygon) : polygon_(polygon) {}
+
+  // As EdgeGrid::AnyNear(); `visit` is called at least on every edge whose bounding box meets
+  // the box of a-b grown by `pad`.
+  template <typename Visit>
+  bool AnyNear(const Point2d& a, const Point2d& b, double pad, Visit visit) const {
+    if (!grid_ && ++scans_ > kScansBeforeGrid) grid_.emplace(polygon_);
+    if (grid_) return grid_->AnyNear(a, b, pad, visit);
+    const double xmin = std::min(a.x(), b.x()) - pad, xmax = std::max(a.x(), b.x()) + pad;
+    const double ymin = std::min(a.y(), b.y()) - pad, ymax = std::max(a.y(), b.y()) + pad;
+    for (int ring = -1; ring < static_cast<int>(polygon_.holes.size()); ++ring) {
+      const Ring2d& points = ring < 0 ? polygon_.outer : polygon_.holes[ring];
+      const int n = static_cast<int>(points.size());
+      for (int i = 0; i < n; ++i) {
+        const Point2d& u = points[i];
+        const Point2d& w = points[i + 1 == n ? 0 : i + 1];
+        if (std::max(u.x(), w.x()) < xmin || std::min(u.x(), w.x()) > xmax ||
+            std::max(u.y(), w.y()) < ymin || std::min(u.y(), w.y()) > ymax) {
+          continue;
+        }
+        if (visit(EdgeGrid::Edge{ring, i})) return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  static constexpr int kScansBeforeGrid = 6;
+  const Polygon2d& polygon_;
+  mutable int scans_ = 0;
+  mutable std::optional<EdgeGrid> grid_;
+};
+
 // Rounding noise of a constructed coordinate, relative to the coordinates' magnitude (a few
 // hundred ulps; the noise floor IsNotch() uses).
 constexpr double kRoundingNoise = 1e-13;
@@ -74,7 +114,7 @@ double MaxAbs(const Point2d& p) { return p.cwiseAbs().maxCoeff(); }
 // slips past them by an ulp and leaves a piece pinched to 1e-15, which no later cut resolves).
 // Such a cut must therefore also keep every other vertex, and its new end every other edge,
 // farther than that noise. Edges are taken from `grid`.
-bool IsClearCut(const Polygon2d& polygon, const EdgeGrid& grid, const Endpoint& a,
+bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint& a,
                 const Endpoint& b) {
   if (!LeavesInward(polygon, a, b.point) || !LeavesInward(polygon, b, a.point)) return false;
   const Kernel::Segment_2 cut(ToCgal(a.point), ToCgal(b.point));
@@ -196,6 +236,7 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
   const Point2d& b = ring[Next(index, n)];
   const Ring2d& outer = polygon.outer;
   std::vector<Candidate> candidates;
+  candidates.reserve(outer.size() + 1);
   auto add = [&](const Endpoint& x) {
     if (!InCone(a, r, b, x.point)) return;
     const double distance = (x.point - r).norm();
@@ -228,6 +269,15 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
 template <typename Accept>
 std::optional<Endpoint> FirstAccepted(std::vector<Candidate> candidates, Accept accept) {
   auto worse = [](const Candidate& x, const Candidate& y) { return x.score < y.score; };
+  // Usually the best candidate is accepted: when it is the only one with the best score, the
+  // heap below would pop it first too, so try it before building the heap.
+  const auto best = std::max_element(candidates.begin(), candidates.end(), worse);
+  if (best != candidates.end() &&
+      std::count_if(candidates.begin(), candidates.end(),
+                    [&](const Candidate& c) { return !(c.score < best->score); }) == 1 &&
+      accept(best->end)) {
+    return best->end;
+  }
   std::make_heap(candidates.begin(), candidates.end(), worse);
   for (auto end = candidates.end(); end != candidates.begin(); --end) {
     std::pop_heap(candidates.begin(), end, worse);
@@ -311,8 +361,9 @@ void DistributeHoles(const Polygon2d& polygon, int skip, std::array<Polygon2d, 2
   }
 }
 
-bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeGrid& grid, const Concavity2d& concavity,
-                       int r, const ResolveOptions& options, Resolution* resolution) {
+bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeQuery& grid,
+                       const Concavity2d& concavity, int r, const ResolveOptions& options,
+                       Resolution* resolution) {
   const Endpoint from{-1, r, false, polygon.outer[r]};
   const std::optional<Endpoint> to =
       FirstAccepted(ScoredCandidates(polygon, concavity, -1, r, options),
@@ -332,7 +383,7 @@ bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeGrid& grid, const Con
 
 // The first cut of a hole: from hole vertex `a` to the best-scoring, else the closest, visible
 // outer point (Algorithm 5).
-std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const EdgeGrid& grid,
+std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const EdgeQuery& grid,
                                      const Concavity2d& concavity, int h, int a,
                                      const ResolveOptions& options) {
   const Endpoint from{h, a, false, polygon.holes[h][a]};
@@ -345,7 +396,7 @@ std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const EdgeGrid& g
 
 // The second cut of a hole: from hole vertex `b` to an outer point, crossing neither the first
 // cut (a -> x) nor anything else. `thorough` also tries the scored candidates.
-std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const EdgeGrid& grid,
+std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const EdgeQuery& grid,
                                       const Concavity2d& concavity, int h, int a, const Endpoint& x,
                                       int b, bool thorough, const ResolveOptions& options) {
   const Ring2d& hole = polygon.holes[h];
@@ -391,7 +442,7 @@ void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x,
 // makes (Fig. 19). Where an antipode sees no outer point (a hole wrapped around itself or
 // hidden behind others), other hole vertices stand in: for the first cut, the ones nearest to
 // the outer boundary; for the second, the ones farthest from the first.
-bool ResolveHole(const Polygon2d& polygon, const EdgeGrid& grid, const Concavity2d& concavity,
+bool ResolveHole(const Polygon2d& polygon, const EdgeQuery& grid, const Concavity2d& concavity,
                  int h, const ResolveOptions& options, Resolution* resolution) {
   const Ring2d& hole = polygon.holes[h];
   const int m = static_cast<int>(hole.size());
@@ -439,7 +490,7 @@ bool ResolveHole(const Polygon2d& polygon, const EdgeGrid& grid, const Concavity
 
 bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const ResolveOptions& options,
              Resolution* resolution) {
-  const EdgeGrid grid(polygon);
+  const EdgeQuery grid(polygon);
   if (concavity.witness_hole >= 0) {
     // The witness hole first, then the others by decreasing concavity; each with either
     // antipode connecting first.

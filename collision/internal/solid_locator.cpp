@@ -8,8 +8,8 @@
 #include <cmath>
 #include <string>
 
+#include "acd/prepare_mesh.h"
 #include "base/input_error.h"
-#include "collision/internal/mesh_building.h"
 
 namespace acdplan::collision::internal {
 namespace {
@@ -126,22 +126,20 @@ ExactObstacleLocator::ExactObstacleLocator(const ObstacleSet& obstacles, bool sk
     for (const acd::Polygon2d& polygon : obstacles.polygons) polygons_.emplace_back(polygon);
     return;
   }
-  for (size_t i = 0; i < obstacles.pieces.size(); ++i) {
-    const ObstaclePiece& piece = obstacles.pieces[i];
-    if (!piece.closed) {
+  for (size_t i = 0; i < obstacles.components.size(); ++i) {
+    const ObstacleComponent& component = obstacles.components[i];
+    if (!component.closed) {
       if (skip_open) {
         ++skipped_open_;
         continue;
       }
-      int bad = 0;
-      IsClosedMesh(piece.solid, &bad);
       throw InputError(
           "PointLocator(): exact point location needs closed obstacle meshes: obstacle " +
-          std::to_string(piece.obstacle) + " (connected component " + std::to_string(i) +
-          ") is open: " + std::to_string(bad) + " edges are not shared by exactly two triangles");
+          std::to_string(component.obstacle) + " (part " + std::to_string(i) +
+          ") is open: " + acd::PrepareMesh(component.mesh).defects.first);
     }
-    pieces_.emplace_back(piece.solid);
-    piece_obstacle_.push_back(piece.obstacle);
+    pieces_.emplace_back(component.mesh);
+    piece_obstacle_.push_back(component.obstacle);
   }
 }
 

@@ -425,6 +425,42 @@ TEST(Decompose2dTest, VerticesFarOutsideTheReflexVerticesBox) {
   }
 }
 
+// Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-huge-spike-area.poly and
+// regression-zero-area-component.wkt): coordinates of 5.56e21 and 5e58 make the shoelace terms
+// cancel far beyond double precision. The decompositions were right (the exact area sums agree:
+// 2191.5 for the spike, 5e58 + 5 for the wedge); the double-precision SignedArea() was not, so
+// CheckDecomposition() saw an input area of 2075.5 and a component of zero area. Every measure
+// must now decompose both validly, with the exact input area. Coordinates above 1e100 are
+// rejected by PreparePolygons() (regression-overflowing-coordinate.wkt).
+TEST(Decompose2dTest, HugeCoordinatesWhoseAreaTermsCancel) {
+  const fs::path corpus = fs::path(ACDPLAN_SOURCE_DIR) / "fuzz" / "corpus" / "decompose2d";
+  // The last: the wedge at the largest magnitude PreparePolygons() accepts (1e100).
+  const std::pair<std::string, double> cases[] = {{"regression-huge-spike-area.poly", 2191.5},
+                                                  {"regression-zero-area-component.wkt", 5e58},
+                                                  {"", 1e100 + 98.5}};
+  for (const auto& [file, area] : cases) {
+    const std::vector<Polygon2d> input =
+        !file.empty() ? ReadPolygons((corpus / file).string())
+                      : PreparePolygons({{{0, 0}, {1, 4}, {1, 2}, {1e100, 199}, {0, 4}}, {}}, "w");
+    ASSERT_EQ(input.size(), 1u) << file;
+    EXPECT_EQ(Area(input[0]), area) << file;
+    for (const ConcavityMeasure measure : kMeasures) {
+      for (const double tau : {0.0, 0.05 * ReferenceRadius(input[0])}) {
+        Decompose2dOptions options;
+        options.tau = tau;
+        options.measure = measure;
+        const Decomposition2d decomposition = Decompose2d(input, options);
+        const DecompositionCheck check = CheckDecomposition(input, decomposition);
+        EXPECT_TRUE(check.ok()) << file << ", " << ToString(measure) << ", tau " << tau << ": "
+                                << ::testing::PrintToString(check.problems);
+        for (const Component2d& c : decomposition.components) {
+          EXPECT_GT(SignedArea(c.polygon.outer), 0.0) << file;
+        }
+      }
+    }
+  }
+}
+
 TEST(Decompose2dTest, ComponentGraphIsSymmetric) {
   const std::vector<Polygon2d> monkey =
       ReadPolygons((kAcd2d / "nazca" / "nazca_monkey.poly").string());

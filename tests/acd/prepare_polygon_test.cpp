@@ -82,6 +82,20 @@ TEST(PreparePolygonTest, RejectsNonFiniteCoordinate) {
   EXPECT_THAT(ErrorOf(raw), AllOf(HasSubstr("outer ring: vertex 1"), HasSubstr("not finite")));
 }
 
+// Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-overflowing-coordinate.wkt):
+// a vertex at x = 5e185 made the products in every area and centroid overflow (a centroid of
+// inf and NaN). Beyond 1e100 a coordinate is rejected with the vertex named; up to it, the
+// polygon is prepared.
+TEST(PreparePolygonTest, RejectsCoordinatesWhoseProductsOverflow) {
+  Polygon2d raw{{{0, 0}, {1, 4}, {1, 2}, {5e185, 199}, {0, 4}}, {}};
+  EXPECT_THAT(ErrorOf(raw), AllOf(HasSubstr("test.poly: polygon 0: outer ring: vertex 3"),
+                                  HasSubstr("is too far from the origin (|coordinate| > 1e100")));
+  raw.outer[3] = {0.5, -1e101};
+  EXPECT_THAT(ErrorOf(raw), HasSubstr("outer ring: vertex 3"));
+  raw.outer[3] = {1e100, 199};
+  EXPECT_NO_THROW(PreparePolygon(raw, "w"));  // Decompose2dTest decomposes it.
+}
+
 TEST(PreparePolygonTest, RejectsTooFewVertices) {
   EXPECT_THAT(ErrorOf({{{0, 0}, {1, 1}}, {}}),
               AllOf(HasSubstr("test.poly: polygon 0: outer ring"), HasSubstr("fewer than 3")));

@@ -5,6 +5,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "base/input_error.h"
 #include "envs/generators.h"
@@ -122,8 +123,8 @@ TEST(PointLocator3d, ExactRefusesAnOpenMesh) {
   } catch (const acdplan::InputError& e) {
     EXPECT_STREQ(e.what(),
                  "PointLocator(): exact point location needs closed obstacle meshes: obstacle 0 "
-                 "(connected component 0) is open: 4 edges are not shared by exactly two "
-                 "triangles");
+                 "(part 0) is open: edge 1-3 at (1, 0, -1) has 1 face (a solid's edges have "
+                 "exactly 2)");
   }
   // The hull locator needs no inside, so it accepts the open mesh.
   const PointLocator hulls(set, LocateMethod::kHulls);
@@ -142,7 +143,9 @@ TEST(PointLocator3d, NestedShellsBoundACavity) {
   const PointLocator exact(set, LocateMethod::kExact), hulls(set, LocateMethod::kHulls);
   EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1.5, 0, 0)));
   EXPECT_FALSE(exact.Inside(Eigen::Vector3d(0, 0, 0)));
-  EXPECT_TRUE(hulls.Inside(Eigen::Vector3d(0, 0, 0)));  // conservative
+  EXPECT_TRUE(hulls.Inside(Eigen::Vector3d(1.5, 0, 0)));  // conservative
+  // The solid ACD's pieces surround the cavity, so their hulls leave (most of) it free.
+  EXPECT_GT(set->pieces.size(), 1u);
 }
 
 class VhacdMeshes : public ::testing::TestWithParam<std::string> {};
@@ -165,7 +168,10 @@ TEST_P(VhacdMeshes, HullsNeverSayOutsideWhereExactSaysInside) {
 }
 
 // Closed meshes only (bunny, for one, has 42 border edges).
-INSTANTIATE_TEST_SUITE_P(Meshes, VhacdMeshes, ::testing::Values("torus1", "teddy"));
+const std::vector<std::string> kClosedMeshes = testing::kSanitizerBuild
+                                                   ? std::vector<std::string>{"teddy"}
+                                                   : std::vector<std::string>{"torus1", "teddy"};
+INSTANTIATE_TEST_SUITE_P(Meshes, VhacdMeshes, ::testing::ValuesIn(kClosedMeshes));
 
 }  // namespace
 }  // namespace acdplan::collision

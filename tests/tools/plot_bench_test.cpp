@@ -43,6 +43,18 @@ TEST(PlotBench, TheBuildPutsTheScriptNextToAcdplan) {
   EXPECT_FALSE(SelfExecutable().empty());
 }
 
+TEST(PlotBench, FindsAPythonWithMatplotlib) {
+  EXPECT_EQ(FindPlotPython("/opt/my/python"), "/opt/my/python");  // A setting wins, unchecked.
+  const std::string found = FindPlotPython("");
+  // Either none has matplotlib, or the one found imports it.
+  if (!found.empty()) {
+    EXPECT_EQ(RunProgram({found, "-c", "import matplotlib"}, true), 0);
+  }
+  const bool any = RunProgram({"python3", "-c", "import matplotlib"}, true) == 0 ||
+                   RunProgram({"/usr/bin/python3", "-c", "import matplotlib"}, true) == 0;
+  EXPECT_EQ(found.empty(), !any);
+}
+
 TEST(PlotBench, RunsProgramsWithoutAShell) {
   EXPECT_EQ(RunProgram({"sh", "-c", "exit 3"}, true), 3);
   EXPECT_EQ(RunProgram({"true"}, true), 0);

@@ -1,0 +1,25 @@
+#pragma once
+// Orientation and nesting of closed shells: the exact tests that decide which way a shell
+// faces and which shell is a cavity of which.
+
+#include <vector>
+
+#include "acd/triangle_mesh.h"
+
+namespace acdplan::acd::internal {
+
+/// The sign (-1, 0, +1) of the volume enclosed by the triangles `faces` of `mesh`, a closed,
+/// consistently oriented shell: +1 when they face outward. Exact: the sum of the tetrahedra's
+/// determinants in doubles decides when it exceeds its rounding-error bound; otherwise the sum
+/// is redone in exact rationals. O(n).
+int VolumeSign(const TriangleMesh& mesh, const std::vector<int>& faces);
+
+/// For closed shells `shells` (triangle lists of `mesh`), each free of self-intersections and
+/// no two crossing: enclosing[i] lists, ascending, the shells j whose bounded side holds shell
+/// i (tested at a vertex of i that is not on j, with CGAL Side_of_triangle_mesh, exact
+/// predicates). Shells that share all their vertices are never nested. O(S^2) bounding-box
+/// tests plus O(log n) ray queries per candidate pair.
+std::vector<std::vector<int>> EnclosingShells(const TriangleMesh& mesh,
+                                              const std::vector<std::vector<int>>& shells);
+
+}  // namespace acdplan::acd::internal

@@ -1,0 +1,170 @@
+#include "acd/internal/mesh_repair.h"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+
+#include <algorithm>
+#include <map>
+
+#include "acd/internal/cgal_surface_mesh.h"
+#include "acd/internal/mesh_edges.h"
+
+namespace acdplan::acd::internal {
+namespace {
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Mesh = CGAL::Surface_mesh<Epeck::Point_3>;
+
+// A boundary halfedge: from `from` to `to`, opposite to the edge of triangle `face` whose
+// third corner is `apex` (the hole's filling should not fold onto that triangle).
+struct BorderHalfedge {
+  int from, to, apex;
+};
+
+// Chains the border halfedges into simple loops (vertex lists). Halfedges that do not close
+// into a loop are counted in `*broken`.
+std::vector<std::vector<const BorderHalfedge*>> TraceLoops(
+    const std::vector<BorderHalfedge>& border, int* broken) {
+  std::multimap<int, size_t> outgoing;  // Ordered: the lowest halfedge is followed first.
+  for (size_t i = 0; i < border.size(); ++i) outgoing.emplace(border[i].from, i);
+  std::vector<bool> used(border.size(), false);
+  std::vector<std::vector<const BorderHalfedge*>> loops;
+  for (size_t start = 0; start < border.size(); ++start) {
+    if (used[start]) continue;
+    std::vector<const BorderHalfedge*> path;
+    std::map<int, size_t> position;  // Vertex -> index in path of the halfedge leaving it.
+    size_t current = start;
+    while (true) {
+      used[current] = true;
+      const BorderHalfedge& h = border[current];
+      position[h.from] = path.size();
+      path.push_back(&h);
+      auto found = position.find(h.to);
+      if (found != position.end()) {  // Back at a vertex of the path: a loop closes.
+        loops.emplace_back(path.begin() + static_cast<std::ptrdiff_t>(found->second), path.end());
+        for (size_t i = found->second; i < path.size(); ++i) position.erase(path[i]->from);
+        path.resize(found->second);
+        if (path.empty()) break;
+      }
+      // Continue from the end of the path (h.to, or the vertex a closed loop returned to).
+      const int tip = path.empty() ? h.to : path.back()->to;
+      size_t next = border.size();
+      for (auto [it, end] = outgoing.equal_range(tip); it != end; ++it) {
+        if (!used[it->second]) {
+          next = it->second;
+          break;
+        }
+      }
+      if (next == border.size()) {  // Dead end: an inconsistently oriented boundary.
+        *broken += static_cast<int>(path.size());
+        break;
+      }
+      current = next;
+    }
+  }
+  return loops;
+}
+
+// UniteClosedShells() without its guard; no triangles when CGAL cannot form the union.
+TriangleMesh Unite(const TriangleMesh& mesh, const std::vector<std::vector<int>>& shells) {
+  Mesh united = ToSurfaceMesh<Epeck>(mesh, shells[0]);
+  if (!PMP::is_outward_oriented(united)) PMP::reverse_face_orientations(united);
+  for (size_t i = 1; i < shells.size(); ++i) {
+    Mesh next = ToSurfaceMesh<Epeck>(mesh, shells[i]);
+    if (!PMP::is_outward_oriented(next)) PMP::reverse_face_orientations(next);
+    Mesh result;
+    if (!PMP::corefine_and_compute_union(united, next, result)) return {};
+    united = std::move(result);
+  }
+  united.collect_garbage();
+  std::vector<Eigen::Vector3d> vertices;
+  std::map<Mesh::Vertex_index, int> index;
+  for (const Mesh::Vertex_index v : united.vertices()) {
+    const Epeck::Point_3& p = united.point(v);
+    index[v] = static_cast<int>(vertices.size());
+    vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  std::vector<Eigen::Vector3i> triangles;
+  for (const Mesh::Face_index f : united.faces()) {
+    Eigen::Vector3i t;
+    int k = 0;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(united.halfedge(f), united)) {
+      if (k < 3) t(k) = index[v];
+      ++k;
+    }
+    if (k == 3) triangles.push_back(t);
+  }
+  return MakeTriangleMesh(vertices, triangles);
+}
+
+}  // namespace
+
+HoleFilling FillHoles(const TriangleMesh& mesh) {
+  const EdgeTable table = BuildEdgeTable(mesh);
+  std::vector<BorderHalfedge> border;
+  for (const MeshEdge& e : table.edges) {
+    if (e.count != 1) continue;
+    const int f = table.faces[static_cast<size_t>(e.first)];
+    int apex = -1;
+    for (int k = 0; k < 3; ++k) {
+      if (mesh.triangles(f, k) != e.a && mesh.triangles(f, k) != e.b) apex = mesh.triangles(f, k);
+    }
+    // The hole runs against its triangle.
+    if (RunsForward(mesh, f, e.a, e.b)) {
+      border.push_back({e.b, e.a, apex});
+    } else {
+      border.push_back({e.a, e.b, apex});
+    }
+  }
+  HoleFilling filling;
+  int broken = 0;
+  auto point = [&](int v) {
+    return Epick::Point_3(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2));
+  };
+  for (const auto& loop : TraceLoops(border, &broken)) {
+    std::vector<Epick::Point_3> points, apexes;
+    for (const BorderHalfedge* h : loop) {
+      points.push_back(point(h->from));
+      apexes.push_back(point(h->apex));
+    }
+    std::vector<CGAL::Triple<int, int, int>> patch;
+    try {
+      PMP::triangulate_hole_polyline(
+          points, apexes, std::back_inserter(patch),
+          CGAL::parameters::use_2d_constrained_delaunay_triangulation(true));
+    } catch (const CGAL::Failure_exception&) {
+      patch.clear();  // A precondition CGAL checks on odd loops: the hole stays open.
+    }
+    if (patch.empty()) {
+      ++filling.failed;
+      continue;
+    }
+    ++filling.filled;
+    for (const auto& t : patch) {
+      filling.triangles.emplace_back(loop[static_cast<size_t>(t.first)]->from,
+                                     loop[static_cast<size_t>(t.second)]->from,
+                                     loop[static_cast<size_t>(t.third)]->from);
+    }
+  }
+  if (broken > 0) ++filling.failed;
+  return filling;
+}
+
+std::optional<TriangleMesh> UniteClosedShells(const TriangleMesh& mesh,
+                                              const std::vector<std::vector<int>>& shells) {
+  if (shells.empty()) return std::nullopt;
+  try {
+    TriangleMesh united = Unite(mesh, shells);
+    if (united.triangles.rows() == 0) return std::nullopt;
+    return united;
+  } catch (const CGAL::Failure_exception&) {
+    return std::nullopt;  // CGAL refused the input (a precondition it checks): no union.
+  }
+}
+
+}  // namespace acdplan::acd::internal

@@ -1,0 +1,573 @@
+#include "acd/prepare_mesh.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Min_sphere_of_points_d_traits_3.h>
+#include <CGAL/Min_sphere_of_spheres_d.h>
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <optional>
+#include <tuple>
+#include <utility>
+
+#include "acd/internal/closed_shells.h"
+#include "acd/internal/face_intersections.h"
+#include "acd/internal/mesh_edges.h"
+#include "acd/internal/mesh_repair.h"
+#include "base/format.h"
+#include "base/input_error.h"
+
+namespace acdplan::acd {
+namespace {
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using internal::EdgeTable;
+using internal::MeshEdge;
+
+std::string At(const Eigen::Vector3d& p) {
+  return "(" + FormatSignificant(p.x(), 15) + ", " + FormatSignificant(p.y(), 15) + ", " +
+         FormatSignificant(p.z(), 15) + ")";
+}
+
+// "1 face", "2 faces"; nouns ending in -x, -ch or consonant + y take their English plural.
+std::string Plural(int count, const std::string& noun) {
+  std::string plural = noun + "s";
+  if (noun.size() >= 2 && noun.compare(noun.size() - 2, 2, "ex") == 0) {
+    plural = noun.substr(0, noun.size() - 2) + "ices";  // vertex
+  } else if (noun.size() >= 2 && noun.compare(noun.size() - 2, 2, "ch") == 0) {
+    plural = noun + "es";  // patch
+  } else if (noun.size() >= 2 && noun.back() == 'y' && noun[noun.size() - 2] != 'e') {
+    plural = noun.substr(0, noun.size() - 1) + "ies";  // cavity
+  }
+  return std::to_string(count) + " " + (count == 1 ? noun : plural);
+}
+
+class DisjointSets {
+ public:
+  explicit DisjointSets(int n) : parent_(static_cast<size_t>(n)) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
+  int Find(int x) {
+    while (parent_[static_cast<size_t>(x)] != x) {
+      parent_[static_cast<size_t>(x)] =
+          parent_[static_cast<size_t>(parent_[static_cast<size_t>(x)])];
+      x = parent_[static_cast<size_t>(x)];
+    }
+    return x;
+  }
+  // The lower root survives, so each set is named by its lowest member.
+  void Unite(int a, int b) {
+    a = Find(a);
+    b = Find(b);
+    if (a != b) parent_[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+// The triangles `faces` of `mesh` (ascending) with their own compacted vertex list.
+TriangleMesh ExtractFaces(const TriangleMesh& mesh, const std::vector<int>& faces) {
+  std::vector<int> local(static_cast<size_t>(mesh.vertices.rows()), -1);
+  std::vector<int> used;
+  for (const int f : faces) {
+    for (int k = 0; k < 3; ++k) used.push_back(mesh.triangles(f, k));
+  }
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  std::vector<Eigen::Vector3d> vertices;
+  for (const int v : used) {
+    local[static_cast<size_t>(v)] = static_cast<int>(vertices.size());
+    vertices.push_back(mesh.vertices.row(v).transpose());
+  }
+  std::vector<Eigen::Vector3i> triangles;
+  for (const int f : faces) {
+    triangles.emplace_back(local[static_cast<size_t>(mesh.triangles(f, 0))],
+                           local[static_cast<size_t>(mesh.triangles(f, 1))],
+                           local[static_cast<size_t>(mesh.triangles(f, 2))]);
+  }
+  return MakeTriangleMesh(vertices, triangles);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Cleaning.
+
+struct Cleaned {
+  TriangleMesh mesh;
+  int merged = 0;                             // Vertices merged into another at the same position.
+  int unreferenced = 0;                       // Distinct positions no kept triangle uses.
+  int degenerate = 0, first_degenerate = -1;  // Triangles of the input.
+  int duplicate = 0, first_duplicate = -1;
+};
+
+// Merges vertices at identical positions (exact comparison: -0 and 0 are one position), drops
+// triangles with a repeated or three collinear corners (exact predicate) and repeats of a
+// triangle (same three vertices, either orientation; the first is kept), then drops the
+// vertices no triangle uses. Vertices keep their relative order, as do triangles.
+Cleaned Clean(const TriangleMesh& in) {
+  const int nv = static_cast<int>(in.vertices.rows());
+  const int nf = static_cast<int>(in.triangles.rows());
+  auto position = [&](int v) {
+    return std::make_tuple(in.vertices(v, 0), in.vertices(v, 1), in.vertices(v, 2));
+  };
+  std::vector<int> order(static_cast<size_t>(nv));
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const auto pa = position(a), pb = position(b);
+    return pa < pb || (!(pb < pa) && a < b);
+  });
+  std::vector<int> representative(static_cast<size_t>(nv));
+  Cleaned out;
+  for (size_t i = 0; i < order.size(); ++i) {
+    const int v = order[i];
+    const bool same = i > 0 && !(position(order[i - 1]) < position(v));
+    representative[static_cast<size_t>(v)] =
+        same ? representative[static_cast<size_t>(order[i - 1])] : v;
+    out.merged += same;
+  }
+
+  auto point = [&](int v) {
+    return Epick::Point_3(in.vertices(v, 0), in.vertices(v, 1), in.vertices(v, 2));
+  };
+  std::vector<Eigen::Vector3i> kept;
+  std::vector<int> kept_from;
+  for (int f = 0; f < nf; ++f) {
+    const Eigen::Vector3i t(representative[static_cast<size_t>(in.triangles(f, 0))],
+                            representative[static_cast<size_t>(in.triangles(f, 1))],
+                            representative[static_cast<size_t>(in.triangles(f, 2))]);
+    if (t(0) == t(1) || t(1) == t(2) || t(0) == t(2) ||
+        CGAL::collinear(point(t(0)), point(t(1)), point(t(2)))) {
+      if (out.degenerate++ == 0) out.first_degenerate = f;
+      continue;
+    }
+    kept.push_back(t);
+    kept_from.push_back(f);
+  }
+
+  std::vector<std::pair<std::array<int, 3>, int>> keys;
+  keys.reserve(kept.size());
+  for (size_t i = 0; i < kept.size(); ++i) {
+    std::array<int, 3> key{kept[i](0), kept[i](1), kept[i](2)};
+    std::sort(key.begin(), key.end());
+    keys.emplace_back(key, static_cast<int>(i));
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<bool> drop(kept.size(), false);
+  for (size_t i = 1; i < keys.size(); ++i) {
+    if (keys[i].first == keys[i - 1].first) drop[static_cast<size_t>(keys[i].second)] = true;
+  }
+
+  std::vector<int> index(static_cast<size_t>(nv), -1);
+  for (size_t i = 0; i < kept.size(); ++i) {
+    if (drop[i]) continue;
+    for (int k = 0; k < 3; ++k) index[static_cast<size_t>(kept[i](k))] = 0;
+  }
+  std::vector<Eigen::Vector3d> vertices;
+  for (int v = 0; v < nv; ++v) {
+    if (index[static_cast<size_t>(v)] < 0) continue;
+    index[static_cast<size_t>(v)] = static_cast<int>(vertices.size());
+    vertices.push_back(in.vertices.row(v).transpose());
+  }
+  out.unreferenced = nv - out.merged - static_cast<int>(vertices.size());
+  std::vector<Eigen::Vector3i> triangles;
+  for (size_t i = 0; i < kept.size(); ++i) {
+    if (drop[i]) {
+      if (out.duplicate++ == 0) out.first_duplicate = kept_from[i];
+      continue;
+    }
+    triangles.emplace_back(index[static_cast<size_t>(kept[i](0))],
+                           index[static_cast<size_t>(kept[i](1))],
+                           index[static_cast<size_t>(kept[i](2))]);
+  }
+  out.mesh = MakeTriangleMesh(vertices, triangles);
+  return out;
+}
+
+// The cleaning's notes; `of` names the mesh the face numbers refer to. After a repair the
+// vertex counts only reflect how the repaired mesh was assembled, so `vertices` leaves them out.
+void NoteCleaning(const Cleaned& c, const std::string& of, bool vertices,
+                  std::vector<std::string>* notes) {
+  if (vertices && c.merged > 0) notes->push_back("merged " + Plural(c.merged, "duplicate vertex"));
+  if (c.degenerate > 0) {
+    notes->push_back("dropped " + Plural(c.degenerate, "degenerate face") + " (first: face " +
+                     std::to_string(c.first_degenerate) + of + ")");
+  }
+  if (c.duplicate > 0) {
+    notes->push_back("dropped " + Plural(c.duplicate, "duplicate face") + " (first: face " +
+                     std::to_string(c.first_duplicate) + of + ")");
+  }
+  if (vertices && c.unreferenced > 0) {
+    notes->push_back("dropped " + Plural(c.unreferenced, "unreferenced vertex"));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Orientation, parts and diagnosis.
+
+struct Diagnosis {
+  TriangleMesh mesh;  // Oriented.
+  EdgeTable edges;
+  // Patches: triangles connected across edges with exactly two triangles, ascending, in order
+  // of their lowest triangle.
+  std::vector<std::vector<int>> patches;
+  std::vector<bool> closed;                    // Per patch: no edge of it has 1 or 3+ triangles.
+  std::vector<bool> orientable;                // Per patch.
+  std::vector<std::pair<int, int>> crossings;  // IntersectingFacePairs().
+  std::vector<std::vector<int>> parts;         // Triangles of each part, ascending.
+  int cavities = 0;
+  int flipped = 0;  // Triangles whose orientation changed.
+  MeshDefects defects;
+};
+
+void FlipFace(TriangleMesh* mesh, int f) {
+  std::swap(mesh->triangles(f, 1), mesh->triangles(f, 2));
+}
+
+// Orients each patch consistently (breadth first from its lowest triangle, which keeps its
+// orientation) and each closed patch outward (exact volume sign).
+void OrientPatches(Diagnosis* d) {
+  TriangleMesh& mesh = d->mesh;
+  const EdgeTable& table = d->edges;
+  const int nf = static_cast<int>(mesh.triangles.rows());
+  std::vector<char> flip(static_cast<size_t>(nf), 0), seen(static_cast<size_t>(nf), 0);
+  d->orientable.assign(d->patches.size(), true);
+  for (size_t p = 0; p < d->patches.size(); ++p) {
+    std::vector<int> queue{d->patches[p][0]};
+    seen[static_cast<size_t>(queue[0])] = 1;
+    for (size_t head = 0; head < queue.size(); ++head) {
+      const int f = queue[head];
+      for (int k = 0; k < 3; ++k) {
+        const MeshEdge& e = table.edges[static_cast<size_t>(
+            table.face_edges[static_cast<size_t>(f)][static_cast<size_t>(k)])];
+        if (e.count != 2) continue;
+        const int g = table.faces[static_cast<size_t>(e.first)] == f
+                          ? table.faces[static_cast<size_t>(e.first + 1)]
+                          : table.faces[static_cast<size_t>(e.first)];
+        const bool f_forward =
+            internal::RunsForward(mesh, f, e.a, e.b) != (flip[static_cast<size_t>(f)] != 0);
+        // Consistent neighbours run along their shared edge in opposite directions.
+        const char wanted = internal::RunsForward(mesh, g, e.a, e.b) == f_forward ? 1 : 0;
+        if (!seen[static_cast<size_t>(g)]) {
+          seen[static_cast<size_t>(g)] = 1;
+          flip[static_cast<size_t>(g)] = wanted;
+          queue.push_back(g);
+        } else if (flip[static_cast<size_t>(g)] != wanted) {
+          d->orientable[p] = false;
+        }
+      }
+    }
+  }
+  for (int f = 0; f < nf; ++f) {
+    if (flip[static_cast<size_t>(f)]) FlipFace(&mesh, f);
+  }
+  for (size_t p = 0; p < d->patches.size(); ++p) {
+    if (!d->closed[p] || !d->orientable[p]) continue;
+    if (internal::VolumeSign(mesh, d->patches[p]) < 0) {
+      for (const int f : d->patches[p]) FlipFace(&mesh, f);
+    }
+  }
+}
+
+// Groups closed shells into solid parts: a shell inside an odd number of others is a cavity of
+// the innermost shell around it, turned inward (dissertation Ch. V models solids bounded by
+// several shells; a part keeps its cavities so that its volume is outer minus inner).
+void GroupShells(Diagnosis* d) {
+  const auto enclosing = internal::EnclosingShells(d->mesh, d->patches);
+  const size_t count = d->patches.size();
+  std::vector<int> owner(count, -1);  // The part's outer shell.
+  for (size_t i = 0; i < count; ++i) {
+    const size_t depth = enclosing[i].size();
+    if (depth % 2 == 0) {
+      owner[i] = static_cast<int>(i);
+      continue;
+    }
+    // The enclosing shell that is itself enclosed depth - 1 times is the innermost.
+    for (const int j : enclosing[i]) {
+      if (enclosing[static_cast<size_t>(j)].size() + 1 == depth) owner[i] = j;
+    }
+    for (const int f : d->patches[i]) FlipFace(&d->mesh, f);
+    ++d->cavities;
+  }
+  std::vector<int> part_of(count, -1);
+  for (size_t i = 0; i < count; ++i) {
+    if (owner[i] != static_cast<int>(i)) continue;
+    part_of[i] = static_cast<int>(d->parts.size());
+    d->parts.emplace_back();
+  }
+  for (size_t i = 0; i < count; ++i) {
+    // owner is -1 only if the nesting is inconsistent (it is not, for shells that do not
+    // cross); such a shell then stands as a part of its own.
+    const int part = owner[i] >= 0 ? part_of[static_cast<size_t>(owner[i])] : -1;
+    if (part < 0) {
+      d->parts.push_back(d->patches[i]);
+      continue;
+    }
+    auto& faces = d->parts[static_cast<size_t>(part)];
+    faces.insert(faces.end(), d->patches[i].begin(), d->patches[i].end());
+  }
+  for (auto& faces : d->parts) std::sort(faces.begin(), faces.end());
+}
+
+Diagnosis Diagnose(const TriangleMesh& cleaned) {
+  Diagnosis d;
+  d.mesh = cleaned;
+  d.edges = internal::BuildEdgeTable(d.mesh);
+  const int nf = static_cast<int>(d.mesh.triangles.rows());
+  DisjointSets sets(nf);
+  for (const MeshEdge& e : d.edges.edges) {
+    if (e.count == 2) {
+      sets.Unite(d.edges.faces[static_cast<size_t>(e.first)],
+                 d.edges.faces[static_cast<size_t>(e.first + 1)]);
+    }
+  }
+  std::vector<int> patch_of(static_cast<size_t>(nf), -1);
+  for (int f = 0; f < nf; ++f) {
+    const int root = sets.Find(f);
+    if (patch_of[static_cast<size_t>(root)] < 0) {
+      patch_of[static_cast<size_t>(root)] = static_cast<int>(d.patches.size());
+      d.patches.emplace_back();
+    }
+    patch_of[static_cast<size_t>(f)] = patch_of[static_cast<size_t>(root)];
+    d.patches[static_cast<size_t>(patch_of[static_cast<size_t>(f)])].push_back(f);
+  }
+  d.closed.assign(d.patches.size(), true);
+  const MeshEdge* first_boundary = nullptr;
+  const MeshEdge* first_non_manifold = nullptr;
+  for (const MeshEdge& e : d.edges.edges) {
+    if (e.count == 2) continue;
+    if (e.count == 1) {
+      ++d.defects.boundary_edges;
+      if (!first_boundary) first_boundary = &e;
+    } else {
+      ++d.defects.non_manifold_edges;
+      if (!first_non_manifold) first_non_manifold = &e;
+    }
+    for (int i = 0; i < e.count; ++i) {
+      d.closed[static_cast<size_t>(
+          patch_of[static_cast<size_t>(d.edges.faces[static_cast<size_t>(e.first + i)])])] = false;
+    }
+  }
+  OrientPatches(&d);
+  d.crossings = internal::IntersectingFacePairs(d.mesh);
+  d.defects.self_intersections = static_cast<int>(d.crossings.size());
+
+  auto edge_message = [&](const MeshEdge& e) {
+    const Eigen::Vector3d mid =
+        (d.mesh.vertices.row(e.a) + d.mesh.vertices.row(e.b)).transpose() / 2;
+    return "edge " + std::to_string(e.a) + "-" + std::to_string(e.b) + " at " + At(mid) + " has " +
+           Plural(e.count, "face") + " (a solid's edges have exactly 2)";
+  };
+  if (first_boundary) {
+    d.defects.first = edge_message(*first_boundary);
+  } else if (first_non_manifold) {
+    d.defects.first = edge_message(*first_non_manifold);
+  } else if (!d.crossings.empty()) {
+    const auto [f, g] = d.crossings.front();
+    d.defects.first = "faces " + std::to_string(f) + " and " + std::to_string(g) +
+                      " intersect at " + At(internal::FaceIntersectionPoint(d.mesh, f, g)) +
+                      " (a solid's surface does not cross itself)";
+  }
+
+  if (d.defects.none()) {
+    GroupShells(&d);
+  } else {
+    d.parts = d.patches;
+  }
+  for (int f = 0; f < nf; ++f) {
+    d.flipped +=
+        internal::RunsForward(cleaned, f, d.mesh.triangles(f, 0), d.mesh.triangles(f, 1)) ? 0 : 1;
+  }
+  return d;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Repair.
+
+// Closes the holes of `d`'s mesh; returns the mesh with the new triangles.
+TriangleMesh CloseHoles(const Diagnosis& d, std::vector<std::string>* notes) {
+  const internal::HoleFilling filling = internal::FillHoles(d.mesh);
+  std::vector<Eigen::Vector3d> vertices;
+  for (Eigen::Index v = 0; v < d.mesh.vertices.rows(); ++v) {
+    vertices.push_back(d.mesh.vertices.row(v).transpose());
+  }
+  std::vector<Eigen::Vector3i> triangles;
+  for (Eigen::Index f = 0; f < d.mesh.triangles.rows(); ++f) {
+    triangles.push_back(d.mesh.triangles.row(f).transpose());
+  }
+  triangles.insert(triangles.end(), filling.triangles.begin(), filling.triangles.end());
+  if (filling.filled > 0) {
+    notes->push_back("repair: filled " + Plural(filling.filled, "hole") + " with " +
+                     Plural(static_cast<int>(filling.triangles.size()), "triangle"));
+  }
+  if (filling.failed > 0) {
+    notes->push_back("repair: could not fill " + Plural(filling.failed, "hole") +
+                     " (no triangulation, or a boundary that does not close)");
+  }
+  return MakeTriangleMesh(vertices, triangles);
+}
+
+// Replaces each group of closed shells that cross each other by their union. Shells that
+// cross themselves are left as they are (their repair would need autorefinement, which is
+// not robust enough in CGAL 5.5 to run on untrusted input). Empty when nothing was united.
+std::optional<TriangleMesh> UniteCrossingShells(const Diagnosis& d,
+                                                std::vector<std::string>* notes) {
+  const int count = static_cast<int>(d.patches.size());
+  std::vector<int> patch_of(static_cast<size_t>(d.mesh.triangles.rows()));
+  for (int p = 0; p < count; ++p) {
+    for (const int f : d.patches[static_cast<size_t>(p)]) patch_of[static_cast<size_t>(f)] = p;
+  }
+  DisjointSets groups(count);
+  std::vector<bool> crosses_itself(static_cast<size_t>(count), false);
+  std::string first_self;
+  for (const auto& [f, g] : d.crossings) {
+    const int a = patch_of[static_cast<size_t>(f)], b = patch_of[static_cast<size_t>(g)];
+    groups.Unite(a, b);
+    if (a == b && !crosses_itself[static_cast<size_t>(a)]) {
+      crosses_itself[static_cast<size_t>(a)] = true;
+      if (first_self.empty()) {
+        first_self = " (first: faces " + std::to_string(f) + " and " + std::to_string(g) + ")";
+      }
+    }
+  }
+  std::vector<std::vector<int>> members(static_cast<size_t>(count));
+  for (int p = 0; p < count; ++p) members[static_cast<size_t>(groups.Find(p))].push_back(p);
+
+  std::vector<Eigen::Vector3d> vertices;
+  for (Eigen::Index v = 0; v < d.mesh.vertices.rows(); ++v) {
+    vertices.push_back(d.mesh.vertices.row(v).transpose());
+  }
+  std::vector<Eigen::Vector3i> triangles;
+  int united_groups = 0, united_shells = 0, failed_groups = 0, self_crossing = 0;
+  for (int root = 0; root < count; ++root) {
+    const auto& group = members[static_cast<size_t>(root)];
+    bool unite = group.size() >= 2;
+    for (const int p : group) {
+      if (crosses_itself[static_cast<size_t>(p)]) {
+        unite = false;
+        ++self_crossing;
+      }
+    }
+    std::optional<TriangleMesh> united;
+    if (unite) {
+      std::vector<std::vector<int>> shells;
+      for (const int p : group) shells.push_back(d.patches[static_cast<size_t>(p)]);
+      united = internal::UniteClosedShells(d.mesh, shells);
+      if (!united) ++failed_groups;
+    }
+    if (united) {
+      ++united_groups;
+      united_shells += static_cast<int>(group.size());
+      const int offset = static_cast<int>(vertices.size());
+      for (Eigen::Index v = 0; v < united->vertices.rows(); ++v) {
+        vertices.push_back(united->vertices.row(v).transpose());
+      }
+      for (Eigen::Index f = 0; f < united->triangles.rows(); ++f) {
+        triangles.push_back(united->triangles.row(f).transpose() +
+                            Eigen::Vector3i::Constant(offset));
+      }
+      continue;
+    }
+    for (const int p : group) {
+      for (const int f : d.patches[static_cast<size_t>(p)]) {
+        triangles.push_back(d.mesh.triangles.row(f).transpose());
+      }
+    }
+  }
+  if (united_groups > 0) {
+    notes->push_back("repair: united " + Plural(united_shells, "crossing closed shell") + " into " +
+                     Plural(united_groups, "solid"));
+  }
+  if (failed_groups > 0) {
+    notes->push_back("repair: could not unite " + Plural(failed_groups, "group") +
+                     " of crossing shells (the union would not be manifold)");
+  }
+  if (self_crossing > 0) {
+    notes->push_back("repair: left " + Plural(self_crossing, "shell") +
+                     (self_crossing == 1 ? " that crosses itself" : " that cross themselves") +
+                     first_self + " (only crossings between shells are removed)");
+  }
+  return MakeTriangleMesh(vertices, triangles);
+}
+
+// Cleans `mesh` again after a repair (new triangles may repeat or flatten) and diagnoses it.
+Diagnosis Recheck(const TriangleMesh& mesh, const std::string& where,
+                  std::vector<std::string>* notes) {
+  const Cleaned cleaned = Clean(mesh);
+  NoteCleaning(cleaned, " of the repaired mesh", false, notes);
+  if (cleaned.mesh.triangles.rows() == 0) {
+    throw std::logic_error(where + ": repair left no triangle");  // Repairs only add volume.
+  }
+  return Diagnose(cleaned.mesh);
+}
+
+}  // namespace
+
+PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& options,
+                         const std::string& where) {
+  CheckTriangleMesh(mesh, where);
+  PreparedMesh prepared;
+  const Cleaned cleaned = Clean(mesh);
+  if (cleaned.mesh.triangles.rows() == 0) {
+    throw InputError(where + ": mesh has no face of positive area (all " +
+                     Plural(static_cast<int>(mesh.triangles.rows()), "face") + " are degenerate)");
+  }
+  NoteCleaning(cleaned, "", true, &prepared.notes);
+  Diagnosis d = Diagnose(cleaned.mesh);
+  if (d.flipped > 0) {
+    prepared.notes.push_back("reoriented " + Plural(d.flipped, "face") +
+                             " (consistent across edges, closed shells outward" +
+                             (d.cavities > 0 ? ", cavities inward)" : ")"));
+  }
+  if (options.repair && !d.defects.none()) {
+    if (d.defects.boundary_edges > 0) {
+      d = Recheck(CloseHoles(d, &prepared.notes), where, &prepared.notes);
+    }
+    if (d.defects.boundary_edges == 0 && d.defects.non_manifold_edges == 0 &&
+        d.defects.self_intersections > 0) {
+      if (const auto united = UniteCrossingShells(d, &prepared.notes)) {
+        d = Recheck(*united, where, &prepared.notes);
+      }
+    }
+    if (!d.defects.none()) {
+      prepared.notes.push_back("repair: still not a solid: " + d.defects.first);
+    }
+  }
+  if (d.defects.none()) {
+    prepared.notes.push_back("found " + Plural(static_cast<int>(d.parts.size()), "solid part") +
+                             (d.cavities > 0 ? " with " + Plural(d.cavities, "cavity") : ""));
+  } else {
+    prepared.notes.push_back("found " + Plural(static_cast<int>(d.parts.size()), "surface patch") +
+                             ": " + Plural(d.defects.boundary_edges, "boundary edge") + ", " +
+                             Plural(d.defects.non_manifold_edges, "non-manifold edge") + ", " +
+                             Plural(d.defects.self_intersections, "self-intersection"));
+  }
+  for (const auto& faces : d.parts) prepared.parts.push_back(ExtractFaces(d.mesh, faces));
+  // Parts of a solid are closed; otherwise they are the patches.
+  prepared.closed_parts = d.defects.none() ? std::vector<bool>(d.parts.size(), true) : d.closed;
+  prepared.mesh = std::move(d.mesh);
+  prepared.defects = std::move(d.defects);
+  return prepared;
+}
+
+void RequireSolid(const PreparedMesh& prepared, const std::string& where) {
+  if (prepared.solid()) return;
+  const std::string what =
+      prepared.defects.first.empty() ? "it has no part" : prepared.defects.first;
+  throw InputError(where + ": not a solid: " + what +
+                   " (use --repair to close holes and remove self-intersections, or --surface)");
+}
+
+double ReferenceRadius(const TriangleMesh& mesh) {
+  using Traits = CGAL::Min_sphere_of_points_d_traits_3<Epick, double, CGAL::Tag_true>;
+  std::vector<Epick::Point_3> points;
+  points.reserve(static_cast<size_t>(mesh.vertices.rows()));
+  for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
+    points.emplace_back(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2));
+  }
+  if (points.empty()) return 0;
+  CGAL::Min_sphere_of_spheres_d<Traits> sphere(points.begin(), points.end());
+  return CGAL::to_double(sphere.radius());
+}
+
+}  // namespace acdplan::acd

@@ -1,0 +1,449 @@
+#include "acd/prepare_mesh.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "acd/mesh_measures.h"
+#include "base/input_error.h"
+#include "envs/mesh_loader.h"
+
+namespace acdplan::acd {
+namespace {
+
+using ::testing::HasSubstr;
+
+PrepareMeshOptions Repair() {
+  PrepareMeshOptions options;
+  options.repair = true;
+  return options;
+}
+
+// Cube(side) moved by `offset`.
+TriangleMesh CubeAt(double side, const Eigen::Vector3d& offset) {
+  TriangleMesh cube = Cube(side);
+  cube.vertices.rowwise() += offset.transpose();
+  return cube;
+}
+
+// The triangles of `a` and then of `b`, one mesh (vertices not shared).
+TriangleMesh Join(const TriangleMesh& a, const TriangleMesh& b) {
+  TriangleMesh out;
+  out.vertices.resize(a.vertices.rows() + b.vertices.rows(), 3);
+  out.vertices << a.vertices, b.vertices;
+  out.triangles.resize(a.triangles.rows() + b.triangles.rows(), 3);
+  out.triangles << a.triangles,
+      (b.triangles.array() + static_cast<int>(a.vertices.rows())).matrix();
+  return out;
+}
+
+TriangleMesh WithoutTriangles(const TriangleMesh& mesh, const std::vector<int>& drop) {
+  TriangleMesh out = mesh;
+  out.triangles.resize(0, 3);
+  std::vector<Eigen::Vector3i> kept;
+  for (int f = 0; f < mesh.triangles.rows(); ++f) {
+    if (std::find(drop.begin(), drop.end(), f) == drop.end()) {
+      kept.push_back(mesh.triangles.row(f).transpose());
+    }
+  }
+  out.triangles.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (size_t i = 0; i < kept.size(); ++i)
+    out.triangles.row(static_cast<Eigen::Index>(i)) = kept[i];
+  return out;
+}
+
+TriangleMesh AppendTriangle(TriangleMesh mesh, const Eigen::Vector3i& t) {
+  mesh.triangles.conservativeResize(mesh.triangles.rows() + 1, 3);
+  mesh.triangles.row(mesh.triangles.rows() - 1) = t;
+  return mesh;
+}
+
+TriangleMesh AppendVertex(TriangleMesh mesh, const Eigen::Vector3d& p) {
+  mesh.vertices.conservativeResize(mesh.vertices.rows() + 1, 3);
+  mesh.vertices.row(mesh.vertices.rows() - 1) = p;
+  return mesh;
+}
+
+// Every edge of `mesh` is run once in each direction: closed and consistently oriented.
+bool ClosedAndConsistent(const TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, int> runs;
+  for (int f = 0; f < mesh.triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) ++runs[{mesh.triangles(f, k), mesh.triangles(f, (k + 1) % 3)}];
+  }
+  for (const auto& [edge, count] : runs) {
+    if (count != 1 || runs.count({edge.second, edge.first}) == 0) return false;
+  }
+  return true;
+}
+
+bool HasNote(const PreparedMesh& prepared, const std::string& text) {
+  for (const std::string& note : prepared.notes) {
+    if (note.find(text) != std::string::npos) return true;
+  }
+  return false;
+}
+
+std::string ErrorOf(const std::function<void()>& run) {
+  try {
+    run();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(PrepareMeshTest, CubeIsOneSolidPartUnchanged) {
+  const TriangleMesh cube = Cube(2);
+  const PreparedMesh prepared = PrepareMesh(cube);
+  EXPECT_TRUE(prepared.solid());
+  EXPECT_TRUE(prepared.defects.none());
+  EXPECT_EQ(prepared.defects.first, "");
+  EXPECT_EQ(prepared.mesh.vertices, cube.vertices);
+  EXPECT_EQ(prepared.mesh.triangles, cube.triangles);
+  ASSERT_EQ(prepared.parts.size(), 1u);
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.parts[0]), 8.0);
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{true});
+  EXPECT_TRUE(HasNote(prepared, "found 1 solid part"));
+  EXPECT_FALSE(HasNote(prepared, "merged"));
+  EXPECT_FALSE(HasNote(prepared, "reoriented"));
+  EXPECT_NO_THROW(RequireSolid(prepared, "cube.obj"));
+}
+
+TEST(PrepareMeshTest, MergesVerticesSplitAtSeams) {
+  // Every triangle with its own three vertices, as an OBJ file with per-face normals gives.
+  const TriangleMesh cube = Cube(2);
+  TriangleMesh split;
+  split.vertices.resize(36, 3);
+  split.triangles.resize(12, 3);
+  for (int f = 0; f < 12; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      split.vertices.row(3 * f + k) = cube.vertices.row(cube.triangles(f, k));
+      split.triangles(f, k) = 3 * f + k;
+    }
+  }
+  const PreparedMesh prepared = PrepareMesh(split);
+  EXPECT_EQ(prepared.mesh.vertices.rows(), 8);
+  EXPECT_EQ(prepared.mesh.triangles.rows(), 12);
+  EXPECT_TRUE(prepared.solid());
+  EXPECT_TRUE(HasNote(prepared, "merged 28 duplicate vertices"));
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.mesh), 8.0);
+}
+
+TEST(PrepareMeshTest, MergesMinusZeroWithZero) {
+  TriangleMesh cube = Cube(2);
+  cube = AppendVertex(cube, Eigen::Vector3d(0, 0, 0));
+  cube = AppendVertex(cube, Eigen::Vector3d(-0.0, 0, 0));
+  const PreparedMesh prepared = PrepareMesh(cube);
+  EXPECT_TRUE(HasNote(prepared, "merged 1 duplicate vertex"));
+  EXPECT_TRUE(HasNote(prepared, "dropped 1 unreferenced vertex"));
+  EXPECT_EQ(prepared.mesh.vertices.rows(), 8);
+}
+
+TEST(PrepareMeshTest, ReorientsAFlippedFace) {
+  TriangleMesh cube = Cube(2);
+  std::swap(cube.triangles(5, 1), cube.triangles(5, 2));
+  const PreparedMesh prepared = PrepareMesh(cube);
+  EXPECT_TRUE(prepared.solid());
+  EXPECT_TRUE(HasNote(prepared, "reoriented 1 face"));
+  EXPECT_TRUE(ClosedAndConsistent(prepared.mesh));
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.mesh), 8.0);
+}
+
+TEST(PrepareMeshTest, TurnsAnInwardCubeOutward) {
+  TriangleMesh cube = Cube(2);
+  cube.triangles.col(1).swap(cube.triangles.col(2));
+  ASSERT_LT(MeshVolume(cube), 0);
+  const PreparedMesh prepared = PrepareMesh(cube);
+  EXPECT_TRUE(prepared.solid());
+  EXPECT_TRUE(HasNote(prepared, "reoriented 12 faces"));
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.mesh), 8.0);
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.parts[0]), 8.0);
+}
+
+TEST(PrepareMeshTest, OrientsAFarThinSlabOutward) {
+  // Volume 1e-6 at 1e6 from the origin: the tetrahedra about a vertex keep the sign exact.
+  TriangleMesh slab = Cube(1);
+  slab.vertices.col(2) *= 1e-6;
+  slab.vertices.rowwise() += Eigen::RowVector3d(1e6, -1e6, 1e6);
+  slab.triangles.col(1).swap(slab.triangles.col(2));
+  const PreparedMesh prepared = PrepareMesh(slab);
+  EXPECT_TRUE(prepared.solid());
+  EXPECT_GT(MeshVolume(prepared.mesh), 0);
+}
+
+TEST(PrepareMeshTest, DropsDegenerateAndDuplicateFaces) {
+  TriangleMesh cube = AppendVertex(Cube(2), Eigen::Vector3d(0, -1, -1));  // Midpoint of 0-1.
+  cube = AppendTriangle(cube, Eigen::Vector3i(0, 8, 1));                  // Collinear.
+  cube = AppendTriangle(cube, Eigen::Vector3i(2, 2, 3));                  // Repeated index.
+  cube = AppendTriangle(cube, Eigen::Vector3i(3, 2, 1));                  // Face 1 reversed.
+  const PreparedMesh prepared = PrepareMesh(cube);
+  EXPECT_TRUE(prepared.solid());
+  EXPECT_EQ(prepared.mesh.triangles.rows(), 12);
+  EXPECT_EQ(prepared.mesh.vertices.rows(), 8);
+  EXPECT_TRUE(HasNote(prepared, "dropped 2 degenerate faces (first: face 12)"));
+  EXPECT_TRUE(HasNote(prepared, "dropped 1 duplicate face (first: face 14)"));
+  EXPECT_TRUE(HasNote(prepared, "dropped 1 unreferenced vertex"));
+}
+
+TEST(PrepareMeshTest, RejectsAMeshWithoutAreaAndInvalidMeshes) {
+  TriangleMesh flat;
+  flat.vertices.resize(3, 3);
+  flat.vertices << 0, 0, 0, 1, 1, 1, 2, 2, 2;
+  flat.triangles.resize(1, 3);
+  flat.triangles << 0, 1, 2;
+  EXPECT_EQ(ErrorOf([&] { PrepareMesh(flat, {}, "line.obj"); }),
+            "line.obj: mesh has no face of positive area (all 1 face are degenerate)");
+  TriangleMesh empty;
+  EXPECT_EQ(ErrorOf([&] { PrepareMesh(empty, {}, "empty.obj"); }),
+            "empty.obj: mesh has no triangles");
+  TriangleMesh bad = Cube(1);
+  bad.triangles(3, 1) = 8;
+  EXPECT_THAT(ErrorOf([&] { PrepareMesh(bad, {}, "bad.obj"); }),
+              HasSubstr("bad.obj: triangle 3: index 8 out of range [0, 8)"));
+}
+
+TEST(PrepareMeshTest, OpenBoxHasBoundaryEdgesAndIsNotSolid) {
+  const TriangleMesh box = WithoutTriangles(Cube(2), {2, 3});  // No top (z+).
+  const PreparedMesh prepared = PrepareMesh(box);
+  EXPECT_FALSE(prepared.solid());
+  EXPECT_EQ(prepared.defects.boundary_edges, 4);
+  EXPECT_EQ(prepared.defects.non_manifold_edges, 0);
+  EXPECT_EQ(prepared.defects.self_intersections, 0);
+  EXPECT_EQ(prepared.defects.first,
+            "edge 4-5 at (0, -1, 1) has 1 face (a solid's edges have exactly 2)");
+  ASSERT_EQ(prepared.parts.size(), 1u);  // One surface patch.
+  EXPECT_EQ(prepared.parts[0].triangles.rows(), 10);
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{false});
+  EXPECT_EQ(ErrorOf([&] { RequireSolid(prepared, "box.obj"); }),
+            "box.obj: not a solid: edge 4-5 at (0, -1, 1) has 1 face (a solid's edges have "
+            "exactly 2) (use --repair to close holes and remove self-intersections, or "
+            "--surface)");
+}
+
+TEST(PrepareMeshTest, RepairClosesTheOpenBox) {
+  TriangleMesh box = WithoutTriangles(Cube(2), {2, 3});
+  box.triangles.col(1).swap(box.triangles.col(2));  // Inward, too.
+  const PreparedMesh prepared = PrepareMesh(box, Repair());
+  EXPECT_TRUE(prepared.solid()) << prepared.defects.first;
+  EXPECT_TRUE(HasNote(prepared, "repair: filled 1 hole with 2 triangles"));
+  ASSERT_EQ(prepared.parts.size(), 1u);
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.parts[0]), 8.0);
+  EXPECT_TRUE(ClosedAndConsistent(prepared.mesh));
+}
+
+TEST(PrepareMeshTest, RepairClosesAPyramidWithAnOctagonalHole) {
+  // A cone over a regular octagon, base open: one hole of 8 edges.
+  std::vector<Eigen::Vector3d> v{{0, 0, 1}};
+  std::vector<Eigen::Vector3i> t;
+  for (int i = 0; i < 8; ++i) {
+    v.emplace_back(std::cos(i * M_PI / 4), std::sin(i * M_PI / 4), 0);
+    t.emplace_back(0, 1 + i, 1 + (i + 1) % 8);
+  }
+  const PreparedMesh open = PrepareMesh(MakeTriangleMesh(v, t));
+  EXPECT_EQ(open.defects.boundary_edges, 8);
+  const PreparedMesh prepared = PrepareMesh(MakeTriangleMesh(v, t), Repair());
+  ASSERT_TRUE(prepared.solid()) << prepared.defects.first;
+  EXPECT_NEAR(MeshVolume(prepared.mesh), 2 * std::sqrt(2.0) / 3, 1e-12);  // Octagon area 2 sqrt 2.
+}
+
+TEST(PrepareMeshTest, ThreeFacesOnOneEdgeAreNonManifold) {
+  // A fin on the cube's edge 3-7.
+  TriangleMesh cube = AppendVertex(Cube(2), Eigen::Vector3d(3, 3, 0));
+  cube = AppendTriangle(cube, Eigen::Vector3i(3, 7, 8));
+  const PreparedMesh prepared = PrepareMesh(cube);
+  EXPECT_FALSE(prepared.solid());
+  EXPECT_EQ(prepared.defects.non_manifold_edges, 1);
+  EXPECT_EQ(prepared.defects.boundary_edges, 2);
+  // Repair cannot mend it: the defects stay.
+  const PreparedMesh repaired = PrepareMesh(cube, Repair());
+  EXPECT_FALSE(repaired.solid());
+  EXPECT_GE(repaired.defects.non_manifold_edges, 1);
+  EXPECT_TRUE(HasNote(repaired, "repair: still not a solid"));
+}
+
+TEST(PrepareMeshTest, CubesSharingAnEdgeNameTheNonManifoldEdge) {
+  const TriangleMesh pair = Join(CubeAt(1, {0.5, 0.5, 0.5}), CubeAt(1, {1.5, 1.5, 0.5}));
+  const PreparedMesh prepared = PrepareMesh(pair);
+  EXPECT_FALSE(prepared.solid());
+  EXPECT_EQ(prepared.defects.boundary_edges, 0);
+  EXPECT_EQ(prepared.defects.non_manifold_edges, 1);
+  EXPECT_EQ(prepared.defects.self_intersections, 0);
+  EXPECT_EQ(prepared.defects.first,
+            "edge 3-7 at (1, 1, 0.5) has 4 faces (a solid's edges have exactly 2)");
+}
+
+TEST(PrepareMeshTest, InterpenetratingCubesSelfIntersectAndRepairUnitesThem) {
+  const TriangleMesh pair = Join(Cube(2), CubeAt(2, {1, 1, 1}));
+  const PreparedMesh prepared = PrepareMesh(pair);
+  EXPECT_FALSE(prepared.solid());
+  EXPECT_EQ(prepared.defects.boundary_edges, 0);
+  EXPECT_GT(prepared.defects.self_intersections, 0);
+  EXPECT_THAT(prepared.defects.first, HasSubstr(" intersect at ("));
+  EXPECT_THAT(prepared.defects.first, HasSubstr("(a solid's surface does not cross itself)"));
+  EXPECT_EQ(prepared.parts.size(), 2u);  // The two surfaces, as patches, each closed.
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>({true, true}));
+
+  const PreparedMesh repaired = PrepareMesh(pair, Repair());
+  ASSERT_TRUE(repaired.solid()) << repaired.defects.first;
+  EXPECT_TRUE(HasNote(repaired, "repair: united 2 crossing closed shells into 1 solid"));
+  ASSERT_EQ(repaired.parts.size(), 1u);
+  EXPECT_NEAR(MeshVolume(repaired.parts[0]), 8 + 8 - 1, 1e-12);
+  EXPECT_TRUE(ClosedAndConsistent(repaired.mesh));
+}
+
+TEST(PrepareMeshTest, TwoDisjointCubesAreTwoSolidParts) {
+  const TriangleMesh pair = Join(Cube(2), CubeAt(1, {5, 0, 0}));
+  const PreparedMesh prepared = PrepareMesh(pair);
+  EXPECT_TRUE(prepared.solid());
+  ASSERT_EQ(prepared.parts.size(), 2u);
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.parts[0]), 8.0);
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.parts[1]), 1.0);
+  EXPECT_TRUE(HasNote(prepared, "found 2 solid parts"));
+}
+
+TEST(PrepareMeshTest, CubesTouchingAtAVertexAreTwoSolidParts) {
+  const TriangleMesh pair = Join(Cube(2), CubeAt(2, {2, 2, 2}));
+  const PreparedMesh prepared = PrepareMesh(pair);
+  EXPECT_TRUE(prepared.solid()) << prepared.defects.first;
+  EXPECT_EQ(prepared.mesh.vertices.rows(), 15);  // The shared corner merged.
+  ASSERT_EQ(prepared.parts.size(), 2u);
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.parts[1]), 8.0);
+}
+
+TEST(PrepareMeshTest, BoxWithACavityIsOnePartOfTwoShells) {
+  // The cavity as given faces outward, like the box: preparation turns it inward.
+  for (const bool cavity_first : {false, true}) {
+    const TriangleMesh outer = Cube(4), inner = CubeAt(2, {0.5, 0, 0});
+    const TriangleMesh box = cavity_first ? Join(inner, outer) : Join(outer, inner);
+    const PreparedMesh prepared = PrepareMesh(box);
+    EXPECT_TRUE(prepared.solid());
+    ASSERT_EQ(prepared.parts.size(), 1u);
+    EXPECT_EQ(prepared.parts[0].triangles.rows(), 24);
+    EXPECT_DOUBLE_EQ(MeshVolume(prepared.parts[0]), 64.0 - 8.0);
+    EXPECT_DOUBLE_EQ(MeshVolume(prepared.mesh), 64.0 - 8.0);
+    EXPECT_TRUE(HasNote(prepared, "found 1 solid part with 1 cavity"));
+    EXPECT_TRUE(ClosedAndConsistent(prepared.parts[0]));
+  }
+}
+
+TEST(PrepareMeshTest, AnIslandInACavityIsASecondPart) {
+  const TriangleMesh shells = Join(Join(Cube(8), CubeAt(4, {0, 0, 0})), CubeAt(2, {0, 0, 0}));
+  const PreparedMesh prepared = PrepareMesh(shells);
+  EXPECT_TRUE(prepared.solid());
+  ASSERT_EQ(prepared.parts.size(), 2u);
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.parts[0]), 512.0 - 64.0);
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.parts[1]), 8.0);
+}
+
+TEST(PrepareMeshTest, ResultDoesNotDependOnTriangleOrder) {
+  const TriangleMesh box = Join(CubeAt(4, {1, 2, 3}), CubeAt(2, {1.5, 2, 3}));
+  TriangleMesh reversed = box;
+  reversed.triangles = box.triangles.colwise().reverse();
+  const PreparedMesh a = PrepareMesh(box), b = PrepareMesh(reversed);
+  ASSERT_TRUE(a.solid());
+  ASSERT_TRUE(b.solid());
+  EXPECT_EQ(a.parts.size(), b.parts.size());
+  EXPECT_DOUBLE_EQ(MeshVolume(a.mesh), MeshVolume(b.mesh));
+}
+
+TEST(PrepareMeshTest, AMoebiusBandIsAnOpenPatchAndRepairDoesNotCrash) {
+  // 12 quads around a circle with a half twist: one boundary loop of 24 edges, not orientable.
+  const int n = 12;
+  std::vector<Eigen::Vector3d> v;
+  std::vector<Eigen::Vector3i> t;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    const Eigen::Vector3d centre(3 * std::cos(a), 3 * std::sin(a), 0);
+    const Eigen::Vector3d across = std::cos(a / 2) * Eigen::Vector3d(std::cos(a), std::sin(a), 0) +
+                                   std::sin(a / 2) * Eigen::Vector3d::UnitZ();
+    v.push_back(centre + across);
+    v.push_back(centre - across);
+  }
+  for (int i = 0; i < n; ++i) {
+    const int a = 2 * i, b = 2 * i + 1;
+    // The last quad meets the first with its sides swapped: the half twist.
+    const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    t.emplace_back(a, b, d);
+    t.emplace_back(a, d, c);
+  }
+  const TriangleMesh band = MakeTriangleMesh(v, t);
+  const PreparedMesh prepared = PrepareMesh(band);
+  EXPECT_FALSE(prepared.solid());
+  EXPECT_EQ(prepared.defects.boundary_edges, 2 * n);
+  ASSERT_EQ(prepared.parts.size(), 1u);
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{false});
+  PreparedMesh repaired;
+  ASSERT_NO_THROW(repaired = PrepareMesh(band, Repair()));
+  EXPECT_FALSE(repaired.parts.empty());
+}
+
+TEST(PrepareMeshTest, RepairLeavesAShellThatCrossesItself) {
+  // teddy.obj is closed and manifold, but one shell crosses itself in 6 pairs of faces: the
+  // union cannot mend that, and autorefinement is not used.
+  const TriangleMesh teddy =
+      envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/teddy.obj");
+  const PreparedMesh prepared = PrepareMesh(teddy, Repair(), "teddy.obj");
+  EXPECT_FALSE(prepared.solid());
+  EXPECT_EQ(prepared.defects.boundary_edges, 0);
+  EXPECT_EQ(prepared.defects.non_manifold_edges, 0);
+  EXPECT_EQ(prepared.defects.self_intersections, 6);
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{true});
+  EXPECT_TRUE(HasNote(prepared, "repair: left 1 shell that crosses itself (first: faces "));
+  EXPECT_TRUE(HasNote(prepared, "repair: still not a solid: faces "));
+  EXPECT_THAT(ErrorOf([&] { RequireSolid(prepared, "teddy.obj"); }),
+              HasSubstr("teddy.obj: not a solid: faces "));
+}
+
+TEST(ReferenceRadiusTest, CubeOfSideTwoHasRadiusSqrtThree) {
+  EXPECT_NEAR(ReferenceRadius(Cube(2)), std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(ReferenceRadius(CubeAt(2, {100, -50, 7})), std::sqrt(3.0), 1e-12);
+}
+
+// Every mesh of the corpus: preparation never throws; with repair, every part of a solid
+// result is closed, consistently oriented and bounds a positive volume. A sanitizer build
+// takes every third mesh.
+TEST(PrepareMeshCorpusTest, EveryVhacdMeshPreparesAndRepairsIntoPositiveParts) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd")) {
+    if (entry.path().extension() == ".obj") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  ASSERT_EQ(files.size(), 31u);
+#if defined(__SANITIZE_ADDRESS__)
+  const size_t stride = 3;
+#else
+  const size_t stride = 1;
+#endif
+  int solids = 0;
+  for (size_t i = 0; i < files.size(); i += stride) {
+    const std::string name = files[i].filename().string();
+    const TriangleMesh mesh = envs::ReadMesh(files[i].string());
+    PreparedMesh plain, repaired;
+    ASSERT_NO_THROW(plain = PrepareMesh(mesh, {}, name)) << name;
+    EXPECT_FALSE(plain.parts.empty()) << name;
+    EXPECT_EQ(plain.defects.none(), plain.defects.first.empty()) << name;
+    ASSERT_NO_THROW(repaired = PrepareMesh(mesh, Repair(), name)) << name;
+    if (plain.solid()) {
+      EXPECT_TRUE(repaired.solid()) << name;  // Repair leaves a solid alone.
+    }
+    if (!repaired.solid()) continue;
+    ++solids;
+    for (size_t p = 0; p < repaired.parts.size(); ++p) {
+      EXPECT_GT(MeshVolume(repaired.parts[p]), 0) << name << " part " << p;
+      EXPECT_TRUE(ClosedAndConsistent(repaired.parts[p])) << name << " part " << p;
+    }
+  }
+  EXPECT_GT(solids, 0);
+}
+
+}  // namespace
+}  // namespace acdplan::acd
