@@ -24,6 +24,7 @@ CanonicalHull MakeCanonicalHull(const std::vector<Eigen::Vector3d>& points) {
   CanonicalHull out;
   out.planes.resize(0, 4);
   const TriangleMesh raw = ConvexHull3(points, 0.0);
+  out.closed = raw;
   std::vector<Eigen::Vector3d> v(static_cast<size_t>(raw.vertices.rows()));
   for (size_t i = 0; i < v.size(); ++i) v[i] = raw.vertices.row(static_cast<Eigen::Index>(i));
   std::sort(v.begin(), v.end(), Less);

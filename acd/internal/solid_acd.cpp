@@ -58,7 +58,7 @@ Component3d MakeComponent(const Piece& piece, int source) {
     std::vector<Eigen::Vector3d> points;
     for (Eigen::Index i = 0; i < c.mesh.vertices.rows(); ++i)
       points.emplace_back(c.mesh.vertices.row(i));
-    c.hull = MakeCanonicalHull(points).mesh;
+    c.hull = MakeCanonicalHull(points).closed;
   }
   c.centroid = MeshCentroid(c.mesh, true);
   c.volume = MeshVolume(c.mesh);
