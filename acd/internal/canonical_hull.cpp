@@ -24,6 +24,7 @@ CanonicalHull MakeCanonicalHull(const std::vector<Eigen::Vector3d>& points) {
   CanonicalHull out;
   out.planes.resize(0, 4);
   const TriangleMesh raw = ConvexHull3(points, 0.0);
+  out.closed = raw;
   std::vector<Eigen::Vector3d> v(static_cast<size_t>(raw.vertices.rows()));
   for (size_t i = 0; i < v.size(); ++i) v[i] = raw.vertices.row(static_cast<Eigen::Index>(i));
   std::sort(v.begin(), v.end(), Less);
@@ -58,7 +59,9 @@ CanonicalHull MakeCanonicalHull(const std::vector<Eigen::Vector3d>& points) {
     const Eigen::Vector3d& p0 = v[static_cast<size_t>(on[0])];
     size_t i1 = 1;
     for (size_t i = 1; i < on.size(); ++i) {
-      if ((v[static_cast<size_t>(on[i])] - p0).squaredNorm() > (v[static_cast<size_t>(on[i1])] - p0).squaredNorm()) i1 = i;
+      if ((v[static_cast<size_t>(on[i])] - p0).squaredNorm() >
+          (v[static_cast<size_t>(on[i1])] - p0).squaredNorm())
+        i1 = i;
     }
     const Eigen::Vector3d axis = v[static_cast<size_t>(on[i1])] - p0;
     size_t i2 = 0;
@@ -76,9 +79,14 @@ CanonicalHull MakeCanonicalHull(const std::vector<Eigen::Vector3d>& points) {
     // fanned from its first vertex.
     const Eigen::Vector3d e1 = axis.normalized(), e2 = n.cross(e1);
     std::vector<std::pair<Eigen::Vector2d, int>> q;
-    for (int i : on) q.emplace_back(Eigen::Vector2d(e1.dot(v[static_cast<size_t>(i)] - p0), e2.dot(v[static_cast<size_t>(i)] - p0)), i);
+    for (int i : on)
+      q.emplace_back(Eigen::Vector2d(e1.dot(v[static_cast<size_t>(i)] - p0),
+                                     e2.dot(v[static_cast<size_t>(i)] - p0)),
+                     i);
     std::sort(q.begin(), q.end(), [](const auto& a, const auto& b) {
-      return a.first.x() < b.first.x() || (a.first.x() == b.first.x() && (a.first.y() < b.first.y() || (a.first.y() == b.first.y() && a.second < b.second)));
+      return a.first.x() < b.first.x() ||
+             (a.first.x() == b.first.x() &&
+              (a.first.y() < b.first.y() || (a.first.y() == b.first.y() && a.second < b.second)));
     });
     std::vector<std::pair<Eigen::Vector2d, int>> chain(2 * q.size());
     size_t k = 0;
@@ -97,7 +105,8 @@ CanonicalHull MakeCanonicalHull(const std::vector<Eigen::Vector3d>& points) {
   }
   out.mesh = MakeTriangleMesh(v, triangles);
   out.planes.resize(static_cast<Eigen::Index>(planes.size()), 4);
-  for (size_t i = 0; i < planes.size(); ++i) out.planes.row(static_cast<Eigen::Index>(i)) = planes[i];
+  for (size_t i = 0; i < planes.size(); ++i)
+    out.planes.row(static_cast<Eigen::Index>(i)) = planes[i];
   return out;
 }
 

@@ -10,7 +10,9 @@ namespace acdplan::acd::internal {
 
 /// A convex hull as a mesh and as outward half-spaces (n, d), |n| = 1, { x : n . x <= d }.
 struct CanonicalHull {
-  TriangleMesh mesh;
+  TriangleMesh mesh;    ///< Deterministic, but facets regrouped to a tolerance may T-join.
+  TriangleMesh closed;  ///< ConvexHull3's own mesh: closed (its coplanar facets' diagonals
+                        ///< may differ between runs; the geometry does not).
   Eigen::Matrix<double, Eigen::Dynamic, 4> planes;
 };
 

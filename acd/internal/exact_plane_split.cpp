@@ -23,7 +23,11 @@ using Tri = std::array<int, 3>;
 struct FaceInfo {
   int nesting = -1;
 };
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, ExactKernel>;
+// A section vertex's index; -1 for a point the triangulation made where constraints cross.
+struct VertexId {
+  int id = -1;
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexId, ExactKernel>;
 using Fbi = CGAL::Triangulation_face_base_with_info_2<FaceInfo, ExactKernel>;
 using Fb = CGAL::Constrained_triangulation_face_base_2<ExactKernel, Fbi>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
@@ -187,7 +191,7 @@ std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Pl
     const Point3& p = (*points)[static_cast<size_t>(id)];
     Cdt::Vertex_handle vh =
         cdt.insert(ExactKernel::Point_2(Coordinate(p, u_axis), Coordinate(p, v_axis)));
-    vh->info() = id;
+    vh->info().id = id;
     handle.emplace(id, vh);
     return vh;
   };
@@ -232,7 +236,7 @@ std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Pl
     Tri t;
     for (int i = 0; i < 3; ++i) {
       Cdt::Vertex_handle vh = f->vertex(i);
-      if (vh->info() < 0) {  // a crossing of two constraints: lift it back onto the plane
+      if (vh->info().id < 0) {  // a crossing of two constraints: lift it back onto the plane
         const FT u = vh->point().x(), v = vh->point().y();
         std::array<FT, 3> xyz;
         xyz[static_cast<size_t>(u_axis)] = u;
@@ -240,11 +244,11 @@ std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Pl
         xyz[static_cast<size_t>(drop)] = -(coef[static_cast<size_t>(u_axis)] * u +
                                            coef[static_cast<size_t>(v_axis)] * v + plane.d()) /
                                          coef[static_cast<size_t>(drop)];
-        vh->info() = static_cast<int>(points->size());
+        vh->info().id = static_cast<int>(points->size());
         points->emplace_back(xyz[0], xyz[1], xyz[2]);
         rounded->push_back(Approx(points->back()));
       }
-      t[static_cast<size_t>(i)] = vh->info();
+      t[static_cast<size_t>(i)] = vh->info().id;
     }
     if (flip) std::swap(t[1], t[2]);
     cap.push_back(t);
@@ -462,12 +466,14 @@ bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles) {
   std::vector<std::pair<int, int>> edges;
   edges.reserve(3 * triangles.size());
   for (const Tri& t : triangles) {
-    for (int k = 0; k < 3; ++k) edges.emplace_back(t[static_cast<size_t>(k)], t[static_cast<size_t>((k + 1) % 3)]);
+    for (int k = 0; k < 3; ++k)
+      edges.emplace_back(t[static_cast<size_t>(k)], t[static_cast<size_t>((k + 1) % 3)]);
   }
   std::sort(edges.begin(), edges.end());
   for (size_t i = 0; i < edges.size(); ++i) {
     if (i + 1 < edges.size() && edges[i + 1] == edges[i]) return false;
-    if (!std::binary_search(edges.begin(), edges.end(), std::make_pair(edges[i].second, edges[i].first))) {
+    if (!std::binary_search(edges.begin(), edges.end(),
+                            std::make_pair(edges[i].second, edges[i].first))) {
       return false;
     }
   }

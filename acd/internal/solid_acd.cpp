@@ -24,6 +24,8 @@ namespace {
 // runs away (a tau far below the mesh's detail); pieces still waiting when it is reached become
 // leaves as they are, and may exceed tau.
 constexpr int kMaxPiecesPerPart = 2048;
+// A cut leaving a piece below this fraction of the cut piece's volume is rejected.
+constexpr double kMinPieceFraction = 1e-9;
 
 struct Piece {
   ExactPiece exact;
@@ -56,7 +58,7 @@ Component3d MakeComponent(const Piece& piece, int source) {
     std::vector<Eigen::Vector3d> points;
     for (Eigen::Index i = 0; i < c.mesh.vertices.rows(); ++i)
       points.emplace_back(c.mesh.vertices.row(i));
-    c.hull = MakeCanonicalHull(points).mesh;
+    c.hull = MakeCanonicalHull(points).closed;
   }
   c.centroid = MeshCentroid(c.mesh, true);
   c.volume = MeshVolume(c.mesh);
@@ -77,8 +79,17 @@ std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane) {
   for (ExactPiece& p : ConnectedSolids(above)) out.push_back(std::move(p));
   // A section the cap could not close cleanly (constraints that overlap or cross, which a
   // valid solid's section should not have) rejects the plane rather than leak an open piece.
+  // So does a plane that only shaves off a rounding-level sliver (a plane through a vertex
+  // whose neighbours lie a hair off it): such a piece would be a component of no use.
+  std::vector<double> volumes;
+  double total = 0;
   for (const ExactPiece& p : out) {
     if (!IsClosedSurface(p.triangles)) return {};
+    volumes.push_back(MeshVolume(ToDouble(p)));
+    total += volumes.back();
+  }
+  for (double v : volumes) {
+    if (!(v > kMinPieceFraction * total)) return {};
   }
   return out;
 }

@@ -41,7 +41,7 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
   std::vector<Eigen::Vector3d> points(static_cast<size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i) points[static_cast<size_t>(i)] = mesh.vertices.row(i);
   CanonicalHull hull = MakeCanonicalHull(points);
-  out.hull = std::move(hull.mesh);
+  out.hull = std::move(hull.closed);  // the component's hull must be closed
   out.hull_volume = MeshVolume(out.hull);
   const double scale = BoundingBox(mesh).diagonal().norm();
   const double tol = 1e-9 * scale;
@@ -143,6 +143,30 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
     std::vector<int> bridge_planes;
     for (const auto& [j, pts] : in_plane) {
       if (SpansArea(pts, tol)) bridge_planes.push_back(j);
+    }
+    // Algorithm 6 (bridge clustering, epsilon = tau / 2): a bridge plane whose border
+    // vertices all lie within epsilon of a patch's plane joins that patch, and its points are
+    // measured from the patch's plane (Obs. B.1: off by less than epsilon). Planes holding
+    // more border vertices seed patches first.
+    if (tau > 0 && bridge_planes.size() > 1) {
+      const double epsilon = tau / 2;
+      std::stable_sort(bridge_planes.begin(), bridge_planes.end(),
+                       [&](int a, int b) { return in_plane[a].size() > in_plane[b].size(); });
+      std::vector<int> seeds;
+      for (int j : bridge_planes) {
+        bool absorbed = false;
+        for (int seed : seeds) {
+          bool near = true;
+          for (const auto& p : in_plane[j]) near = near && std::abs(depth(p, seed)) <= epsilon;
+          if (near) {
+            absorbed = true;
+            break;
+          }
+        }
+        if (!absorbed) seeds.push_back(j);
+      }
+      std::sort(seeds.begin(), seeds.end());
+      bridge_planes = std::move(seeds);
     }
     if (bridge_planes.empty()) {
       bridge_planes.resize(static_cast<size_t>(m));

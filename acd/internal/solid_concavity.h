@@ -27,6 +27,8 @@ struct SolidConcavity {
 ///    facet; a pocket's bridge is the set of bridge planes its border vertices span (three
 ///    border vertices in the plane, not collinear), so a slot beside a wall is measured from
 ///    its rim, not from the wall (the guide's all-hull-planes lower bound misses that);
+///  - bridge planes are clustered into patches (Algorithm 6, epsilon = tau / 2): a plane
+///    whose border vertices lie within epsilon of a patch's plane is measured as that plane;
 ///  - the depth of a pocket point is its distance to the nearest bridge plane it faces (its
 ///    face's or vertex's outward normal has a positive component along the plane's normal:
 ///    Lien projects a pocket point onto the bridge above it, so a lid its wall meets at a right

@@ -129,35 +129,46 @@ void ComputeOpenings(Decomposition3d* decomposition) {
             Polygon2 x = ClipConvex(s, t);
             if (x.size() < 3) continue;
             const double ax = Area(x);
-            if (ax > tol * tol) {
+            if (ax > 1e-10 * scale * scale) {  // clipping slivers are no opening
               area += ax;
               parts.push_back(std::move(x));
             }
           }
         }
         if (!(area > tol * scale)) continue;
-        Polygon2 outline;
+        // One opening with the convex outline when the shared part is convex (its outline's
+        // area is the shared area); else one per convex part, so each polygon is exact.
+        std::vector<Polygon2> outlines;
         if (parts.size() == 1) {
-          outline = parts[0];
+          outlines = parts;
         } else {
-          for (const Polygon2& p : parts) outline.insert(outline.end(), p.begin(), p.end());
-          outline = ConvexHull2(outline);
+          Polygon2 all;
+          for (const Polygon2& p : parts) all.insert(all.end(), p.begin(), p.end());
+          Polygon2 hull = ConvexHull2(all);
+          if (std::abs(Area(hull) - area) <= 1e-9 * area) {
+            outlines.push_back(std::move(hull));
+          } else {
+            outlines = parts;
+          }
         }
-        // From the lower-indexed component into the other; counter-clockwise about the normal.
-        Opening3d opening;
-        opening.component_a = std::min(a, b);
-        opening.component_b = std::max(a, b);
-        const bool forward = a < b;  // a is below: the normal n points from a into b
-        opening.normal = forward ? n : Eigen::Vector3d(-n);
-        if (!forward) std::reverse(outline.begin(), outline.end());
-        for (const Point2& q : outline)
-          opening.polygon.push_back(u * q.x() + v * q.y() + n * offset);
-        opening.area = area;
-        found.emplace_back(opening.component_a, opening.component_b, node, std::move(opening));
+        for (Polygon2& outline : outlines) {
+          // From the lower-indexed component into the other; counter-clockwise about the normal.
+          Opening3d opening;
+          opening.component_a = std::min(a, b);
+          opening.component_b = std::max(a, b);
+          const bool forward = a < b;  // a is below: the normal n points from a into b
+          opening.normal = forward ? n : Eigen::Vector3d(-n);
+          opening.area = Area(outline);
+          if (!forward) std::reverse(outline.begin(), outline.end());
+          for (const Point2& q : outline) {
+            opening.polygon.push_back(u * q.x() + v * q.y() + n * offset);
+          }
+          found.emplace_back(opening.component_a, opening.component_b, node, std::move(opening));
+        }
       }
     }
   }
-  std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) {
+  std::stable_sort(found.begin(), found.end(), [](const auto& x, const auto& y) {
     return std::tie(std::get<0>(x), std::get<1>(x), std::get<2>(x)) <
            std::tie(std::get<0>(y), std::get<1>(y), std::get<2>(y));
   });

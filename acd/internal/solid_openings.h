@@ -8,10 +8,10 @@ namespace acdplan::acd::internal {
 /// Replaces `decomposition->openings` with the polygons the leaves share across the cut planes
 /// of the tree's internal nodes: for each internal node, the faces of the leaves below it that
 /// lie in its plane (outward normal +n on the negative side, -n on the positive side) are
-/// intersected pairwise in the plane. `area` is the exact area of the shared part (an opening
-/// split by later cuts is only its shared parts); `polygon` is the shared part's outline when
-/// it is one convex piece, else the convex outline of its parts (exact whenever the section is
-/// convex). Ordered by (component_a, component_b, node).
+/// intersected pairwise in the plane (an opening split by later cuts is only its shared
+/// parts). A convex shared part is one opening (its outline); a non-convex one is one opening
+/// per convex piece of it, so every polygon's area is its `area`. Ordered by (component_a,
+/// component_b, node), stable.
 void ComputeOpenings(Decomposition3d* decomposition);
 
 }  // namespace acdplan::acd::internal

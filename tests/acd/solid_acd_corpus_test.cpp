@@ -1,0 +1,141 @@
+// The solid ACD on the closed, clean meshes of data/meshes/vhacd, and metamorphic checks.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "acd/decompose3d.h"
+#include "acd/mesh_measures.h"
+#include "solid_test_meshes.h"
+
+namespace acdplan::acd {
+namespace {
+
+bool IsClosed(const TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, int> directed;
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) ++directed[{mesh.triangles(f, k), mesh.triangles(f, (k + 1) % 3)}];
+  }
+  for (const auto& [edge, count] : directed) {
+    if (count != 1) return false;
+    auto it = directed.find({edge.second, edge.first});
+    if (it == directed.end() || it->second != 1) return false;
+  }
+  return true;
+}
+
+TriangleMesh Load(const std::string& name) {
+  TriangleMesh mesh =
+      test::ReadObjForTest(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name + ".obj");
+  if (MeshVolume(mesh) < 0) mesh.triangles.col(1).swap(mesh.triangles.col(2));
+  return mesh;
+}
+
+// Half the bounding-box diagonal: the reference radius until acd::ReferenceRadius lands.
+double Radius(const TriangleMesh& mesh) { return BoundingBox(mesh).diagonal().norm() / 2; }
+
+Decomposition3d Solve(const TriangleMesh& mesh, double tau) {
+  Decompose3dOptions options;
+  options.tau = tau;
+  return Decompose3d(test::PreparedSolid(mesh), options);
+}
+
+class Corpus : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Corpus, PiecesAreClosedTauConvexAndSumToTheInput) {
+  const TriangleMesh mesh = Load(GetParam());
+  ASSERT_GT(mesh.triangles.rows(), 0);
+  ASSERT_TRUE(IsClosed(mesh));
+  const double volume = MeshVolume(mesh);
+  const double tau = 0.05 * Radius(mesh);
+  const Decomposition3d d = Solve(mesh, tau);
+  double sum = 0;
+  for (size_t i = 0; i < d.components.size(); ++i) {
+    const Component3d& c = d.components[i];
+    EXPECT_TRUE(IsClosed(c.mesh)) << "component " << i;
+    EXPECT_GT(c.volume, 0) << "component " << i;
+    EXPECT_LE(c.concavity, tau * (1 + 1e-9)) << "component " << i;
+    sum += c.volume;
+  }
+  EXPECT_NEAR(sum, volume, 1e-6 * volume);
+  EXPECT_LE(d.stats.hull_volume, 1.25 * volume);
+  const auto graph = ComponentGraph(d);
+  if (d.components.size() > 1) {
+    for (const auto& neighbours : graph) EXPECT_FALSE(neighbours.empty());
+  }
+}
+
+// Closed, clean and small enough for every build (the sanitizer build included).
+INSTANTIATE_TEST_SUITE_P(Vhacd, Corpus,
+                         ::testing::Values("cube", "cube-notch", "box-thick", "wall", "torus1",
+                                           "torus2", "hose", "cup"),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+// Metamorphic: rigid motions, scaling (tau scaled), mirroring and reordering keep the count.
+TriangleMesh Transformed(const TriangleMesh& mesh, const Eigen::Matrix3d& linear,
+                         const Eigen::Vector3d& shift) {
+  TriangleMesh out = mesh;
+  for (Eigen::Index i = 0; i < out.vertices.rows(); ++i) {
+    out.vertices.row(i) = (linear * mesh.vertices.row(i).transpose() + shift).transpose();
+  }
+  if (linear.determinant() < 0) out.triangles.col(1).swap(out.triangles.col(2));
+  return out;
+}
+
+TEST(Decompose3dMetamorphic, TransformsKeepTheComponentCount) {
+  const TriangleMesh mesh = test::UBlock();
+  const double tau = 0.05;
+  const size_t count = Solve(mesh, tau).components.size();
+  ASSERT_EQ(count, 3u);
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  EXPECT_EQ(Solve(Transformed(mesh, rotation, {0, 0, 0}), tau).components.size(), count);
+  EXPECT_EQ(
+      Solve(Transformed(mesh, Eigen::Matrix3d::Identity(), {1e3, -7, 0.25}), tau).components.size(),
+      count);
+  for (double s : {1e-3, 1e3}) {
+    EXPECT_EQ(Solve(Transformed(mesh, s * Eigen::Matrix3d::Identity(), {0, 0, 0}), s * tau)
+                  .components.size(),
+              count)
+        << "scale " << s;
+  }
+  const Eigen::Matrix3d mirror = Eigen::Vector3d(-1, 1, 1).asDiagonal();
+  EXPECT_EQ(Solve(Transformed(mesh, mirror, {0, 0, 0}), tau).components.size(), count);
+  // Vertex and face order reversed.
+  TriangleMesh shuffled = mesh;
+  const Eigen::Index n = mesh.vertices.rows();
+  for (Eigen::Index i = 0; i < n; ++i) shuffled.vertices.row(n - 1 - i) = mesh.vertices.row(i);
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      shuffled.triangles(mesh.triangles.rows() - 1 - f, k) =
+          static_cast<int>(n - 1 - mesh.triangles(f, k));
+    }
+  }
+  EXPECT_EQ(Solve(shuffled, tau).components.size(), count);
+}
+
+// Scaling by a power of two is exact in floating point, so the whole run must scale: same
+// pieces, volumes times s^3. (Other factors round differently and may flip near-ties.)
+TEST(Decompose3dMetamorphic, TorusScaledByEightScalesExactly) {
+  const TriangleMesh torus = test::Torus(2.0, 1.0, 16, 8);
+  const Decomposition3d a = Solve(torus, 0.3);
+  const Decomposition3d b =
+      Solve(Transformed(torus, 8 * Eigen::Matrix3d::Identity(), {0, 0, 0}), 2.4);
+  ASSERT_EQ(a.components.size(), b.components.size());
+  EXPECT_NEAR(b.stats.volume, 512 * a.stats.volume, 1e-9 * b.stats.volume);
+  EXPECT_NEAR(b.stats.hull_volume, 512 * a.stats.hull_volume, 1e-9 * b.stats.hull_volume);
+  for (size_t i = 0; i < a.components.size(); ++i) {
+    EXPECT_EQ(a.components[i].mesh.triangles.rows(), b.components[i].mesh.triangles.rows());
+  }
+}
+
+}  // namespace
+}  // namespace acdplan::acd
