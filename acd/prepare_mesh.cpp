@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <optional>
 #include <tuple>
 #include <utility>
 
@@ -49,7 +50,8 @@ class DisjointSets {
   }
   int Find(int x) {
     while (parent_[static_cast<size_t>(x)] != x) {
-      parent_[static_cast<size_t>(x)] = parent_[static_cast<size_t>(parent_[static_cast<size_t>(x)])];
+      parent_[static_cast<size_t>(x)] =
+          parent_[static_cast<size_t>(parent_[static_cast<size_t>(x)])];
       x = parent_[static_cast<size_t>(x)];
     }
     return x;
@@ -93,8 +95,8 @@ TriangleMesh ExtractFaces(const TriangleMesh& mesh, const std::vector<int>& face
 
 struct Cleaned {
   TriangleMesh mesh;
-  int merged = 0;        // Vertices merged into another at the same position.
-  int unreferenced = 0;  // Distinct positions no kept triangle uses.
+  int merged = 0;                             // Vertices merged into another at the same position.
+  int unreferenced = 0;                       // Distinct positions no kept triangle uses.
   int degenerate = 0, first_degenerate = -1;  // Triangles of the input.
   int duplicate = 0, first_duplicate = -1;
 };
@@ -125,7 +127,9 @@ Cleaned Clean(const TriangleMesh& in) {
     out.merged += same;
   }
 
-  auto point = [&](int v) { return Epick::Point_3(in.vertices(v, 0), in.vertices(v, 1), in.vertices(v, 2)); };
+  auto point = [&](int v) {
+    return Epick::Point_3(in.vertices(v, 0), in.vertices(v, 1), in.vertices(v, 2));
+  };
   std::vector<Eigen::Vector3i> kept;
   std::vector<int> kept_from;
   for (int f = 0; f < nf; ++f) {
@@ -180,19 +184,21 @@ Cleaned Clean(const TriangleMesh& in) {
   return out;
 }
 
-// The cleaning's notes; `of` names the mesh the face numbers refer to.
-void NoteCleaning(const Cleaned& c, const std::string& of, std::vector<std::string>* notes) {
-  if (c.merged > 0) notes->push_back("merged " + Plural(c.merged, "duplicate vertex") + of);
+// The cleaning's notes; `of` names the mesh the face numbers refer to. After a repair the
+// vertex counts only reflect how the repaired mesh was assembled, so `vertices` leaves them out.
+void NoteCleaning(const Cleaned& c, const std::string& of, bool vertices,
+                  std::vector<std::string>* notes) {
+  if (vertices && c.merged > 0) notes->push_back("merged " + Plural(c.merged, "duplicate vertex"));
   if (c.degenerate > 0) {
-    notes->push_back("dropped " + Plural(c.degenerate, "degenerate face") +
-                     " (first: face " + std::to_string(c.first_degenerate) + of + ")");
+    notes->push_back("dropped " + Plural(c.degenerate, "degenerate face") + " (first: face " +
+                     std::to_string(c.first_degenerate) + of + ")");
   }
   if (c.duplicate > 0) {
     notes->push_back("dropped " + Plural(c.duplicate, "duplicate face") + " (first: face " +
                      std::to_string(c.first_duplicate) + of + ")");
   }
-  if (c.unreferenced > 0) {
-    notes->push_back("dropped " + Plural(c.unreferenced, "unreferenced vertex") + of);
+  if (vertices && c.unreferenced > 0) {
+    notes->push_back("dropped " + Plural(c.unreferenced, "unreferenced vertex"));
   }
 }
 
@@ -205,8 +211,8 @@ struct Diagnosis {
   // Patches: triangles connected across edges with exactly two triangles, ascending, in order
   // of their lowest triangle.
   std::vector<std::vector<int>> patches;
-  std::vector<bool> closed;      // Per patch: no edge of it has 1 or 3+ triangles.
-  std::vector<bool> orientable;  // Per patch.
+  std::vector<bool> closed;                    // Per patch: no edge of it has 1 or 3+ triangles.
+  std::vector<bool> orientable;                // Per patch.
   std::vector<std::pair<int, int>> crossings;  // IntersectingFacePairs().
   std::vector<std::vector<int>> parts;         // Triangles of each part, ascending.
   int cavities = 0;
@@ -214,7 +220,9 @@ struct Diagnosis {
   MeshDefects defects;
 };
 
-void FlipFace(TriangleMesh* mesh, int f) { std::swap(mesh->triangles(f, 1), mesh->triangles(f, 2)); }
+void FlipFace(TriangleMesh* mesh, int f) {
+  std::swap(mesh->triangles(f, 1), mesh->triangles(f, 2));
+}
 
 // Orients each patch consistently (breadth first from its lowest triangle, which keeps its
 // orientation) and each closed patch outward (exact volume sign).
@@ -230,7 +238,8 @@ void OrientPatches(Diagnosis* d) {
     for (size_t head = 0; head < queue.size(); ++head) {
       const int f = queue[head];
       for (int k = 0; k < 3; ++k) {
-        const MeshEdge& e = table.edges[static_cast<size_t>(table.face_edges[static_cast<size_t>(f)][static_cast<size_t>(k)])];
+        const MeshEdge& e = table.edges[static_cast<size_t>(
+            table.face_edges[static_cast<size_t>(f)][static_cast<size_t>(k)])];
         if (e.count != 2) continue;
         const int g = table.faces[static_cast<size_t>(e.first)] == f
                           ? table.faces[static_cast<size_t>(e.first + 1)]
@@ -335,7 +344,8 @@ Diagnosis Diagnose(const TriangleMesh& cleaned) {
       if (!first_non_manifold) first_non_manifold = &e;
     }
     for (int i = 0; i < e.count; ++i) {
-      d.closed[static_cast<size_t>(patch_of[static_cast<size_t>(d.edges.faces[static_cast<size_t>(e.first + i)])])] = false;
+      d.closed[static_cast<size_t>(
+          patch_of[static_cast<size_t>(d.edges.faces[static_cast<size_t>(e.first + i)])])] = false;
     }
   }
   OrientPatches(&d);
@@ -345,8 +355,8 @@ Diagnosis Diagnose(const TriangleMesh& cleaned) {
   auto edge_message = [&](const MeshEdge& e) {
     const Eigen::Vector3d mid =
         (d.mesh.vertices.row(e.a) + d.mesh.vertices.row(e.b)).transpose() / 2;
-    return "edge " + std::to_string(e.a) + "-" + std::to_string(e.b) + " at " + At(mid) +
-           " has " + Plural(e.count, "face") + " (a solid's edges have exactly 2)";
+    return "edge " + std::to_string(e.a) + "-" + std::to_string(e.b) + " at " + At(mid) + " has " +
+           Plural(e.count, "face") + " (a solid's edges have exactly 2)";
   };
   if (first_boundary) {
     d.defects.first = edge_message(*first_boundary);
@@ -365,7 +375,8 @@ Diagnosis Diagnose(const TriangleMesh& cleaned) {
     d.parts = d.patches;
   }
   for (int f = 0; f < nf; ++f) {
-    d.flipped += internal::RunsForward(cleaned, f, d.mesh.triangles(f, 0), d.mesh.triangles(f, 1)) ? 0 : 1;
+    d.flipped +=
+        internal::RunsForward(cleaned, f, d.mesh.triangles(f, 0), d.mesh.triangles(f, 1)) ? 0 : 1;
   }
   return d;
 }
@@ -398,8 +409,9 @@ TriangleMesh CloseHoles(const Diagnosis& d, std::vector<std::string>* notes) {
 
 // Replaces each group of closed shells that cross each other by their union. Shells that
 // cross themselves are left as they are (their repair would need autorefinement, which is
-// not robust enough in CGAL 5.5 to run on untrusted input).
-TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* notes) {
+// not robust enough in CGAL 5.5 to run on untrusted input). Empty when nothing was united.
+std::optional<TriangleMesh> UniteCrossingShells(const Diagnosis& d,
+                                                std::vector<std::string>* notes) {
   const int count = static_cast<int>(d.patches.size());
   std::vector<int> patch_of(static_cast<size_t>(d.mesh.triangles.rows()));
   for (int p = 0; p < count; ++p) {
@@ -451,7 +463,8 @@ TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* n
         vertices.push_back(united->vertices.row(v).transpose());
       }
       for (Eigen::Index f = 0; f < united->triangles.rows(); ++f) {
-        triangles.push_back(united->triangles.row(f).transpose() + Eigen::Vector3i::Constant(offset));
+        triangles.push_back(united->triangles.row(f).transpose() +
+                            Eigen::Vector3i::Constant(offset));
       }
       continue;
     }
@@ -462,8 +475,8 @@ TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* n
     }
   }
   if (united_groups > 0) {
-    notes->push_back("repair: united " + Plural(united_shells, "crossing closed shell") +
-                     " into " + Plural(united_groups, "solid"));
+    notes->push_back("repair: united " + Plural(united_shells, "crossing closed shell") + " into " +
+                     Plural(united_groups, "solid"));
   }
   if (failed_groups > 0) {
     notes->push_back("repair: could not unite " + Plural(failed_groups, "group") +
@@ -471,8 +484,8 @@ TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* n
   }
   if (self_crossing > 0) {
     notes->push_back("repair: left " + Plural(self_crossing, "shell") +
-                     " that cross themselves" + first_self +
-                     " (only crossings between shells are removed)");
+                     (self_crossing == 1 ? " that crosses itself" : " that cross themselves") +
+                     first_self + " (only crossings between shells are removed)");
   }
   return MakeTriangleMesh(vertices, triangles);
 }
@@ -481,7 +494,7 @@ TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* n
 Diagnosis Recheck(const TriangleMesh& mesh, const std::string& where,
                   std::vector<std::string>* notes) {
   const Cleaned cleaned = Clean(mesh);
-  NoteCleaning(cleaned, " of the repaired mesh", notes);
+  NoteCleaning(cleaned, " of the repaired mesh", false, notes);
   if (cleaned.mesh.triangles.rows() == 0) {
     throw std::logic_error(where + ": repair left no triangle");  // Repairs only add volume.
   }
@@ -497,10 +510,9 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
   const Cleaned cleaned = Clean(mesh);
   if (cleaned.mesh.triangles.rows() == 0) {
     throw InputError(where + ": mesh has no face of positive area (all " +
-                     Plural(static_cast<int>(mesh.triangles.rows()), "face") +
-                     " are degenerate)");
+                     Plural(static_cast<int>(mesh.triangles.rows()), "face") + " are degenerate)");
   }
-  NoteCleaning(cleaned, "", &prepared.notes);
+  NoteCleaning(cleaned, "", true, &prepared.notes);
   Diagnosis d = Diagnose(cleaned.mesh);
   if (d.flipped > 0) {
     prepared.notes.push_back("reoriented " + Plural(d.flipped, "face") +
@@ -513,7 +525,9 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
     }
     if (d.defects.boundary_edges == 0 && d.defects.non_manifold_edges == 0 &&
         d.defects.self_intersections > 0) {
-      d = Recheck(UniteCrossingShells(d, &prepared.notes), where, &prepared.notes);
+      if (const auto united = UniteCrossingShells(d, &prepared.notes)) {
+        d = Recheck(*united, where, &prepared.notes);
+      }
     }
     if (!d.defects.none()) {
       prepared.notes.push_back("repair: still not a solid: " + d.defects.first);
@@ -523,13 +537,14 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
     prepared.notes.push_back("found " + Plural(static_cast<int>(d.parts.size()), "solid part") +
                              (d.cavities > 0 ? " with " + Plural(d.cavities, "cavity") : ""));
   } else {
-    prepared.notes.push_back(
-        "found " + Plural(static_cast<int>(d.parts.size()), "surface patch") + ": " +
-        Plural(d.defects.boundary_edges, "boundary edge") + ", " +
-        Plural(d.defects.non_manifold_edges, "non-manifold edge") + ", " +
-        Plural(d.defects.self_intersections, "self-intersection"));
+    prepared.notes.push_back("found " + Plural(static_cast<int>(d.parts.size()), "surface patch") +
+                             ": " + Plural(d.defects.boundary_edges, "boundary edge") + ", " +
+                             Plural(d.defects.non_manifold_edges, "non-manifold edge") + ", " +
+                             Plural(d.defects.self_intersections, "self-intersection"));
   }
   for (const auto& faces : d.parts) prepared.parts.push_back(ExtractFaces(d.mesh, faces));
+  // Parts of a solid are closed; otherwise they are the patches.
+  prepared.closed_parts = d.defects.none() ? std::vector<bool>(d.parts.size(), true) : d.closed;
   prepared.mesh = std::move(d.mesh);
   prepared.defects = std::move(d.defects);
   return prepared;
@@ -537,7 +552,8 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
 
 void RequireSolid(const PreparedMesh& prepared, const std::string& where) {
   if (prepared.solid()) return;
-  const std::string what = prepared.defects.first.empty() ? "it has no part" : prepared.defects.first;
+  const std::string what =
+      prepared.defects.first.empty() ? "it has no part" : prepared.defects.first;
   throw InputError(where + ": not a solid: " + what +
                    " (use --repair to close holes and remove self-intersections, or --surface)");
 }

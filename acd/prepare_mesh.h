@@ -39,6 +39,10 @@ struct PreparedMesh {
   /// outward-oriented so that the enclosed volume is positive) when solid(), else a connected
   /// surface patch. Decompose3d() decomposes each part; components keep the part's index.
   std::vector<TriangleMesh> parts;
+  /// Per part: every edge of it has exactly two triangles, so ray parity defines an inside
+  /// (true for every part of a solid; a closed shell that crosses itself or another one is
+  /// closed but not solid).
+  std::vector<bool> closed_parts;
   MeshDefects defects;             ///< What stands between this mesh and a solid.
   std::vector<std::string> notes;  ///< What preparation changed, one line each.
   /// Closed, manifold, free of self-intersections, every part bounding a positive volume: the
@@ -46,11 +50,42 @@ struct PreparedMesh {
   bool solid() const { return defects.none() && !parts.empty(); }
 };
 
-/// Cleans and diagnoses `mesh` (CGAL Polygon_mesh_processing for orientation, connected parts,
-/// holes and self-intersections); with `options.repair`, repairs first. Never throws on a
+/// Cleans and diagnoses `mesh`; with `options.repair`, repairs what it can. Never throws on a
 /// valid TriangleMesh whatever its defects: they are reported in `defects`.
+///
+/// Steps, each reported in `notes` when it changes something ("merged 1203 duplicate
+/// vertices", "dropped 4 degenerate faces (first: face 17)", face numbers of the input):
+/// 1. Cleaning: vertices at identical positions merged (exact comparison); triangles with a
+///    repeated corner or three collinear corners (exact predicate) dropped, as are repeats of a
+///    triangle (same three vertices, either orientation: the first is kept) and the vertices no
+///    triangle uses. Vertices and triangles keep their relative order.
+/// 2. Patches: triangles connected across edges that have exactly two triangles. Each is
+///    oriented consistently from its lowest triangle; each closed one outward (the exact sign of
+///    its enclosed volume).
+/// 3. Diagnosis on the cleaned mesh: edges with one triangle (boundary), with three or more
+///    (non-manifold), pairs of triangles that cross (exact predicates; shells of different
+///    parts that cross count too). `defects.first` names the first defect in that order, by
+///    the cleaned mesh's vertex and face numbers: "edge 12-40 at (0.5, 1, 0) has 1 face (a
+///    solid's edges have exactly 2)", "faces 3 and 17 intersect at (x, y, z) (a solid's
+///    surface does not cross itself)".
+/// 4. Parts: with no defect, the closed shells are nested (CGAL Side_of_triangle_mesh): a shell
+///    inside an odd number of others is a cavity, turned inward and put in the part of the
+///    innermost shell around it; a shell inside an even number starts a part. Otherwise the
+///    parts are the patches. Parts are ordered by their lowest triangle.
+/// Repair (options.repair, when there are defects): boundary loops are triangulated without
+/// new vertices (PMP::triangulate_hole_polyline, 2D constrained Delaunay when the loop is
+/// nearly planar); then, if the mesh is closed and manifold, each group of closed shells that
+/// cross each other is replaced by its union (PMP::corefine_and_compute_union on exact
+/// copies, rounded to doubles). Shells that cross themselves are left alone (CGAL 5.5's
+/// autorefinement is experimental and not safe on untrusted input). The result is cleaned and
+/// diagnosed again; what repair could not mend stays in `defects`.
+///
+/// Complexity: O(F log F) for F triangles plus O(k) for k crossing candidate pairs (box
+/// intersection), O(S^2) bounding-box tests for S closed shells; repair adds the hole
+/// triangulations and the exact unions. About 0.2 s for 40k triangles (Release).
 /// @throws InputError "<where>: <rule>" if `mesh` fails CheckTriangleMesh() or has no face of
-///         positive area.
+///         positive area ("<where>: mesh has no face of positive area (all 3 faces are
+///         degenerate)").
 PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& options = {},
                          const std::string& where = "mesh");
 

@@ -17,6 +17,7 @@
 #include "acd/concavity.h"
 #include "acd/convex_hull3d.h"
 #include "acd/decompose2d.h"
+#include "acd/prepare_mesh.h"
 #include "base/input_error.h"
 #include "collision/internal/hull_tree.h"
 #include "collision/internal/mesh_building.h"
@@ -219,7 +220,12 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
       }
       m.robot_hull = MakeConvex(acd::ConvexHull3(points, 1e-9));
       m.witness = robot.mesh.vertices.row(robot.mesh.triangles(0, 0)).transpose();
-      if (internal::IsClosedMesh(robot.mesh)) m.robot_locator.emplace(robot.mesh);
+      const acd::PreparedMesh prepared =
+          acd::PrepareMesh(robot.mesh, {}, "CollisionWorld(): robot mesh");
+      const auto& closed = prepared.closed_parts;
+      if (std::all_of(closed.begin(), closed.end(), [](bool c) { return c; })) {
+        m.robot_locator.emplace(prepared.mesh);
+      }
       break;
     }
   }

@@ -5,6 +5,7 @@
 
 #include "acd/convex_hull3d.h"
 #include "acd/decompose2d.h"
+#include "acd/prepare_mesh.h"
 #include "base/input_error.h"
 #include "collision/internal/mesh_building.h"
 
@@ -68,14 +69,16 @@ ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace) {
   for (size_t k = 0; k < workspace.obstacles.size(); ++k) {
     acd::CheckTriangleMesh(workspace.obstacles[k],
                            "BuildObstacleSet(): obstacle " + std::to_string(k));
-    // Welded, so that copies of a vertex split at a normal or UV seam do not cut the surface
-    // into open pieces.
-    const acd::TriangleMesh mesh = internal::WeldVertices(workspace.obstacles[k]);
-    set.meshes.push_back(mesh);
-    for (acd::TriangleMesh& component : internal::ConnectedComponents(mesh)) {
+    // Cleaned (vertices split at normal or UV seams welded, so the surface is not cut into
+    // open pieces) and split into parts: solids with their cavities, or surface patches.
+    acd::PreparedMesh prepared = acd::PrepareMesh(
+        workspace.obstacles[k], {}, "BuildObstacleSet(): obstacle " + std::to_string(k));
+    set.meshes.push_back(prepared.mesh);
+    for (size_t p = 0; p < prepared.parts.size(); ++p) {
+      acd::TriangleMesh& component = prepared.parts[p];
       ObstaclePiece piece;
       piece.obstacle = static_cast<int>(k);
-      piece.closed = internal::IsClosedMesh(component);
+      piece.closed = prepared.closed_parts[p];
       std::vector<Eigen::Vector3d> points;
       for (Eigen::Index i = 0; i < component.vertices.rows(); ++i) {
         points.push_back(component.vertices.row(i).transpose());

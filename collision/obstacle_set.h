@@ -24,13 +24,16 @@ struct ObstacleSetOptions {
   double extrusion_height = 1.0;
 };
 
-/// One convex piece of an obstacle: an ACD component (2D) or a connected component of the
-/// obstacle's surface (3D, until a 3D ACD exists), with its convex hull.
+/// One convex piece of an obstacle: an ACD component (2D) or a part of the obstacle's surface
+/// (3D, until a 3D ACD exists: a part of acd::PrepareMesh(), a solid with its cavities or a
+/// surface patch), with its convex hull.
 struct ObstaclePiece {
   int obstacle = 0;         ///< Index of the obstacle this piece belongs to.
   acd::TriangleMesh solid;  ///< The piece's own surface: 2D the extruded component polygon
-                            ///< (closed), 3D the component's triangles.
-  bool closed = true;       ///< `solid` is a closed 2-manifold (inside/outside is defined).
+                            ///< (closed), 3D the part's triangles.
+  /// `solid` is closed: every edge has two triangles, so inside/outside is defined by ray
+  /// parity (acd::PreparedMesh::closed_parts).
+  bool closed = true;
   /// `solid` is convex, so it equals `hull` (2D: every vertex of the component is a strict
   /// vertex of its hull, decided with exact predicates; 3D: never claimed).
   bool convex = false;
@@ -62,11 +65,13 @@ struct ObstacleSet {
 ObstacleSet BuildObstacleSet(const envs::Workspace2d& workspace,
                              const ObstacleSetOptions& options = {});
 
-/// Builds the pieces of a 3D workspace: one piece per connected component (shared vertices,
-/// after merging vertices at identical positions) of each obstacle mesh, with its 3D convex hull
-/// (CGAL convex_hull_3). Open meshes are accepted here (`closed` is false); exact point location on
-/// them is refused later.
-/// @throws InputError if a mesh fails acd::CheckTriangleMesh().
+/// Builds the pieces of a 3D workspace: one piece per part of each obstacle mesh as
+/// acd::PrepareMesh() finds them (without repair: a solid with its cavities, or an edge-connected
+/// surface patch of a mesh that is not a solid), with its 3D convex hull (CGAL convex_hull_3).
+/// `meshes` holds the cleaned meshes. Meshes that are not solids are accepted here (`closed` is
+/// false); exact point location on them is refused later.
+/// @throws InputError if a mesh fails acd::CheckTriangleMesh() or has no face of positive
+///         area.
 ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace);
 
 /// The number of obstacle triangles (sum over `meshes`).

@@ -32,7 +32,8 @@ CGAL::Surface_mesh<typename K::Point_3> ToSurfaceMesh(const TriangleMesh& mesh,
     for (int k = 0; k < 3; ++k) {
       const int v = mesh.triangles(f, k);
       auto [it, inserted] = local.emplace(v, points.size());
-      if (inserted) points.emplace_back(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2));
+      if (inserted)
+        points.emplace_back(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2));
       t[static_cast<size_t>(k)] = it->second;
     }
     triangles.push_back(t);

@@ -88,8 +88,7 @@ Eigen::Vector3d FaceIntersectionPoint(const TriangleMesh& mesh, int f, int g) {
                              PointOf<Epeck>(mesh, mesh.triangles(t, 2)));
   };
   auto to_eigen = [](const Epeck::Point_3& p) {
-    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                           CGAL::to_double(p.z()));
+    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
   };
   const auto result = CGAL::intersection(triangle(f), triangle(g));
   if (!result) {  // Not expected for an intersecting pair; the centroid of f still locates it.

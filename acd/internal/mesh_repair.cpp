@@ -18,6 +18,7 @@ namespace {
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 namespace PMP = CGAL::Polygon_mesh_processing;
+using Mesh = CGAL::Surface_mesh<Epeck::Point_3>;
 
 // A boundary halfedge: from `from` to `to`, opposite to the edge of triangle `face` whose
 // third corner is `apex` (the hole's filling should not fold onto that triangle).
@@ -27,8 +28,8 @@ struct BorderHalfedge {
 
 // Chains the border halfedges into simple loops (vertex lists). Halfedges that do not close
 // into a loop are counted in `*broken`.
-std::vector<std::vector<const BorderHalfedge*>> TraceLoops(const std::vector<BorderHalfedge>& border,
-                                                           int* broken) {
+std::vector<std::vector<const BorderHalfedge*>> TraceLoops(
+    const std::vector<BorderHalfedge>& border, int* broken) {
   std::multimap<int, size_t> outgoing;  // Ordered: the lowest halfedge is followed first.
   for (size_t i = 0; i < border.size(); ++i) outgoing.emplace(border[i].from, i);
   std::vector<bool> used(border.size(), false);
@@ -69,6 +70,38 @@ std::vector<std::vector<const BorderHalfedge*>> TraceLoops(const std::vector<Bor
   return loops;
 }
 
+// UniteClosedShells() without its guard; no triangles when CGAL cannot form the union.
+TriangleMesh Unite(const TriangleMesh& mesh, const std::vector<std::vector<int>>& shells) {
+  Mesh united = ToSurfaceMesh<Epeck>(mesh, shells[0]);
+  if (!PMP::is_outward_oriented(united)) PMP::reverse_face_orientations(united);
+  for (size_t i = 1; i < shells.size(); ++i) {
+    Mesh next = ToSurfaceMesh<Epeck>(mesh, shells[i]);
+    if (!PMP::is_outward_oriented(next)) PMP::reverse_face_orientations(next);
+    Mesh result;
+    if (!PMP::corefine_and_compute_union(united, next, result)) return {};
+    united = std::move(result);
+  }
+  united.collect_garbage();
+  std::vector<Eigen::Vector3d> vertices;
+  std::map<Mesh::Vertex_index, int> index;
+  for (const Mesh::Vertex_index v : united.vertices()) {
+    const Epeck::Point_3& p = united.point(v);
+    index[v] = static_cast<int>(vertices.size());
+    vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  std::vector<Eigen::Vector3i> triangles;
+  for (const Mesh::Face_index f : united.faces()) {
+    Eigen::Vector3i t;
+    int k = 0;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(united.halfedge(f), united)) {
+      if (k < 3) t(k) = index[v];
+      ++k;
+    }
+    if (k == 3) triangles.push_back(t);
+  }
+  return MakeTriangleMesh(vertices, triangles);
+}
+
 }  // namespace
 
 HoleFilling FillHoles(const TriangleMesh& mesh) {
@@ -100,9 +133,13 @@ HoleFilling FillHoles(const TriangleMesh& mesh) {
       apexes.push_back(point(h->apex));
     }
     std::vector<CGAL::Triple<int, int, int>> patch;
-    PMP::triangulate_hole_polyline(
-        points, apexes, std::back_inserter(patch),
-        CGAL::parameters::use_2d_constrained_delaunay_triangulation(true));
+    try {
+      PMP::triangulate_hole_polyline(
+          points, apexes, std::back_inserter(patch),
+          CGAL::parameters::use_2d_constrained_delaunay_triangulation(true));
+    } catch (const CGAL::Failure_exception&) {
+      patch.clear();  // A precondition CGAL checks on odd loops: the hole stays open.
+    }
     if (patch.empty()) {
       ++filling.failed;
       continue;
@@ -120,37 +157,14 @@ HoleFilling FillHoles(const TriangleMesh& mesh) {
 
 std::optional<TriangleMesh> UniteClosedShells(const TriangleMesh& mesh,
                                               const std::vector<std::vector<int>>& shells) {
-  using Mesh = CGAL::Surface_mesh<Epeck::Point_3>;
   if (shells.empty()) return std::nullopt;
-  Mesh united = ToSurfaceMesh<Epeck>(mesh, shells[0]);
-  if (!PMP::is_outward_oriented(united)) PMP::reverse_face_orientations(united);
-  for (size_t i = 1; i < shells.size(); ++i) {
-    Mesh next = ToSurfaceMesh<Epeck>(mesh, shells[i]);
-    if (!PMP::is_outward_oriented(next)) PMP::reverse_face_orientations(next);
-    Mesh result;
-    if (!PMP::corefine_and_compute_union(united, next, result)) return std::nullopt;
-    united = std::move(result);
+  try {
+    TriangleMesh united = Unite(mesh, shells);
+    if (united.triangles.rows() == 0) return std::nullopt;
+    return united;
+  } catch (const CGAL::Failure_exception&) {
+    return std::nullopt;  // CGAL refused the input (a precondition it checks): no union.
   }
-  united.collect_garbage();
-  std::vector<Eigen::Vector3d> vertices;
-  std::map<Mesh::Vertex_index, int> index;
-  for (const Mesh::Vertex_index v : united.vertices()) {
-    const Epeck::Point_3& p = united.point(v);
-    index[v] = static_cast<int>(vertices.size());
-    vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                          CGAL::to_double(p.z()));
-  }
-  std::vector<Eigen::Vector3i> triangles;
-  for (const Mesh::Face_index f : united.faces()) {
-    Eigen::Vector3i t;
-    int k = 0;
-    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(united.halfedge(f), united)) {
-      if (k < 3) t(k) = index[v];
-      ++k;
-    }
-    if (k == 3) triangles.push_back(t);
-  }
-  return MakeTriangleMesh(vertices, triangles);
 }
 
 }  // namespace acdplan::acd::internal

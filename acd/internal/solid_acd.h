@@ -10,6 +10,10 @@ namespace acdplan::acd::internal {
 /// Splits every part of `prepared` (prepared.solid() holds) into closed pieces whose concavity
 /// is at most `tau` [units]. Fills components, openings (the cut polygons two pieces share),
 /// tree, roots and stats (stats.surface = false; time_ms is left to the caller).
-Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau);
+/// `max_hulls` > 0 caps the components (Decompose3dOptions::max_hulls): the hierarchy is
+/// collapsed back up, the node whose piece's hull adds the least volume over its children's
+/// first, so a merged component is an exact piece of the decomposition (its own cut's caps
+/// never appear); merged components may exceed tau.
+Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max_hulls = 0);
 
 }  // namespace acdplan::acd::internal

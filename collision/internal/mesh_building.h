@@ -1,9 +1,8 @@
 #pragma once
-// Triangle meshes for the collision module: prisms from polygons, connected
-// components, closedness. Internal.
+// Prisms from polygons for the collision module (2D obstacles and robots as solids). Internal;
+// cleaning, parts and closedness of 3D meshes are acd::PrepareMesh()'s.
 
 #include <Eigen/Core>
-#include <vector>
 
 #include "acd/polygon2d.h"
 #include "acd/triangle_mesh.h"
@@ -17,19 +16,5 @@ acd::TriangleMesh ExtrudePolygon(const acd::Polygon2d& polygon, double z0, doubl
 /// The convex prism over the counter-clockwise convex ring `hull`, z in [z0, z1]; caps are
 /// fans; faces CCW seen from outside.
 acd::TriangleMesh ExtrudeConvexRing(const acd::Ring2d& hull, double z0, double z1);
-
-/// `mesh` with vertices at identical positions merged (exact comparison) and triangles that
-/// collapse to fewer than three distinct vertices dropped. Mesh files split a vertex wherever
-/// its normal or texture coordinate changes; for geometry those copies are one vertex.
-acd::TriangleMesh WeldVertices(const acd::TriangleMesh& mesh);
-
-/// The connected components of `mesh` (triangles sharing a vertex), each with its own
-/// compacted vertex list, in order of their first triangle.
-std::vector<acd::TriangleMesh> ConnectedComponents(const acd::TriangleMesh& mesh);
-
-/// True if every edge of `mesh` is shared by exactly two triangles (a closed surface, so
-/// inside and outside are defined by ray parity). `bad_edges` receives the number of edges
-/// with one or more than two triangles.
-bool IsClosedMesh(const acd::TriangleMesh& mesh, int* bad_edges = nullptr);
 
 }  // namespace acdplan::collision::internal

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <string>
 
+#include "acd/prepare_mesh.h"
 #include "base/input_error.h"
-#include "collision/internal/mesh_building.h"
 
 namespace acdplan::collision::internal {
 namespace {
@@ -133,12 +133,10 @@ ExactObstacleLocator::ExactObstacleLocator(const ObstacleSet& obstacles, bool sk
         ++skipped_open_;
         continue;
       }
-      int bad = 0;
-      IsClosedMesh(piece.solid, &bad);
       throw InputError(
           "PointLocator(): exact point location needs closed obstacle meshes: obstacle " +
-          std::to_string(piece.obstacle) + " (connected component " + std::to_string(i) +
-          ") is open: " + std::to_string(bad) + " edges are not shared by exactly two triangles");
+          std::to_string(piece.obstacle) + " (part " + std::to_string(i) +
+          ") is open: " + acd::PrepareMesh(piece.solid).defects.first);
     }
     pieces_.emplace_back(piece.solid);
     piece_obstacle_.push_back(piece.obstacle);

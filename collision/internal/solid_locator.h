@@ -39,7 +39,8 @@ class PolygonLocator2d {
 /// construction (the tree is built eagerly).
 class MeshLocator3d {
  public:
-  /// Requires IsClosedMesh(mesh).
+  /// Requires a closed mesh (every edge on two triangles): a part of acd::PrepareMesh() that
+  /// PreparedMesh::closed_parts marks.
   explicit MeshLocator3d(const acd::TriangleMesh& mesh);
   ~MeshLocator3d();
   MeshLocator3d(MeshLocator3d&&) noexcept;
@@ -54,13 +55,14 @@ class MeshLocator3d {
 };
 
 /// Exact point location over a whole ObstacleSet: 2D one PolygonLocator2d per obstacle polygon;
-/// 3D one MeshLocator3d per piece (connected component), a point being inside obstacle k when
-/// an odd number of k's pieces contain it (so nested shells bound cavities, as ray parity on
-/// the whole mesh would say).
+/// 3D one MeshLocator3d per piece (a part of acd::PrepareMesh(): a solid with its cavities, or
+/// a closed surface patch), a point being inside obstacle k when an odd number of k's pieces
+/// contain it (as ray parity on the whole mesh would say).
 class ExactObstacleLocator {
  public:
   /// `skip_open`: 3D pieces that are not closed are left out (the collision world's containment
-  /// test); otherwise an open piece throws InputError naming it (point location).
+  /// test); otherwise such a piece throws InputError naming it and its first defect (point
+  /// location).
   ExactObstacleLocator(const ObstacleSet& obstacles, bool skip_open);
   bool Inside(const Eigen::Vector3d& p) const;
   int skipped_open_pieces() const { return skipped_open_; }

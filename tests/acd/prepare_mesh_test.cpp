@@ -55,7 +55,8 @@ TriangleMesh WithoutTriangles(const TriangleMesh& mesh, const std::vector<int>& 
     }
   }
   out.triangles.resize(static_cast<Eigen::Index>(kept.size()), 3);
-  for (size_t i = 0; i < kept.size(); ++i) out.triangles.row(static_cast<Eigen::Index>(i)) = kept[i];
+  for (size_t i = 0; i < kept.size(); ++i)
+    out.triangles.row(static_cast<Eigen::Index>(i)) = kept[i];
   return out;
 }
 
@@ -109,6 +110,7 @@ TEST(PrepareMeshTest, CubeIsOneSolidPartUnchanged) {
   EXPECT_EQ(prepared.mesh.triangles, cube.triangles);
   ASSERT_EQ(prepared.parts.size(), 1u);
   EXPECT_DOUBLE_EQ(MeshVolume(prepared.parts[0]), 8.0);
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{true});
   EXPECT_TRUE(HasNote(prepared, "found 1 solid part"));
   EXPECT_FALSE(HasNote(prepared, "merged"));
   EXPECT_FALSE(HasNote(prepared, "reoriented"));
@@ -179,9 +181,9 @@ TEST(PrepareMeshTest, OrientsAFarThinSlabOutward) {
 
 TEST(PrepareMeshTest, DropsDegenerateAndDuplicateFaces) {
   TriangleMesh cube = AppendVertex(Cube(2), Eigen::Vector3d(0, -1, -1));  // Midpoint of 0-1.
-  cube = AppendTriangle(cube, Eigen::Vector3i(0, 8, 1));                   // Collinear.
-  cube = AppendTriangle(cube, Eigen::Vector3i(2, 2, 3));                   // Repeated index.
-  cube = AppendTriangle(cube, Eigen::Vector3i(3, 2, 1));                   // Face 1 reversed.
+  cube = AppendTriangle(cube, Eigen::Vector3i(0, 8, 1));                  // Collinear.
+  cube = AppendTriangle(cube, Eigen::Vector3i(2, 2, 3));                  // Repeated index.
+  cube = AppendTriangle(cube, Eigen::Vector3i(3, 2, 1));                  // Face 1 reversed.
   const PreparedMesh prepared = PrepareMesh(cube);
   EXPECT_TRUE(prepared.solid());
   EXPECT_EQ(prepared.mesh.triangles.rows(), 12);
@@ -219,6 +221,7 @@ TEST(PrepareMeshTest, OpenBoxHasBoundaryEdgesAndIsNotSolid) {
             "edge 4-5 at (0, -1, 1) has 1 face (a solid's edges have exactly 2)");
   ASSERT_EQ(prepared.parts.size(), 1u);  // One surface patch.
   EXPECT_EQ(prepared.parts[0].triangles.rows(), 10);
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{false});
   EXPECT_EQ(ErrorOf([&] { RequireSolid(prepared, "box.obj"); }),
             "box.obj: not a solid: edge 4-5 at (0, -1, 1) has 1 face (a solid's edges have "
             "exactly 2) (use --repair to close holes and remove self-intersections, or "
@@ -285,7 +288,8 @@ TEST(PrepareMeshTest, InterpenetratingCubesSelfIntersectAndRepairUnitesThem) {
   EXPECT_GT(prepared.defects.self_intersections, 0);
   EXPECT_THAT(prepared.defects.first, HasSubstr(" intersect at ("));
   EXPECT_THAT(prepared.defects.first, HasSubstr("(a solid's surface does not cross itself)"));
-  EXPECT_EQ(prepared.parts.size(), 2u);  // The two surfaces, as patches.
+  EXPECT_EQ(prepared.parts.size(), 2u);  // The two surfaces, as patches, each closed.
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>({true, true}));
 
   const PreparedMesh repaired = PrepareMesh(pair, Repair());
   ASSERT_TRUE(repaired.solid()) << repaired.defects.first;
@@ -331,8 +335,7 @@ TEST(PrepareMeshTest, BoxWithACavityIsOnePartOfTwoShells) {
 }
 
 TEST(PrepareMeshTest, AnIslandInACavityIsASecondPart) {
-  const TriangleMesh shells =
-      Join(Join(Cube(8), CubeAt(4, {0, 0, 0})), CubeAt(2, {0, 0, 0}));
+  const TriangleMesh shells = Join(Join(Cube(8), CubeAt(4, {0, 0, 0})), CubeAt(2, {0, 0, 0}));
   const PreparedMesh prepared = PrepareMesh(shells);
   EXPECT_TRUE(prepared.solid());
   ASSERT_EQ(prepared.parts.size(), 2u);
@@ -349,6 +352,54 @@ TEST(PrepareMeshTest, ResultDoesNotDependOnTriangleOrder) {
   ASSERT_TRUE(b.solid());
   EXPECT_EQ(a.parts.size(), b.parts.size());
   EXPECT_DOUBLE_EQ(MeshVolume(a.mesh), MeshVolume(b.mesh));
+}
+
+TEST(PrepareMeshTest, AMoebiusBandIsAnOpenPatchAndRepairDoesNotCrash) {
+  // 12 quads around a circle with a half twist: one boundary loop of 24 edges, not orientable.
+  const int n = 12;
+  std::vector<Eigen::Vector3d> v;
+  std::vector<Eigen::Vector3i> t;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    const Eigen::Vector3d centre(3 * std::cos(a), 3 * std::sin(a), 0);
+    const Eigen::Vector3d across = std::cos(a / 2) * Eigen::Vector3d(std::cos(a), std::sin(a), 0) +
+                                   std::sin(a / 2) * Eigen::Vector3d::UnitZ();
+    v.push_back(centre + across);
+    v.push_back(centre - across);
+  }
+  for (int i = 0; i < n; ++i) {
+    const int a = 2 * i, b = 2 * i + 1;
+    // The last quad meets the first with its sides swapped: the half twist.
+    const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    t.emplace_back(a, b, d);
+    t.emplace_back(a, d, c);
+  }
+  const TriangleMesh band = MakeTriangleMesh(v, t);
+  const PreparedMesh prepared = PrepareMesh(band);
+  EXPECT_FALSE(prepared.solid());
+  EXPECT_EQ(prepared.defects.boundary_edges, 2 * n);
+  ASSERT_EQ(prepared.parts.size(), 1u);
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{false});
+  PreparedMesh repaired;
+  ASSERT_NO_THROW(repaired = PrepareMesh(band, Repair()));
+  EXPECT_FALSE(repaired.parts.empty());
+}
+
+TEST(PrepareMeshTest, RepairLeavesAShellThatCrossesItself) {
+  // teddy.obj is closed and manifold, but one shell crosses itself in 6 pairs of faces: the
+  // union cannot mend that, and autorefinement is not used.
+  const TriangleMesh teddy =
+      envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/teddy.obj");
+  const PreparedMesh prepared = PrepareMesh(teddy, Repair(), "teddy.obj");
+  EXPECT_FALSE(prepared.solid());
+  EXPECT_EQ(prepared.defects.boundary_edges, 0);
+  EXPECT_EQ(prepared.defects.non_manifold_edges, 0);
+  EXPECT_EQ(prepared.defects.self_intersections, 6);
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{true});
+  EXPECT_TRUE(HasNote(prepared, "repair: left 1 shell that crosses itself (first: faces "));
+  EXPECT_TRUE(HasNote(prepared, "repair: still not a solid: faces "));
+  EXPECT_THAT(ErrorOf([&] { RequireSolid(prepared, "teddy.obj"); }),
+              HasSubstr("teddy.obj: not a solid: faces "));
 }
 
 TEST(ReferenceRadiusTest, CubeOfSideTwoHasRadiusSqrtThree) {

@@ -122,8 +122,8 @@ TEST(PointLocator3d, ExactRefusesAnOpenMesh) {
   } catch (const acdplan::InputError& e) {
     EXPECT_STREQ(e.what(),
                  "PointLocator(): exact point location needs closed obstacle meshes: obstacle 0 "
-                 "(connected component 0) is open: 4 edges are not shared by exactly two "
-                 "triangles");
+                 "(part 0) is open: edge 1-3 at (1, 0, -1) has 1 face (a solid's edges have "
+                 "exactly 2)");
   }
   // The hull locator needs no inside, so it accepts the open mesh.
   const PointLocator hulls(set, LocateMethod::kHulls);

@@ -1,0 +1,204 @@
+#include "acd/internal/cut_plane.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <tuple>
+#include <utility>
+
+#include "acd/internal/canonical_hull.h"
+#include "acd/mesh_measures.h"
+
+namespace acdplan::acd::internal {
+namespace {
+
+// Adds the plane through `point` with normal `normal` unless it is (nearly) one already listed.
+void AddCandidate(const Eigen::Vector3d& normal, const Eigen::Vector3d& point,
+                  std::vector<Plane3d>* out) {
+  const double len = normal.norm();
+  if (!(len > 1e-12)) return;
+  Eigen::Vector3d n = normal / len;
+  // One sign per direction, so a plane and its opposite are one candidate.
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(n(k)) > 1e-12) {
+      if (n(k) < 0) n = -n;
+      break;
+    }
+  }
+  for (const Plane3d& p : *out) {
+    if (std::abs(p.normal.dot(n)) > 1 - 1e-6) return;
+  }
+  out->push_back({n, n.dot(point)});
+}
+
+struct SideScore {
+  bool valid = false;
+  double concavity = 0.0;    // the largest over the side's pieces
+  double hull_volume = 0.0;  // summed over the side's pieces
+};
+
+// The cheap score of one hulled point set: its hull's volume and the hull-plane depth of its
+// vertices (`count` first points; the rest are section points).
+void ScorePiece(const std::vector<Eigen::Vector3d>& points, size_t count, SideScore* score) {
+  if (points.size() < 4) return;
+  const CanonicalHull hull = MakeCanonicalHull(points);
+  if (hull.mesh.triangles.rows() < 4 || hull.planes.rows() < 4) return;
+  const double volume = MeshVolume(hull.mesh);
+  if (!(volume > 0)) return;
+  score->hull_volume += volume;
+  const Eigen::Matrix<double, Eigen::Dynamic, 4>& planes = hull.planes;
+  for (size_t i = 0; i < count; ++i) {
+    double d = 1e300;
+    for (Eigen::Index j = 0; j < planes.rows(); ++j) {
+      d = std::min(d, planes(j, 3) - planes.row(j).head<3>().dot(points[i]));
+    }
+    score->concavity = std::max(score->concavity, d);
+  }
+}
+
+// The side `sign` (-1 below, +1 above) of `mesh` cut where the vertices have signed heights
+// `s`: its pieces (vertices joined by edges that do not run in the plane, so two posts of a U
+// cut at their base are two pieces), each hulled with the points where its edges cross.
+SideScore ScoreSide(const TriangleMesh& mesh, const Eigen::VectorXd& s, int sign, double tol) {
+  const Eigen::Index n = mesh.vertices.rows();
+  auto side = [&](Eigen::Index i) { return s(i) > tol ? 1 : (s(i) < -tol ? -1 : 0); };
+  std::vector<int> parent(static_cast<size_t>(n));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[static_cast<size_t>(x)] != x) {
+      x = parent[static_cast<size_t>(x)] =
+          parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
+    }
+    return x;
+  };
+  std::vector<char> joined(static_cast<size_t>(n), 0);     // an in-plane vertex on one of its edges
+  std::vector<std::pair<int, Eigen::Vector3d>> crossings;  // (vertex on this side, point)
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.triangles(f, k), b = mesh.triangles(f, (k + 1) % 3);
+      if (a > b) continue;  // each edge once (its other face lists it the other way)
+      const int sa = side(a), sb = side(b);
+      if ((sa == sign && sb != -sign) || (sb == sign && sa != -sign)) {
+        joined[static_cast<size_t>(a)] = joined[static_cast<size_t>(b)] = 1;
+        const int ra = find(a), rb = find(b);
+        if (ra != rb) parent[static_cast<size_t>(std::max(ra, rb))] = std::min(ra, rb);
+      } else if (sa * sb < 0) {
+        const double t = s(a) / (s(a) - s(b));
+        crossings.emplace_back(sa == sign ? a : b,
+                               mesh.vertices.row(a).transpose() +
+                                   t * (mesh.vertices.row(b) - mesh.vertices.row(a)).transpose());
+      }
+    }
+  }
+  std::map<int, std::vector<Eigen::Vector3d>> vertices, section;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const int si = side(i);
+    if (si == sign) {
+      vertices[find(static_cast<int>(i))].emplace_back(mesh.vertices.row(i));
+    } else if (si == 0 && joined[static_cast<size_t>(i)]) {
+      section[find(static_cast<int>(i))].emplace_back(mesh.vertices.row(i));
+    }
+  }
+  for (const auto& [v, p] : crossings) section[find(v)].push_back(p);
+  SideScore score;
+  if (vertices.empty()) return score;
+  for (auto& [root, pts] : vertices) {
+    const size_t count = pts.size();
+    const auto it = section.find(root);
+    if (it != section.end()) pts.insert(pts.end(), it->second.begin(), it->second.end());
+    ScorePiece(pts, count, &score);
+  }
+  score.valid = score.hull_volume > 0;
+  return score;
+}
+
+}  // namespace
+
+std::vector<Plane3d> RankCutPlanes(const TriangleMesh& mesh, const SolidConcavity& concavity,
+                                   double tau) {
+  const Eigen::Vector3d w = concavity.witness;
+  std::vector<Plane3d> candidates;
+  std::vector<Eigen::Vector3d> pca, bisectors;
+  // The pocket's principal planes (Eq. 5.3: the least-squares plane is the smallest one).
+  if (!concavity.pocket_faces.empty()) {
+    std::vector<int> verts;
+    for (int f : concavity.pocket_faces) {
+      for (int k = 0; k < 3; ++k) verts.push_back(mesh.triangles(f, k));
+    }
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (int v : verts) mean += mesh.vertices.row(v).transpose();
+    mean /= static_cast<double>(verts.size());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (int v : verts) {
+      const Eigen::Vector3d d = mesh.vertices.row(v).transpose() - mean;
+      cov += d * d.transpose();
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+    for (int k = 0; k < 3; ++k) pca.push_back(eig.eigenvectors().col(k));
+  }
+  // The faces at the witness and the dihedral bisectors of its edges.
+  auto face_normal = [&](int f) {
+    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0));
+    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1));
+    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2));
+    return Eigen::Vector3d((b - a).cross(c - a).normalized());
+  };
+  if (concavity.witness_vertex >= 0) {
+    std::map<std::pair<int, int>, std::vector<int>> edges;  // edge at the witness -> faces
+    for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+      for (int k = 0; k < 3; ++k) {
+        if (mesh.triangles(f, k) != concavity.witness_vertex) continue;
+        AddCandidate(face_normal(static_cast<int>(f)), w, &candidates);
+        for (int other : {mesh.triangles(f, (k + 1) % 3), mesh.triangles(f, (k + 2) % 3)}) {
+          edges[{std::min(other, concavity.witness_vertex),
+                 std::max(other, concavity.witness_vertex)}]
+              .push_back(static_cast<int>(f));
+        }
+      }
+    }
+    for (const auto& [edge, faces] : edges) {
+      if (faces.size() != 2) continue;
+      const Eigen::Vector3d n1 = face_normal(faces[0]), n2 = face_normal(faces[1]);
+      if (n1.dot(n2) > 1 - 1e-6) continue;  // flat: no dihedral to bisect
+      bisectors.push_back(n1 - n2);
+      bisectors.push_back(n1 + n2);
+    }
+  } else if (concavity.witness_face >= 0) {
+    AddCandidate(face_normal(concavity.witness_face), w, &candidates);
+  }
+  // On ties the first listed wins: a notch's own walls extended, then the axes, then the fits.
+  for (int k = 0; k < 3; ++k) AddCandidate(Eigen::Vector3d::Unit(k), w, &candidates);
+  for (const auto& n : pca) AddCandidate(n, w, &candidates);
+  for (const auto& n : bisectors) AddCandidate(n, w, &candidates);
+
+  const double scale = BoundingBox(mesh).diagonal().norm();
+  const double tol = 1e-9 * scale;
+  const double bin = tau > 0 ? tau / 4 : scale * 1e-3;
+  const double volume_unit = std::max(1e-9 * concavity.hull_volume, 1e-300);
+  std::vector<std::tuple<long long, long long, int>> keys;
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    const Plane3d& plane = candidates[c];
+    const Eigen::Index n = mesh.vertices.rows();
+    Eigen::VectorXd s(n);
+    for (Eigen::Index i = 0; i < n; ++i)
+      s(i) = plane.normal.dot(mesh.vertices.row(i).transpose()) - plane.offset;
+    const SideScore lo = ScoreSide(mesh, s, -1, tol), hi = ScoreSide(mesh, s, 1, tol);
+    if (!lo.valid || !hi.valid) continue;
+    const double worst = std::max(lo.concavity, hi.concavity);
+    const long long level =
+        worst <= tau ? 0 : 1 + static_cast<long long>(std::floor((worst - tau) / bin));
+    // Volumes equal to rounding are ties.
+    keys.emplace_back(level, std::llround((lo.hull_volume + hi.hull_volume) / volume_unit),
+                      static_cast<int>(c));
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<Plane3d> ranked;
+  for (const auto& key : keys) ranked.push_back(candidates[static_cast<size_t>(std::get<2>(key))]);
+  return ranked;
+}
+
+}  // namespace acdplan::acd::internal

@@ -1,0 +1,504 @@
+#include "acd/internal/exact_plane_split.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <list>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+#include <utility>
+
+namespace acdplan::acd::internal {
+namespace {
+
+using FT = ExactKernel::FT;
+using Point3 = ExactKernel::Point_3;
+using Tri = std::array<int, 3>;
+
+struct FaceInfo {
+  int nesting = -1;
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, ExactKernel>;
+using Fbi = CGAL::Triangulation_face_base_with_info_2<FaceInfo, ExactKernel>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<ExactKernel, Fbi>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+// Section loops of a valid solid meet at most in vertices; the exact tag keeps the
+// triangulation valid even if rounding-free inputs were to make two of them cross.
+using Cdt =
+    CGAL::Constrained_Delaunay_triangulation_2<ExactKernel, Tds, CGAL::Exact_intersections_tag>;
+
+struct UnionFind {
+  explicit UnionFind(int n) : parent(static_cast<size_t>(n)) {
+    std::iota(parent.begin(), parent.end(), 0);
+  }
+  int Find(int x) {
+    while (parent[static_cast<size_t>(x)] != x) {
+      parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
+      x = parent[static_cast<size_t>(x)];
+    }
+    return x;
+  }
+  void Unite(int a, int b) {
+    a = Find(a);
+    b = Find(b);
+    if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
+  }
+  std::vector<int> parent;
+};
+
+// Labels each triangle with its shell (edge-connected set), numbered by smallest triangle.
+// Only edges with exactly two faces join: two lobes touching along an edge (a cut through
+// the edge where they meet) stay apart.
+std::vector<int> ShellLabels(const std::vector<Tri>& triangles, int* count) {
+  const int n = static_cast<int>(triangles.size());
+  UnionFind uf(n);
+  std::map<std::pair<int, int>, std::vector<int>> edge_faces;
+  for (int f = 0; f < n; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      int a = triangles[static_cast<size_t>(f)][static_cast<size_t>(k)];
+      int b = triangles[static_cast<size_t>(f)][static_cast<size_t>((k + 1) % 3)];
+      if (a > b) std::swap(a, b);
+      edge_faces[{a, b}].push_back(f);
+    }
+  }
+  for (const auto& [edge, faces] : edge_faces) {
+    if (faces.size() == 2) uf.Unite(faces[0], faces[1]);
+  }
+  std::vector<int> label(static_cast<size_t>(n), -1);
+  std::map<int, int> root_label;
+  for (int f = 0; f < n; ++f) {
+    const int r = uf.Find(f);
+    auto [it, inserted] = root_label.emplace(r, static_cast<int>(root_label.size()));
+    label[static_cast<size_t>(f)] = it->second;
+  }
+  *count = static_cast<int>(root_label.size());
+  return label;
+}
+
+// The piece made of `triangles` over `points`, with only the vertices it uses.
+ExactPiece Compact(const std::vector<Point3>& points, const std::vector<Eigen::Vector3d>& rounded,
+                   const std::vector<Tri>& triangles) {
+  ExactPiece out;
+  std::vector<int> index(points.size(), -1);
+  out.triangles.reserve(triangles.size());
+  for (const Tri& t : triangles) {
+    Tri u;
+    for (int k = 0; k < 3; ++k) {
+      int& slot = index[static_cast<size_t>(t[static_cast<size_t>(k)])];
+      if (slot < 0) {
+        slot = static_cast<int>(out.points.size());
+        out.points.push_back(points[static_cast<size_t>(t[static_cast<size_t>(k)])]);
+        out.rounded.push_back(rounded[static_cast<size_t>(t[static_cast<size_t>(k)])]);
+      }
+      u[static_cast<size_t>(k)] = slot;
+    }
+    out.triangles.push_back(u);
+  }
+  return out;
+}
+
+// Gives each extra fan of faces around a vertex its own copy of the vertex, so a solid that
+// touches itself in a vertex (a plane tangent there) has a manifold surface.
+void SplitPinchedVertices(ExactPiece* piece) {
+  std::vector<std::vector<std::pair<int, int>>> corners(piece->points.size());  // (face, k)
+  for (size_t f = 0; f < piece->triangles.size(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      corners[static_cast<size_t>(piece->triangles[f][static_cast<size_t>(k)])].emplace_back(
+          static_cast<int>(f), k);
+    }
+  }
+  const size_t original = piece->points.size();
+  for (size_t v = 0; v < original; ++v) {
+    const auto& around = corners[v];
+    if (around.size() < 2) continue;
+    // Faces around v are joined when they share an edge at v (the same other endpoint).
+    UnionFind uf(static_cast<int>(around.size()));
+    std::map<int, int> by_neighbour;
+    for (size_t i = 0; i < around.size(); ++i) {
+      const Tri& t = piece->triangles[static_cast<size_t>(around[i].first)];
+      for (int step : {1, 2}) {
+        const int other = t[static_cast<size_t>((around[i].second + step) % 3)];
+        auto [it, inserted] = by_neighbour.emplace(other, static_cast<int>(i));
+        if (!inserted) uf.Unite(static_cast<int>(i), it->second);
+      }
+    }
+    std::map<int, int> copy;  // fan root -> vertex index
+    for (size_t i = 0; i < around.size(); ++i) {
+      const int root = uf.Find(static_cast<int>(i));
+      auto [it, inserted] = copy.emplace(root, static_cast<int>(v));
+      if (inserted && root != uf.Find(0)) {
+        it->second = static_cast<int>(piece->points.size());
+        piece->points.push_back(piece->points[v]);
+        piece->rounded.push_back(piece->rounded[v]);
+      }
+      piece
+          ->triangles[static_cast<size_t>(around[i].first)][static_cast<size_t>(around[i].second)] =
+          it->second;
+    }
+  }
+}
+
+Eigen::Vector3d Approx(const Point3& p) {
+  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+}
+
+FT Coordinate(const Point3& p, int axis) { return axis == 0 ? p.x() : (axis == 1 ? p.y() : p.z()); }
+
+// The cap closing `below`'s section: the region bounded by the boundary edges of `below`
+// (all in `plane`), triangulated with outward normal +n (seen from `below`).
+std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Plane_3& plane,
+                            std::vector<Point3>* points, std::vector<Eigen::Vector3d>* rounded) {
+  std::map<std::pair<int, int>, int> net;  // +1 per a->b with a < b, -1 per b->a
+  for (const Tri& t : below) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[static_cast<size_t>(k)], b = t[static_cast<size_t>((k + 1) % 3)];
+      if (a < b) {
+        ++net[{a, b}];
+      } else {
+        --net[{b, a}];
+      }
+    }
+  }
+  std::vector<std::pair<int, int>> border;
+  for (const auto& [edge, count] : net) {
+    if (count != 0) border.push_back(edge);
+  }
+  if (border.empty()) return {};
+  // Project by dropping the coordinate the normal is largest along (exact: a coordinate copy);
+  // cyclic order of the kept axes makes counter-clockwise mean a +axis normal.
+  const std::array<FT, 3> coef = {plane.a(), plane.b(), plane.c()};
+  int drop = 0;
+  double best = -1;
+  for (int k = 0; k < 3; ++k) {
+    const double c = std::abs(CGAL::to_double(coef[static_cast<size_t>(k)]));
+    if (c > best) best = c, drop = k;
+  }
+  const int u_axis = (drop + 1) % 3, v_axis = (drop + 2) % 3;
+  Cdt cdt;
+  std::map<int, Cdt::Vertex_handle> handle;
+  auto insert = [&](int id) {
+    auto it = handle.find(id);
+    if (it != handle.end()) return it->second;
+    const Point3& p = (*points)[static_cast<size_t>(id)];
+    Cdt::Vertex_handle vh =
+        cdt.insert(ExactKernel::Point_2(Coordinate(p, u_axis), Coordinate(p, v_axis)));
+    vh->info() = id;
+    handle.emplace(id, vh);
+    return vh;
+  };
+  for (const auto& [a, b] : border) {
+    Cdt::Vertex_handle va = insert(a), vb = insert(b);
+    if (va != vb) cdt.insert_constraint(va, vb);
+  }
+  // Nesting levels from the infinite face (the CGAL polygon-with-holes recipe): faces at odd
+  // levels are inside the section.
+  for (auto f : cdt.all_face_handles()) f->info().nesting = -1;
+  std::list<Cdt::Edge> frontier;
+  auto flood = [&](Cdt::Face_handle start, int level) {
+    if (start->info().nesting != -1) return;
+    std::list<Cdt::Face_handle> queue{start};
+    while (!queue.empty()) {
+      Cdt::Face_handle f = queue.front();
+      queue.pop_front();
+      if (f->info().nesting != -1) continue;
+      f->info().nesting = level;
+      for (int i = 0; i < 3; ++i) {
+        Cdt::Face_handle n = f->neighbor(i);
+        if (n->info().nesting != -1) continue;
+        if (cdt.is_constrained(Cdt::Edge(f, i))) {
+          frontier.emplace_back(f, i);
+        } else {
+          queue.push_back(n);
+        }
+      }
+    }
+  };
+  flood(cdt.infinite_face(), 0);
+  while (!frontier.empty()) {
+    const Cdt::Edge e = frontier.front();
+    frontier.pop_front();
+    Cdt::Face_handle n = e.first->neighbor(e.second);
+    if (n->info().nesting == -1) flood(n, e.first->info().nesting + 1);
+  }
+  const bool flip = CGAL::is_negative(coef[static_cast<size_t>(drop)]);
+  std::vector<Tri> cap;
+  for (auto f : cdt.finite_face_handles()) {
+    if (f->info().nesting % 2 != 1) continue;
+    Tri t;
+    for (int i = 0; i < 3; ++i) {
+      Cdt::Vertex_handle vh = f->vertex(i);
+      if (vh->info() < 0) {  // a crossing of two constraints: lift it back onto the plane
+        const FT u = vh->point().x(), v = vh->point().y();
+        std::array<FT, 3> xyz;
+        xyz[static_cast<size_t>(u_axis)] = u;
+        xyz[static_cast<size_t>(v_axis)] = v;
+        xyz[static_cast<size_t>(drop)] = -(coef[static_cast<size_t>(u_axis)] * u +
+                                           coef[static_cast<size_t>(v_axis)] * v + plane.d()) /
+                                         coef[static_cast<size_t>(drop)];
+        vh->info() = static_cast<int>(points->size());
+        points->emplace_back(xyz[0], xyz[1], xyz[2]);
+        rounded->push_back(Approx(points->back()));
+      }
+      t[static_cast<size_t>(i)] = vh->info();
+    }
+    if (flip) std::swap(t[1], t[2]);
+    cap.push_back(t);
+  }
+  return cap;
+}
+
+// Whether `p` is inside the closed shell `triangles` (ray parity along a fixed, generic
+// direction; used only to give a cavity shell, disjoint from every other shell, its owner).
+bool InsideShell(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& v,
+                 const std::vector<Tri>& triangles) {
+  const Eigen::Vector3d dir =
+      Eigen::Vector3d(0.5773502691896258, 0.5773912345, 0.5772987654).normalized();
+  int crossings = 0;
+  for (const Tri& t : triangles) {
+    const Eigen::Vector3d& a = v[static_cast<size_t>(t[0])];
+    const Eigen::Vector3d e1 = v[static_cast<size_t>(t[1])] - a,
+                          e2 = v[static_cast<size_t>(t[2])] - a;
+    const Eigen::Vector3d h = dir.cross(e2);
+    const double det = e1.dot(h);
+    if (std::abs(det) < 1e-300) continue;
+    const Eigen::Vector3d s = p - a;
+    const double u = s.dot(h) / det;
+    if (u < 0 || u > 1) continue;
+    const Eigen::Vector3d q = s.cross(e1);
+    const double w = dir.dot(q) / det;
+    if (w < 0 || u + w > 1) continue;
+    if (e2.dot(q) / det > 0) ++crossings;
+  }
+  return crossings % 2 == 1;
+}
+
+}  // namespace
+
+ExactPiece ToExact(const TriangleMesh& mesh) {
+  ExactPiece piece;
+  piece.points.reserve(static_cast<size_t>(mesh.vertices.rows()));
+  for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
+    piece.points.emplace_back(mesh.vertices(i, 0), mesh.vertices(i, 1), mesh.vertices(i, 2));
+    piece.rounded.emplace_back(mesh.vertices.row(i));
+  }
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    piece.triangles.push_back({mesh.triangles(f, 0), mesh.triangles(f, 1), mesh.triangles(f, 2)});
+  }
+  return piece;
+}
+
+TriangleMesh ToDouble(const ExactPiece& piece) {
+  TriangleMesh mesh;
+  mesh.vertices.resize(static_cast<Eigen::Index>(piece.points.size()), 3);
+  for (size_t i = 0; i < piece.points.size(); ++i) {
+    mesh.vertices.row(static_cast<Eigen::Index>(i)) = piece.rounded[i].transpose();
+  }
+  mesh.triangles.resize(static_cast<Eigen::Index>(piece.triangles.size()), 3);
+  for (size_t f = 0; f < piece.triangles.size(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      mesh.triangles(static_cast<Eigen::Index>(f), k) = piece.triangles[f][static_cast<size_t>(k)];
+    }
+  }
+  return mesh;
+}
+
+void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, ExactPiece* below,
+                  ExactPiece* above) {
+  std::vector<Point3> points = piece.points;
+  std::vector<Eigen::Vector3d> rounded = piece.rounded;
+  std::vector<int> side(points.size());
+  // A vertex within kSnap of the plane (relative to the piece's size) counts as on it: a plane
+  // through a vertex of a mesh whose "zero" coordinates are 6e-17 would otherwise shave off
+  // pieces of volume 1e-18. Each vertex is classified once, so both halves and the cap agree
+  // on the topology; the cap is then planar to within kSnap. The rest is exact.
+  constexpr double kSnap = 1e-12;
+  Eigen::AlignedBox3d box;
+  for (const auto& r : rounded) box.extend(r);
+  const Eigen::Vector3d n(CGAL::to_double(plane.a()), CGAL::to_double(plane.b()),
+                          CGAL::to_double(plane.c()));
+  const double snap = kSnap * box.diagonal().norm() * n.norm();
+  const double offset = CGAL::to_double(plane.d());
+  for (size_t i = 0; i < points.size(); ++i) {
+    side[i] = std::abs(n.dot(rounded[i]) + offset) <= snap
+                  ? 0
+                  : static_cast<int>(plane.oriented_side(points[i]));
+  }
+  auto height = [&](int i) {
+    const Point3& p = points[static_cast<size_t>(i)];
+    return plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d();
+  };
+  std::map<std::pair<int, int>, int> crossing;  // edge (a < b) -> its exact intersection point
+  auto cross = [&](int a, int b) {
+    if (a > b) std::swap(a, b);
+    auto it = crossing.find({a, b});
+    if (it != crossing.end()) return it->second;
+    const FT ha = height(a), hb = height(b);
+    const FT t = ha / (ha - hb);
+    const Point3& p = points[static_cast<size_t>(a)];
+    const Point3& q = points[static_cast<size_t>(b)];
+    const int id = static_cast<int>(points.size());
+    points.emplace_back(p.x() + (q.x() - p.x()) * t, p.y() + (q.y() - p.y()) * t,
+                        p.z() + (q.z() - p.z()) * t);
+    rounded.push_back(Approx(points.back()));
+    side.push_back(0);
+    crossing.emplace(std::make_pair(a, b), id);
+    return id;
+  };
+  const ExactKernel::Vector_3 normal = plane.orthogonal_vector();
+  std::vector<Tri> lower, upper;
+  for (const Tri& t : piece.triangles) {
+    const int sa = side[static_cast<size_t>(t[0])], sb = side[static_cast<size_t>(t[1])],
+              sc = side[static_cast<size_t>(t[2])];
+    const int lo = std::min({sa, sb, sc}), hi = std::max({sa, sb, sc});
+    if (lo == 0 && hi == 0) {
+      // In the plane: it bounds the side its solid lies on (its outward normal points away).
+      const Point3& a = points[static_cast<size_t>(t[0])];
+      const auto n = CGAL::cross_product(points[static_cast<size_t>(t[1])] - a,
+                                         points[static_cast<size_t>(t[2])] - a);
+      (CGAL::is_positive(n * normal) ? lower : upper).push_back(t);
+      continue;
+    }
+    if (hi <= 0) {
+      lower.push_back(t);
+      continue;
+    }
+    if (lo >= 0) {
+      upper.push_back(t);
+      continue;
+    }
+    // The plane crosses the triangle: clip it into a convex polygon per side and fan it.
+    std::vector<int> neg, pos;
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[static_cast<size_t>(k)], b = t[static_cast<size_t>((k + 1) % 3)];
+      const int s = side[static_cast<size_t>(a)], s_next = side[static_cast<size_t>(b)];
+      if (s <= 0) neg.push_back(a);
+      if (s >= 0) pos.push_back(a);
+      if (s * s_next < 0) {
+        const int x = cross(a, b);
+        neg.push_back(x);
+        pos.push_back(x);
+      }
+    }
+    for (size_t i = 1; i + 1 < neg.size(); ++i) lower.push_back({neg[0], neg[i], neg[i + 1]});
+    for (size_t i = 1; i + 1 < pos.size(); ++i) upper.push_back({pos[0], pos[i], pos[i + 1]});
+  }
+  std::vector<Tri> cap = SectionCap(lower, plane, &points, &rounded);
+  for (const Tri& t : cap) {
+    lower.push_back(t);
+    upper.push_back({t[0], t[2], t[1]});
+  }
+  *below = Compact(points, rounded, lower);
+  *above = Compact(points, rounded, upper);
+}
+
+std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
+  int count = 0;
+  const std::vector<int> label = ShellLabels(piece.triangles, &count);
+  std::vector<std::vector<Tri>> shells(static_cast<size_t>(count));
+  for (size_t f = 0; f < piece.triangles.size(); ++f) {
+    shells[static_cast<size_t>(label[f])].push_back(piece.triangles[f]);
+  }
+  if (count == 1) {
+    ExactPiece out = piece;
+    SplitPinchedVertices(&out);
+    return {out};
+  }
+  const std::vector<Eigen::Vector3d>& v = piece.rounded;
+  std::vector<double> volume(static_cast<size_t>(count), 0.0);
+  for (int s = 0; s < count; ++s) {
+    const Eigen::Vector3d& o = v[static_cast<size_t>(shells[static_cast<size_t>(s)][0][0])];
+    for (const Tri& t : shells[static_cast<size_t>(s)]) {
+      volume[static_cast<size_t>(s)] +=
+          (v[static_cast<size_t>(t[0])] - o)
+              .dot((v[static_cast<size_t>(t[1])] - o).cross(v[static_cast<size_t>(t[2])] - o)) /
+          6.0;
+    }
+  }
+  // Each outer shell starts a solid; each cavity joins the smallest outer shell around it.
+  // A shell is a cavity only if clearly inward: a sliver's rounding-level volume is not.
+  double largest = 0;
+  for (double x : volume) largest = std::max(largest, std::abs(x));
+  for (double& x : volume) {
+    if (x < 0 && -x <= 1e-9 * largest) x = 0;
+  }
+  std::vector<int> owner(static_cast<size_t>(count), -1);
+  for (int s = 0; s < count; ++s) {
+    if (volume[static_cast<size_t>(s)] >= 0) owner[static_cast<size_t>(s)] = s;
+  }
+  for (int s = 0; s < count; ++s) {
+    if (owner[static_cast<size_t>(s)] >= 0) continue;
+    const Eigen::Vector3d& p = v[static_cast<size_t>(shells[static_cast<size_t>(s)][0][0])];
+    int best = -1;
+    for (int o = 0; o < count; ++o) {
+      if (volume[static_cast<size_t>(o)] < 0) continue;
+      if (best >= 0 && volume[static_cast<size_t>(o)] >= volume[static_cast<size_t>(best)])
+        continue;
+      if (InsideShell(p, v, shells[static_cast<size_t>(o)])) best = o;
+    }
+    owner[static_cast<size_t>(s)] = best < 0 ? s : best;
+  }
+  std::vector<ExactPiece> out;
+  for (int s = 0; s < count; ++s) {
+    if (owner[static_cast<size_t>(s)] != s) continue;
+    std::vector<Tri> tris;
+    for (int t = 0; t < count; ++t) {
+      if (owner[static_cast<size_t>(t)] == s) {
+        tris.insert(tris.end(), shells[static_cast<size_t>(t)].begin(),
+                    shells[static_cast<size_t>(t)].end());
+      }
+    }
+    out.push_back(Compact(piece.points, piece.rounded, tris));
+    SplitPinchedVertices(&out.back());
+  }
+  return out;
+}
+
+bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles) {
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(3 * triangles.size());
+  for (const Tri& t : triangles) {
+    for (int k = 0; k < 3; ++k) edges.emplace_back(t[static_cast<size_t>(k)], t[static_cast<size_t>((k + 1) % 3)]);
+  }
+  std::sort(edges.begin(), edges.end());
+  for (size_t i = 0; i < edges.size(); ++i) {
+    if (i + 1 < edges.size() && edges[i + 1] == edges[i]) return false;
+    if (!std::binary_search(edges.begin(), edges.end(), std::make_pair(edges[i].second, edges[i].first))) {
+      return false;
+    }
+  }
+  return true;
+}
+
+ShellTopology Topology(const std::vector<std::array<int, 3>>& triangles) {
+  int count = 0;
+  const std::vector<int> label = ShellLabels(triangles, &count);
+  std::vector<std::map<int, int>> vertices(static_cast<size_t>(count));
+  std::vector<std::map<std::pair<int, int>, int>> edges(static_cast<size_t>(count));
+  std::vector<int> faces(static_cast<size_t>(count), 0);
+  for (size_t f = 0; f < triangles.size(); ++f) {
+    const auto s = static_cast<size_t>(label[f]);
+    ++faces[s];
+    for (int k = 0; k < 3; ++k) {
+      int a = triangles[f][static_cast<size_t>(k)],
+          b = triangles[f][static_cast<size_t>((k + 1) % 3)];
+      vertices[s][a] = 1;
+      if (a > b) std::swap(a, b);
+      edges[s][{a, b}] = 1;
+    }
+  }
+  ShellTopology out;
+  out.shells = count;
+  for (size_t s = 0; s < static_cast<size_t>(count); ++s) {
+    const int chi =
+        static_cast<int>(vertices[s].size()) - static_cast<int>(edges[s].size()) + faces[s];
+    out.genus += std::max(0, (2 - chi) / 2);
+  }
+  return out;
+}
+
+}  // namespace acdplan::acd::internal

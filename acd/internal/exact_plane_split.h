@@ -1,0 +1,62 @@
+#pragma once
+// An exact plane splitter for closed triangle meshes (the solid ACD's cut, Sec. V.B.3).
+// Internal: include only from .cpp files of the acd library (it exposes CGAL's Epeck kernel).
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <array>
+#include <vector>
+
+#include "acd/triangle_mesh.h"
+
+namespace acdplan::acd::internal {
+
+using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
+
+/// A closed, outward-oriented triangle mesh with exact (Epeck) vertices: one or more shells
+/// (an outer shell and the cavity shells inside it). Repeated cuts stay exact: the guide's
+/// measurements show double-rounded clip chains break after two levels of oblique cuts.
+struct ExactPiece {
+  std::vector<ExactKernel::Point_3> points;
+  /// Each point rounded to doubles once, when it was made: a lazy exact number's
+  /// approximation tightens whenever a predicate forces its exact value, so rounding later
+  /// could give two pieces sharing a point two different doubles.
+  std::vector<Eigen::Vector3d> rounded;
+  std::vector<std::array<int, 3>> triangles;  ///< Counter-clockwise seen from outside.
+};
+
+/// The exact copy of `mesh`.
+ExactPiece ToExact(const TriangleMesh& mesh);
+
+/// `piece` with its rounded coordinates.
+TriangleMesh ToDouble(const ExactPiece& piece);
+
+/// The two closed halves of `piece` on either side of `plane`: `below` is the part on the
+/// negative side, `above` the part on the positive side; either may be empty. Vertices are
+/// classified with exact oriented_side, except that a vertex within 1e-12 of the piece's
+/// size of the plane counts as on it (no rounding-level slivers); crossing edges are split at their
+/// exact intersection points; faces lying in the plane go to the side their solid lies on. The
+/// section (one polygon with holes per loop nesting) is triangulated once by a constrained Delaunay
+/// triangulation in the plane and given to both halves, reversed for `above`, so the halves
+/// share an identical interface. O(n log n) for n triangles.
+void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, ExactPiece* below,
+                  ExactPiece* above);
+
+/// The connected solids of `piece`: its shells grouped by edge connectivity, each cavity shell
+/// (negative volume) given to the smallest outer shell that contains it. Ordered by their
+/// smallest triangle index, so the order is deterministic.
+std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece);
+
+/// Whether every directed edge of `triangles` is met by its reverse exactly once (closed,
+/// edge-manifold, consistently oriented).
+bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles);
+
+/// Shells of `mesh` (edge-connected triangle sets) and the sum of their genera,
+/// (2 - V + E - F) / 2 per shell.
+struct ShellTopology {
+  int shells = 0;
+  int genus = 0;
+};
+ShellTopology Topology(const std::vector<std::array<int, 3>>& triangles);
+
+}  // namespace acdplan::acd::internal

@@ -1,0 +1,279 @@
+#include "acd/internal/solid_acd.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <queue>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
+
+#include "acd/internal/canonical_hull.h"
+#include "acd/internal/cut_plane.h"
+#include "acd/internal/exact_plane_split.h"
+#include "acd/internal/solid_concavity.h"
+#include "acd/internal/solid_openings.h"
+#include "acd/mesh_measures.h"
+#include "base/input_error.h"
+
+namespace acdplan::acd::internal {
+namespace {
+
+// Safety cap on the pieces of one part (leaves plus pieces waiting to be cut), so that no input
+// runs away (a tau far below the mesh's detail); pieces still waiting when it is reached become
+// leaves as they are, and may exceed tau.
+constexpr int kMaxPiecesPerPart = 2048;
+
+struct Piece {
+  ExactPiece exact;
+  TriangleMesh mesh;  // the double copy: hulls, distances, volumes and scores
+  SolidConcavity concavity;
+  ShellTopology topology;
+  int node = -1;
+};
+
+Piece MakePiece(ExactPiece exact, double tau) {
+  Piece piece;
+  piece.exact = std::move(exact);
+  piece.mesh = ToDouble(piece.exact);
+  piece.concavity = MeasureSolidConcavity(piece.mesh, tau);
+  piece.topology = Topology(piece.exact.triangles);
+  return piece;
+}
+
+// A piece is final when it is tau-convex (Algorithm 1) and a single shell of genus 0: a handle
+// or a cavity is cut open even where it is shallow (Sec. V.C).
+bool IsFinal(const Piece& piece, double tau) {
+  return piece.concavity.value <= tau && piece.topology.genus == 0 && piece.topology.shells == 1;
+}
+
+Component3d MakeComponent(const Piece& piece, int source) {
+  Component3d c;
+  c.mesh = piece.mesh;
+  c.hull = piece.concavity.hull;
+  if (c.hull.triangles.rows() == 0) {
+    std::vector<Eigen::Vector3d> points;
+    for (Eigen::Index i = 0; i < c.mesh.vertices.rows(); ++i)
+      points.emplace_back(c.mesh.vertices.row(i));
+    c.hull = MakeCanonicalHull(points).mesh;
+  }
+  c.centroid = MeshCentroid(c.mesh, true);
+  c.volume = MeshVolume(c.mesh);
+  c.hull_volume = MeshVolume(c.hull);
+  c.concavity = piece.concavity.value;
+  c.source = source;
+  return c;
+}
+
+// The pieces `piece` falls into when cut by `plane` (each half split into its connected solids).
+std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane) {
+  const ExactKernel::Plane_3 exact(plane.normal.x(), plane.normal.y(), plane.normal.z(),
+                                   -plane.offset);
+  ExactPiece below, above;
+  SplitByPlane(piece, exact, &below, &above);
+  if (below.triangles.empty() || above.triangles.empty()) return {};
+  std::vector<ExactPiece> out = ConnectedSolids(below);
+  for (ExactPiece& p : ConnectedSolids(above)) out.push_back(std::move(p));
+  // A section the cap could not close cleanly (constraints that overlap or cross, which a
+  // valid solid's section should not have) rejects the plane rather than leak an open piece.
+  for (const ExactPiece& p : out) {
+    if (!IsClosedSurface(p.triangles)) return {};
+  }
+  return out;
+}
+
+// Algorithm 1 on part `source`: pieces wait in a max-heap by concavity (ties: creation order),
+// the most concave is resolved by one plane cut, its pieces are measured and pushed.
+void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_internal,
+                   Decomposition3d* out, std::map<int, Component3d>* leaves,
+                   std::map<int, Component3d>* internal_nodes) {
+  std::vector<Piece> pieces;
+  auto add_node = [&](Piece piece, int parent) {
+    HierarchyNode3d node;
+    node.concavity = piece.concavity.value;
+    node.witness = piece.concavity.witness;
+    node.parent = parent;
+    node.depth = parent < 0 ? 0 : out->tree[static_cast<size_t>(parent)].depth + 1;
+    piece.node = static_cast<int>(out->tree.size());
+    if (parent >= 0) out->tree[static_cast<size_t>(parent)].children.push_back(piece.node);
+    out->tree.push_back(node);
+    pieces.push_back(std::move(piece));
+    return static_cast<int>(pieces.size()) - 1;
+  };
+  const int root = add_node(MakePiece(ToExact(part), tau), -1);
+  out->roots.push_back(pieces[static_cast<size_t>(root)].node);
+  if (!(tau > 0) && pieces[static_cast<size_t>(root)].concavity.value > 0) {
+    std::ostringstream message;
+    message << "Decompose3d(): tau must be > 0 for a non-convex part (part " << source
+            << " has concavity " << pieces[static_cast<size_t>(root)].concavity.value << ")";
+    throw InputError(message.str());
+  }
+  using Key = std::tuple<double, int>;  // (concavity, -index): deepest first, then oldest
+  std::priority_queue<Key> heap;
+  int live = 1;  // leaves plus pieces waiting
+  auto settle = [&](int index) {
+    Piece& piece = pieces[static_cast<size_t>(index)];
+    if (IsFinal(piece, tau)) {
+      out->tree[static_cast<size_t>(piece.node)].component = -2;  // a leaf; numbered later
+      (*leaves)[piece.node] = MakeComponent(piece, source);
+      piece.exact = {};
+    } else {
+      heap.emplace(piece.concavity.value, -index);
+    }
+  };
+  settle(root);
+  while (!heap.empty()) {
+    const int index = -std::get<1>(heap.top());
+    heap.pop();
+    Piece& piece = pieces[static_cast<size_t>(index)];
+    std::vector<ExactPiece> parts;
+    Plane3d chosen;
+    if (live < kMaxPiecesPerPart) {
+      // The best-ranked plane that splits; for a handle, the best one that lowers the genus.
+      std::vector<ExactPiece> fallback;
+      Plane3d fallback_plane;
+      for (const Plane3d& plane : RankCutPlanes(piece.mesh, piece.concavity, tau)) {
+        std::vector<ExactPiece> result = Cut(piece.exact, plane);
+        if (result.size() < 2) continue;
+        if (piece.topology.genus == 0 && piece.topology.shells == 1) {
+          parts = std::move(result);
+          chosen = plane;
+          break;
+        }
+        int genus = 0, shells = 0;
+        for (const ExactPiece& p : result) {
+          const ShellTopology t = Topology(p.triangles);
+          genus += t.genus;
+          shells += t.shells - 1;
+        }
+        if (genus < piece.topology.genus ||
+            (genus == piece.topology.genus && shells < piece.topology.shells - 1)) {
+          parts = std::move(result);
+          chosen = plane;
+          break;
+        }
+        if (fallback.empty()) fallback = std::move(result), fallback_plane = plane;
+      }
+      if (parts.empty() && !fallback.empty()) parts = std::move(fallback), chosen = fallback_plane;
+    }
+    if (parts.empty()) {  // no plane splits it, or the cap is reached: it stays as it is
+      const int node = piece.node;
+      out->tree[static_cast<size_t>(node)].component = -2;
+      (*leaves)[node] = MakeComponent(piece, source);
+      piece.exact = {};
+      continue;
+    }
+    const int node = piece.node;
+    out->tree[static_cast<size_t>(node)].cut = chosen;
+    piece.exact = {};
+    if (keep_internal) (*internal_nodes)[node] = MakeComponent(piece, source);
+    piece.mesh = {};
+    live += static_cast<int>(parts.size()) - 1;
+    for (ExactPiece& p : parts) settle(add_node(MakePiece(std::move(p), tau), node));
+  }
+}
+
+// The max_hulls cap: walks the hierarchy back up (its levels of detail, Fig. 9), each time
+// collapsing the internal node whose children are all leaves and whose piece's hull adds the
+// least volume over its children's hulls, until at most `max_hulls` leaves remain (or only
+// roots do). The collapsed node's own piece is the exact union of its children.
+void CapHulls(int max_hulls, Decomposition3d* out, std::map<int, Component3d>* leaves,
+              std::map<int, Component3d>* internal_nodes) {
+  int count = static_cast<int>(leaves->size());
+  while (count > max_hulls) {
+    int best = -1;
+    double best_added = 0;
+    for (const auto& [x, merged] : *internal_nodes) {
+      const HierarchyNode3d& node = out->tree[static_cast<size_t>(x)];
+      if (node.component == -2) continue;  // collapsed already
+      double children = 0;
+      bool all_leaves = true;
+      for (int c : node.children) {
+        const auto it = leaves->find(c);
+        if (it == leaves->end()) {
+          all_leaves = false;
+          break;
+        }
+        children += it->second.hull_volume;
+      }
+      if (!all_leaves) continue;
+      const double added = merged.hull_volume - children;
+      if (best < 0 || added < best_added) best = x, best_added = added;
+    }
+    if (best < 0) break;
+    HierarchyNode3d& node = out->tree[static_cast<size_t>(best)];
+    for (int c : node.children) leaves->erase(c);
+    count -= static_cast<int>(node.children.size()) - 1;
+    node.children.clear();
+    node.cut = Plane3d{};
+    node.component = -2;
+    (*leaves)[best] = std::move(internal_nodes->at(best));
+  }
+  // Drop the nodes below collapsed ones, renumbering the rest in their order.
+  std::vector<int> id(out->tree.size(), -1);
+  std::vector<HierarchyNode3d> tree;
+  std::vector<int> stack(out->roots.rbegin(), out->roots.rend());
+  std::vector<int> order;
+  while (!stack.empty()) {
+    const int x = stack.back();
+    stack.pop_back();
+    order.push_back(x);
+    const auto& children = out->tree[static_cast<size_t>(x)].children;
+    for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back(*it);
+  }
+  std::sort(order.begin(), order.end());
+  for (int x : order)
+    id[static_cast<size_t>(x)] = static_cast<int>(tree.size()),
+    tree.push_back(out->tree[static_cast<size_t>(x)]);
+  for (HierarchyNode3d& node : tree) {
+    if (node.parent >= 0) node.parent = id[static_cast<size_t>(node.parent)];
+    for (int& c : node.children) c = id[static_cast<size_t>(c)];
+  }
+  for (int& r : out->roots) r = id[static_cast<size_t>(r)];
+  std::map<int, Component3d> renumbered;
+  for (auto& [x, c] : *leaves) renumbered[id[static_cast<size_t>(x)]] = std::move(c);
+  *leaves = std::move(renumbered);
+  out->tree = std::move(tree);
+}
+
+}  // namespace
+
+Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max_hulls) {
+  Decomposition3d out;
+  out.tau = tau;
+  out.max_hulls = max_hulls;
+  std::map<int, Component3d> leaves, internal_nodes;  // by tree node
+  for (size_t p = 0; p < prepared.parts.size(); ++p) {
+    DecomposePart(prepared.parts[p], static_cast<int>(p), tau, max_hulls > 0, &out, &leaves,
+                  &internal_nodes);
+  }
+  if (max_hulls > 0) CapHulls(max_hulls, &out, &leaves, &internal_nodes);
+  // Number the leaves in depth-first order of the tree.
+  for (int root : out.roots) {
+    std::vector<int> stack = {root};
+    while (!stack.empty()) {
+      const int x = stack.back();
+      stack.pop_back();
+      HierarchyNode3d& node = out.tree[static_cast<size_t>(x)];
+      if (node.component == -2) {
+        node.component = static_cast<int>(out.components.size());
+        out.components.push_back(std::move(leaves.at(x)));
+      }
+      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back(*it);
+    }
+  }
+  ComputeOpenings(&out);
+  out.stats.vertices = static_cast<int>(prepared.mesh.vertices.rows());
+  out.stats.triangles = static_cast<int>(prepared.mesh.triangles.rows());
+  out.stats.components = static_cast<int>(out.components.size());
+  for (const Component3d& c : out.components) {
+    out.stats.volume += c.volume;
+    out.stats.hull_volume += c.hull_volume;
+    out.stats.max_concavity = std::max(out.stats.max_concavity, c.concavity);
+  }
+  out.stats.surface = false;
+  return out;
+}
+
+}  // namespace acdplan::acd::internal

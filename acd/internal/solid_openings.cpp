@@ -1,0 +1,167 @@
+#include "acd/internal/solid_openings.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <tuple>
+#include <vector>
+
+namespace acdplan::acd::internal {
+namespace {
+
+using Point2 = Eigen::Vector2d;
+using Polygon2 = std::vector<Point2>;
+
+double Cross(const Point2& a, const Point2& b, const Point2& c) {
+  return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+}
+
+double Area(const Polygon2& p) {
+  double a = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const Point2& u = p[i];
+    const Point2& v = p[(i + 1) % p.size()];
+    a += u.x() * v.y() - u.y() * v.x();
+  }
+  return a / 2;
+}
+
+// Sutherland-Hodgman: the part of convex `subject` inside the counter-clockwise convex `clip`.
+Polygon2 ClipConvex(Polygon2 subject, const Polygon2& clip) {
+  for (size_t i = 0; i < clip.size() && !subject.empty(); ++i) {
+    const Point2& a = clip[i];
+    const Point2& b = clip[(i + 1) % clip.size()];
+    Polygon2 out;
+    for (size_t j = 0; j < subject.size(); ++j) {
+      const Point2& p = subject[j];
+      const Point2& q = subject[(j + 1) % subject.size()];
+      const double sp = Cross(a, b, p), sq = Cross(a, b, q);
+      if (sp >= 0) out.push_back(p);
+      if ((sp >= 0) != (sq >= 0)) out.push_back(p + (q - p) * (sp / (sp - sq)));
+    }
+    subject = std::move(out);
+  }
+  return subject;
+}
+
+// Andrew's monotone chain, counter-clockwise.
+Polygon2 ConvexHull2(Polygon2 pts) {
+  std::sort(pts.begin(), pts.end(), [](const Point2& a, const Point2& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  if (pts.size() < 3) return pts;
+  Polygon2 hull(2 * pts.size());
+  size_t k = 0;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    while (k >= 2 && Cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  for (size_t i = pts.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && Cross(hull[k - 2], hull[k - 1], pts[i - 1]) <= 0) --k;
+    hull[k++] = pts[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+struct PlaneFaces {
+  std::vector<Polygon2> below, above;  // counter-clockwise triangles in plane coordinates
+};
+
+}  // namespace
+
+void ComputeOpenings(Decomposition3d* decomposition) {
+  Decomposition3d& d = *decomposition;
+  d.openings.clear();
+  const int nodes = static_cast<int>(d.tree.size());
+  double scale = 0;
+  for (const Component3d& c : d.components) {
+    if (c.mesh.vertices.rows() > 0) scale = std::max(scale, BoundingBox(c.mesh).diagonal().norm());
+  }
+  const double tol = 1e-9 * std::max(scale, 1e-300);
+  std::vector<std::tuple<int, int, int, Opening3d>> found;
+  for (int node = 0; node < nodes; ++node) {
+    const HierarchyNode3d& cut_node = d.tree[static_cast<size_t>(node)];
+    if (cut_node.children.empty()) continue;
+    const Eigen::Vector3d n = cut_node.cut.normal;
+    const double offset = cut_node.cut.offset;
+    const Eigen::Vector3d u = n.unitOrthogonal(), v = n.cross(u);  // (u, v, n) right-handed
+    // The leaves below the node.
+    std::vector<int> leaves, stack = {node};
+    while (!stack.empty()) {
+      const int x = stack.back();
+      stack.pop_back();
+      const HierarchyNode3d& h = d.tree[static_cast<size_t>(x)];
+      if (h.component >= 0) leaves.push_back(h.component);
+      for (auto it = h.children.rbegin(); it != h.children.rend(); ++it) stack.push_back(*it);
+    }
+    std::map<int, PlaneFaces> faces;
+    for (int leaf : leaves) {
+      const TriangleMesh& mesh = d.components[static_cast<size_t>(leaf)].mesh;
+      for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+        std::array<Eigen::Vector3d, 3> p;
+        bool in_plane = true;
+        for (int k = 0; k < 3; ++k) {
+          p[static_cast<size_t>(k)] = mesh.vertices.row(mesh.triangles(f, k));
+          in_plane = in_plane && std::abs(n.dot(p[static_cast<size_t>(k)]) - offset) <= tol;
+        }
+        if (!in_plane) continue;
+        const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
+        const double len = normal.norm();
+        if (!(len > 0)) continue;
+        const double along = normal.dot(n) / len;
+        if (std::abs(along) < 0.99) continue;
+        Polygon2 tri;
+        for (const auto& q : p) tri.emplace_back(u.dot(q), v.dot(q));
+        if (Area(tri) < 0) std::reverse(tri.begin(), tri.end());
+        (along > 0 ? faces[leaf].below : faces[leaf].above).push_back(tri);
+      }
+    }
+    for (const auto& [a, fa] : faces) {
+      if (fa.below.empty()) continue;
+      for (const auto& [b, fb] : faces) {
+        if (a == b || fb.above.empty()) continue;
+        double area = 0;
+        std::vector<Polygon2> parts;
+        for (const Polygon2& s : fa.below) {
+          for (const Polygon2& t : fb.above) {
+            Polygon2 x = ClipConvex(s, t);
+            if (x.size() < 3) continue;
+            const double ax = Area(x);
+            if (ax > tol * tol) {
+              area += ax;
+              parts.push_back(std::move(x));
+            }
+          }
+        }
+        if (!(area > tol * scale)) continue;
+        Polygon2 outline;
+        if (parts.size() == 1) {
+          outline = parts[0];
+        } else {
+          for (const Polygon2& p : parts) outline.insert(outline.end(), p.begin(), p.end());
+          outline = ConvexHull2(outline);
+        }
+        // From the lower-indexed component into the other; counter-clockwise about the normal.
+        Opening3d opening;
+        opening.component_a = std::min(a, b);
+        opening.component_b = std::max(a, b);
+        const bool forward = a < b;  // a is below: the normal n points from a into b
+        opening.normal = forward ? n : Eigen::Vector3d(-n);
+        if (!forward) std::reverse(outline.begin(), outline.end());
+        for (const Point2& q : outline)
+          opening.polygon.push_back(u * q.x() + v * q.y() + n * offset);
+        opening.area = area;
+        found.emplace_back(opening.component_a, opening.component_b, node, std::move(opening));
+      }
+    }
+  }
+  std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) {
+    return std::tie(std::get<0>(x), std::get<1>(x), std::get<2>(x)) <
+           std::tie(std::get<0>(y), std::get<1>(y), std::get<2>(y));
+  });
+  for (auto& f : found) d.openings.push_back(std::move(std::get<3>(f)));
+}
+
+}  // namespace acdplan::acd::internal

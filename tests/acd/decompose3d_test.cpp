@@ -1,0 +1,201 @@
+#include "acd/decompose3d.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "acd/mesh_measures.h"
+#include "base/input_error.h"
+#include "solid_test_meshes.h"
+
+namespace acdplan::acd {
+namespace {
+
+using test::Box;
+using test::Concatenate;
+using test::LBlock;
+using test::PreparedSolid;
+using test::Torus;
+using test::UBlock;
+
+// Every directed edge is met by its reverse exactly once: closed, manifold, consistently
+// oriented.
+bool IsClosed(const TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, int> directed;
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) ++directed[{mesh.triangles(f, k), mesh.triangles(f, (k + 1) % 3)}];
+  }
+  for (const auto& [edge, count] : directed) {
+    if (count != 1) return false;
+    auto it = directed.find({edge.second, edge.first});
+    if (it == directed.end() || it->second != 1) return false;
+  }
+  return true;
+}
+
+int EulerCharacteristic(const TriangleMesh& mesh) {
+  std::set<std::pair<int, int>> edges;
+  std::set<int> vertices;
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.triangles(f, k), b = mesh.triangles(f, (k + 1) % 3);
+      edges.emplace(std::min(a, b), std::max(a, b));
+      vertices.insert(a);
+    }
+  }
+  return static_cast<int>(vertices.size()) - static_cast<int>(edges.size()) +
+         static_cast<int>(mesh.triangles.rows());
+}
+
+// The properties every solid decomposition keeps.
+void ExpectValid(const TriangleMesh& input, const Decomposition3d& d, bool capped = false) {
+  ASSERT_FALSE(d.components.empty());
+  double volume = 0;
+  for (size_t i = 0; i < d.components.size(); ++i) {
+    const Component3d& c = d.components[i];
+    EXPECT_TRUE(IsClosed(c.mesh)) << "component " << i;
+    EXPECT_GT(c.volume, 0) << "component " << i;
+    EXPECT_NEAR(c.volume, MeshVolume(c.mesh), 1e-9 * (1 + c.volume));
+    EXPECT_GE(c.hull_volume, c.volume * (1 - 1e-9)) << "component " << i;
+    if (!capped) {
+      EXPECT_LE(c.concavity, d.tau * (1 + 1e-9)) << "component " << i;
+    }
+    volume += c.volume;
+  }
+  const double expected = MeshVolume(input);
+  EXPECT_NEAR(volume, expected, 1e-6 * expected);
+  EXPECT_EQ(d.stats.components, static_cast<int>(d.components.size()));
+  // The tree: leaves are the components, each once.
+  std::set<int> seen;
+  for (const HierarchyNode3d& node : d.tree) {
+    if (node.children.empty()) {
+      EXPECT_GE(node.component, 0);
+      seen.insert(node.component);
+    }
+  }
+  EXPECT_EQ(seen.size(), d.components.size());
+  for (const Opening3d& o : d.openings) {
+    EXPECT_LT(o.component_a, o.component_b);
+    EXPECT_GT(o.area, 0);
+    EXPECT_NEAR(o.normal.norm(), 1.0, 1e-9);
+  }
+}
+
+Decomposition3d Solve(const TriangleMesh& mesh, double tau, int max_hulls = 0) {
+  Decompose3dOptions options;
+  options.tau = tau;
+  options.max_hulls = max_hulls;
+  return Decompose3d(PreparedSolid(mesh), options);
+}
+
+TEST(Decompose3d, CubeIsOneConvexComponent) {
+  const TriangleMesh cube = Cube(2.0);
+  const Decomposition3d d = Solve(cube, 0.01);
+  ExpectValid(cube, d);
+  ASSERT_EQ(d.components.size(), 1u);
+  EXPECT_EQ(d.components[0].concavity, 0.0);
+  EXPECT_NEAR(d.components[0].hull_volume, 8.0, 1e-12);
+  EXPECT_TRUE(d.openings.empty());
+  EXPECT_FALSE(d.stats.surface);
+}
+
+TEST(Decompose3d, ConvexInputAcceptsTauZero) {
+  EXPECT_EQ(Solve(Cube(1.0), 0.0).components.size(), 1u);
+}
+
+TEST(Decompose3d, LBlockGivesTwoBoxes) {
+  const TriangleMesh l = LBlock();
+  const Decomposition3d d = Solve(l, 0.05);
+  ExpectValid(l, d);
+  ASSERT_EQ(d.components.size(), 2u);
+  for (const Component3d& c : d.components) EXPECT_NEAR(c.hull_volume, c.volume, 1e-9);
+  ASSERT_EQ(d.openings.size(), 1u);
+  EXPECT_NEAR(d.openings[0].area, 1.0, 1e-9);
+  EXPECT_EQ(ComponentGraph(d), (std::vector<std::vector<int>>{{1}, {0}}));
+}
+
+TEST(Decompose3d, UBlockGivesThreeBoxes) {
+  const TriangleMesh u = UBlock();
+  const Decomposition3d d = Solve(u, 0.05);
+  ExpectValid(u, d);
+  EXPECT_EQ(d.components.size(), 3u);
+  EXPECT_NEAR(d.stats.hull_volume, 5.0, 1e-9);
+  EXPECT_EQ(d.openings.size(), 2u);
+}
+
+TEST(Decompose3d, TorusIsCutOpenIntoGenusZeroPieces) {
+  const TriangleMesh torus = Torus(2.0, 1.0, 24, 12);
+  for (double tau : {0.5, 0.2}) {
+    const Decomposition3d d = Solve(torus, tau);
+    ExpectValid(torus, d);
+    EXPECT_GE(d.components.size(), 2u) << "tau " << tau;
+    for (const Component3d& c : d.components) EXPECT_EQ(EulerCharacteristic(c.mesh), 2);
+  }
+}
+
+TEST(Decompose3d, CavityIsCutOpen) {
+  const TriangleMesh box = Concatenate(Box({0, 0, 0}, {4, 4, 4}), Box({1, 1, 1}, {3, 3, 3}, true));
+  ASSERT_NEAR(MeshVolume(box), 64.0 - 8.0, 1e-12);
+  const Decomposition3d d = Solve(box, 0.1);
+  ExpectValid(box, d);
+  EXPECT_GE(d.components.size(), 2u);
+  for (const Component3d& c : d.components) EXPECT_EQ(EulerCharacteristic(c.mesh), 2);
+}
+
+TEST(Decompose3d, SameInputSameBytes) {
+  const TriangleMesh torus = Torus(2.0, 1.0, 16, 8);
+  const Decomposition3d a = Solve(torus, 0.3), b = Solve(torus, 0.3);
+  ASSERT_EQ(a.components.size(), b.components.size());
+  for (size_t i = 0; i < a.components.size(); ++i) {
+    const TriangleMesh& x = a.components[i].mesh;
+    const TriangleMesh& y = b.components[i].mesh;
+    ASSERT_EQ(x.vertices.rows(), y.vertices.rows());
+    EXPECT_EQ(std::memcmp(x.vertices.data(), y.vertices.data(),
+                          sizeof(double) * static_cast<size_t>(x.vertices.size())),
+              0);
+    EXPECT_TRUE(x.triangles == y.triangles);
+  }
+}
+
+TEST(Decompose3d, MaxHullsMergesAlongTheTree) {
+  const TriangleMesh torus = Torus(2.0, 1.0, 24, 12);
+  const Decomposition3d full = Solve(torus, 0.1);
+  ASSERT_GT(full.components.size(), 4u);
+  const Decomposition3d capped = Solve(torus, 0.1, 4);
+  ExpectValid(torus, capped, /*capped=*/true);
+  EXPECT_LE(capped.components.size(), 4u);
+  EXPECT_EQ(capped.max_hulls, 4);
+  EXPECT_GE(capped.stats.hull_volume, full.stats.hull_volume * (1 - 1e-9));
+}
+
+TEST(Decompose3d, RejectsBadOptions) {
+  const PreparedMesh cube = PreparedSolid(Cube(1.0));
+  Decompose3dOptions options;
+  options.tau = -1;
+  EXPECT_THROW(
+      {
+        try {
+          Decompose3d(cube, options);
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("tau must be a finite number >= 0"),
+                    std::string::npos);
+          throw;
+        }
+      },
+      InputError);
+  options.tau = 0.1;
+  options.max_hulls = -2;
+  EXPECT_THROW(Decompose3d(cube, options), InputError);
+  options.max_hulls = 0;
+  EXPECT_THROW(Decompose3d(PreparedMesh{}, options), InputError);
+  // tau 0 on a non-convex part would cut forever.
+  EXPECT_THROW(Solve(LBlock(), 0.0), InputError);
+}
+
+}  // namespace
+}  // namespace acdplan::acd

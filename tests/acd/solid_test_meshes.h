@@ -1,0 +1,149 @@
+#pragma once
+// Small closed meshes with known decompositions for the solid ACD tests.
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "acd/internal/triangulate_ring.h"
+#include "acd/prepare_mesh.h"
+#include "acd/triangle_mesh.h"
+
+namespace acdplan::acd::test {
+
+/// The prism over the counter-clockwise simple ring `ring` (in x, y), from z = 0 to `height`.
+inline TriangleMesh Extrude(const Ring2d& ring, double height) {
+  const int n = static_cast<int>(ring.size());
+  std::vector<Eigen::Vector3d> v;
+  for (const auto& p : ring) v.emplace_back(p.x(), p.y(), 0.0);
+  for (const auto& p : ring) v.emplace_back(p.x(), p.y(), height);
+  std::vector<Eigen::Vector3i> f;
+  for (const auto& t : internal::TriangulateRing(ring)) {
+    f.emplace_back(t[0], t[2], t[1]);              // bottom, seen from below
+    f.emplace_back(n + t[0], n + t[1], n + t[2]);  // top
+  }
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    f.emplace_back(i, j, n + j);
+    f.emplace_back(i, n + j, n + i);
+  }
+  return MakeTriangleMesh(v, f);
+}
+
+/// An L-shaped block: [0,2]x[0,1] plus [0,1]x[1,2], height 1.
+inline TriangleMesh LBlock() {
+  return Extrude({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 1.0);
+}
+
+/// A U-shaped block: a 3x1 base with two 1x1 posts, height 1.
+inline TriangleMesh UBlock() {
+  return Extrude({{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 1.0);
+}
+
+/// An axis-aligned box from `lo` to `hi`; outward, or inward (a cavity shell) if `inward`.
+inline TriangleMesh Box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, bool inward = false) {
+  TriangleMesh cube = Cube(1.0);
+  for (Eigen::Index i = 0; i < cube.vertices.rows(); ++i) {
+    for (int k = 0; k < 3; ++k) cube.vertices(i, k) = cube.vertices(i, k) < 0 ? lo(k) : hi(k);
+  }
+  if (inward) cube.triangles.col(1).swap(cube.triangles.col(2));
+  return cube;
+}
+
+/// A torus about the z axis with radii `major` > `minor`, `nu` x `nv` quads split in two.
+inline TriangleMesh Torus(double major, double minor, int nu, int nv) {
+  std::vector<Eigen::Vector3d> v;
+  std::vector<Eigen::Vector3i> f;
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < nu; ++i) {
+    const double u = 2 * pi * i / nu;
+    for (int j = 0; j < nv; ++j) {
+      const double w = 2 * pi * j / nv;
+      const double r = major + minor * std::cos(w);
+      v.emplace_back(r * std::cos(u), r * std::sin(u), minor * std::sin(w));
+    }
+  }
+  auto id = [&](int i, int j) { return (i % nu) * nv + (j % nv); };
+  for (int i = 0; i < nu; ++i) {
+    for (int j = 0; j < nv; ++j) {
+      f.emplace_back(id(i, j), id(i + 1, j), id(i + 1, j + 1));
+      f.emplace_back(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+    }
+  }
+  return MakeTriangleMesh(v, f);
+}
+
+/// Two shells as one mesh (e.g. a box and the cavity inside it).
+inline TriangleMesh Concatenate(const TriangleMesh& a, const TriangleMesh& b) {
+  TriangleMesh out;
+  out.vertices.resize(a.vertices.rows() + b.vertices.rows(), 3);
+  out.vertices << a.vertices, b.vertices;
+  out.triangles.resize(a.triangles.rows() + b.triangles.rows(), 3);
+  out.triangles << a.triangles,
+      (b.triangles.array() + static_cast<int>(a.vertices.rows())).matrix();
+  return out;
+}
+
+/// A PreparedMesh for a closed, clean, outward mesh: one part, no defects.
+inline PreparedMesh PreparedSolid(const TriangleMesh& mesh) {
+  PreparedMesh prepared;
+  prepared.mesh = mesh;
+  prepared.parts = {mesh};
+  return prepared;
+}
+
+}  // namespace acdplan::acd::test
+
+namespace acdplan::acd::test {
+
+/// A minimal OBJ reader for acd-only tests: `v` and `f` lines (polygons fanned, `a/b/c` and
+/// negative indices understood), vertices at identical positions merged, faces that repeat a
+/// vertex dropped. Returns an empty mesh if the file cannot be read.
+inline TriangleMesh ReadObjForTest(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<Eigen::Vector3d> raw;
+  std::vector<Eigen::Vector3i> faces;
+  std::string line;
+  std::vector<std::vector<int>> polygons;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if (tag == "v") {
+      Eigen::Vector3d p;
+      s >> p.x() >> p.y() >> p.z();
+      raw.push_back(p);
+    } else if (tag == "f") {
+      std::vector<int> poly;
+      std::string token;
+      while (s >> token) {
+        const int i = std::stoi(token.substr(0, token.find('/')));
+        poly.push_back(i < 0 ? static_cast<int>(raw.size()) + i : i - 1);
+      }
+      polygons.push_back(poly);
+    }
+  }
+  std::map<std::tuple<double, double, double>, int> weld;
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<int> id(raw.size());
+  for (size_t i = 0; i < raw.size(); ++i) {
+    auto [it, inserted] = weld.emplace(std::make_tuple(raw[i].x(), raw[i].y(), raw[i].z()),
+                                       static_cast<int>(vertices.size()));
+    if (inserted) vertices.push_back(raw[i]);
+    id[i] = it->second;
+  }
+  for (const auto& poly : polygons) {
+    for (size_t k = 1; k + 1 < poly.size(); ++k) {
+      const Eigen::Vector3i t(id[static_cast<size_t>(poly[0])], id[static_cast<size_t>(poly[k])],
+                              id[static_cast<size_t>(poly[k + 1])]);
+      if (t(0) != t(1) && t(1) != t(2) && t(0) != t(2)) faces.push_back(t);
+    }
+  }
+  return MakeTriangleMesh(vertices, faces);
+}
+
+}  // namespace acdplan::acd::test
