@@ -15,7 +15,9 @@ namespace acdplan::acd {
 TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thickness);
 
 /// Outward half-spaces (n, d), |n| = 1, of the closed convex mesh `hull`: one row per face
-/// (coplanar faces merged); the hull is { x : n . x <= d for every row }.
+/// (coplanar faces merged); the hull is { x : n . x <= d for every row }. Every d is at least
+/// max over the hull's vertices of n . v, so no vertex of `hull` is ever outside a row, even for
+/// a sliver face whose computed normal is off. O(faces x vertices).
 Eigen::Matrix<double, Eigen::Dynamic, 4> HullPlanes(const TriangleMesh& hull);
 
 }  // namespace acdplan::acd

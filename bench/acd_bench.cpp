@@ -34,6 +34,7 @@
 #include "base/format.h"
 #include "base/input_error.h"
 #include "base/stopwatch.h"
+#include "bench/time_runs.h"
 
 namespace acdplan::bench {
 
@@ -75,54 +76,6 @@ struct BenchInput {
   int notches = 0;
   int holes = 0;
 };
-
-/// Median time of repeated runs and the result of the last one.
-template <typename Result>
-struct Timed {
-  Result result;
-  double median_ms = 0.0;
-  int runs = 0;
-};
-
-/// Calls `run` up to `repeats` times and returns the median wall time. A slow cell stops once
-/// `budget_ms` is spent and at least min(3, repeats) runs are done, so the whole benchmark
-/// stays within minutes while fast cells still get many runs (the machine is shared and noisy).
-/// The previous result is destroyed outside the timed region. Fast cells first run untimed for
-/// kWarmUpMs: otherwise the first cells of a process run at the idle CPU clock (nazca_monkey SL
-/// measured 1.26 ms as the first cell, 0.85 ms after a warm-up).
-template <typename Run>
-auto TimeRuns(Run&& run, int repeats, double budget_ms) {
-  constexpr double kWarmUpMs = 100.0;
-  using Result = decltype(run());
-  Timed<Result> timed;
-  std::vector<double> times;
-  double total_ms = 0.0;
-  const int min_runs = std::min(3, repeats);
-  auto time_one = [&run, &timed]() {
-    const Stopwatch stopwatch;
-    Result result = run();
-    const double ms = stopwatch.Milliseconds();
-    timed.result = std::move(result);
-    return ms;
-  };
-  double warm_up_ms = time_one();
-  if (warm_up_ms >= kWarmUpMs) {
-    times.push_back(warm_up_ms);  // A slow cell: one cold run among seconds is noise.
-    total_ms = warm_up_ms;
-  }
-  while (times.empty() && warm_up_ms < kWarmUpMs) warm_up_ms += time_one();
-  while (static_cast<int>(times.size()) < repeats) {
-    const double ms = time_one();
-    times.push_back(ms);
-    total_ms += ms;
-    if (static_cast<int>(times.size()) >= min_runs && total_ms >= budget_ms) break;
-  }
-  std::sort(times.begin(), times.end());
-  const size_t k = times.size();
-  timed.median_ms = k % 2 == 1 ? times[k / 2] : 0.5 * (times[k / 2 - 1] + times[k / 2]);
-  timed.runs = static_cast<int>(k);
-  return timed;
-}
 
 CgalPoint ToCgal(const acd::Point2d& p) { return CgalPoint(p.x(), p.y()); }
 
@@ -247,7 +200,7 @@ bool BenchOurs(const BenchInput& input, double tau_rel, const AcdBenchOptions& a
     row.tau = options.tau;
     try {
       auto timed = TimeRuns([&] { return acd::Decompose2d(input.polygons, options); }, args.repeats,
-                            args.cell_budget_ms);
+                            args.cell_budget_ms, 3);
       row.components = static_cast<int>(timed.result.components.size());
       row.convexity = Convexity(timed.result);
       row.median_ms = timed.median_ms;
@@ -320,7 +273,7 @@ void BenchCgal(const BenchInput& input, const AcdBenchOptions& args,
               for (const std::vector<CgalPoint>& ring : rings) partition(ring, &pieces);
               return pieces;
             },
-            args.repeats, args.cell_budget_ms);
+            args.repeats, args.cell_budget_ms, 3);
         const std::vector<CgalPolygon> pieces(timed.result.begin(), timed.result.end());
         row.components = static_cast<int>(pieces.size());
         row.convexity = Convexity(pieces);

@@ -141,6 +141,7 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
   RandomEngine rng(options.seed);
   ObstacleSetOptions set_options;
   set_options.tau = options.tau;
+  set_options.tau_rel_3d = options.tau_rel_3d;
 
   for (const std::string& name : envs::GeneratorNames()) {
     const envs::Workspace2d workspace = envs::GenerateWorkspace2d(name, options.seed);
@@ -177,7 +178,7 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
     const Eigen::AlignedBox3d box = acd::BoundingBox(workspace.obstacles[0]);
     workspace.bounds =
         Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
-    auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));
+    auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace, set_options));
     row.world = std::filesystem::path(file).stem().string() + "/mesh";
     row.hulls_source = set->hulls_source;
     row.triangles = TriangleCount(*set);
@@ -304,11 +305,9 @@ std::string BenchCollisionJson(const std::vector<BenchCollisionRow>& rows,
   }
   nlohmann::json doc;
   doc["format"] = "acdplan.bench_collision/1";
-  doc["options"] = {{"poses", options.poses},
-                    {"points", options.points},
-                    {"seed", options.seed},
-                    {"tau", options.tau},
-                    {"mesh_dir", options.mesh_dir}};
+  doc["options"] = {
+      {"poses", options.poses}, {"points", options.points},         {"seed", options.seed},
+      {"tau", options.tau},     {"tau_rel_3d", options.tau_rel_3d}, {"mesh_dir", options.mesh_dir}};
   doc["worlds"] = worlds;
   return doc.dump(2) + "\n";
 }

@@ -134,6 +134,8 @@ bool MetricTest::Holds(double x) const {
 std::string Target::Label() const {
   if (!name.empty()) return name;
   std::string text = test.Text();
+  for (const MetricTest& t : also) text += " and " + t.Text();
+  if (!any_of.empty()) text += " for one " + any_of;
   for (size_t i = 0; i < conditions.size(); ++i) {
     text += (i == 0 ? " where " : " and ") + conditions[i].Text();
   }
@@ -148,7 +150,8 @@ std::vector<Target> ReadTargets(const YamlFile& file, const YAML::Node& node,
   for (size_t i = 0; i < node.size(); ++i) {
     const std::string item = YamlFile::Item(key, i);
     const YAML::Node& t = node[i];
-    file.CheckKeys(t, item, {"name", "where", "if", "metric", "over", "compare", "value"});
+    file.CheckKeys(t, item,
+                   {"name", "where", "if", "metric", "over", "compare", "value", "and", "any_of"});
     Target target;
     if (t["name"]) target.name = file.String(t["name"], YamlFile::Child(item, "name"));
     if (const YAML::Node& where = t["where"]) {
@@ -185,6 +188,26 @@ std::vector<Target> ReadTargets(const YamlFile& file, const YAML::Node& node,
         target.conditions.push_back(ReadTest(file, conditions[c], ikey, vocabulary));
       }
     }
+    if (const YAML::Node& also = t["and"]) {
+      const std::string akey = YamlFile::Child(item, "and");
+      if (!also.IsSequence()) {
+        file.Fail(akey,
+                  "expected a list of {metric, compare, value}, got " + YamlFile::Shown(also));
+      }
+      for (size_t c = 0; c < also.size(); ++c) {
+        const std::string ikey = YamlFile::Item(akey, c);
+        file.CheckKeys(also[c], ikey, {"metric", "over", "compare", "value"});
+        target.also.push_back(ReadTest(file, also[c], ikey, vocabulary));
+      }
+    }
+    if (t["any_of"]) {
+      const std::string key_any = YamlFile::Child(item, "any_of");
+      target.any_of = file.String(t["any_of"], key_any);
+      if (std::find(vocabulary.labels.begin(), vocabulary.labels.end(), target.any_of) ==
+          vocabulary.labels.end()) {
+        file.Fail(key_any, UnknownName("label", target.any_of, vocabulary.labels));
+      }
+    }
     target.test = ReadTest(file, t, item, vocabulary);
     targets.push_back(target);
   }
@@ -218,6 +241,11 @@ std::string TargetsToJson(const std::vector<Target>& targets) {
     }
     const nlohmann::ordered_json test = test_json(t.test);
     for (const auto& [k, v] : test.items()) j[k] = v;
+    if (!t.also.empty()) {
+      j["and"] = nlohmann::ordered_json::array();
+      for (const MetricTest& a : t.also) j["and"].push_back(test_json(a));
+    }
+    if (!t.any_of.empty()) j["any_of"] = t.any_of;
     list.push_back(j);
   }
   return list.dump();
@@ -227,6 +255,7 @@ std::vector<TargetCheck> CheckTargets(const std::vector<Target>& targets,
                                       const std::vector<TargetRow>& rows) {
   std::vector<TargetCheck> checks;
   for (const Target& target : targets) {
+    std::vector<TargetCheck> row_checks;
     for (const TargetRow& row : rows) {
       if (!Applies(target, row)) continue;
       bool applies = true;
@@ -239,8 +268,37 @@ std::vector<TargetCheck> CheckTargets(const std::vector<Target>& targets,
       check.target = &target;
       check.row = &row;
       check.holds = target.test.Holds(check.measured);
-      checks.push_back(check);
+      for (const MetricTest& also : target.also) {
+        double x = std::nan("");
+        const bool present = Measure(also, row, &x);
+        if (present && also.Holds(x)) continue;
+        check.holds = false;
+        if (!check.missed_also.empty()) check.missed_also += "; ";
+        check.missed_also += also.metric + (also.over.empty() ? "" : " / " + also.over) + " " +
+                             (present ? Shown(also, x) : "absent");
+      }
+      row_checks.push_back(check);
     }
+    if (target.any_of.empty()) {
+      checks.insert(checks.end(), row_checks.begin(), row_checks.end());
+      continue;
+    }
+    // Groups: the rows' labels without `any_of`, in the order of their first rows.
+    std::vector<std::map<std::string, std::string>> keys;
+    std::vector<TargetCheck> groups;
+    for (const TargetCheck& check : row_checks) {
+      std::map<std::string, std::string> key = check.row->labels;
+      key.erase(target.any_of);
+      const auto it = std::find(keys.begin(), keys.end(), key);
+      if (it == keys.end()) {
+        keys.push_back(key);
+        groups.push_back(check);
+      } else {
+        TargetCheck& group = groups[static_cast<size_t>(it - keys.begin())];
+        if (!group.holds && check.holds) group = check;
+      }
+    }
+    checks.insert(checks.end(), groups.begin(), groups.end());
   }
   return checks;
 }
@@ -262,7 +320,8 @@ std::string TargetChecksMarkdown(const std::vector<TargetCheck>& checks,
       md << " " << (it == check.row->labels.end() ? "—" : it->second) << " |";
     }
     md << " " << check.target->Label() << " | " << Shown(check.target->test, check.measured)
-       << " | " << (check.holds ? "holds" : "**missed**") << " |\n";
+       << (check.missed_also.empty() ? "" : " (but " + check.missed_also + ")") << " | "
+       << (check.holds ? "holds" : "**missed**") << " |\n";
   }
   md << "\n" << holds << " target checks hold, " << missed << " missed.\n";
   return md.str();

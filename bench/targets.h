@@ -15,6 +15,10 @@
 //       over: uniform.success_rate         # optional divisor: the test is on metric / over
 //       compare: ">="                      # one of <, <=, >, >=, ==, !=
 //       value: 0.95                        # the threshold
+//       and:                               # optional further tests that must hold on the
+//         - {metric: parts, over: vhacd.parts, compare: "<=", value: 1}   # same row
+//       any_of: tau_rel                    # optional: rows that differ only in this label
+//                                          # make one check, which holds if one of them does
 //
 // Each row the target applies to gives one check: "holds" or "missed". A metric the row does
 // not have makes the target not apply to it; a metric the row has but could not measure
@@ -56,6 +60,10 @@ struct Target {
   std::map<std::string, std::vector<std::string>> where;  ///< Label -> accepted values.
   std::vector<MetricTest> conditions;                     ///< `if:`, all must hold.
   MetricTest test;
+  std::vector<MetricTest> also;  ///< `and:`, must hold on the same row as `test`.
+  /// `any_of:` a label: the rows that differ only in it form one check, which holds if the
+  /// tests hold on one of them ("one setting meets all"); "" : one check per row.
+  std::string any_of;
   /// `name`, or the test's text when it has none.
   std::string Label() const;
 };
@@ -96,10 +104,14 @@ struct TargetCheck {
   const TargetRow* row = nullptr;
   double measured = 0.0;  ///< metric, or metric / over.
   bool holds = false;
+  /// The `and:` tests that missed on `row`, with their values ("" when none did).
+  std::string missed_also;
 };
 
 /// Every target on every row it applies to (where matches, conditions hold, metrics present),
-/// target-major, rows in the given order. The checks point into `targets` and `rows`, which
+/// target-major, rows in the given order; with `any_of`, one check per group of such rows (in
+/// the order of their first rows), pointing at the first row that holds, else at the group's
+/// first row. The checks point into `targets` and `rows`, which
 /// must outlive them.
 std::vector<TargetCheck> CheckTargets(const std::vector<Target>& targets,
                                       const std::vector<TargetRow>& rows);

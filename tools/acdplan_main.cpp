@@ -34,6 +34,7 @@
 #include "bench/targets.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
+#include "tools/decompose3d_command.h"
 #include "tools/env_command.h"
 #include "tools/plot_bench.h"
 
@@ -54,7 +55,40 @@ struct DecomposeArguments {
   std::string svg_path;
   bool check = false;
   bool repair = false;
+  // Meshes only.
+  bool surface = false;
+  int max_hulls = 0;
+  std::string obj_path, glb_path;
 };
+
+/// Options that apply to one kind of INPUT only: given with the other kind, a usage error.
+struct InputKindOptions {
+  std::vector<CLI::Option*> polygons_only, meshes_only;
+  CLI::Option* tau = nullptr;
+};
+
+/// `acdplan decompose MESH` (tools/decompose3d_command.h).
+int RunDecomposeMesh(const DecomposeArguments& args, const InputKindOptions& kinds) {
+  for (const CLI::Option* option : kinds.polygons_only) {
+    if (option->count() > 0) {
+      throw acdplan::InputError(option->get_name() + ": applies to polygon files only (" +
+                                args.input + " is a mesh)");
+    }
+  }
+  acdplan::tools::Decompose3dArguments mesh_args;
+  mesh_args.input = args.input;
+  if (kinds.tau->count() > 0) mesh_args.tau = args.tau;
+  mesh_args.tau_rel = args.tau_rel;
+  mesh_args.surface = args.surface;
+  mesh_args.max_hulls = args.max_hulls;
+  mesh_args.repair = args.repair;
+  mesh_args.check = args.check;
+  mesh_args.json_path = args.json_path;
+  mesh_args.obj_path = args.obj_path;
+  mesh_args.glb_path = args.glb_path;
+  mesh_args.svg_path = args.svg_path;
+  return acdplan::tools::RunDecompose3d(mesh_args);
+}
 
 /// A CLI11 check from a parser that throws acdplan::InputError, so the value is checked while
 /// parsing and the message names the option ("--measure: unknown concavity measure 'x' ...").
@@ -95,7 +129,14 @@ void CheckOutputPath(const std::string& option, const std::string& path) {
   }
 }
 
-int RunDecompose(const DecomposeArguments& args) {
+int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) {
+  if (acdplan::tools::IsMeshFile(args.input)) return RunDecomposeMesh(args, kinds);
+  for (const CLI::Option* option : kinds.meshes_only) {
+    if (option->count() > 0) {
+      throw acdplan::InputError(option->get_name() + ": applies to mesh files only (" + args.input +
+                                " is a polygon file)");
+    }
+  }
   // Everything the user typed is checked before the (possibly long) decomposition.
   acd::Decompose2dOptions options;
   options.measure = acd::ParseConcavityMeasure(args.measure);
@@ -404,41 +445,73 @@ int main(int argc, char** argv) {
   DecomposeArguments args;
   CLI::App* decompose = app.add_subcommand(
       "decompose",
-      "Decompose the polygons of INPUT into tau-convex components (dissertation Ch. IV) and "
-      "print a summary. Exit status: 0 ok, 2 bad input or usage, 1 internal error.");
-  decompose->add_option("INPUT", args.input, "Polygon file: .poly, .wkt, .geojson or .json")
+      "Decompose the polygons (dissertation Ch. IV) or the mesh (Ch. V) of INPUT into "
+      "tau-convex components and print a summary. Exit status: 0 ok, 2 bad input or usage, 1 "
+      "internal error.");
+  InputKindOptions kinds;
+  decompose
+      ->add_option("INPUT", args.input,
+                   "Polygon file: .poly, .wkt, .geojson or .json; or mesh file: .obj, .stl, "
+                   ".ply, .off, .gltf, .glb or .dae")
       ->required();
   CLI::Option* tau = decompose->add_option(
-      "--tau", args.tau, "Concavity tolerated per component [input units]; default 0 (convex)");
+      "--tau", args.tau,
+      "Concavity tolerated per component [input units]; default: polygons 0 (convex), meshes "
+      "--tau-rel 0.05");
+  kinds.tau = tau;
   const CLI::Validator non_negative = NumberThat([](double x) { return x >= 0; }, "a number >= 0");
   tau->check(non_negative);
   CLI::Option* tau_rel = decompose->add_option(
       "--tau-rel", args.tau_rel,
-      "tau relative to the reference radius (largest distance from the vertex mean to a "
-      "vertex of the outer boundary); with several polygons in INPUT, the largest radius");
+      "tau relative to the reference radius: polygons, the largest distance from the vertex "
+      "mean to a vertex of the outer boundary (with several polygons in INPUT, the largest "
+      "radius); meshes, the radius of the minimum enclosing sphere");
   tau_rel->check(non_negative);
   tau->excludes(tau_rel);
   tau_rel->excludes(tau);
-  decompose->add_option("--measure", args.measure, "Concavity measure: sl, sp, h1 or h2")
-      ->capture_default_str()
-      ->check(ParsedBy(acd::ParseConcavityMeasure));
-  decompose
-      ->add_option("--min-convexity", args.min_convexity,
-                   "In (0, 1]: shape decomposition (Algorithm 9), accept a piece once "
-                   "area / hull area >= this, instead of the concavity test")
-      ->check(NumberThat([](double x) { return x > 0 && x <= 1; }, "a number in (0, 1]"));
-  decompose
-      ->add_option("--hole-diameter", args.hole_diameter,
-                   "Hole antipodes: auto, pa (principal axis) or geodesic")
-      ->capture_default_str()
-      ->check(ParsedBy(acd::ParseHoleDiameter));
-  decompose->add_flag("--no-steiner", args.no_steiner,
-                      "Cuts end at vertices only (no new vertex on an edge)");
+  kinds.polygons_only.push_back(
+      decompose
+          ->add_option("--measure", args.measure, "Polygons: concavity measure: sl, sp, h1 or h2")
+          ->capture_default_str()
+          ->check(ParsedBy(acd::ParseConcavityMeasure)));
+  kinds.polygons_only.push_back(
+      decompose
+          ->add_option("--min-convexity", args.min_convexity,
+                       "Polygons, in (0, 1]: shape decomposition (Algorithm 9), accept a piece "
+                       "once area / hull area >= this, instead of the concavity test")
+          ->check(NumberThat([](double x) { return x > 0 && x <= 1; }, "a number in (0, 1]")));
+  kinds.polygons_only.push_back(
+      decompose
+          ->add_option("--hole-diameter", args.hole_diameter,
+                       "Polygons: hole antipodes: auto, pa (principal axis) or geodesic")
+          ->capture_default_str()
+          ->check(ParsedBy(acd::ParseHoleDiameter)));
+  kinds.polygons_only.push_back(
+      decompose->add_flag("--no-steiner", args.no_steiner,
+                          "Polygons: cuts end at vertices only (no new vertex on an edge)"));
+  kinds.meshes_only.push_back(
+      decompose->add_flag("--surface", args.surface,
+                          "Meshes: the surface ACD (nearly convex patches of the surface) even "
+                          "for a solid; open meshes always get it"));
+  kinds.meshes_only.push_back(
+      decompose
+          ->add_option("--max-hulls", args.max_hulls,
+                       "Meshes: then merge the adjacent components whose merged hull adds the "
+                       "least volume until at most N remain (they may exceed tau); 0: no cap")
+          ->check(CLI::NonNegativeNumber));
   decompose->add_option("--json", args.json_path, "Write the decomposition JSON here");
-  decompose->add_option("--svg", args.svg_path, "Write an SVG picture here");
+  decompose->add_option("--svg", args.svg_path,
+                        "Write an SVG picture here (meshes: a shaded oblique view)");
+  kinds.meshes_only.push_back(decompose->add_option(
+      "--obj", args.obj_path,
+      "Meshes: write the components and their hulls as OBJ objects here, materials in the "
+      ".mtl file beside it"));
+  kinds.meshes_only.push_back(decompose->add_option(
+      "--glb", args.glb_path, "Meshes: write the components and their hulls as binary glTF here"));
   decompose->add_flag("--repair", args.repair,
-                      "Make invalid polygons valid (even-odd rule) instead of rejecting them; "
-                      "each change is printed on stderr");
+                      "Polygons: make invalid polygons valid (even-odd rule) instead of "
+                      "rejecting them, each change printed on stderr. Meshes: close holes and "
+                      "remove self-intersections before the solid ACD, each change reported");
   decompose->add_flag("--check", args.check,
                       "Check the result (coverage, disjointness, concavity); on failure "
                       "list the problems, write nothing and exit 1");
@@ -462,6 +535,11 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   bench_collision->add_option("--seed", bench_options.seed, "Seed of worlds and poses")
       ->capture_default_str();
+  bench_collision
+      ->add_option("--tau-rel-3d", bench_options.tau_rel_3d,
+                   "3D obstacle ACD tau relative to each connected component's reference radius")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-9, 1e6));
   bench_collision
       ->add_option("--mesh-dir", bench_options.mesh_dir,
                    "Folder of .obj meshes used as 3D obstacles (relative to the working "
@@ -544,7 +622,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (decompose->parsed()) return RunDecompose(args);
+    if (decompose->parsed()) return RunDecompose(args, kinds);
     if (plan->parsed()) return RunPlan(plan_args);
     if (env->parsed()) return acdplan::tools::RunEnv(env_args);
     if (bench_collision->parsed())

@@ -187,8 +187,12 @@ int Report3d(const EnvArguments& args, const std::string& kind,
   const collision::ObstacleSet obstacles = collision::BuildObstacleSet(workspace);
   long vertices = 0;
   for (const acd::TriangleMesh& mesh : workspace.obstacles) vertices += mesh.vertices.rows();
-  int open_pieces = 0;
-  for (const collision::ObstaclePiece& piece : obstacles.pieces) open_pieces += !piece.closed;
+  int open_components = 0, open_pieces = 0, convex_pieces = 0;
+  for (const collision::ObstacleComponent& c : obstacles.components) open_components += !c.closed;
+  for (const collision::ObstaclePiece& piece : obstacles.pieces) {
+    open_pieces += !piece.closed;
+    convex_pieces += piece.convex;
+  }
 
   const Eigen::Vector3d lo = workspace.bounds.min(), hi = workspace.bounds.max();
   Line("world", args.input + " (" + kind + ")");
@@ -199,15 +203,23 @@ int Report3d(const EnvArguments& args, const std::string& kind,
                         std::to_string(collision::TriangleCount(obstacles)) + " triangles, " +
                         std::to_string(vertices) + " vertices");
   Line("obstacle hulls", std::to_string(obstacles.pieces.size()) + " from " +
-                             obstacles.hulls_source + "; " + std::to_string(open_pieces) +
+                             obstacles.hulls_source + "; " + std::to_string(convex_pieces) +
+                             " convex (their own hulls)");
+  Line("obstacle parts", Count(obstacles.components.size(), "connected component") + ", " +
+                             std::to_string(open_components) +
                              " open (no exact point location inside those)");
+  for (const std::string& note : obstacles.notes) Line("note", note);
   if (!args.json_path.empty()) {
     Json j = ReportHeader(args, kind, workspace.description, lo, hi);
     j["obstacles"] = workspace.obstacles.size();
     j["triangles"] = collision::TriangleCount(obstacles);
     j["obstacle_hulls"] = obstacles.pieces.size();
     j["open_pieces"] = open_pieces;
+    j["convex_hulls"] = convex_pieces;
+    j["obstacle_components"] = obstacles.components.size();
+    j["open_components"] = open_components;
     j["hulls_source"] = obstacles.hulls_source;
+    j["notes"] = obstacles.notes;
     WriteOutput(args.json_path, j.dump(2) + "\n");
     Line("wrote", args.json_path);
   }

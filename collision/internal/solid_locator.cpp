@@ -126,20 +126,29 @@ ExactObstacleLocator::ExactObstacleLocator(const ObstacleSet& obstacles, bool sk
     for (const acd::Polygon2d& polygon : obstacles.polygons) polygons_.emplace_back(polygon);
     return;
   }
-  for (size_t i = 0; i < obstacles.pieces.size(); ++i) {
-    const ObstaclePiece& piece = obstacles.pieces[i];
-    if (!piece.closed) {
+  for (size_t i = 0; i < obstacles.components.size(); ++i) {
+    const ObstacleComponent& component = obstacles.components[i];
+    if (!component.closed) {
       if (skip_open) {
         ++skipped_open_;
         continue;
       }
+<<<<<<< HEAD
+      int bad = 0;
+      IsClosedMesh(component.mesh, &bad);
+      throw InputError(
+          "PointLocator(): exact point location needs closed obstacle meshes: obstacle " +
+          std::to_string(component.obstacle) + " (connected component " + std::to_string(i) +
+          ") is open: " + std::to_string(bad) + " edges are not shared by exactly two triangles");
+=======
       throw InputError(
           "PointLocator(): exact point location needs closed obstacle meshes: obstacle " +
           std::to_string(piece.obstacle) + " (part " + std::to_string(i) +
           ") is open: " + acd::PrepareMesh(piece.solid).defects.first);
+>>>>>>> main
     }
-    pieces_.emplace_back(piece.solid);
-    piece_obstacle_.push_back(piece.obstacle);
+    pieces_.emplace_back(component.mesh);
+    piece_obstacle_.push_back(component.obstacle);
   }
 }
 

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "bench/acd3d_bench.h"
 #include "bench/collision_bench.h"
 #include "bench/summary.h"
 
@@ -169,6 +170,78 @@ TEST(Targets, ChecksRowsWithFiltersConditionsAndRatios) {
   const std::vector<Target> ats = {at};
   const std::vector<TargetRow> one = {row};
   EXPECT_EQ(CheckTargets(ats, one).size(), 1u);
+}
+
+TEST(Targets, AndTestsAndAnyOfMakeOneCheckPerGroup) {
+  // "One tau_rel meets all three": ratio, parts against the peer, and time against the peer.
+  const std::vector<Target> targets = LoadTargetsFile(
+      WriteFile("any.yaml",
+                "targets:\n"
+                "  - metric: volume_ratio\n"
+                "    compare: '<='\n"
+                "    value: 1.1\n"
+                "    and:\n"
+                "      - {metric: parts, over: vhacd.parts, compare: '<=', value: 1}\n"
+                "    any_of: tau_rel\n"),
+      Acd3dBenchTargetVocabulary());
+  ASSERT_EQ(targets.size(), 1u);
+  EXPECT_EQ(targets[0].any_of, "tau_rel");
+  ASSERT_EQ(targets[0].also.size(), 1u);
+  EXPECT_EQ(targets[0].Label(), "volume_ratio <= 1.1 and parts / vhacd.parts <= 1 for one tau_rel");
+  // JSON round trip keeps both keys.
+  const std::string json = TargetsToJson(targets);
+  const YamlFile file = YamlFile::Parse("targets: " + json, "bench.json");
+  EXPECT_EQ(TargetsToJson(
+                ReadTargets(file, file.root()["targets"], "targets", Acd3dBenchTargetVocabulary())),
+            json);
+
+  auto row = [](const std::string& mesh, const std::string& tau_rel, double ratio, double parts) {
+    TargetRow r;
+    r.labels = {{"mesh", mesh}, {"tau_rel", tau_rel}};
+    r.metrics = {{"volume_ratio", ratio}, {"parts", parts}, {"vhacd.parts", 64}};
+    return r;
+  };
+  const std::vector<TargetRow> rows = {
+      row("a", "0.2", 1.3, 4),    row("a", "0.05", 1.05, 30),  // a: 0.05 meets both.
+      row("b", "0.2", 1.3, 4),    row("b", "0.05", 1.05, 80),  // b: the tight one has too many
+      row("c", "0.2", 1.05, 100),                              // c: one row, and misses.
+  };
+  const std::vector<TargetCheck> checks = CheckTargets(targets, rows);
+  ASSERT_EQ(checks.size(), 3u);
+  EXPECT_TRUE(checks[0].holds);
+  EXPECT_EQ(checks[0].row->labels.at("tau_rel"), "0.05");  // The row that holds.
+  EXPECT_FALSE(checks[1].holds);
+  EXPECT_EQ(checks[1].row->labels.at("tau_rel"), "0.2");  // None holds: the first row.
+  EXPECT_FALSE(checks[2].holds);
+  EXPECT_EQ(checks[2].missed_also, "parts / vhacd.parts 1.56x");
+  const std::string md = TargetChecksMarkdown(checks, {"mesh", "tau_rel"});
+  EXPECT_HAS(md,
+             "| c | 0.2 | volume_ratio <= 1.1 and parts / vhacd.parts <= 1 for one tau_rel | "
+             "1.05 (but parts / vhacd.parts 1.56x) | **missed** |");
+  EXPECT_HAS(md, "1 target checks hold, 2 missed.");
+
+  // Without any_of, one check per row.
+  Target plain = targets[0];
+  plain.any_of.clear();
+  EXPECT_EQ(CheckTargets({plain}, rows).size(), 5u);
+
+  try {
+    LoadTargetsFile(WriteFile("bad_any.yaml",
+                              "targets: [{metric: parts, compare: '<', value: 1, any_of: tau}]\n"),
+                    Acd3dBenchTargetVocabulary());
+    ADD_FAILURE() << "accepted an unknown label";
+  } catch (const InputError& error) {
+    EXPECT_HAS(error.what(), "bad_any.yaml: targets[0].any_of: unknown label 'tau'");
+  }
+  try {
+    LoadTargetsFile(WriteFile("bad_and.yaml",
+                              "targets: [{metric: parts, compare: '<', value: 1, and: [{metric: "
+                              "speed, compare: '<', value: 1}]}]\n"),
+                    Acd3dBenchTargetVocabulary());
+    ADD_FAILURE() << "accepted an unknown metric";
+  } catch (const InputError& error) {
+    EXPECT_HAS(error.what(), "bad_and.yaml: targets[0].and[0].metric: unknown metric 'speed'");
+  }
 }
 
 TEST(Targets, CollisionRowsLeaveUnmeasuredFiguresOut) {

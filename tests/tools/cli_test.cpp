@@ -1,16 +1,19 @@
 // Runs the built `acdplan` binary (ACDPLAN_BINARY) and checks exit statuses, messages and
-// outputs of `acdplan decompose` and `acdplan env`.
+// outputs of `acdplan decompose` (polygons and meshes) and `acdplan env`.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -298,6 +301,323 @@ TEST_F(CliTest, RepairMakesInvalidPolygonsValidAndSaysWhat) {
               std::string::npos)
         << command << ": " << repaired.err;
   }
+}
+
+// ---- decompose MESH -------------------------------------------------------------------------
+
+/// The OBJ lines of an axis-aligned box [lo, hi], 8 shared vertices numbered from `first`
+/// (1-based), 12 triangles counter-clockwise seen from outside; `skip_top` leaves the +z side
+/// out (an open box).
+std::string BoxObj(const std::array<double, 3>& lo, const std::array<double, 3>& hi, int first = 1,
+                   bool skip_top = false) {
+  std::ostringstream obj;
+  for (int i = 0; i < 8; ++i) {
+    obj << "v " << (i & 1 ? hi[0] : lo[0]) << " " << (i & 2 ? hi[1] : lo[1]) << " "
+        << (i & 4 ? hi[2] : lo[2]) << "\n";
+  }
+  // Vertex i has x = bit 0, y = bit 1, z = bit 2.
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int q = 0; q < 6; ++q) {
+    if (skip_top && q == 1) continue;
+    const int* v = quads[q];
+    obj << "f " << first + v[0] << " " << first + v[1] << " " << first + v[2] << "\n";
+    obj << "f " << first + v[0] << " " << first + v[2] << " " << first + v[3] << "\n";
+  }
+  return obj.str();
+}
+
+TEST_F(CliTest, DecomposesAMeshAndWritesEveryOutput) {
+  const fs::path box = Write("box.obj", BoxObj({0, 0, 0}, {2, 1, 1}));
+  const fs::path out = dir_ / "out";
+  const RunResult run =
+      Acdplan("decompose " + Quote(box.string()) + " --tau-rel 0.05 --check --json " +
+              Quote((out / "box.json").string()) + " --obj " + Quote((out / "box.obj").string()) +
+              " --glb " + Quote((out / "box.glb").string()) + " --svg " +
+              Quote((out / "box.svg").string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  EXPECT_NE(run.out.find("8 vertices, 12 triangles"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("defects        none"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("solid ACD (closed, manifold, no self-intersections)"), std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("(tau_rel 0.05 x radius "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("check          ok"), std::string::npos) << run.out;
+  for (const char* name : {"box.json", "box.obj", "box.mtl", "box.glb", "box.svg"}) {
+    EXPECT_NE(run.out.find((out / name).string()), std::string::npos) << name << "\n" << run.out;
+  }
+
+  const nlohmann::json j = nlohmann::json::parse(Read(out / "box.json"));
+  EXPECT_EQ(j.at("format"), "acdplan.decomposition3d/1");
+  EXPECT_EQ(j.at("input"), box.string());
+  EXPECT_EQ(j.at("tau_rel"), 0.05);
+  EXPECT_EQ(j.at("stats").at("surface"), false);
+  EXPECT_GE(j.at("components").size(), 1u);
+  EXPECT_EQ(j.at("stats").at("components").get<size_t>(), j.at("components").size());
+  // The box is convex: its components fill it exactly, and so do their hulls.
+  EXPECT_NEAR(j.at("stats").at("volume").get<double>(), 2.0, 1e-9);
+  EXPECT_NEAR(j.at("stats").at("hull_volume").get<double>(), 2.0, 1e-9);
+
+  const std::string obj = Read(out / "box.obj");
+  EXPECT_NE(obj.find("mtllib box.mtl\n"), std::string::npos);
+  EXPECT_NE(obj.find("o component_0\n"), std::string::npos);
+  EXPECT_NE(obj.find("o hull_0\n"), std::string::npos);
+  EXPECT_NE(Read(out / "box.mtl").find("newmtl hull_0\n"), std::string::npos);
+  const std::string glb = Read(out / "box.glb");
+  EXPECT_EQ(glb.substr(0, 4), "glTF");
+  EXPECT_EQ(glb.size() % 4, 0u);
+  const std::string svg = Read(out / "box.svg");
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("solid ACD"), std::string::npos);
+  EXPECT_NE(svg.find("<polygon"), std::string::npos);
+
+  // A mesh reader (assimp, through decompose itself) reads the OBJ and glTF outputs back:
+  // every triangle of every component and hull.
+  size_t triangles = 0;
+  for (const nlohmann::json& c : j.at("components")) {
+    triangles += c.at("mesh").at("triangles").size() + c.at("hull").at("triangles").size();
+  }
+  for (const char* name : {"box.obj", "box.glb"}) {
+    const RunResult back = Acdplan("decompose " + Quote((out / name).string()) + " --surface");
+    EXPECT_EQ(back.status, 0) << name << ": " << back.err;
+    EXPECT_NE(back.out.find(" " + std::to_string(triangles) + " triangles)"), std::string::npos)
+        << name << ": " << back.out;
+  }
+}
+
+TEST_F(CliTest, EveryMeshFormatByItsExtension) {
+  // The same box as OFF, ASCII STL and ASCII PLY, and as OBJ with an upper-case extension.
+  const std::string obj = BoxObj({0, 0, 0}, {1, 1, 1});
+  std::vector<std::string> v, f;
+  std::istringstream lines(obj);
+  for (std::string line; std::getline(lines, line);) {
+    (line[0] == 'v' ? v : f).push_back(line.substr(2));
+  }
+  std::string off = "OFF\n8 12 0\n";
+  for (const std::string& p : v) off += p + "\n";
+  std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty "
+      "float z\nelement face 12\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const std::string& p : v) ply += p + "\n";
+  std::string stl = "solid box\n";
+  for (const std::string& face : f) {
+    std::istringstream ids(face);
+    int a = 0, b = 0, c = 0;
+    ids >> a >> b >> c;
+    off += "3 " + std::to_string(a - 1) + " " + std::to_string(b - 1) + " " +
+           std::to_string(c - 1) + "\n";
+    ply += "3 " + std::to_string(a - 1) + " " + std::to_string(b - 1) + " " +
+           std::to_string(c - 1) + "\n";
+    stl += " facet normal 0 0 0\n  outer loop\n";
+    for (int id : {a, b, c}) stl += "   vertex " + v[id - 1] + "\n";
+    stl += "  endloop\n endfacet\n";
+  }
+  stl += "endsolid box\n";
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"box.off", off}, {"box.ply", ply}, {"box.stl", stl}, {"BOX.OBJ", obj}}) {
+    const fs::path json_path = dir_ / (name + ".json");
+    const RunResult run = Acdplan("decompose " + Quote(Write(name, text).string()) + " --json " +
+                                  Quote(json_path.string()));
+    ASSERT_EQ(run.status, 0) << name << ": " << run.err;
+    EXPECT_NE(run.out.find("solid ACD"), std::string::npos) << name << ": " << run.out;
+    const nlohmann::json j = nlohmann::json::parse(Read(json_path));
+    EXPECT_EQ(j.at("format"), "acdplan.decomposition3d/1") << name;
+    EXPECT_NEAR(j.at("stats").at("volume").get<double>(), 1.0, 1e-6) << name;
+  }
+}
+
+TEST_F(CliTest, AnOpenMeshGetsTheSurfaceAcd) {
+  const fs::path open_box = Write("open_box.obj", BoxObj({0, 0, 0}, {1, 1, 1}, 1, true));
+  const fs::path json_path = dir_ / "open_box.json";
+  const RunResult run =
+      Acdplan("decompose " + Quote(open_box.string()) + " --json " + Quote(json_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("4 boundary edges"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("surface ACD (open: 4 boundary edges"), std::string::npos) << run.out;
+  const nlohmann::json j = nlohmann::json::parse(Read(json_path));
+  EXPECT_EQ(j.at("stats").at("surface"), true);
+  EXPECT_GE(j.at("components").size(), 1u);
+}
+
+TEST_F(CliTest, SurfaceAcdOfASolidOnRequest) {
+  const fs::path box = Write("box.obj", BoxObj({0, 0, 0}, {1, 1, 1}));
+  const fs::path json_path = dir_ / "box.json";
+  const RunResult run = Acdplan("decompose " + Quote(box.string()) + " --surface --json " +
+                                Quote(json_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("surface ACD (--surface)"), std::string::npos) << run.out;
+  EXPECT_EQ(nlohmann::json::parse(Read(json_path)).at("stats").at("surface"), true);
+}
+
+TEST_F(CliTest, AClosedNonManifoldMeshNeedsSurfaceOrRepair) {
+  // Two cubes sharing one edge (x = 1, y = 1) through shared vertices: closed, but the edge
+  // has four faces.
+  std::string text = BoxObj({0, 0, 0}, {1, 1, 1});
+  std::ostringstream second;
+  second << BoxObj({1, 1, 0}, {2, 2, 1}, 9);
+  text += second.str();
+  const fs::path mesh = Write("edge.obj", text);
+  const RunResult strict = Acdplan("decompose " + Quote(mesh.string()) + " --json " +
+                                   Quote((dir_ / "edge.json").string()));
+  ExpectUsageError(strict);
+  EXPECT_NE(strict.err.find(mesh.string() + ": not a solid: "), std::string::npos) << strict.err;
+  EXPECT_NE(strict.err.find("use --repair"), std::string::npos) << strict.err;
+  EXPECT_NE(strict.err.find("--surface"), std::string::npos) << strict.err;
+  EXPECT_FALSE(fs::exists(dir_ / "edge.json"));
+  const RunResult surface = Acdplan("decompose " + Quote(mesh.string()) + " --surface");
+  EXPECT_EQ(surface.status, 0) << surface.err;
+  EXPECT_NE(surface.out.find("non-manifold edge"), std::string::npos) << surface.out;
+}
+
+TEST_F(CliTest, TauMaxHullsAndTheirDefaults) {
+  const fs::path box = Write("box.obj", BoxObj({0, 0, 0}, {1, 1, 1}));
+  const fs::path a = dir_ / "a.json", b = dir_ / "b.json";
+  RunResult run = Acdplan("decompose " + Quote(box.string()) + " --json " + Quote(a.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("(tau_rel 0.05 x radius "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("the default)"), std::string::npos) << run.out;
+  nlohmann::json j = nlohmann::json::parse(Read(a));
+  EXPECT_EQ(j.at("tau_rel"), 0.05);
+  EXPECT_EQ(j.at("max_hulls"), 0);
+
+  run = Acdplan("decompose " + Quote(box.string()) + " --tau 0.125 --max-hulls 3 --json " +
+                Quote(b.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("max hulls      3"), std::string::npos) << run.out;
+  j = nlohmann::json::parse(Read(b));
+  EXPECT_EQ(j.at("tau"), 0.125);
+  EXPECT_TRUE(j.at("tau_rel").is_null());
+  EXPECT_EQ(j.at("max_hulls"), 3);
+  EXPECT_LE(j.at("components").size(), 3u);
+}
+
+TEST_F(CliTest, MeshErrorsNameTheFileAndTheRule) {
+  const std::string box = Quote(Write("box.obj", BoxObj({0, 0, 0}, {1, 1, 1})).string());
+  const std::string missing = (dir_ / "none.obj").string();
+  RunResult run = Acdplan("decompose " + Quote(missing));
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find(missing + ": cannot read the file: No such file or directory"),
+            std::string::npos)
+      << run.err;
+
+  const fs::path garbage = Write("garbage.stl", "this is not a mesh\n");
+  run = Acdplan("decompose " + Quote(garbage.string()));
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find(garbage.string() + ": "), std::string::npos) << run.err;
+
+  run = Acdplan("decompose " + box + " --measure sl");
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find("--measure: applies to polygon files only"), std::string::npos) << run.err;
+  for (const char* option : {"--min-convexity 0.5", "--hole-diameter pa", "--no-steiner"}) {
+    ExpectUsageError(Acdplan("decompose " + box + " " + option));
+  }
+  const std::string polygon = Quote(kPolygons + "simple1.poly");
+  for (const std::string option : {"--surface", "--max-hulls 4", "--obj x.obj", "--glb x.glb"}) {
+    run = Acdplan("decompose " + polygon + " " + option);
+    ExpectUsageError(run);
+    EXPECT_NE(run.err.find("applies to mesh files only"), std::string::npos) << run.err;
+  }
+
+  ExpectUsageError(Acdplan("decompose " + box + " --tau -1"));
+  ExpectUsageError(Acdplan("decompose " + box + " --tau-rel -0.5"));
+  ExpectUsageError(Acdplan("decompose " + box + " --tau 1 --tau-rel 0.1"));
+  ExpectUsageError(Acdplan("decompose " + box + " --max-hulls -1"));
+  ExpectUsageError(Acdplan("decompose " + box + " --max-hulls 2.5"));
+  for (const char* option : {"--json", "--obj", "--glb", "--svg"}) {
+    run = Acdplan("decompose " + box + " " + option + " " + Quote(dir_.string()));
+    ExpectUsageError(run);
+    EXPECT_NE(run.err.find("is a directory"), std::string::npos) << run.err;
+  }
+  run = Acdplan("decompose " + box + " --obj " + Quote((dir_ / "parts.mtl").string()));
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find("cannot have it"), std::string::npos) << run.err;
+
+  // An output under a regular file cannot be written: the error names it, exit status 2.
+  const fs::path blocker = Write("blocker", "x");
+  run = Acdplan("decompose " + box + " --svg " + Quote((blocker / "box.svg").string()));
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find((blocker / "box.svg").string()), std::string::npos) << run.err;
+
+  // Nothing but the inputs was written.
+  EXPECT_EQ(FileCount(), 3);
+}
+
+TEST_F(CliTest, RepairMakesMeshesSolidAndSaysWhat) {
+  // Two cubes that cross each other: closed, but self-intersecting.
+  const fs::path crossing = Write(
+      "crossing.obj", BoxObj({0, 0, 0}, {1, 1, 1}) + BoxObj({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}, 9));
+  const RunResult strict = Acdplan("decompose " + Quote(crossing.string()));
+  ExpectUsageError(strict);
+  EXPECT_NE(strict.err.find(crossing.string() + ": not a solid: faces "), std::string::npos)
+      << strict.err;
+  EXPECT_NE(strict.err.find("intersect"), std::string::npos) << strict.err;
+
+  const fs::path json_path = dir_ / "union.json";
+  RunResult run = Acdplan("decompose " + Quote(crossing.string()) + " --repair --json " +
+                          Quote(json_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("  changed"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("solid ACD (closed, manifold, no self-intersections after --repair)"),
+            std::string::npos)
+      << run.out;
+  // The union of the two cubes: 1 + 1 - 1/8.
+  const nlohmann::json j = nlohmann::json::parse(Read(json_path));
+  EXPECT_NEAR(j.at("stats").at("volume").get<double>(), 1.875, 1e-9);
+
+  run = Acdplan("decompose " + Quote(crossing.string()) + " --surface");
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("self-intersecting face pair"), std::string::npos) << run.out;
+
+  // An open box: surface ACD as it is, solid ACD once --repair closes its hole.
+  const fs::path open_box = Write("open_box.obj", BoxObj({0, 0, 0}, {1, 1, 1}, 1, true));
+  run = Acdplan("decompose " + Quote(open_box.string()) + " --repair --json " +
+                Quote(json_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("after --repair"), std::string::npos) << run.out;
+  EXPECT_NEAR(nlohmann::json::parse(Read(json_path)).at("stats").at("volume").get<double>(), 1.0,
+              1e-9);
+}
+
+TEST_F(CliTest, WhatRepairCannotMendGetsTheSurfaceAcd) {
+  // teddy.obj is closed but one of its shells crosses itself, which repair leaves alone.
+  const std::string teddy = kMeshes + "teddy.obj";
+  const RunResult strict = Acdplan("decompose " + Quote(teddy));
+  ExpectUsageError(strict);
+  EXPECT_NE(strict.err.find(teddy + ": not a solid: faces "), std::string::npos) << strict.err;
+  const fs::path json_path = dir_ / "teddy.json";
+  const RunResult run = Acdplan("decompose " + Quote(teddy) + " --repair --tau-rel 0.2 --json " +
+                                Quote(json_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("surface ACD (--repair could not make a solid: faces "), std::string::npos)
+      << run.out;
+  EXPECT_EQ(nlohmann::json::parse(Read(json_path)).at("stats").at("surface"), true);
+}
+
+TEST_F(CliTest, DecomposesACorpusMesh) {
+  // cube-notch.obj repeats its vertices per face (split normals): preparation merges them.
+  const fs::path json_path = dir_ / "cube-notch.json";
+  const RunResult run = Acdplan("decompose " + Quote(kMeshes + "cube-notch.obj") +
+                                " --tau-rel 0.02 --check --json " + Quote(json_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("duplicate vertices"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("solid ACD"), std::string::npos) << run.out;
+  const nlohmann::json j = nlohmann::json::parse(Read(json_path));
+  EXPECT_EQ(j.at("stats").at("surface"), false);
+  EXPECT_GE(j.at("stats").at("hull_volume").get<double>(),
+            j.at("stats").at("volume").get<double>() * (1 - 1e-9));
+  EXPECT_LE(j.at("stats").at("max_concavity").get<double>(), j.at("tau").get<double>() * 1.000001);
+
+  // A cap on the number of hulls.
+  const RunResult capped =
+      Acdplan("decompose " + Quote(kMeshes + "cube-notch.obj") +
+              " --tau-rel 0.02 --max-hulls 2 --json " + Quote(json_path.string()));
+  ASSERT_EQ(capped.status, 0) << capped.err;
+  const nlohmann::json k = nlohmann::json::parse(Read(json_path));
+  EXPECT_EQ(k.at("max_hulls"), 2);
+  EXPECT_GE(k.at("components").size(), 1u);
+  EXPECT_LE(k.at("components").size(), 2u);
+  EXPECT_NEAR(k.at("stats").at("volume").get<double>(), j.at("stats").at("volume").get<double>(),
+              1e-9 * j.at("stats").at("volume").get<double>());
 }
 
 }  // namespace

@@ -1,0 +1,201 @@
+#include "tools/decompose3d_command.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+#include <vector>
+
+#include "acd/check_decomposition3d.h"
+#include "acd/decompose3d.h"
+#include "acd/decomposition3d.h"
+#include "acd/decomposition3d_io.h"
+#include "acd/prepare_mesh.h"
+#include "base/file_io.h"
+#include "base/format.h"
+#include "base/input_error.h"
+#include "base/stopwatch.h"
+#include "envs/mesh_loader.h"
+
+namespace acdplan::tools {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+std::string Short(double x) { return FormatSignificant(x, 6); }
+
+// "1 part", "2 parts", "2 vertices".
+std::string Count(long long n, const std::string& noun, const std::string& plural = "") {
+  return std::to_string(n) + " " + (n == 1 ? noun : plural.empty() ? noun + "s" : plural);
+}
+
+// One "name  value" line of the report, aligned as the 2D decompose report.
+void Line(const char* name, const std::string& value) {
+  std::printf("%-14s %s\n", name, value.c_str());
+}
+
+/// An output path that can never be written is a usage error, reported before any work.
+void CheckOutputPath(const std::string& option, const std::string& path) {
+  if (path.empty()) return;
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw InputError(option + " " + path + ": is a directory");
+}
+
+std::string DefectSummary(const acd::MeshDefects& defects) {
+  return Count(defects.boundary_edges, "boundary edge") + ", " +
+         Count(defects.non_manifold_edges, "non-manifold edge") + ", " +
+         Count(defects.self_intersections, "self-intersecting face pair");
+}
+
+}  // namespace
+
+bool IsMeshFile(const std::string& path) {
+  static const char* const kExtensions[] = {".obj",  ".stl", ".ply", ".off",
+                                            ".gltf", ".glb", ".dae"};
+  const std::string extension = Lower(fs::path(path).extension().string());
+  return std::find(std::begin(kExtensions), std::end(kExtensions), extension) !=
+         std::end(kExtensions);
+}
+
+std::string MtlPathFor(const std::string& obj_path) {
+  return fs::path(obj_path).replace_extension(".mtl").string();
+}
+
+int RunDecompose3d(const Decompose3dArguments& args) {
+  // Everything the user typed is checked before the (possibly long) decomposition.
+  CheckOutputPath("--json", args.json_path);
+  CheckOutputPath("--obj", args.obj_path);
+  CheckOutputPath("--glb", args.glb_path);
+  CheckOutputPath("--svg", args.svg_path);
+  const std::string mtl_path = args.obj_path.empty() ? "" : MtlPathFor(args.obj_path);
+  if (!args.obj_path.empty()) {
+    if (Lower(fs::path(args.obj_path).extension().string()) == ".mtl") {
+      throw InputError("--obj " + args.obj_path +
+                       ": the material file is written beside the OBJ file with the extension "
+                       ".mtl, so the OBJ file cannot have it");
+    }
+    CheckOutputPath("--obj (material file)", mtl_path);
+  }
+
+  const acd::TriangleMesh mesh = envs::ReadMesh(args.input);
+  const Stopwatch preparation;
+  acd::PrepareMeshOptions prepare_options;
+  prepare_options.repair = args.repair;
+  const acd::PreparedMesh prepared = acd::PrepareMesh(mesh, prepare_options, args.input);
+  const double prepare_ms = preparation.Milliseconds();
+
+  // Solid or surface ACD. An open surface bounds no volume: the surface ACD is the only one
+  // that applies. A closed mesh that is not a solid (non-manifold edges, self-intersections)
+  // most likely means a modelling error the user should know about: an error unless asked
+  // to repair it or to decompose the surface. What --repair cannot mend gets the surface
+  // ACD: the user asked for a result, and the report says why it is not the solid one.
+  std::string why;
+  if (args.surface) {
+    why = "surface ACD (--surface)";
+  } else if (prepared.solid()) {
+    why = "solid ACD (closed, manifold, no self-intersections" +
+          std::string(args.repair ? " after --repair)" : ")");
+  } else if (args.repair) {
+    why = "surface ACD (--repair could not make a solid: " + prepared.defects.first + ")";
+  } else if (prepared.defects.boundary_edges > 0) {
+    why = "surface ACD (open: " + Count(prepared.defects.boundary_edges, "boundary edge") +
+          "; open meshes get the surface ACD)";
+  } else {
+    acd::RequireSolid(prepared, args.input);  // Throws, naming the defect and the way out.
+  }
+
+  const double radius = acd::ReferenceRadius(prepared.mesh);
+  const double tau_rel = args.tau >= 0 ? -1.0 : args.tau_rel >= 0 ? args.tau_rel : kDefaultTauRel3d;
+  acd::Decompose3dOptions options;
+  options.tau = args.tau >= 0 ? args.tau : tau_rel * radius;
+  options.surface = args.surface;
+  options.max_hulls = args.max_hulls;
+  const acd::Decomposition3d decomposition = acd::Decompose3d(prepared, options);
+
+  if (args.check) {
+    const acd::DecompositionCheck check = acd::CheckDecomposition3d(prepared, decomposition);
+    if (!check.ok()) {
+      std::cerr << "acdplan: internal error: the decomposition of " << args.input
+                << " failed its check (" << check.problems.size()
+                << " problems); no output written:\n";
+      for (const std::string& problem : check.problems) std::cerr << "  " << problem << "\n";
+      return 1;
+    }
+  }
+
+  // Every output is produced in memory first and written atomically, so a failure leaves no
+  // partial file behind.
+  acd::DecompositionLabels labels;
+  labels.input = args.input;
+  labels.tau_rel = tau_rel;
+  std::vector<std::string> written;
+  auto write = [&written](const std::string& path, const std::string& text) {
+    WriteFileAtomically(path, text);
+    written.push_back(path);
+  };
+  try {
+    if (!args.json_path.empty()) {
+      write(args.json_path, acd::Decomposition3dToJson(decomposition, labels));
+    }
+    if (!args.obj_path.empty()) {
+      const acd::ObjFiles files =
+          acd::Decomposition3dToObj(decomposition, fs::path(mtl_path).filename().string());
+      write(mtl_path, files.mtl);  // First, so the OBJ never refers to a missing file.
+      write(args.obj_path, files.obj);
+    }
+    if (!args.glb_path.empty()) {
+      const std::vector<std::uint8_t> glb = acd::Decomposition3dToGlb(decomposition);
+      write(args.glb_path, std::string(glb.begin(), glb.end()));
+    }
+    if (!args.svg_path.empty()) {
+      write(args.svg_path, acd::Decomposition3dToSvg(decomposition, labels));
+    }
+  } catch (const std::runtime_error& error) {
+    throw InputError(error.what());  // The user's path to fix: exit status 2.
+  }
+
+  const acd::DecompositionStats3d& stats = decomposition.stats;
+  Line("input", args.input + " (" + Count(mesh.vertices.rows(), "vertex", "vertices") + ", " +
+                    Count(mesh.triangles.rows(), "triangle") + ")");
+  Line("prepared", Count(prepared.mesh.vertices.rows(), "vertex", "vertices") + ", " +
+                       Count(prepared.mesh.triangles.rows(), "triangle") + ", " +
+                       Count(static_cast<long long>(prepared.parts.size()), "part") + ", " +
+                       FormatSignificant(prepare_ms, 3) + " ms");
+  for (const std::string& note : prepared.notes) Line("  changed", note);
+  if (prepared.defects.none()) {
+    Line("defects", "none");
+  } else {
+    Line("defects", DefectSummary(prepared.defects));
+    Line("  first", prepared.defects.first);
+  }
+  Line("acd", why);
+  if (tau_rel >= 0) {
+    Line("tau", Short(decomposition.tau) + " (tau_rel " + Short(tau_rel) + " x radius " +
+                    Short(radius) + (args.tau_rel < 0 ? ", the default)" : ")"));
+  } else {
+    Line("tau", Short(decomposition.tau));
+  }
+  if (decomposition.max_hulls > 0) Line("max hulls", std::to_string(decomposition.max_hulls));
+  Line("components", std::to_string(stats.components));
+  if (stats.surface) {
+    Line("hull volume", Short(stats.hull_volume));
+  } else {
+    Line("hull volume", Short(stats.hull_volume) + " / volume " + Short(stats.volume) + " = " +
+                            (stats.volume > 0 ? Short(stats.hull_volume / stats.volume) : "n/a"));
+  }
+  Line("max concavity", Short(stats.max_concavity));
+  Line("time", FormatFixed(stats.time_ms, 3) + " ms");
+  if (args.check) Line("check", "ok");
+  for (const std::string& path : written) Line("wrote", path);
+  return 0;
+}
+
+}  // namespace acdplan::tools
