@@ -15,6 +15,7 @@
 #include "base/json_number.h"
 #include "base/random.h"
 #include "base/stopwatch.h"
+#include "bench/cell_process.h"
 #include "collision/collision_world.h"
 #include "collision/point_locator.h"
 #include "envs/generators.h"
@@ -31,6 +32,56 @@ using collision::ObstacleSet;
 using collision::ObstacleSetOptions;
 using collision::PointLocator;
 using collision::TriangleCount;
+
+/// A mesh's child process is killed after this long (the decomposition, 20,000 poses in three
+/// modes and 200,000 points take under a minute on every V-HACD mesh).
+constexpr double kMeshTimeoutS = 900;
+
+nlohmann::json RowToJson(const BenchCollisionRow& r) {
+  auto number = [](double x) { return JsonNumber(x); };
+  nlohmann::json w;
+  w["world"] = r.world;
+  w["hulls_source"] = r.hulls_source;
+  w["triangles"] = r.triangles;
+  w["hulls"] = r.hulls;
+  w["poses"] = r.poses;
+  w["bvh_checks_per_s"] = number(r.bvh_checks_per_s);
+  w["hulls_checks_per_s"] = number(r.hulls_checks_per_s);
+  w["hulls_exact_checks_per_s"] = number(r.hulls_exact_checks_per_s);
+  w["collision_rate"] = number(r.collision_rate);
+  w["hulls_false_positive_rate"] = number(r.hulls_false_positive_rate);
+  w["hulls_misses"] = r.hulls_misses;
+  w["hulls_exact_mismatches"] = r.hulls_exact_mismatches;
+  w["locate_exact_points_per_s"] = number(r.locate_exact_points_per_s);
+  w["locate_hulls_points_per_s"] = number(r.locate_hulls_points_per_s);
+  w["locate_hulls_error_rate"] = number(r.locate_hulls_error_rate);
+  if (!r.note.empty()) w["note"] = r.note;
+  return w;
+}
+
+BenchCollisionRow RowFromJson(const nlohmann::json& w) {
+  auto number = [](const nlohmann::json& x) {
+    return x.is_number() ? x.get<double>() : std::nan("");
+  };
+  BenchCollisionRow r;
+  r.world = w["world"].get<std::string>();
+  r.hulls_source = w["hulls_source"].get<std::string>();
+  r.triangles = w["triangles"].get<int>();
+  r.hulls = w["hulls"].get<int>();
+  r.poses = w["poses"].get<int>();
+  r.bvh_checks_per_s = number(w["bvh_checks_per_s"]);
+  r.hulls_checks_per_s = number(w["hulls_checks_per_s"]);
+  r.hulls_exact_checks_per_s = number(w["hulls_exact_checks_per_s"]);
+  r.collision_rate = number(w["collision_rate"]);
+  r.hulls_false_positive_rate = number(w["hulls_false_positive_rate"]);
+  r.hulls_misses = w["hulls_misses"].get<int>();
+  r.hulls_exact_mismatches = w["hulls_exact_mismatches"].get<int>();
+  r.locate_exact_points_per_s = number(w["locate_exact_points_per_s"]);
+  r.locate_hulls_points_per_s = number(w["locate_hulls_points_per_s"]);
+  r.locate_hulls_error_rate = number(w["locate_hulls_error_rate"]);
+  if (w.contains("note")) r.note = w["note"].get<std::string>();
+  return r;
+}
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -170,33 +221,59 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
     }
   }
 
-  for (const std::string& file : mesh_files) {
+  // Each mesh in a child process of its own (bench/cell_process.h), with its own seed: a mesh
+  // whose decomposition crashes or hangs is a row with a note, and the others still run (and
+  // draw the same poses as without it).
+  for (size_t m = 0; m < mesh_files.size(); ++m) {
+    const std::string& file = mesh_files[m];
     BenchCollisionRow row;
-    const std::string path = (std::filesystem::path(options.mesh_dir) / file).string();
-    envs::Workspace3d workspace;
-    workspace.obstacles.push_back(envs::ReadMesh(path));
-    const Eigen::AlignedBox3d box = acd::BoundingBox(workspace.obstacles[0]);
-    workspace.bounds =
-        Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
-    auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace, set_options));
     row.world = std::filesystem::path(file).stem().string() + "/mesh";
-    row.hulls_source = set->hulls_source;
-    row.triangles = TriangleCount(*set);
-    row.hulls = static_cast<int>(set->pieces.size());
-    std::vector<Eigen::Isometry3d> poses;
-    for (int i = 0; i < options.poses; ++i) {
-      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-      pose.translation() = UniformPoint(workspace.bounds, rng);
-      // A uniform rotation: a normalised 4D Gaussian (drawn w, x, y, z in order).
-      Eigen::Vector4d q;
-      for (int k = 0; k < 4; ++k) q[k] = StandardNormal(rng);
-      pose.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
-      poses.push_back(pose);
+    const std::string path = (std::filesystem::path(options.mesh_dir) / file).string();
+    auto work = [&]() {
+      RandomEngine mesh_rng(DeriveSeed(options.seed, m));
+      envs::Workspace3d workspace;
+      workspace.obstacles.push_back(envs::ReadMesh(path));
+      const Eigen::AlignedBox3d box = acd::BoundingBox(workspace.obstacles[0]);
+      workspace.bounds =
+          Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
+      auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace, set_options));
+      BenchCollisionRow measured = row;
+      measured.hulls_source = set->hulls_source;
+      measured.triangles = TriangleCount(*set);
+      measured.hulls = static_cast<int>(set->pieces.size());
+      std::vector<Eigen::Isometry3d> poses;
+      for (int i = 0; i < options.poses; ++i) {
+        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+        pose.translation() = UniformPoint(workspace.bounds, mesh_rng);
+        // A uniform rotation: a normalised 4D Gaussian (drawn w, x, y, z in order).
+        Eigen::Vector4d q;
+        for (int k = 0; k < 4; ++k) q[k] = StandardNormal(mesh_rng);
+        pose.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+        poses.push_back(pose);
+      }
+      const CollisionWorld world(set, envs::Robot::Mesh(acd::Cube(0.05 * box.sizes().norm())));
+      TimeModes(world, poses, &measured);
+      TimeLocation(set, RandomPoints(workspace.bounds, options.points, false, mesh_rng), &measured);
+      return RowToJson(measured).dump();
+    };
+    const CellOutcome outcome = RunCellProcess(work, kMeshTimeoutS);
+    if (outcome.status == CellStatus::kOk) {
+      row = RowFromJson(nlohmann::json::parse(outcome.output));
+    } else {
+      const double nan = std::nan("");
+      for (double* figure :
+           {&row.bvh_checks_per_s, &row.hulls_checks_per_s, &row.hulls_exact_checks_per_s,
+            &row.collision_rate, &row.hulls_false_positive_rate, &row.locate_exact_points_per_s,
+            &row.locate_hulls_points_per_s, &row.locate_hulls_error_rate}) {
+        *figure = nan;
+      }
+      row.note = "failed: " + outcome.reason;
     }
-    const CollisionWorld world(set, envs::Robot::Mesh(acd::Cube(0.05 * box.sizes().norm())));
-    TimeModes(world, poses, &row);
-    TimeLocation(set, RandomPoints(workspace.bounds, options.points, false, rng), &row);
-    if (progress) *progress << "bench-collision: " << row.world << " done\n" << std::flush;
+    if (progress) {
+      *progress << "bench-collision: " << row.world << (row.note.empty() ? " done" : " " + row.note)
+                << "\n"
+                << std::flush;
+    }
     rows.push_back(row);
   }
   return rows;
@@ -245,8 +322,15 @@ std::vector<TargetRow> CollisionTargetRows(const std::vector<BenchCollisionRow>&
     const size_t slash = r.world.rfind('/');
     row.labels["kind"] =
         slash != std::string::npos && r.world.substr(slash) == "/mesh" ? "mesh" : "2d";
+    // A mesh whose run failed measured nothing: every target on it misses (NaN), rather than
+    // not applying.
+    const bool failed = r.note.rfind("failed", 0) == 0;
     for (const auto& [name, value] : Metrics(r)) {
-      if (!std::isnan(value)) row.metrics[name] = value;
+      if (failed) {
+        row.metrics[name] = std::nan("");
+      } else if (!std::isnan(value)) {
+        row.metrics[name] = value;
+      }
     }
     out.push_back(row);
   }
@@ -272,6 +356,9 @@ std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows,
            Percent(r.locate_hulls_error_rate) + " |\n";
   }
   out += "\nn/a: exact point location needs a closed mesh.\n";
+  for (const BenchCollisionRow& r : rows) {
+    if (r.note.rfind("failed", 0) == 0) out += "\n" + r.world + ": " + r.note + "\n";
+  }
   if (!targets.empty()) {
     const std::vector<TargetRow> target_rows = CollisionTargetRows(rows);
     out += "\n## Targets\n\n" + TargetChecksMarkdown(CheckTargets(targets, target_rows), {"world"});
@@ -281,28 +368,8 @@ std::string BenchCollisionMarkdown(const std::vector<BenchCollisionRow>& rows,
 
 std::string BenchCollisionJson(const std::vector<BenchCollisionRow>& rows,
                                const BenchCollisionOptions& options) {
-  auto number = [](double x) { return JsonNumber(x); };
   nlohmann::json worlds = nlohmann::json::array();
-  for (const BenchCollisionRow& r : rows) {
-    nlohmann::json w;
-    w["world"] = r.world;
-    w["hulls_source"] = r.hulls_source;
-    w["triangles"] = r.triangles;
-    w["hulls"] = r.hulls;
-    w["poses"] = r.poses;
-    w["bvh_checks_per_s"] = number(r.bvh_checks_per_s);
-    w["hulls_checks_per_s"] = number(r.hulls_checks_per_s);
-    w["hulls_exact_checks_per_s"] = number(r.hulls_exact_checks_per_s);
-    w["collision_rate"] = number(r.collision_rate);
-    w["hulls_false_positive_rate"] = number(r.hulls_false_positive_rate);
-    w["hulls_misses"] = r.hulls_misses;
-    w["hulls_exact_mismatches"] = r.hulls_exact_mismatches;
-    w["locate_exact_points_per_s"] = number(r.locate_exact_points_per_s);
-    w["locate_hulls_points_per_s"] = number(r.locate_hulls_points_per_s);
-    w["locate_hulls_error_rate"] = number(r.locate_hulls_error_rate);
-    if (!r.note.empty()) w["note"] = r.note;
-    worlds.push_back(w);
-  }
+  for (const BenchCollisionRow& r : rows) worlds.push_back(RowToJson(r));
   nlohmann::json doc;
   doc["format"] = "acdplan.bench_collision/1";
   doc["options"] = {

@@ -18,7 +18,7 @@ struct BenchCollisionOptions {
   int points = 200000;     ///< Random points per world for point location; > 0.
   std::uint64_t seed = 1;  ///< Seeds the worlds (envs generators) and the poses.
   double tau = 0.02;       ///< 2D obstacle ACD tau [units] (ObstacleSetOptions::tau); >= 0.
-  /// 3D obstacle ACD tau relative to each connected component's reference radius
+  /// 3D obstacle ACD tau relative to each obstacle part's reference radius
   /// (ObstacleSetOptions::tau_rel_3d); > 0.
   double tau_rel_3d = collision::ObstacleSetOptions{}.tau_rel_3d;
   std::string mesh_dir;             ///< Folder of .obj meshes used one by one as 3D obstacles.

@@ -154,7 +154,7 @@ struct CollisionWorld::Impl {
   internal::HullTree hull_tree;  // point robot, kHulls / kHullsExact
   int dimension = 2;
 
-  // True if the connected component of piece `i` lies inside the robot at `pose` (closed 3D
+  // True if the part (ObstacleComponent) of piece `i` lies inside the robot at `pose` (closed 3D
   // robot only): with no surface contact, one vertex decides. With contact elsewhere on the
   // component the answer may be true too, which is then right for another reason.
   bool PieceInsideRobot(const ObstacleSet& set, size_t i, const Eigen::Isometry3d& pose) const {

@@ -10,10 +10,7 @@
 
 #include "acd/convex_hull3d.h"
 #include "acd/decompose2d.h"
-<<<<<<< HEAD
 #include "acd/decompose3d.h"
-=======
->>>>>>> main
 #include "acd/prepare_mesh.h"
 #include "base/input_error.h"
 #include "collision/internal/mesh_building.h"
@@ -117,8 +114,8 @@ struct SourceCounts {
 void AddComponentPieces(ObstacleSet* set, int c, double tau_rel, double thickness,
                         SourceCounts* counts) {
   const ObstacleComponent& component = set->components[static_cast<size_t>(c)];
-  const std::string where = "obstacle " + std::to_string(component.obstacle) +
-                            ", connected component " + std::to_string(c);
+  const std::string where =
+      "obstacle " + std::to_string(component.obstacle) + ", part " + std::to_string(c);
   try {
     acd::PreparedMesh prepared = acd::PrepareMesh(component.mesh, {}, where);
     bool repaired = false;
@@ -166,45 +163,22 @@ ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace,
   for (size_t k = 0; k < workspace.obstacles.size(); ++k) {
     acd::CheckTriangleMesh(workspace.obstacles[k],
                            "BuildObstacleSet(): obstacle " + std::to_string(k));
-<<<<<<< HEAD
   }
   SourceCounts counts;
   for (size_t k = 0; k < workspace.obstacles.size(); ++k) {
-    // Welded, so that copies of a vertex split at a normal or UV seam do not cut the surface
-    // into open pieces.
-    const acd::TriangleMesh mesh = internal::WeldVertices(workspace.obstacles[k]);
-    set.meshes.push_back(mesh);
-    for (acd::TriangleMesh& part : internal::ConnectedComponents(mesh)) {
-      ObstacleComponent component;
-      component.obstacle = static_cast<int>(k);
-      component.closed = internal::IsClosedMesh(part);
-      component.mesh = std::move(part);
-      set.components.push_back(std::move(component));
-      AddComponentPieces(&set, static_cast<int>(set.components.size() - 1), options.tau_rel_3d,
-                         thickness, &counts);
-=======
     // Cleaned (vertices split at normal or UV seams welded, so the surface is not cut into
     // open pieces) and split into parts: solids with their cavities, or surface patches.
     acd::PreparedMesh prepared = acd::PrepareMesh(
         workspace.obstacles[k], {}, "BuildObstacleSet(): obstacle " + std::to_string(k));
     set.meshes.push_back(prepared.mesh);
     for (size_t p = 0; p < prepared.parts.size(); ++p) {
-      acd::TriangleMesh& component = prepared.parts[p];
-      ObstaclePiece piece;
-      piece.obstacle = static_cast<int>(k);
-      piece.closed = prepared.closed_parts[p];
-      std::vector<Eigen::Vector3d> points;
-      for (Eigen::Index i = 0; i < component.vertices.rows(); ++i) {
-        points.push_back(component.vertices.row(i).transpose());
-      }
-      piece.hull = acd::ConvexHull3(points, thickness);
-      piece.planes = acd::HullPlanes(piece.hull);
-      for (Eigen::Index i = 0; i < piece.hull.vertices.rows(); ++i) {
-        piece.box.extend(Eigen::Vector3d(piece.hull.vertices.row(i).transpose()));
-      }
-      piece.solid = std::move(component);
-      set.pieces.push_back(std::move(piece));
->>>>>>> main
+      ObstacleComponent component;
+      component.obstacle = static_cast<int>(k);
+      component.closed = prepared.closed_parts[p];
+      component.mesh = std::move(prepared.parts[p]);
+      set.components.push_back(std::move(component));
+      AddComponentPieces(&set, static_cast<int>(set.components.size() - 1), options.tau_rel_3d,
+                         thickness, &counts);
     }
   }
   std::ostringstream source;

@@ -23,43 +23,33 @@ struct ObstacleSetOptions {
   /// extruded to [-h/4, h/4] so that no robot face is coplanar with an obstacle cap.
   double extrusion_height = 1.0;
   /// 3D only: concavity tolerated per ACD component of an obstacle, relative to the
-  /// acd::ReferenceRadius of each connected component of the obstacle (tau = tau_rel_3d x
+  /// acd::ReferenceRadius of each part of the obstacle (ObstacleComponent; tau = tau_rel_3d x
   /// radius); > 0. The default trades hull tightness for hull count on the V-HACD meshes
   /// (docs/bench/bench_collision.md: hull point-location error and hulls+exact speed).
   double tau_rel_3d = 0.05;
 };
 
-<<<<<<< HEAD
-/// 3D: a connected component of an obstacle's surface (triangles sharing a vertex, after merging
-/// vertices at identical positions), the exact geometry the ACD pieces stand for.
+/// 3D: a part of an obstacle's surface as acd::PrepareMesh() finds it (without repair: a solid
+/// with its cavities, or an edge-connected surface patch of a mesh that is not a solid), the exact
+/// geometry the ACD pieces stand for.
 struct ObstacleComponent {
   int obstacle = 0;        ///< Index of the obstacle it belongs to.
   acd::TriangleMesh mesh;  ///< Its triangles, exact input coordinates.
-  bool closed = true;      ///< A closed 2-manifold (inside/outside is defined by ray parity).
+  /// Every edge has two triangles, so inside/outside is defined by ray parity
+  /// (acd::PreparedMesh::closed_parts).
+  bool closed = true;
 };
 
 /// One nearly convex piece of an obstacle, an ACD component, with its convex hull: 2D a component
 /// of Decompose2d; 3D a component of Decompose3d (a solid ACD piece of a closed obstacle
-/// component, a surface ACD patch of an open one).
-=======
-/// One convex piece of an obstacle: an ACD component (2D) or a part of the obstacle's surface
-/// (3D, until a 3D ACD exists: a part of acd::PrepareMesh(), a solid with its cavities or a
-/// surface patch), with its convex hull.
->>>>>>> main
+/// part, a surface ACD patch of an open one).
 struct ObstaclePiece {
   int obstacle = 0;         ///< Index of the obstacle this piece belongs to.
   int component = -1;       ///< 3D: index into ObstacleSet::components; -1 in 2D.
   acd::TriangleMesh solid;  ///< The piece's own surface: 2D the extruded component polygon
-<<<<<<< HEAD
                             ///< (closed), 3D the ACD component's mesh (a solid piece with its
                             ///< cut faces, closed; or a surface patch, open).
   bool closed = true;       ///< `solid` is a closed 2-manifold (inside/outside is defined).
-=======
-                            ///< (closed), 3D the part's triangles.
-  /// `solid` is closed: every edge has two triangles, so inside/outside is defined by ray
-  /// parity (acd::PreparedMesh::closed_parts).
-  bool closed = true;
->>>>>>> main
   /// `solid` is convex, so it equals `hull` (2D: every vertex of the component is a strict
   /// vertex of its hull; 3D: a closed piece every face of which lies in a facet plane of its
   /// hull, with the same orientation; both decided with exact predicates). A hull hit on a
@@ -86,12 +76,12 @@ struct ObstacleSet {
   std::vector<acd::Polygon2d> polygons;       ///< 2D: the obstacles (prepared).
   std::vector<acd::TriangleMesh> meshes;      ///< Exact obstacle surfaces (2D: extruded prisms).
   std::vector<ObstaclePiece> pieces;          ///< Convex pieces of every obstacle.
-  std::vector<ObstacleComponent> components;  ///< 3D: connected components of every obstacle.
+  std::vector<ObstacleComponent> components;  ///< 3D: the parts of every obstacle.
   /// Where the hulls come from, for reports: "ACD (Decompose2d, tau = 0.02)" in 2D,
-  /// "ACD (Decompose3d, tau_rel = 0.05: 12 solid, 3 surface)" in 3D (per connected component:
+  /// "ACD (Decompose3d, tau_rel = 0.05: 12 solid, 3 surface)" in 3D (per part:
   /// solid ACD, solid ACD after repair, surface ACD, or its plain hull when neither ran).
   std::string hulls_source;
-  /// 3D: one line per connected component whose ACD could not run (then its one piece is its
+  /// 3D: one line per part whose ACD could not run (then its one piece is its
   /// hull), with the reason.
   std::vector<std::string> notes;
 };
@@ -103,30 +93,20 @@ struct ObstacleSet {
 ObstacleSet BuildObstacleSet(const envs::Workspace2d& workspace,
                              const ObstacleSetOptions& options = {});
 
-<<<<<<< HEAD
-/// Builds the pieces of a 3D workspace. Each obstacle mesh is welded (vertices at identical
-/// positions merged) and split into connected components; each component is prepared
-/// (acd::PrepareMesh) and decomposed (acd::Decompose3d, tau = options.tau_rel_3d x its
-/// acd::ReferenceRadius): solid ACD when it is a solid, or one after repair (closed but
-/// self-intersecting), so that the pieces' hulls cover its volume; surface ACD when it is open
-/// (patch hulls cover its surface; flat ones are thickened by 1e-6 of the bounds' diagonal so
-/// that they bound a volume). A component whose ACD cannot run (a closed one that is no solid even
-/// after repair, or a decomposition that throws) gets its convex hull as its one piece and a line
-/// in `notes`. Every hull is CGAL convex_hull_3 of the piece's vertices. Open meshes are accepted
-/// here (`closed` is false); exact point location on them is refused later.
-/// @throws InputError if a mesh fails acd::CheckTriangleMesh() or tau_rel_3d is not > 0.
+/// Builds the pieces of a 3D workspace. Each obstacle mesh is cleaned and split into parts by
+/// acd::PrepareMesh() (`meshes` holds the cleaned meshes, `components` the parts); each part is
+/// decomposed (acd::Decompose3d, tau = options.tau_rel_3d x its acd::ReferenceRadius): solid ACD
+/// when it is a solid, or one after repair (closed but self-intersecting), so that the pieces'
+/// hulls cover its volume; surface ACD when it is open (patch hulls cover its surface; flat ones
+/// are thickened by 1e-6 of the bounds' diagonal so that they bound a volume). A part whose ACD
+/// cannot run (a closed one that is no solid even after repair, or a decomposition that throws)
+/// gets its convex hull as its one piece and a line in `notes`. Every hull is CGAL convex_hull_3 of
+/// the piece's vertices. Open meshes are accepted here (`closed` is false); exact point location on
+/// them is refused later.
+/// @throws InputError if a mesh fails acd::CheckTriangleMesh() or has no face of positive area,
+///         or tau_rel_3d is not > 0.
 ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace,
                              const ObstacleSetOptions& options = {});
-=======
-/// Builds the pieces of a 3D workspace: one piece per part of each obstacle mesh as
-/// acd::PrepareMesh() finds them (without repair: a solid with its cavities, or an edge-connected
-/// surface patch of a mesh that is not a solid), with its 3D convex hull (CGAL convex_hull_3).
-/// `meshes` holds the cleaned meshes. Meshes that are not solids are accepted here (`closed` is
-/// false); exact point location on them is refused later.
-/// @throws InputError if a mesh fails acd::CheckTriangleMesh() or has no face of positive
-///         area.
-ObstacleSet BuildObstacleSet(const envs::Workspace3d& workspace);
->>>>>>> main
 
 /// The number of obstacle triangles (sum over `meshes`).
 int TriangleCount(const ObstacleSet& obstacles);

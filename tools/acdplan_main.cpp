@@ -537,7 +537,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bench_collision
       ->add_option("--tau-rel-3d", bench_options.tau_rel_3d,
-                   "3D obstacle ACD tau relative to each connected component's reference radius")
+                   "3D obstacle ACD tau relative to each obstacle part's reference radius")
       ->capture_default_str()
       ->check(CLI::Range(1e-9, 1e6));
   bench_collision

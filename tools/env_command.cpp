@@ -205,7 +205,7 @@ int Report3d(const EnvArguments& args, const std::string& kind,
   Line("obstacle hulls", std::to_string(obstacles.pieces.size()) + " from " +
                              obstacles.hulls_source + "; " + std::to_string(convex_pieces) +
                              " convex (their own hulls)");
-  Line("obstacle parts", Count(obstacles.components.size(), "connected component") + ", " +
+  Line("obstacle parts", Count(obstacles.components.size(), "part") + ", " +
                              std::to_string(open_components) +
                              " open (no exact point location inside those)");
   for (const std::string& note : obstacles.notes) Line("note", note);

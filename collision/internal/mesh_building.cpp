@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <list>
+#include <vector>
 
 namespace acdplan::collision::internal {
 namespace {
@@ -125,86 +126,6 @@ acd::TriangleMesh ExtrudeConvexRing(const acd::Ring2d& hull, double z0, double z
   return acd::MakeTriangleMesh(v, tris);
 }
 
-<<<<<<< HEAD
-acd::TriangleMesh WeldVertices(const acd::TriangleMesh& mesh) {
-  std::map<std::tuple<double, double, double>, int> index;
-  std::vector<Eigen::Vector3d> v;
-  std::vector<int> remap(static_cast<size_t>(mesh.vertices.rows()));
-  for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
-    const auto key = std::make_tuple(mesh.vertices(i, 0), mesh.vertices(i, 1), mesh.vertices(i, 2));
-    auto [it, inserted] = index.emplace(key, static_cast<int>(v.size()));
-    if (inserted) v.push_back(mesh.vertices.row(i).transpose());
-    remap[static_cast<size_t>(i)] = it->second;
-  }
-  std::vector<Eigen::Vector3i> t;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    const Eigen::Vector3i tri(remap[static_cast<size_t>(mesh.triangles(f, 0))],
-                              remap[static_cast<size_t>(mesh.triangles(f, 1))],
-                              remap[static_cast<size_t>(mesh.triangles(f, 2))]);
-    if (tri(0) != tri(1) && tri(1) != tri(2) && tri(0) != tri(2)) t.push_back(tri);
-  }
-  return acd::MakeTriangleMesh(v, t);
-}
-
-std::vector<acd::TriangleMesh> ConnectedComponents(const acd::TriangleMesh& mesh) {
-  const int nv = static_cast<int>(mesh.vertices.rows());
-  std::vector<int> parent(static_cast<size_t>(nv));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[static_cast<size_t>(x)] != x) {
-      parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
-      x = parent[static_cast<size_t>(x)];
-    }
-    return x;
-  };
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    for (int k = 1; k < 3; ++k) {
-      const int a = find(mesh.triangles(f, 0)), b = find(mesh.triangles(f, k));
-      if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
-    }
-  }
-  std::map<int, size_t> component_of_root;
-  std::vector<std::vector<Eigen::Vector3i>> tris;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    const int root = find(mesh.triangles(f, 0));
-    auto [it, inserted] = component_of_root.emplace(root, tris.size());
-    if (inserted) tris.emplace_back();
-    tris[it->second].push_back(mesh.triangles.row(f).transpose());
-  }
-  std::vector<acd::TriangleMesh> out;
-  for (const auto& component : tris) {
-    std::map<int, int> remap;
-    std::vector<Eigen::Vector3d> v;
-    std::vector<Eigen::Vector3i> t;
-    for (const Eigen::Vector3i& tri : component) {
-      Eigen::Vector3i r;
-      for (int k = 0; k < 3; ++k) {
-        auto [it, inserted] = remap.emplace(tri(k), static_cast<int>(v.size()));
-        if (inserted) v.push_back(mesh.vertices.row(tri(k)).transpose());
-        r(k) = it->second;
-      }
-      t.push_back(r);
-    }
-    out.push_back(acd::MakeTriangleMesh(v, t));
-  }
-  return out;
-}
-
-bool IsClosedMesh(const acd::TriangleMesh& mesh, int* bad_edges) {
-  std::map<std::pair<int, int>, int> uses;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    for (int k = 0; k < 3; ++k) {
-      int a = mesh.triangles(f, k), b = mesh.triangles(f, (k + 1) % 3);
-      if (a > b) std::swap(a, b);
-      ++uses[{a, b}];
-    }
-  }
-  int bad = 0;
-  for (const auto& [edge, count] : uses) bad += count != 2;
-  if (bad_edges) *bad_edges = bad;
-  return bad == 0 && mesh.triangles.rows() > 0;
-}
-
 acd::TriangleMesh SubMesh(const acd::TriangleMesh& mesh, const std::vector<int>& triangles) {
   std::vector<int> index(static_cast<size_t>(mesh.vertices.rows()), -1);
   std::vector<Eigen::Vector3d> vertices;
@@ -243,6 +164,4 @@ bool EqualsItsHull(const acd::TriangleMesh& piece, const acd::TriangleMesh& hull
   return piece.triangles.rows() > 0;
 }
 
-=======
->>>>>>> main
 }  // namespace acdplan::collision::internal

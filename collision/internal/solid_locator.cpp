@@ -133,19 +133,10 @@ ExactObstacleLocator::ExactObstacleLocator(const ObstacleSet& obstacles, bool sk
         ++skipped_open_;
         continue;
       }
-<<<<<<< HEAD
-      int bad = 0;
-      IsClosedMesh(component.mesh, &bad);
       throw InputError(
           "PointLocator(): exact point location needs closed obstacle meshes: obstacle " +
-          std::to_string(component.obstacle) + " (connected component " + std::to_string(i) +
-          ") is open: " + std::to_string(bad) + " edges are not shared by exactly two triangles");
-=======
-      throw InputError(
-          "PointLocator(): exact point location needs closed obstacle meshes: obstacle " +
-          std::to_string(piece.obstacle) + " (part " + std::to_string(i) +
-          ") is open: " + acd::PrepareMesh(piece.solid).defects.first);
->>>>>>> main
+          std::to_string(component.obstacle) + " (part " + std::to_string(i) +
+          ") is open: " + acd::PrepareMesh(component.mesh).defects.first);
     }
     pieces_.emplace_back(component.mesh);
     piece_obstacle_.push_back(component.obstacle);

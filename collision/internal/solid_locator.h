@@ -55,24 +55,14 @@ class MeshLocator3d {
 };
 
 /// Exact point location over a whole ObstacleSet: 2D one PolygonLocator2d per obstacle polygon;
-<<<<<<< HEAD
-/// 3D one MeshLocator3d per connected component (ObstacleSet::components, the input surface, not
-/// the ACD pieces), a point being inside obstacle k when an odd number of k's components contain
-/// it (so nested shells bound cavities, as ray parity on the whole mesh would say).
+/// 3D one MeshLocator3d per closed part (ObstacleSet::components: the parts of acd::PrepareMesh(),
+/// the input surface, not the ACD pieces), a point being inside obstacle k when an odd number of
+/// k's parts contain it (as ray parity on the whole mesh would say).
 class ExactObstacleLocator {
  public:
-  /// `skip_open`: 3D components that are not closed are left out (the collision world's containment
-  /// test); otherwise an open piece throws InputError naming it (point location).
-=======
-/// 3D one MeshLocator3d per piece (a part of acd::PrepareMesh(): a solid with its cavities, or
-/// a closed surface patch), a point being inside obstacle k when an odd number of k's pieces
-/// contain it (as ray parity on the whole mesh would say).
-class ExactObstacleLocator {
- public:
-  /// `skip_open`: 3D pieces that are not closed are left out (the collision world's containment
-  /// test); otherwise such a piece throws InputError naming it and its first defect (point
+  /// `skip_open`: 3D parts that are not closed are left out (the collision world's containment
+  /// test); otherwise such a part throws InputError naming it and its first defect (point
   /// location).
->>>>>>> main
   ExactObstacleLocator(const ObstacleSet& obstacles, bool skip_open);
   bool Inside(const Eigen::Vector3d& p) const;
   int skipped_open_pieces() const { return skipped_open_; }

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "base/input_error.h"
 #include "envs/generators.h"
@@ -230,12 +231,16 @@ TEST_P(VhacdMeshes, HullsExactEqualsBvhAndHullsAreConservative) {
   EXPECT_GT(collisions, count / 100);
 }
 
-INSTANTIATE_TEST_SUITE_P(Meshes, VhacdMeshes, ::testing::Values("torus1", "cube-notch", "bunny"),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           for (char& c : name) c = std::isalnum(c) ? c : '_';
-                           return name;
-                         });
+// The obstacles are decomposed (solid ACD; bunny after repair): sanitizer builds take the small
+// one.
+const std::vector<std::string> kMeshes =
+    testing::kSanitizerBuild ? std::vector<std::string>{"cube-notch"}
+                             : std::vector<std::string>{"torus1", "cube-notch", "bunny"};
+INSTANTIATE_TEST_SUITE_P(Meshes, VhacdMeshes, ::testing::ValuesIn(kMeshes), [](const auto& info) {
+  std::string name = info.param;
+  for (char& c : name) c = std::isalnum(c) ? c : '_';
+  return name;
+});
 
 }  // namespace
 }  // namespace acdplan::collision

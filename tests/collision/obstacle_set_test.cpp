@@ -9,6 +9,7 @@
 
 #include "acd/convex_hull3d.h"
 #include "acd/mesh_measures.h"
+#include "acd/prepare_mesh.h"
 #include "base/input_error.h"
 #include "collision/internal/mesh_building.h"
 #include "collision/point_locator.h"
@@ -169,7 +170,9 @@ TEST(ObstacleSet3d, ACubeIsOneConvexSolidPiece) {
 
 TEST(ObstacleSet3d, ConvexPiecesLieInsideTheObstacle) {
   // Claimed convex pieces skip the exact confirmation: their hulls must be inside the obstacle.
-  for (const char* name : {"cube-notch", "box-thick", "torus1"}) {
+  std::vector<std::string> names = {"cube-notch", "box-thick"};
+  if (!testing::kSanitizerBuild) names.push_back("torus1");
+  for (const std::string& name : names) {
     SCOPED_TRACE(name);
     const envs::Workspace3d world =
         MeshWorld(envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name + ".obj"));
@@ -213,7 +216,7 @@ TEST(ObstacleSet3d, EqualsItsHullIsExact) {
   corners.emplace_back(0, 0, 1 - 1e-12);
   for (int k = 0; k < 4; ++k) faces.emplace_back(ring[k], ring[(k + 1) % 4], 8);
   const acd::TriangleMesh dented = acd::MakeTriangleMesh(corners, faces);
-  ASSERT_TRUE(internal::IsClosedMesh(dented));
+  ASSERT_TRUE(acd::PrepareMesh(dented).solid());
   EXPECT_FALSE(internal::EqualsItsHull(dented, acd::ConvexHull3(Points(dented), 0.0)));
   // The same fan without the dent is convex (coplanar faces are fine).
   acd::TriangleMesh flat = dented;
@@ -238,7 +241,7 @@ TEST(ObstacleSet3d, EqualsItsHullIsExact) {
     f.emplace_back(a, c, d);
   }
   const acd::TriangleMesh schoenhardt = acd::MakeTriangleMesh(v, f);
-  ASSERT_TRUE(internal::IsClosedMesh(schoenhardt));
+  ASSERT_TRUE(acd::PrepareMesh(schoenhardt).solid());
   const acd::TriangleMesh hull = acd::ConvexHull3(v, 0.0);
   EXPECT_EQ(hull.vertices.rows(), 6);
   EXPECT_FALSE(internal::EqualsItsHull(schoenhardt, hull));
