@@ -13,6 +13,49 @@
 namespace acdplan::acd {
 namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+// CGAL 5.5.1's quickhull starts from the plane of the first three non-collinear points; when
+// every other point lies on one side of it (those three span a hull facet), it erases a list node
+// twice (valgrind: use after free, e.g. on a patch of a torus). Starting the list with a point
+// strictly inside the hull (the centroid of a large tetrahedron of the points, checked exactly)
+// makes that first plane cut through the hull, so points lie on both sides. Being interior, the
+// extra point is never a hull vertex.
+void LeadWithAnInteriorPoint(std::vector<Kernel::Point_3>* pts) {
+  std::vector<Kernel::Point_3>& p = *pts;
+  if (p.size() < 4) return;
+  size_t a = 0, b = 0;
+  for (size_t i = 1; i < p.size(); ++i) {
+    if (p[i].x() < p[a].x()) a = i;
+    if (p[i].x() > p[b].x()) b = i;
+  }
+  if (a == b) return;
+  const Kernel::Line_3 line(p[a], p[b]);
+  size_t c = a;
+  double far = 0.0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const double d = CGAL::to_double(CGAL::squared_distance(line, p[i]));
+    if (d > far) far = d, c = i;
+  }
+  if (c == a || CGAL::collinear(p[a], p[b], p[c])) return;
+  const Kernel::Plane_3 plane(p[a], p[b], p[c]);
+  size_t d = a;
+  far = 0.0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const double e = CGAL::to_double(CGAL::squared_distance(plane, p[i]));
+    if (e > far) far = e, d = i;
+  }
+  const CGAL::Orientation o = CGAL::orientation(p[a], p[b], p[c], p[d]);
+  if (o == CGAL::COPLANAR) return;
+  const Kernel::Point_3 m((p[a].x() + p[b].x() + p[c].x() + p[d].x()) / 4,
+                          (p[a].y() + p[b].y() + p[c].y() + p[d].y()) / 4,
+                          (p[a].z() + p[b].z() + p[c].z() + p[d].z()) / 4);
+  // Strictly inside the tetrahedron: on the inner side of each of its four faces.
+  if (CGAL::orientation(m, p[b], p[c], p[d]) != o || CGAL::orientation(p[a], m, p[c], p[d]) != o ||
+      CGAL::orientation(p[a], p[b], m, p[d]) != o || CGAL::orientation(p[a], p[b], p[c], m) != o) {
+    return;
+  }
+  p.insert(p.begin(), m);
+}
+
 }  // namespace
 
 TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thickness) {
@@ -52,6 +95,7 @@ TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thic
       pts.emplace_back(pts[i].x() + dir.x(), pts[i].y() + dir.y(), pts[i].z() + dir.z());
     }
   }
+  LeadWithAnInteriorPoint(&pts);
   CGAL::Surface_mesh<Kernel::Point_3> hull;
   CGAL::convex_hull_3(pts.begin(), pts.end(), hull);
   std::vector<Eigen::Vector3d> v;

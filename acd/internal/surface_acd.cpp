@@ -433,7 +433,8 @@ Component3d MakeComponent(const SurfacePart& part, const std::vector<int>& faces
 }
 
 // The polylines along which the leaves of one part meet: for every pair of components, the
-// edges with faces in both, chained at vertices where exactly two of them meet.
+// edges with faces in both, chained at vertices where exactly two of them meet. A closed loop
+// repeats its first vertex at its end.
 void AddOpenings(const SurfacePart& part, const std::vector<int>& face_component,
                  std::vector<Opening3d>* openings) {
   std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> shared;

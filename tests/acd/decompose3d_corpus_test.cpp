@@ -1,18 +1,25 @@
-// The 31 V-HACD meshes (data/meshes/vhacd) x tau_rel {0.2, 0.05, 0.02} (tau = tau_rel x
-// ReferenceRadius), prepared plain and with repair: every decomposition passes
-// CheckDecomposition3d. The surface ACD runs on every prepared mesh (open, non-manifold,
-// self-intersecting and solid alike). A sanitizer build takes every fourth mesh.
+// The 31 V-HACD meshes (data/meshes/vhacd), prepared plain and with repair, through
+// Decompose3d: every decomposition passes CheckDecomposition3d.
+//  - Surface ACD (forced with Decompose3dOptions::surface) of every preparation x tau_rel
+//    {0.2, 0.05, 0.02} (tau = tau_rel x ReferenceRadius).
+//  - Non-solid preparations (open, non-manifold, self-intersecting) get the surface ACD without
+//    asking.
+//  - Solid ACD of the solid preparations x tau_rel {0.2, 0.05}, except kSolidNotYet.
+// A sanitizer build takes every fourth mesh. ACDPLAN_CORPUS_TABLE=1 prints one Markdown row per
+// run (mesh, preparation, ACD, triangles, parts, tau_rel, components, seconds, check seconds).
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "acd/check_decomposition3d.h"
-#include "acd/internal/surface_acd.h"
+#include "acd/decompose3d.h"
 #include "acd/prepare_mesh.h"
 #include "base/stopwatch.h"
 #include "envs/mesh_loader.h"
@@ -25,6 +32,17 @@ constexpr size_t kStride = 4;
 #else
 constexpr size_t kStride = 1;
 #endif
+
+// Solid preparations whose solid ACD does not pass CheckDecomposition3d yet (measured when this
+// test was written): component hulls that are not closed or do not contain their component
+// (internal::MakeCanonicalHull regroups nearly coplanar facets), a segmentation fault at
+// tau_rel 0.05 (al, ob_chair_gothic, ob_chair_wood), more than 40 s (teapot at 0.05), an opening
+// whose area is not its polygon's (torus2). Delete a name when its solid ACD passes.
+const std::set<std::string> kSolidNotYet = {
+    "al.obj",        "bunny.obj",           "cup.obj",           "cylinder.obj",
+    "defsphere.obj", "ob_chair_gothic.obj", "ob_chair_wood.obj", "ob_chess_table.obj",
+    "plaque.obj",    "teapot.obj",          "torus1.obj",        "torus2.obj",
+    "wall.obj"};
 
 std::vector<std::filesystem::path> CorpusFiles() {
   std::vector<std::filesystem::path> files;
@@ -42,10 +60,32 @@ std::string Problems(const DecompositionCheck& check) {
   return all;
 }
 
-TEST(Decompose3dCorpusTest, SurfaceAcdOfEveryMeshPassesTheCheck) {
+// Decomposes, checks and (with ACDPLAN_CORPUS_TABLE set) prints one table row.
+void DecomposeAndCheck(const std::string& name, bool repair, const PreparedMesh& prepared,
+                       double tau_rel, bool surface) {
+  const double tau = tau_rel * ReferenceRadius(prepared.mesh);
+  const Stopwatch stopwatch;
+  const Decomposition3d d = Decompose3d(prepared, {tau, surface, 0});
+  const double seconds = stopwatch.Seconds();
+  const Stopwatch check_watch;
+  const DecompositionCheck check = CheckDecomposition3d(prepared, d);
+  if (std::getenv("ACDPLAN_CORPUS_TABLE") != nullptr) {
+    std::printf("| %s | %s | %s | %d | %zu | %g | %d | %.3f | %.3f |\n", name.c_str(),
+                repair ? "repair" : "plain", d.stats.surface ? "surface" : "solid",
+                static_cast<int>(prepared.mesh.triangles.rows()), prepared.parts.size(), tau_rel,
+                d.stats.components, seconds, check_watch.Seconds());
+  }
+  const std::string label = name + (repair ? " repaired" : "") + " tau_rel " +
+                            std::to_string(tau_rel) + (surface ? " surface" : "");
+  EXPECT_TRUE(check.ok()) << label << ":\n" << Problems(check);
+  EXPECT_EQ(d.stats.surface, surface || !prepared.solid()) << label;
+  EXPECT_LE(d.stats.max_concavity, tau) << label;
+}
+
+TEST(Decompose3dCorpusTest, EveryMeshDecomposesAndPassesTheCheck) {
   const std::vector<std::filesystem::path> files = CorpusFiles();
   ASSERT_EQ(files.size(), 31u);
-  const bool print = std::getenv("ACDPLAN_CORPUS_TABLE") != nullptr;
+  int solid_runs = 0, open_runs = 0;
   for (size_t i = 0; i < files.size(); i += kStride) {
     const std::string name = files[i].filename().string();
     const TriangleMesh mesh = envs::ReadMesh(files[i].string());
@@ -53,28 +93,22 @@ TEST(Decompose3dCorpusTest, SurfaceAcdOfEveryMeshPassesTheCheck) {
       PrepareMeshOptions options;
       options.repair = repair;
       const PreparedMesh prepared = PrepareMesh(mesh, options, name);
-      const double radius = ReferenceRadius(prepared.mesh);
       for (const double tau_rel : {0.2, 0.05, 0.02}) {
-        const double tau = tau_rel * radius;
-        const Stopwatch stopwatch;
-        const Decomposition3d d = internal::DecomposeSurface(prepared, tau);
-        const double seconds = stopwatch.Seconds();
-        const Stopwatch check_watch;
-        const DecompositionCheck check = CheckDecomposition3d(prepared, d);
-        if (print) {
-          std::printf("| %s | %s | %zu | %zu | %g | %d | %.3f | %.3f |\n", name.c_str(),
-                      repair ? "repair" : "plain", prepared.mesh.triangles.rows() + size_t{0},
-                      prepared.parts.size(), tau_rel, d.stats.components, seconds,
-                      check_watch.Seconds());
+        DecomposeAndCheck(name, repair, prepared, tau_rel, true);
+      }
+      if (!prepared.solid()) {
+        DecomposeAndCheck(name, repair, prepared, 0.2, false);  // Dispatched to the surface ACD.
+        ++open_runs;
+      } else if (!kSolidNotYet.count(name)) {
+        for (const double tau_rel : {0.2, 0.05}) {
+          DecomposeAndCheck(name, repair, prepared, tau_rel, false);
+          ++solid_runs;
         }
-        EXPECT_TRUE(check.ok()) << name << (repair ? " repaired" : "") << " tau_rel " << tau_rel
-                                << ":\n"
-                                << Problems(check);
-        EXPECT_TRUE(d.stats.surface);
-        EXPECT_LE(d.stats.max_concavity, tau) << name;
       }
     }
   }
+  EXPECT_GT(open_runs, 0);
+  EXPECT_GT(solid_runs, 0);
 }
 
 }  // namespace
