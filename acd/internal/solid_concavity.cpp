@@ -184,13 +184,14 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
       }
       return std::max(facing < 1e300 ? facing : any, 0.0);
     };
+    const std::vector<int>& pocket = faces;  // C++17 lambdas cannot capture a structured binding.
     auto consider = [&](const Eigen::Vector3d& p, double d, int vertex, int face) {
       if (d > out.value) {
         out.value = d;
         out.witness = p;
         out.witness_vertex = vertex;
         out.witness_face = face;
-        out.pocket_faces = faces;
+        out.pocket_faces = pocket;
       }
     };
     std::map<int, int> vertex_face;
