@@ -6,11 +6,13 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "acd/component_locator2d.h"
 #include "acd/decomposition2d.h"
 #include "base/random.h"
+#include "envs/free_space_decomposition3d.h"
 
 namespace acdplan::planning {
 
@@ -27,8 +29,9 @@ namespace acdplan::planning {
 /// random among those in roadmap components not yet offered, so each connection attempt can
 /// join two parts of the roadmap. The motion validator still checks every edge.
 ///
-/// Spaces: RealVector(2|3), SE2, SE3 (the x, y of the state locate it). Seeded: the random
-/// picks use their own generator.
+/// Spaces: RealVector(2|3), SE2, SE3 (the x, y of the state locate it in a 2D decomposition;
+/// x, y, z in a 3D one, envs::FreeSpaceDecomposition3d::Locate()). Seeded: the random picks
+/// use their own generator.
 class AcdPrm : public ompl::geometric::PRM {
  public:
   /// Members of a component tried per new milestone, its own and each adjacent one.
@@ -36,6 +39,10 @@ class AcdPrm : public ompl::geometric::PRM {
 
   AcdPrm(const ompl::base::SpaceInformationPtr& si, const acd::Decomposition2d& decomposition,
          bool star = false, std::uint64_t seed = 1);
+  /// In a 3D world (RealVector(3) or SE3): components and adjacency of the free space's 3D ACD.
+  AcdPrm(const ompl::base::SpaceInformationPtr& si,
+         std::shared_ptr<const envs::FreeSpaceDecomposition3d> decomposition, bool star = false,
+         std::uint64_t seed = 1);
 
   void setup() override;
   void clear() override;
@@ -54,6 +61,9 @@ class AcdPrm : public ompl::geometric::PRM {
   std::vector<Vertex> offered_;
   RandomEngine rng_;
   std::function<Eigen::Vector2d(const ompl::base::State*)> xy_;  ///< A state's reference point.
+  /// The component of a state (-1: none): 2D by its reference point, 3D by its position.
+  std::function<int(const ompl::base::State*)> locate_state_;
+  std::shared_ptr<const envs::FreeSpaceDecomposition3d> decomposition3d_;
 };
 
 }  // namespace acdplan::planning

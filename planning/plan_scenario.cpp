@@ -27,6 +27,7 @@
 #include "envs/free_space2d.h"
 #include "envs/world_svg.h"
 #include "planning/counting_validity_checker.h"
+#include "planning/plan_scenario3d.h"
 #include "planning/registry.h"
 #include "planning/sample_budget_roadmap.h"
 
@@ -53,6 +54,7 @@ Eigen::Isometry2d Pose(bool se2, const ob::State* state) {
 
 PlanResult PlanScenario(const Scenario& scenario) {
   CheckScenario(scenario);
+  if (scenario.dimension == 3) return PlanScenario3d(scenario);
   const Stopwatch stopwatch;
   const std::string where = scenario.path.empty() ? "scenario" : scenario.path;
   PlanResult result;

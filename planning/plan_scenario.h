@@ -2,11 +2,13 @@
 // Runs a Scenario: free space, ACD, collision world, OMPL planner and sampler; reports.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "acd/decomposition2d.h"
+#include "envs/free_space_decomposition3d.h"
 #include "planning/scenario.h"
 
 namespace acdplan::planning {
@@ -29,7 +31,11 @@ struct PlanResult {
   std::vector<std::vector<double>> path;      ///< States from start to goal (x, y[, yaw]).
   std::vector<std::vector<double>> vertices;  ///< Roadmap / tree vertices (for pictures).
   std::vector<std::pair<int, int>> edges;     ///< Roadmap / tree edges.
-  acd::Decomposition2d decomposition;         ///< The ACD of the free space.
+  acd::Decomposition2d decomposition;         ///< The ACD of the free space (2D).
+  /// 3D scenarios: the 3D ACD of the free space (components and openings); path states are
+  /// then x, y, z (point) or x, y, z, qx, qy, qz, qw (mesh robot, OMPL's SE3 reals).
+  std::shared_ptr<const envs::FreeSpaceDecomposition3d> decomposition3d;
+  std::vector<std::string> notes;  ///< What the planner should tell the user (3D free space).
 };
 
 /// Plans `scenario`: free space (envs::FreeSpace2d), its ACD (tau = tau_diag x bounds diagonal),
@@ -38,6 +44,7 @@ struct PlanResult {
 /// seed, then either the Figure-4 protocol (scenario.samples > 0:
 /// BuildSampleBudgetRoadmap()) or the planner on the time limit. The path is reported raw,
 /// not simplified, so lengths compare planners rather than the simplifier.
+/// A 3D scenario (dimension 3) runs PlanScenario3d() (planning/plan_scenario3d.h) instead.
 /// Expected failures (no solution) are results; only bad input throws.
 /// @throws InputError if the start or the goal is in collision or out of bounds.
 PlanResult PlanScenario(const Scenario& scenario);

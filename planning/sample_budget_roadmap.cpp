@@ -98,6 +98,10 @@ SampleBudgetRoadmap BuildSampleBudgetRoadmap(
     Budget<AcdPrm> prm(si, *options.acd_connections, options.star, options.seed);
     return BuildWith(prm, si, pdef, start, goal, options);
   }
+  if (options.acd_connections_3d) {
+    Budget<AcdPrm> prm(si, options.acd_connections_3d, options.star, options.seed);
+    return BuildWith(prm, si, pdef, start, goal, options);
+  }
   Budget<ompl::geometric::PRM> prm(si, options.star);
   return BuildWith(prm, si, pdef, start, goal, options);
 }

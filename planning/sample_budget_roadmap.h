@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "acd/decomposition2d.h"
+#include "envs/free_space_decomposition3d.h"
 
 namespace ompl::base {
 class SpaceInformation;
@@ -22,6 +23,8 @@ struct SampleBudgetOptions {
   bool star = false;  ///< Connect with PRM*'s k = e(1 + 1/d) log n rule, else k = 10.
   /// If set, connect as PRM_ACD (planning/acd_prm.h) with this decomposition of the workspace.
   const acd::Decomposition2d* acd_connections = nullptr;
+  /// If set (and acd_connections is not), connect as PRM_ACD along this 3D decomposition.
+  std::shared_ptr<const envs::FreeSpaceDecomposition3d> acd_connections_3d;
   std::uint64_t seed = 1;    ///< Seed of PRM_ACD's random picks.
   int max_failed_calls = 0;  ///< Give up after this many failed sample() calls in a row;
                              ///< 0 = 10 * samples + 100.

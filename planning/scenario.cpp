@@ -22,8 +22,19 @@ void CheckScenario(const Scenario& s) {
   if (s.samples <= 0 && !(s.time_limit > 0))
     fail("planner.time_limit", "expected a positive number");
   if (!(s.tau_diag >= 0)) fail("acd.tau_diag", "expected a number >= 0");
-  const size_t dims = s.robot.shape == envs::RobotShape::kPolygon ? 3 : 2;
-  const std::string form = dims == 3 ? "[x, y, yaw] (a polygon robot plans in SE(2))" : "[x, y]";
+  const bool mesh = s.robot.shape == envs::RobotShape::kMesh;
+  if (s.dimension == 3 && !mesh && s.robot.shape != envs::RobotShape::kPoint) {
+    fail("robot.shape",
+         "a 3D world needs a point or a mesh robot, not a " + envs::ToString(s.robot.shape));
+  }
+  if (s.dimension == 2 && mesh) fail("robot.shape", "a mesh robot needs a 3D world");
+  size_t dims = s.robot.shape == envs::RobotShape::kPolygon ? 3 : 2;
+  std::string form = dims == 3 ? "[x, y, yaw] (a polygon robot plans in SE(2))" : "[x, y]";
+  if (s.dimension == 3) {
+    dims = mesh ? 6 : 3;
+    form = mesh ? "[x, y, z, roll, pitch, yaw] (a mesh robot plans in SE(3))"
+                : "[x, y, z] (a point in a 3D world)";
+  }
   if (s.start.size() != dims) fail("start", "expected " + form);
   if (s.goal.size() != dims) fail("goal", "expected " + form);
   try {
@@ -54,7 +65,10 @@ Scenario LoadScenario(const std::string& path) {
     acd::ReadPolygonsOptions polygons;
     polygons.repair = root["repair"] && file.Bool(root["repair"], "repair");
     polygons.notes = &s.warnings;
-    s.workspace = envs::LoadWorkspace2d(s.workspace_label, polygons);
+    envs::World world = envs::LoadWorld(s.workspace_label, polygons);
+    s.dimension = world.dimension;
+    s.workspace = std::move(world.workspace2d);
+    s.workspace3d = std::move(world.workspace3d);
   } else if (workspace.IsMap()) {
     s.workspace = ReadGeneratedWorkspace(file, workspace, "workspace", &s.workspace_label);
   } else {
@@ -65,8 +79,8 @@ Scenario LoadScenario(const std::string& path) {
   s.robot = root["robot"] ? ReadRobot(file, root["robot"], "robot") : envs::Robot::Point();
   if (!root["start"]) file.Fail("start", "required");
   if (!root["goal"]) file.Fail("goal", "required");
-  s.start = file.Numbers(root["start"], "start", "[x, y] or [x, y, yaw]");
-  s.goal = file.Numbers(root["goal"], "goal", "[x, y] or [x, y, yaw]");
+  s.start = file.Numbers(root["start"], "start", "[x, y], [x, y, yaw] or [x, y, z, ...]");
+  s.goal = file.Numbers(root["goal"], "goal", "[x, y], [x, y, yaw] or [x, y, z, ...]");
 
   if (const YAML::Node& acd = root["acd"]) {
     file.CheckKeys(acd, "acd", {"tau_diag", "tau_rel", "measure"});
@@ -96,6 +110,11 @@ Scenario LoadScenario(const std::string& path) {
                     "opening_spread", "max_attempts"});
     if (sampler["name"]) s.sampler = file.Parsed(sampler["name"], "sampler.name", ParseSamplerType);
     ReadAcdSamplerOptions(file, sampler, "sampler", &s.sampler_options);
+  }
+  // A rigid body in 3D passes an opening lengthwise: aligned unless the file says otherwise.
+  if (s.dimension == 3 && s.robot.shape == envs::RobotShape::kMesh &&
+      !(root["sampler"] && root["sampler"]["orientation"])) {
+    s.sampler_options.orientation = AcdOrientation::kAligned;
   }
   if (const YAML::Node& collision = root["collision"]) {
     file.CheckKeys(collision, "collision", {"mode"});

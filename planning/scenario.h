@@ -9,6 +9,7 @@
 #include "collision/collision_mode.h"
 #include "envs/robot.h"
 #include "envs/workspace2d.h"
+#include "envs/workspace3d.h"
 #include "planning/acd_sampler_options.h"
 #include "planning/registry.h"
 
@@ -17,16 +18,23 @@ namespace acdplan::planning {
 /// A loaded, validated scenario. The file format (every key optional unless marked):
 ///
 ///   description: "one line"
-///   workspace: world.yaml            # required: any file envs::LoadWorkspace2d() reads
-///                                    # (relative to this file), or a generator:
+///   workspace: world.yaml            # required: any file envs::LoadWorld() reads (relative
+///                                    # to this file): a 2D world, or a 3D one (a 3D
+///                                    # workspace YAML or a mesh: the scenario is then 3D,
+///                                    # planned in R^3 or SE(3)), or a generator:
 ///   workspace: {generator: wall_gap, seed: 1, passage_width: 0.05, wall_thickness: 1.0}
 ///                                    # generators: envs::GeneratorNames(); wall_thickness
 ///                                    # for wall_gap, bug_trap, two_rooms, spiral and maze
 ///   repair: true                     # with a workspace file: make invalid obstacle polygons
 ///                                    # valid (acd::RepairPolygon), each change a warning
 ///   robot: {shape: point}            # point (default) | disc (radius) | polygon (polygon:
-///                                    # [[x, y], ...] in the body frame; plans in SE(2))
-///   start: [x, y]                    # required; [x, y, yaw] for a polygon robot [rad]
+///                                    # [[x, y], ...] in the body frame; plans in SE(2)) |
+///                                    # mesh (mesh: robots/rod.obj, relative to this file;
+///                                    # 3D worlds only; plans in SE(3))
+///   start: [x, y]                    # required; [x, y, yaw] for a polygon robot [rad];
+///                                    # 3D: [x, y, z] for a point, [x, y, z, roll, pitch,
+///                                    # yaw] for a mesh (rotation Rz(yaw) Ry(pitch) Rx(roll)
+///                                    # [rad], as URDF's rpy)
 ///   goal: [x, y]                     # required; as start
 ///   acd: {tau_diag: 0.02, measure: sp}  # tau = tau_diag x the bounds' diagonal; measure
 ///                                    # sl | sp | h1 | h2. The old spelling tau_rel is read
@@ -38,16 +46,23 @@ namespace acdplan::planning {
 ///                                    # time_limit 5
 ///   sampler: {name: acd, uniform_share: 0.1, orientation: random, opening_weight: 4,
 ///             centroid_spread: 0.3, opening_spread: 0.5}   # name: registry.h SamplerNames()
+///                                    # 3D with a mesh robot: orientation defaults to aligned
+///                                    # (the mesh's principal axis along the openings'
+///                                    # normals, spread aligned_jitter [rad])
 ///   collision: {mode: hulls+exact}   # bvh | hulls | hulls+exact
 ///   seed: 1                          # integer >= 0: samplers (and the CLI's OMPL seed)
 struct Scenario {
   std::string path;  ///< The file it was read from ("" if built in code).
   std::string description;
   std::string workspace_label;  ///< The workspace file, or "generator <name> (seed s)".
+  int dimension = 2;            ///< 2: `workspace` holds the world; 3: `workspace3d`.
   envs::Workspace2d workspace;
+  envs::Workspace3d workspace3d;  ///< The 3D world (dimension 3).
   envs::Robot robot;
-  std::vector<double> start, goal;  ///< 2 numbers (point, disc) or 3 (polygon: x, y, yaw).
-  double tau_diag = 0.02;           ///< ACD tolerance / the bounds' diagonal; >= 0.
+  /// 2 numbers (point, disc) or 3 (polygon: x, y, yaw); 3D: 3 (point: x, y, z) or 6 (mesh:
+  /// x, y, z, roll, pitch, yaw).
+  std::vector<double> start, goal;
+  double tau_diag = 0.02;  ///< ACD tolerance / the bounds' diagonal; >= 0.
   acd::ConcavityMeasure measure = acd::ConcavityMeasure::kShortestPath;
   PlannerType planner = PlannerType::kPrm;
   double time_limit = 5.0;  ///< [s]; used when samples == 0.

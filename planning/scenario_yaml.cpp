@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "envs/generators.h"
+#include "envs/mesh_loader.h"
 
 namespace acdplan::planning {
 
@@ -61,7 +62,7 @@ void ReadAcdSamplerOptions(const YamlFile& file, const YAML::Node& node, const s
 
 envs::Robot ReadRobot(const YamlFile& file, const YAML::Node& node, const std::string& key) {
   auto child = [&key](const char* name) { return YamlFile::Child(key, name); };
-  file.CheckKeys(node, key, {"shape", "radius", "polygon"});
+  file.CheckKeys(node, key, {"shape", "radius", "polygon", "mesh"});
   const envs::RobotShape shape =
       node["shape"] ? file.Parsed(node["shape"], child("shape"), envs::ParseRobotShape)
                     : envs::RobotShape::kPoint;
@@ -70,6 +71,9 @@ envs::Robot ReadRobot(const YamlFile& file, const YAML::Node& node, const std::s
   }
   if (node["polygon"] && shape != envs::RobotShape::kPolygon) {
     file.Fail(child("polygon"), "only for shape polygon");
+  }
+  if (node["mesh"] && shape != envs::RobotShape::kMesh) {
+    file.Fail(child("mesh"), "only for shape mesh");
   }
   try {
     switch (shape) {
@@ -94,15 +98,18 @@ envs::Robot ReadRobot(const YamlFile& file, const YAML::Node& node, const std::s
         if (acd::SignedArea(outline.outer) < 0) outline.outer = acd::Reversed(outline.outer);
         return envs::Robot::Polygon(outline);
       }
-      case envs::RobotShape::kMesh:
-        break;
+      case envs::RobotShape::kMesh: {
+        if (!node["mesh"]) file.Fail(child("mesh"), "required for shape mesh (a mesh file)");
+        const std::string mesh = file.ResolvePath(file.String(node["mesh"], child("mesh")));
+        return envs::Robot::Mesh(envs::ReadMesh(mesh));
+      }
     }
   } catch (const InputError& error) {
     const std::string what = error.what();
     if (what.rfind(file.path() + ": ", 0) == 0) throw;
     file.Fail(key, what);
   }
-  file.Fail(child("shape"), "a scenario's robot is a point, a disc or a polygon (2D), not a mesh");
+  file.Fail(child("shape"), "unknown robot shape");
 }
 
 double ReadTauDiag(const YamlFile& file, const YAML::Node& acd, const std::string& key,

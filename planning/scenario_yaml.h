@@ -25,7 +25,8 @@ envs::Workspace2d ReadGeneratedWorkspace(const YamlFile& file, const YAML::Node&
 void ReadAcdSamplerOptions(const YamlFile& file, const YAML::Node& node, const std::string& key,
                            AcdSamplerOptions* options);
 
-/// A robot from `{shape: point | disc (radius) | polygon (polygon: [[x, y], ...])}` at `key`.
+/// A robot from `{shape: point | disc (radius) | polygon (polygon: [[x, y], ...]) | mesh (mesh:
+/// FILE, relative to the YAML file, any envs::ReadMesh() format)}` at `key`.
 /// @throws InputError "<file>: <key>...: <rule>".
 envs::Robot ReadRobot(const YamlFile& file, const YAML::Node& node, const std::string& key);
 

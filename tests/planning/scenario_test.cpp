@@ -127,8 +127,9 @@ TEST(Scenario, UnknownNamesListTheKnownOnes) {
                 .find("bad.yaml: robot.shape: unknown robot shape 'triangle' (expected one of: "
                       "point, disc, polygon, mesh)"),
             std::string::npos);
+  // A mesh robot is read (3D scenarios, plan3d_test.cpp) but needs its file.
   EXPECT_NE(ErrorOf(kWorld + kQuery + "robot: {shape: mesh}\n")
-                .find("bad.yaml: robot.shape: a scenario's robot is a point, a disc or a polygon"),
+                .find("bad.yaml: robot.mesh: required for shape mesh (a mesh file)"),
             std::string::npos);
   EXPECT_NE(ErrorOf(kWorld + kQuery + "robot: {shape: point, radius: 1}\n")
                 .find("bad.yaml: robot.radius: only for shape disc"),

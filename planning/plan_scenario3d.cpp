@@ -1,0 +1,199 @@
+#include "planning/plan_scenario3d.h"
+
+#include <ompl/base/Planner.h>
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/SE3StateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
+
+#include "base/format.h"
+#include "base/input_error.h"
+#include "base/stopwatch.h"
+#include "collision/collision_world.h"
+#include "collision/obstacle_set.h"
+#include "envs/free_space_decomposition3d.h"
+#include "planning/acd_prm.h"
+#include "planning/acd_samplers3d.h"
+#include "planning/counting_validity_checker.h"
+#include "planning/internal/space_access.h"
+#include "planning/internal/space_access3d.h"
+#include "planning/registry.h"
+#include "planning/sample_budget_roadmap.h"
+
+namespace acdplan::planning {
+
+namespace ob = ompl::base;
+
+Eigen::Isometry3d PoseFromXyzRpy(const std::vector<double>& q) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(q.at(0), q.at(1), q.at(2));
+  if (q.size() >= 6) {
+    pose.linear() = (Eigen::AngleAxisd(q[5], Eigen::Vector3d::UnitZ()) *
+                     Eigen::AngleAxisd(q[4], Eigen::Vector3d::UnitY()) *
+                     Eigen::AngleAxisd(q[3], Eigen::Vector3d::UnitX()))
+                        .toRotationMatrix();
+  }
+  return pose;
+}
+
+Eigen::Isometry3d PoseOfReals(const std::vector<double>& reals) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(reals.at(0), reals.at(1), reals.at(2));
+  if (reals.size() >= 7) {
+    pose.linear() =
+        Eigen::Quaterniond(reals[6], reals[3], reals[4], reals[5]).normalized().toRotationMatrix();
+  }
+  return pose;
+}
+
+namespace {
+
+void SetState(bool se3, const std::vector<double>& q, ob::State* state) {
+  const Eigen::Isometry3d pose = PoseFromXyzRpy(q);
+  if (se3) {
+    auto* s = state->as<ob::SE3StateSpace::StateType>();
+    s->setXYZ(q[0], q[1], q[2]);
+    const Eigen::Quaterniond r(pose.linear());
+    s->rotation().w = r.w(), s->rotation().x = r.x(), s->rotation().y = r.y(),
+    s->rotation().z = r.z();
+  } else {
+    double* v = state->as<ob::RealVectorStateSpace::StateType>()->values;
+    for (int i = 0; i < 3; ++i) v[i] = q[static_cast<size_t>(i)];
+  }
+}
+
+}  // namespace
+
+PlanResult PlanScenario3d(const Scenario& scenario) {
+  CheckScenario(scenario);
+  const Stopwatch stopwatch;
+  const std::string where = scenario.path.empty() ? "scenario" : scenario.path;
+  PlanResult result;
+  result.sampler = scenario.sampler;
+  result.planner = scenario.planner;
+  result.budget = scenario.samples > 0 ? std::to_string(scenario.samples) + " samples"
+                                       : FormatSignificant(scenario.time_limit, 6) + " s";
+  const envs::Workspace3d& workspace = scenario.workspace3d;
+
+  // The free space's 3D ACD (cached on disk; decomposed for every sampler, as in 2D, so that
+  // time_s compares like with like).
+  envs::FreeSpaceDecomposition3dOptions acd_options;
+  acd_options.tau = scenario.tau_diag * workspace.bounds.sizes().norm();
+  auto decomposition = std::make_shared<const envs::FreeSpaceDecomposition3d>(
+      envs::DecomposeFreeSpace3d(workspace, acd_options));
+  result.decomposition3d = decomposition;
+  result.notes = decomposition->notes;
+  result.decomposition_ms = stopwatch.Milliseconds();
+  result.components = static_cast<int>(decomposition->components.size());
+  result.openings = static_cast<int>(decomposition->openings.size());
+
+  // Collision world and the state space.
+  auto obstacles =
+      std::make_shared<const collision::ObstacleSet>(collision::BuildObstacleSet(workspace));
+  collision::CollisionWorldOptions world_options;
+  world_options.mode = scenario.collision_mode;
+  auto world =
+      std::make_shared<const collision::CollisionWorld>(obstacles, scenario.robot, world_options);
+  const bool se3 = scenario.robot.shape == envs::RobotShape::kMesh;
+  ob::RealVectorBounds bounds(3);
+  for (int i = 0; i < 3; ++i) {
+    bounds.setLow(i, workspace.bounds.min()[i]);
+    bounds.setHigh(i, workspace.bounds.max()[i]);
+  }
+  ob::StateSpacePtr space;
+  if (se3) {
+    auto s = std::make_shared<ob::SE3StateSpace>();
+    s->setBounds(bounds);
+    space = s;
+  } else {
+    auto s = std::make_shared<ob::RealVectorStateSpace>(3);
+    s->setBounds(bounds);
+    space = s;
+  }
+  auto si = std::make_shared<ob::SpaceInformation>(space);
+  const internal::SpaceKind kind = internal::Classify(space.get());
+  auto checker =
+      std::make_shared<CountingValidityChecker>(si.get(), [world, kind](const ob::State* state) {
+        return world->IsValid(internal::Pose3d(kind, state));
+      });
+  si->setStateValidityChecker(checker);
+  // As in 2D: motions checked every 0.2% of the space's extent.
+  si->setStateValidityCheckingResolution(0.002);
+  si->setup();
+
+  ob::ScopedState<> start(si), goal(si);
+  SetState(se3, scenario.start, start.get());
+  SetState(se3, scenario.goal, goal.get());
+  if (!si->satisfiesBounds(start.get()) || !si->isValid(start.get())) {
+    throw InputError(where + ": start: the robot is in collision or out of bounds there");
+  }
+  if (!si->satisfiesBounds(goal.get()) || !si->isValid(goal.get())) {
+    throw InputError(where + ": goal: the robot is in collision or out of bounds there");
+  }
+  checker->ResetChecks();
+
+  AcdSamplerOptions sampler_options = scenario.sampler_options;
+  sampler_options.seed = scenario.seed;
+  if (scenario.sampler == SamplerType::kAcd) {
+    InstallAcdSamplers3d(si, *decomposition, sampler_options, se3 ? &scenario.robot.mesh : nullptr);
+  } else {
+    InstallSampler(scenario.sampler, si, acd::Decomposition2d{}, sampler_options);
+  }
+
+  if (scenario.samples > 0) {
+    SampleBudgetOptions options;
+    options.samples = scenario.samples;
+    options.star = scenario.planner == PlannerType::kPrmStar;
+    if (scenario.planner == PlannerType::kPrmAcd) {
+      options.acd_connections_3d = decomposition;
+      options.seed = scenario.seed;
+    }
+    SampleBudgetRoadmap roadmap = BuildSampleBudgetRoadmap(si, start.get(), goal.get(), options);
+    result.solved = roadmap.solved;
+    result.samples = static_cast<std::uint64_t>(roadmap.samples);
+    result.path = std::move(roadmap.path);
+    result.path_length = roadmap.path_length;
+    result.vertices = std::move(roadmap.vertices);
+    result.edges = std::move(roadmap.edges);
+  } else {
+    auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+    pdef->setStartAndGoalStates(start, goal);
+    ob::PlannerPtr planner =
+        scenario.planner == PlannerType::kPrmAcd
+            ? std::make_shared<AcdPrm>(si, decomposition, /*star=*/false, scenario.seed)
+            : MakePlanner(scenario.planner, si, nullptr, scenario.seed);
+    planner->setProblemDefinition(pdef);
+    planner->setup();
+    const ob::PlannerStatus status = planner->solve(scenario.time_limit);
+    result.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
+    if (result.solved) {
+      auto* path = pdef->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+      result.path_length = path->length();
+      for (const ob::State* state : path->getStates()) {
+        std::vector<double> reals;
+        space->copyToReals(reals, state);
+        result.path.push_back(reals);
+      }
+    }
+    ob::PlannerData data(si);
+    planner->getPlannerData(data);
+    result.samples = data.numVertices();
+    for (unsigned int i = 0; i < data.numVertices(); ++i) {
+      std::vector<double> reals;
+      space->copyToReals(reals, data.getVertex(i).getState());
+      result.vertices.push_back(reals);
+      std::vector<unsigned int> out;
+      data.getEdges(i, out);
+      for (unsigned int j : out)
+        result.edges.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    }
+  }
+  result.collision_checks = checker->checks();
+  result.time_s = stopwatch.Seconds();
+  return result;
+}
+
+}  // namespace acdplan::planning
