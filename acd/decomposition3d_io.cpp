@@ -393,17 +393,35 @@ std::string Decomposition3dToJson(const Decomposition3d& decomposition,
 }
 
 ObjFiles Decomposition3dToObj(const Decomposition3d& decomposition, const std::string& mtl_name) {
+  std::vector<SceneMesh3d> scene;
+  const int n = static_cast<int>(decomposition.components.size());
+  for (int k = 0; k < n; ++k) {
+    scene.push_back({"component_" + std::to_string(k), decomposition.components[k].mesh,
+                     ComponentRgb(k), 1.0, false});
+  }
+  for (int k = 0; k < n; ++k) {
+    scene.push_back({"hull_" + std::to_string(k), decomposition.components[k].hull, ComponentRgb(k),
+                     kHullOpacity, false});
+  }
+  ObjFiles files = SceneToObj(
+      scene, mtl_name,
+      "acdplan 3D decomposition: " + std::to_string(n) + " components and their convex hulls");
+  files.mtl = "# acdplan 3D decomposition: component colours; hulls translucent\n" + files.mtl;
+  return files;
+}
+
+ObjFiles SceneToObj(const std::vector<SceneMesh3d>& scene, const std::string& mtl_name,
+                    const std::string& title) {
   ObjFiles files;
   std::ostringstream obj, mtl;
-  obj << "# acdplan 3D decomposition: " << decomposition.components.size()
-      << " components and their convex hulls\n";
+  obj << "# " << title << "\n";
   if (!mtl_name.empty()) obj << "mtllib " << mtl_name << "\n";
-  mtl << "# acdplan 3D decomposition: component colours; hulls translucent\n";
   // OBJ vertex indices are 1-based and global to the file: each object's faces refer to the
   // vertices written just before them.
   long long written = 0;
-  auto add_object = [&](const std::string& name, const TriangleMesh& mesh) {
-    obj << "o " << name << "\nusemtl " << name << "\n";
+  for (const SceneMesh3d& item : scene) {
+    const TriangleMesh& mesh = item.mesh;
+    obj << "o " << item.name << "\nusemtl " << item.name << "\n";
     for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
       obj << "v " << FormatShortest(mesh.vertices(i, 0)) << " "
           << FormatShortest(mesh.vertices(i, 1)) << " " << FormatShortest(mesh.vertices(i, 2))
@@ -414,24 +432,14 @@ ObjFiles Decomposition3dToObj(const Decomposition3d& decomposition, const std::s
           << " " << written + mesh.triangles(f, 2) + 1 << "\n";
     }
     written += mesh.vertices.rows();
-  };
-  auto add_material = [&](const std::string& name, const Eigen::Vector3d& rgb, double alpha) {
+  }
+  for (const SceneMesh3d& item : scene) {
+    const Eigen::Vector3d& rgb = item.rgb;
     const std::string kd = FormatSignificant(rgb[0], 4) + " " + FormatSignificant(rgb[1], 4) + " " +
                            FormatSignificant(rgb[2], 4);
-    mtl << "newmtl " << name << "\nKa " << kd << "\nKd " << kd << "\nKs 0 0 0\n"
-        << "d " << FormatSignificant(alpha, 4) << "\nTr " << FormatSignificant(1.0 - alpha, 4)
-        << "\nillum 1\n\n";
-  };
-  const int n = static_cast<int>(decomposition.components.size());
-  for (int k = 0; k < n; ++k) {
-    const std::string name = "component_" + std::to_string(k);
-    add_object(name, decomposition.components[k].mesh);
-    add_material(name, ComponentRgb(k), 1.0);
-  }
-  for (int k = 0; k < n; ++k) {
-    const std::string name = "hull_" + std::to_string(k);
-    add_object(name, decomposition.components[k].hull);
-    add_material(name, ComponentRgb(k), kHullOpacity);
+    mtl << "newmtl " << item.name << "\nKa " << kd << "\nKd " << kd << "\nKs 0 0 0\n"
+        << "d " << FormatSignificant(item.opacity, 4) << "\nTr "
+        << FormatSignificant(1.0 - item.opacity, 4) << "\nillum 1\n\n";
   }
   files.obj = obj.str();
   files.mtl = mtl.str();
@@ -569,6 +577,100 @@ std::string Decomposition3dToSvg(const Decomposition3d& decomposition,
       "orthographic view from azimuth 35, elevation 25 degrees (+y up); one colour per "
       "component");
   return canvas.Finish(caption, caption[0] + ": " + caption[1]);
+}
+
+std::vector<std::uint8_t> SceneToGlb(const std::vector<SceneMesh3d>& scene) {
+  GlbBuilder glb;
+  for (const SceneMesh3d& item : scene) {
+    glb.AddMesh(item.name, item.mesh,
+                glb.AddMaterial(item.name, item.rgb, item.opacity, item.two_sided));
+  }
+  return glb.Finish();
+}
+
+std::string SceneToSvg(const std::vector<SceneMesh3d>& scene,
+                       const std::vector<std::string>& caption, bool z_up) {
+  const View view;
+  // (x, y, z) -> (x, z, -y): a turn about x that brings +z to the view's +y (up).
+  auto turned = [z_up](const Eigen::Vector3d& p) {
+    return z_up ? Eigen::Vector3d(p.x(), p.z(), -p.y()) : p;
+  };
+  std::vector<Facet> facets;
+  Eigen::AlignedBox2d bounds;
+  const int n = static_cast<int>(scene.size());
+  for (int k = 0; k < n; ++k) {
+    const TriangleMesh& mesh = scene[k].mesh;
+    for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+      Eigen::Vector3d p[3];
+      bool valid = true;
+      for (int c = 0; c < 3 && valid; ++c) {
+        const int v = mesh.triangles(f, c);
+        valid = v >= 0 && v < mesh.vertices.rows();
+        if (valid) p[c] = turned(mesh.vertices.row(v).transpose());
+        valid = valid && p[c].allFinite();
+      }
+      if (!valid) continue;
+      const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
+      const double length = normal.norm();
+      if (!(length > 0.0)) continue;
+      const double facing = normal.dot(view.toward_viewer);
+      if (!scene[k].two_sided && !(facing > 0.0)) continue;  // A closed mesh's back faces.
+      Facet facet;
+      facet.component = k;
+      facet.triangle = f;
+      facet.depth = (p[0] + p[1] + p[2]).dot(view.toward_viewer) / 3.0;
+      const Eigen::Vector3d seen = (facing >= 0.0 ? 1.0 : -1.0) / length * normal;
+      facet.shade = std::max(0.0, seen.dot(view.light));
+      for (int c = 0; c < 3; ++c) {
+        facet.corners[c] = Eigen::Vector2d(p[c].dot(view.right), p[c].dot(view.up));
+        bounds.extend(facet.corners[c]);
+      }
+      facets.push_back(facet);
+    }
+  }
+  std::sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) {
+    if (a.depth != b.depth) return a.depth < b.depth;
+    if (a.component != b.component) return a.component < b.component;
+    return a.triangle < b.triangle;
+  });
+  const double pixels = 900.0;
+  const double size = bounds.isEmpty() ? 0.0 : bounds.sizes().maxCoeff();
+  const double scale = size > 0.0 ? pixels / size : 1.0;
+  auto to_pixels = [&](const Eigen::Vector2d& p) {
+    return Eigen::Vector2d(Tenth((p.x() - bounds.min().x()) * scale),
+                           Tenth((p.y() - bounds.min().y()) * scale));
+  };
+  Eigen::AlignedBox2d picture(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero());
+  if (!bounds.isEmpty()) picture.extend(to_pixels(bounds.max()));
+  SvgCanvasOptions options;
+  options.pixels = std::max(1.0, picture.sizes().maxCoeff());
+  options.margin = 36.0;
+  options.font = 23.0;
+  SvgCanvas canvas(picture, options);
+  std::ostringstream svg;
+  svg << "<g id=\"scene\" stroke-width=\"0.5\" stroke-linejoin=\"round\">\n";
+  for (const Facet& facet : facets) {
+    const SceneMesh3d& item = scene[facet.component];
+    const std::string fill = Hex(item.rgb * (0.35 + 0.65 * facet.shade));
+    svg << "<polygon points=\"";
+    for (int c = 0; c < 3; ++c) {
+      const Eigen::Vector2d q = to_pixels(facet.corners[c]);
+      svg << (c ? " " : "") << canvas.X(q.x()) << "," << canvas.Y(q.y());
+    }
+    svg << "\" fill=\"" << fill << "\"";
+    if (item.opacity < 1.0) {
+      svg << " fill-opacity=\"" << FormatSignificant(item.opacity, 3) << "\" stroke=\"none\"";
+    } else {
+      svg << " stroke=\"" << fill << "\"";
+    }
+    svg << "/>\n";
+  }
+  svg << "</g>\n";
+  canvas.Add(svg.str());
+  std::vector<std::string> lines = caption;
+  lines.push_back(std::string("orthographic view from azimuth 35, elevation 25 degrees (") +
+                  (z_up ? "+z" : "+y") + " up)");
+  return canvas.Finish(lines, lines.empty() ? std::string() : lines[0]);
 }
 
 }  // namespace acdplan::acd

@@ -27,6 +27,7 @@
 #include "envs/free_space2d.h"
 #include "envs/world_svg.h"
 #include "planning/counting_validity_checker.h"
+#include "planning/plan_picture3d.h"
 #include "planning/plan_scenario3d.h"
 #include "planning/registry.h"
 #include "planning/sample_budget_roadmap.h"
@@ -207,6 +208,17 @@ std::string PlanResultToJson(const Scenario& scenario, const PlanResult& result)
 }
 
 std::string PlanResultToSvg(const Scenario& scenario, const PlanResult& result) {
+  if (scenario.dimension == 3) {
+    return acd::SceneToSvg(
+        PlanScene3d(scenario, result),
+        {(scenario.path.empty() ? std::string("scenario") : scenario.path),
+         ToString(result.sampler) + " + " + ToString(result.planner) + ", " + result.budget + ": " +
+             (result.solved ? "solved" : "not solved") + " (" + std::to_string(result.samples) +
+             " samples, " + std::to_string(result.components) + " components, " +
+             std::to_string(result.openings) +
+             " openings in orange; start green, goal purple, path red)"},
+        /*z_up=*/true);
+  }
   envs::WorldSvg f(scenario.workspace.bounds);
   f.AddComponents(result.decomposition, /*distinct=*/false);
   f.AddObstacles(scenario.workspace.obstacles);

@@ -59,7 +59,8 @@ void ConfigureOmpl(std::uint64_t seed, bool quiet);
 std::string PlanResultToJson(const Scenario& scenario, const PlanResult& result);
 
 /// An SVG picture (2D): obstacles, ACD components and openings, roadmap vertices and edges,
-/// the path, start and goal.
+/// the path, start and goal. 3D: PlanScene3d() (plan_picture3d.h) in an oblique orthographic
+/// view, +z up.
 std::string PlanResultToSvg(const Scenario& scenario, const PlanResult& result);
 
 }  // namespace acdplan::planning

@@ -107,7 +107,7 @@ Scenario LoadScenario(const std::string& path) {
   if (const YAML::Node& sampler = root["sampler"]) {
     file.CheckKeys(sampler, "sampler",
                    {"name", "uniform_share", "orientation", "opening_weight", "centroid_spread",
-                    "opening_spread", "max_attempts"});
+                    "opening_spread", "max_attempts", "aligned_jitter"});
     if (sampler["name"]) s.sampler = file.Parsed(sampler["name"], "sampler.name", ParseSamplerType);
     ReadAcdSamplerOptions(file, sampler, "sampler", &s.sampler_options);
   }

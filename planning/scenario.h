@@ -46,6 +46,7 @@ namespace acdplan::planning {
 ///                                    # time_limit 5
 ///   sampler: {name: acd, uniform_share: 0.1, orientation: random, opening_weight: 4,
 ///             centroid_spread: 0.3, opening_spread: 0.5}   # name: registry.h SamplerNames()
+///                                    # aligned_jitter [rad]: the spread of aligned poses
 ///                                    # 3D with a mesh robot: orientation defaults to aligned
 ///                                    # (the mesh's principal axis along the openings'
 ///                                    # normals, spread aligned_jitter [rad])

@@ -54,6 +54,10 @@ void ReadAcdSamplerOptions(const YamlFile& file, const YAML::Node& node, const s
     options->max_attempts = static_cast<int>(
         file.Integer(node["max_attempts"], child("max_attempts"), "an integer >= 1", 1));
   }
+  if (node["aligned_jitter"]) {
+    options->aligned_jitter = file.Number(node["aligned_jitter"], child("aligned_jitter"),
+                                          "a number >= 0 [rad]", NonNegative);
+  }
   if (node["orientation"]) {
     options->orientation =
         file.Parsed(node["orientation"], child("orientation"), ParseAcdOrientation);

@@ -19,7 +19,8 @@ envs::Workspace2d ReadGeneratedWorkspace(const YamlFile& file, const YAML::Node&
                                          const std::string& key, std::string* label);
 
 /// The ACD sampler options present in mapping `node` at `key` (uniform_share, opening_weight,
-/// centroid_spread, opening_spread, max_attempts, orientation) into `*options`; the caller
+/// centroid_spread, opening_spread, max_attempts, orientation, aligned_jitter) into `*options`;
+/// the caller
 /// checks which keys the mapping may hold.
 /// @throws InputError "<file>: <key>.<option>: <rule>".
 void ReadAcdSamplerOptions(const YamlFile& file, const YAML::Node& node, const std::string& key,

@@ -19,6 +19,7 @@
 #include "acd/concavity_measure.h"
 #include "acd/decompose2d.h"
 #include "acd/decomposition2d.h"
+#include "acd/decomposition3d_io.h"
 #include "acd/decomposition_io.h"
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
@@ -32,6 +33,7 @@
 #include "bench/runner.h"
 #include "bench/spec.h"
 #include "bench/targets.h"
+#include "planning/plan_picture3d.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
 #include "tools/decompose3d_command.h"
@@ -252,6 +254,7 @@ struct PlanArguments {
   double time = -1;
   int samples = -1;
   std::string json_path, svg_path;
+  std::string obj_path, glb_path;  ///< 3D scenarios: the scene (world, openings, path).
 };
 
 /// `acdplan plan`: exit 0 solved, 3 not solved within the budget, 2 bad input.
@@ -269,15 +272,40 @@ int RunPlan(const PlanArguments& args) {
   planning::CheckScenario(scenario);
   CheckOutputPath("--json", args.json_path);
   CheckOutputPath("--svg", args.svg_path);
+  CheckOutputPath("--obj", args.obj_path);
+  CheckOutputPath("--glb", args.glb_path);
+  if (scenario.dimension != 3 && !(args.obj_path.empty() && args.glb_path.empty())) {
+    throw acdplan::InputError("--obj / --glb: only for a 3D scenario (" + args.scenario +
+                              " is 2D; use --svg)");
+  }
   planning::ConfigureOmpl(scenario.seed, true);
 
   const planning::PlanResult result = planning::PlanScenario(scenario);
+  for (const std::string& note : result.notes) {
+    std::fprintf(stderr, "acdplan: note: %s\n", note.c_str());
+  }
   try {
     if (!args.json_path.empty()) {
       acdplan::WriteFileAtomically(args.json_path, planning::PlanResultToJson(scenario, result));
     }
     if (!args.svg_path.empty()) {
       acdplan::WriteFileAtomically(args.svg_path, planning::PlanResultToSvg(scenario, result));
+    }
+    if (!args.obj_path.empty() || !args.glb_path.empty()) {
+      const auto scene = planning::PlanScene3d(scenario, result);
+      if (!args.obj_path.empty()) {
+        const std::string mtl =
+            std::filesystem::path(args.obj_path).replace_extension(".mtl").string();
+        const acdplan::acd::ObjFiles files =
+            acdplan::acd::SceneToObj(scene, std::filesystem::path(mtl).filename().string(),
+                                     "acdplan plan: " + args.scenario);
+        acdplan::WriteFileAtomically(mtl, files.mtl);
+        acdplan::WriteFileAtomically(args.obj_path, files.obj);
+      }
+      if (!args.glb_path.empty()) {
+        const std::vector<std::uint8_t> glb = acdplan::acd::SceneToGlb(scene);
+        acdplan::WriteFileAtomically(args.glb_path, std::string(glb.begin(), glb.end()));
+      }
     }
   } catch (const std::runtime_error& error) {
     throw acdplan::InputError(error.what());
@@ -572,7 +600,12 @@ int main(int argc, char** argv) {
                                   ->check(CLI::PositiveNumber);
   plan_time->excludes(plan_samples);
   plan->add_option("--json", plan_args.json_path, "Write the result as JSON here");
-  plan->add_option("--svg", plan_args.svg_path, "Write an SVG picture here (2D)");
+  plan->add_option("--svg", plan_args.svg_path,
+                   "Write an SVG picture here (2D: top view; 3D: oblique orthographic view)");
+  plan->add_option("--obj", plan_args.obj_path,
+                   "3D: write the world, the ACD openings and the path as OBJ here (materials "
+                   "in the .mtl beside it)");
+  plan->add_option("--glb", plan_args.glb_path, "3D: the same scene as binary glTF here");
 
   acdplan::tools::EnvArguments env_args;
   CLI::App* env = acdplan::tools::AddEnvCommand(&app, &env_args);

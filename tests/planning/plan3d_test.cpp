@@ -14,6 +14,7 @@
 #include "collision/obstacle_set.h"
 #include "envs/free_space_decomposition3d.h"
 #include "planning/internal/acd_targets3d.h"
+#include "planning/plan_picture3d.h"
 #include "planning/plan_scenario.h"
 #include "planning/plan_scenario3d.h"
 #include "planning/scenario.h"
@@ -279,6 +280,26 @@ TEST_F(Plan3d, ScenarioErrorsNameTheKey) {
                                   "goal: [5, 5, 5, 0, 0, 0]\n"));
   s.start = {20, 1, 1, 0, 0, 0};
   EXPECT_THROW(PlanScenario(s), InputError);
+}
+
+TEST_F(Plan3d, PicturesShowWorldOpeningsAndPath) {
+  const Scenario s = WindowWallScenario(SamplerType::kAcd, PlannerType::kPrm, 150, 1);
+  const PlanResult r = PlanScenario(s);
+  ASSERT_TRUE(r.solved);
+  const std::vector<acd::SceneMesh3d> scene = PlanScene3d(s, r);
+  std::vector<std::string> names;
+  for (const acd::SceneMesh3d& item : scene) names.push_back(item.name);
+  for (const char* name : {"obstacle_0", "obstacle_3", "opening_0", "path", "start", "goal"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+  }
+  const acd::ObjFiles obj = acd::SceneToObj(scene, "plan.mtl", "test");
+  EXPECT_NE(obj.obj.find("o path\nusemtl path\n"), std::string::npos);
+  EXPECT_NE(obj.mtl.find("newmtl opening_0"), std::string::npos);
+  const std::string svg = PlanResultToSvg(s, r);
+  EXPECT_NE(svg.find("(+z up)"), std::string::npos);
+  EXPECT_NE(svg.find("solved"), std::string::npos);
+  EXPECT_GT(std::count(svg.begin(), svg.end(), '\n'), 50);
+  EXPECT_FALSE(acd::SceneToGlb(scene).empty());
 }
 
 }  // namespace
