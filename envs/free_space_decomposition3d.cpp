@@ -22,7 +22,7 @@
 namespace acdplan::envs {
 namespace {
 
-constexpr const char* kFormat = "acdplan.free_space_decomposition3d/1";
+constexpr const char* kFormat = "acdplan.free_space_decomposition3d/2";
 
 // FNV-1a over the inputs' bytes, twice with different offsets: a 128-bit content key.
 class ContentHash {
@@ -98,6 +98,62 @@ Eigen::Vector3d PolygonCentroid(const std::vector<Eigen::Vector3d>& polygon) {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& p : polygon) mean += p;
   return polygon.empty() ? mean : Eigen::Vector3d(mean / static_cast<double>(polygon.size()));
+}
+
+// An orthonormal basis (u, v) of the planes of unit normal n, with u x v = n.
+struct PlaneBasis {
+  explicit PlaneBasis(const Eigen::Vector3d& normal) : n(normal.normalized()) {
+    const Eigen::Vector3d helper =
+        std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    u = n.cross(helper).normalized();
+    v = n.cross(u);
+    // n x u = v, so u x v = n: counter-clockwise in (u, v) is counter-clockwise seen from n.
+  }
+  Eigen::Vector2d In(const Eigen::Vector3d& p) const { return {p.dot(u), p.dot(v)}; }
+  Eigen::Vector3d n, u, v;
+};
+
+double Cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+// Andrew's monotone chain: the convex hull of `points`, counter-clockwise, no collinear points.
+std::vector<Eigen::Vector2d> Hull2d(std::vector<Eigen::Vector2d> points) {
+  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  if (points.size() < 3) return points;
+  std::vector<Eigen::Vector2d> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k > 1 ? k - 1 : k);
+  return hull;
+}
+
+// The convex hull of coplanar `points` in their plane (unit normal `normal`), counter-clockwise
+// seen from the normal's tip.
+std::vector<Eigen::Vector3d> PlanarHull(const std::vector<Eigen::Vector3d>& points,
+                                        const Eigen::Vector3d& normal) {
+  const PlaneBasis basis(normal);
+  std::vector<Eigen::Vector2d> flat;
+  double offset = 0;
+  for (const Eigen::Vector3d& p : points) {
+    flat.push_back(basis.In(p));
+    offset += p.dot(basis.n);
+  }
+  offset /= static_cast<double>(std::max<size_t>(points.size(), 1));
+  std::vector<Eigen::Vector3d> hull;
+  for (const Eigen::Vector2d& q : Hull2d(flat)) {
+    hull.push_back(q.x() * basis.u + q.y() * basis.v + offset * basis.n);
+  }
+  return hull;
 }
 
 // ---- The cache file: one token per number, doubles in C99 hex notation (exact). ----
@@ -285,16 +341,44 @@ FreeSpaceDecomposition3d Compute(const Workspace3d& workspace, double tau) {
     component.planes = HullPlanes(c.hull);
     d.components.push_back(std::move(component));
   }
+  // The solid ACD leaves a cut face as several polygons when it was split further (a later
+  // cut, or triangles of the cut face): pieces between the same two components in the same
+  // plane are one passage, so they become one opening -- area and centroid summed over the
+  // pieces, polygon and width those of the convex hull of their vertices.
+  const double tolerance = 1e-9 * (workspace.bounds.sizes().norm() + 1.0);
+  std::vector<std::vector<const acd::Opening3d*>> groups;
   for (const acd::Opening3d& o : acd.openings) {
     if (o.polygon.size() < 3 || !(o.area > 0)) continue;
+    const Eigen::Vector3d n = o.normal.normalized();
+    bool placed = false;
+    for (std::vector<const acd::Opening3d*>& group : groups) {
+      const acd::Opening3d& g = *group.front();
+      const Eigen::Vector3d gn = g.normal.normalized();
+      if (g.component_a == o.component_a && g.component_b == o.component_b &&
+          gn.dot(n) > 1 - 1e-9 && std::abs(gn.dot(o.polygon[0] - g.polygon[0])) <= tolerance) {
+        group.push_back(&o);
+        placed = true;
+        break;
+      }
+    }
+    if (!placed) groups.push_back({&o});
+  }
+  for (const std::vector<const acd::Opening3d*>& group : groups) {
+    const acd::Opening3d& first = *group.front();
     FreeOpening3d opening;
-    opening.polygon = o.polygon;
-    opening.normal = o.normal;
-    opening.area = o.area;
-    opening.centroid = PolygonCentroid(o.polygon);
-    opening.width = NarrowestWidth(o.polygon, o.normal);
-    opening.component_a = o.component_a;
-    opening.component_b = o.component_b;
+    opening.normal = first.normal.normalized();
+    opening.component_a = first.component_a;
+    opening.component_b = first.component_b;
+    std::vector<Eigen::Vector3d> points;
+    Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+    for (const acd::Opening3d* piece : group) {
+      opening.area += piece->area;
+      weighted += piece->area * PolygonCentroid(piece->polygon);
+      points.insert(points.end(), piece->polygon.begin(), piece->polygon.end());
+    }
+    opening.centroid = weighted / opening.area;
+    opening.polygon = group.size() == 1 ? first.polygon : PlanarHull(points, opening.normal);
+    opening.width = NarrowestWidth(opening.polygon, opening.normal);
     d.openings.push_back(std::move(opening));
   }
   return d;
@@ -333,32 +417,10 @@ std::vector<std::vector<int>> ComponentGraph(const FreeSpaceDecomposition3d& dec
 
 double NarrowestWidth(const std::vector<Eigen::Vector3d>& polygon, const Eigen::Vector3d& normal) {
   if (polygon.size() < 3) return 0.0;
-  // An orthonormal basis (u, v) of the plane.
-  const Eigen::Vector3d n = normal.normalized();
-  const Eigen::Vector3d helper =
-      std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  const Eigen::Vector3d u = n.cross(helper).normalized();
-  const Eigen::Vector3d v = n.cross(u);
+  const PlaneBasis basis(normal);
   std::vector<Eigen::Vector2d> points;
-  for (const Eigen::Vector3d& p : polygon) points.emplace_back(p.dot(u), p.dot(v));
-  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
-  };
-  // Andrew's monotone chain: the hull, counter-clockwise.
-  std::vector<Eigen::Vector2d> hull(2 * points.size());
-  size_t k = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
-    hull[k++] = points[i];
-  }
-  for (size_t i = points.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(k > 1 ? k - 1 : k);
+  for (const Eigen::Vector3d& p : polygon) points.push_back(basis.In(p));
+  const std::vector<Eigen::Vector2d> hull = Hull2d(points);
   const size_t h = hull.size();
   if (h < 3) return 0.0;
   // Rotating calipers: for each hull edge the farthest vertex (the antipodal pointer only
@@ -370,8 +432,8 @@ double NarrowestWidth(const std::vector<Eigen::Vector3d>& polygon, const Eigen::
     const Eigen::Vector2d& b = hull[(i + 1) % h];
     const double length = (b - a).norm();
     if (!(length > 0)) continue;
-    while (cross(a, b, hull[(j + 1) % h]) > cross(a, b, hull[j])) j = (j + 1) % h;
-    best = std::min(best, cross(a, b, hull[j]) / length);
+    while (Cross(a, b, hull[(j + 1) % h]) > Cross(a, b, hull[j])) j = (j + 1) % h;
+    best = std::min(best, Cross(a, b, hull[j]) / length);
   }
   return std::isfinite(best) ? best : 0.0;
 }

@@ -133,7 +133,7 @@ TEST(DecomposeFreeSpace3d, CorruptOrStaleEntryIsRecomputed) {
   ASSERT_EQ(cache.Files().size(), 1u);
   const std::filesystem::path file = cache.Files()[0];
   std::ofstream(file, std::ios::trunc)
-      << "acdplan.free_space_decomposition3d/1\nkey " << first.key << "\nbounds 0 0";
+      << "acdplan.free_space_decomposition3d/2\nkey " << first.key << "\nbounds 0 0";
   ::testing::internal::CaptureStderr();
   const FreeSpaceDecomposition3d again = DecomposeFreeSpace3d(world, Options(cache));
   const std::string warning = ::testing::internal::GetCapturedStderr();
@@ -141,7 +141,7 @@ TEST(DecomposeFreeSpace3d, CorruptOrStaleEntryIsRecomputed) {
   EXPECT_NE(warning.find("unusable cache entry (truncated)"), std::string::npos) << warning;
   EXPECT_EQ(again.components.size(), first.components.size());
   // A stale entry: another key inside the file.
-  std::ofstream(file, std::ios::trunc) << "acdplan.free_space_decomposition3d/1\nkey 0123\n";
+  std::ofstream(file, std::ios::trunc) << "acdplan.free_space_decomposition3d/2\nkey 0123\n";
   ::testing::internal::CaptureStderr();
   EXPECT_FALSE(DecomposeFreeSpace3d(world, Options(cache)).from_cache);
   EXPECT_NE(::testing::internal::GetCapturedStderr().find("is not its name's"), std::string::npos);
@@ -158,6 +158,31 @@ TEST(DecomposeFreeSpace3d, WithoutCacheWritesNothing) {
   FreeSpaceDecomposition3dOptions bad;
   bad.tau = -1;
   EXPECT_THROW(DecomposeFreeSpace3d(testing::WindowWall(1.0), bad), InputError);
+}
+
+TEST(DecomposeFreeSpace3d, PiecesOfOneCutFaceAreOneOpening) {
+  const CacheDir cache;
+  FreeSpaceDecomposition3dOptions options = Options(cache, false);
+  options.tau = 0.35;  // Small: the solid ACD cuts the world into slabs and splits cut faces.
+  const FreeSpaceDecomposition3d d = DecomposeFreeSpace3d(testing::WindowWall(0.4), options);
+  ASSERT_GE(d.openings.size(), 2u);
+  double area = 0;
+  for (size_t i = 0; i < d.openings.size(); ++i) {
+    const FreeOpening3d& a = d.openings[i];
+    area += a.area;
+    EXPECT_GT(a.width, 0);
+    // A convex polygon of width w has area >= w^2 / sqrt(3) (the equilateral triangle); the
+    // merged pieces may cover less than their hull: a loose bound.
+    EXPECT_LE(a.width * a.width, 3 * std::sqrt(3.0) * a.area) << i;
+    for (size_t j = i + 1; j < d.openings.size(); ++j) {
+      const FreeOpening3d& b = d.openings[j];
+      const bool same_plane = a.normal.dot(b.normal) > 1 - 1e-9 &&
+                              std::abs(a.normal.dot(a.centroid - b.centroid)) < 1e-9;
+      EXPECT_FALSE(a.component_a == b.component_a && a.component_b == b.component_b && same_plane)
+          << "openings " << i << " and " << j;
+    }
+  }
+  EXPECT_GT(area, 0);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "base/input_error.h"
 #include "collision/collision_world.h"
@@ -300,6 +301,45 @@ TEST_F(Plan3d, PicturesShowWorldOpeningsAndPath) {
   EXPECT_NE(svg.find("solved"), std::string::npos);
   EXPECT_GT(std::count(svg.begin(), svg.end(), '\n'), 50);
   EXPECT_FALSE(acd::SceneToGlb(scene).empty());
+}
+
+// A cube floating in the middle: with a large tolerance the free space is one component with a
+// cavity, whose centroid is inside the cube. Such a target is allowed when its spread reaches
+// free space: the nearest free point along an axis is within sigma.
+TEST_F(Plan3d, ATargetInAnObstacleIsReachedByItsSpread) {
+  envs::Workspace3d world;
+  world.bounds = Eigen::AlignedBox3d(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(10, 10, 10));
+  world.obstacles.push_back(BoxMesh({4, 4, 4}, {6, 6, 6}));
+  envs::FreeSpaceDecomposition3dOptions options;
+  options.tau = 100;
+  const envs::FreeSpaceDecomposition3d d = envs::DecomposeFreeSpace3d(world, options);
+  const internal::AcdTargets3d targets(d, AcdSamplerOptions{});
+  auto obstacles =
+      std::make_shared<const collision::ObstacleSet>(collision::BuildObstacleSet(world));
+  const collision::CollisionWorld point(obstacles, envs::Robot::Point());
+  int inside = 0;
+  for (const internal::AcdTarget3d& t : targets.targets()) {
+    auto free_at = [&](const Eigen::Vector3d& p) {
+      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+      pose.translation() = p;
+      return point.IsValid(pose);
+    };
+    if (free_at(t.position)) continue;
+    ++inside;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int axis = 0; axis < 3; ++axis) {
+      for (double sign : {-1.0, 1.0}) {
+        for (double step = 0.01; step < 10; step += 0.01) {
+          if (free_at(t.position + sign * step * Eigen::Vector3d::Unit(axis))) {
+            nearest = std::min(nearest, step);
+            break;
+          }
+        }
+      }
+    }
+    EXPECT_LE(nearest, t.sigma) << t.position.transpose();
+  }
+  EXPECT_EQ(inside, 1);  // The one component's centroid, in the cube.
 }
 
 }  // namespace
