@@ -34,6 +34,7 @@
 #include "bench/targets.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
+#include "tools/check_report.h"
 #include "tools/decompose3d_command.h"
 #include "tools/env_command.h"
 #include "tools/plot_bench.h"
@@ -164,13 +165,7 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
 
   if (args.check) {
     const acd::DecompositionCheck check = acd::CheckDecomposition(polygons, decomposition);
-    if (!check.ok()) {
-      std::cerr << "acdplan: internal error: the decomposition of " << args.input
-                << " failed its check (" << check.problems.size()
-                << " problems); no output written:\n";
-      for (const std::string& problem : check.problems) std::cerr << "  " << problem << "\n";
-      return 1;
-    }
+    if (!check.ok()) return acdplan::tools::ReportFailedCheck(args.input, check);
   }
 
   // Outputs are produced in memory first and each written atomically, so a failure leaves
