@@ -246,6 +246,17 @@ TEST(Footprint, UnitesTheProjectedTrianglesOfAPlanarWorld) {
   EXPECT_TRUE(Footprint(p.world, "walls2d.obj", above).empty());
 }
 
+TEST(Footprint, SeesZUpCollada2dWorldsInTheXyPlaneAsOmplAppDoes) {
+  // assimp turns a Z_UP file to Y_UP, for OMPL.app and ReadMesh alike: the plan drawn in the
+  // file's x-z plane lands in the x-y plane, extruded along +z.
+  const OmplAppProblem p = ReadOmplAppProblem(kData + "zup_planar.cfg");
+  EXPECT_TRUE(acd::BoundingBox(p.world).min().isApprox(Eigen::Vector3d(1, 3, 0)));
+  EXPECT_TRUE(acd::BoundingBox(p.world).max().isApprox(Eigen::Vector3d(2, 4, 1)));
+  const std::vector<acd::Polygon2d> parts = Footprint(p.world, "zup_box.dae");
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_NEAR(acd::Area(parts[0]), 1.0, 1e-12);
+}
+
 TEST(Footprint, KeepsHolesAndFailsForARobotOfSeveralParts) {
   // A square ring of four triangles pairs around a square hole, plus an overlapping cover.
   acd::TriangleMesh ring = acd::MakeTriangleMesh(

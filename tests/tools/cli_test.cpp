@@ -631,6 +631,11 @@ TEST_F(CliTest, PlansA2dOmplAppProblemFile) {
   EXPECT_NE(run.err.find("planar.cfg:21: longest_valid_segment_fraction"), std::string::npos)
       << run.err;
 
+  const RunResult env = Acdplan("env " + Quote(cfg));
+  EXPECT_EQ(env.status, 0) << env.err;
+  EXPECT_NE(env.out.find("OMPL.app problem planar_fixture"), std::string::npos) << env.out;
+  EXPECT_NE(env.out.find("obstacles        2 polygons"), std::string::npos) << env.out;
+
   ExpectUsageError(Acdplan("plan " + Quote(kSource + "tests/data/ompl_app/spatial.cfg")));
   const RunResult car =
       Acdplan("plan " + Quote(Write("car.cfg", "[problem]\ncontrol=dynamic_car\n").string()));
