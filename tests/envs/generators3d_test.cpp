@@ -48,16 +48,24 @@ bool SegmentHitsMesh(const Vector3d& p, const Vector3d& q, const acd::TriangleMe
   return false;
 }
 
-/// Ray parity along a direction no grid face or edge is parallel to.
+/// Ray parity, the majority of three rays in directions no grid face or edge is parallel to
+/// (a ray through a shared edge would count it twice).
 bool InsideMesh(const Vector3d& p, const acd::TriangleMesh& mesh) {
-  const Vector3d far = p + 1e4 * Vector3d(0.5773, 0.6234, 0.5271);
-  int crossings = 0;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    crossings += SegmentHitsTriangle(p, far, mesh.vertices.row(mesh.triangles(f, 0)),
-                                     mesh.vertices.row(mesh.triangles(f, 1)),
-                                     mesh.vertices.row(mesh.triangles(f, 2)));
+  const Vector3d directions[3] = {Vector3d(0.5773, 0.6234, 0.5271),
+                                  Vector3d(-0.4127, 0.7316, -0.5423),
+                                  Vector3d(0.6911, -0.3297, 0.6431)};
+  int votes = 0;
+  for (const Vector3d& direction : directions) {
+    const Vector3d far = p + 1e4 * direction;
+    int crossings = 0;
+    for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+      crossings += SegmentHitsTriangle(p, far, mesh.vertices.row(mesh.triangles(f, 0)),
+                                       mesh.vertices.row(mesh.triangles(f, 1)),
+                                       mesh.vertices.row(mesh.triangles(f, 2)));
+    }
+    votes += crossings % 2;
   }
-  return crossings % 2 == 1;
+  return votes >= 2;
 }
 
 bool Free(const Workspace3d& w, const Vector3d& p) {
@@ -125,6 +133,52 @@ TEST_P(Generator3dTest, ThePassagesAreOpen) {
       EXPECT_FALSE(Free(w, passage.box.center() + side));
     }
   }
+}
+
+TEST_P(Generator3dTest, FreeSpaceIsConnected) {
+  // Free sample points on a grid of spacing h (every wall is thicker than h, so no two free
+  // points on opposite sides of a wall are neighbours; every passage is wider than 2h, so it
+  // holds free points) form one 6-connected set.
+  const Workspace3d w = GenerateWorkspace3d(GetParam(), 2);
+  const double h = 0.25;
+  Eigen::Vector3i n;
+  for (int a = 0; a < 3; ++a) n[a] = static_cast<int>(std::floor(w.bounds.sizes()[a] / h));
+  auto index = [&n](int i, int j, int k) { return (static_cast<size_t>(k) * n[1] + j) * n[0] + i; };
+  std::vector<char> free(static_cast<size_t>(n.prod()), 0);
+  size_t free_count = 0, first = 0;
+  for (int k = 0; k < n[2]; ++k) {
+    for (int j = 0; j < n[1]; ++j) {
+      for (int i = 0; i < n[0]; ++i) {
+        const Vector3d p = w.bounds.min() + h * Vector3d(i + 0.5, j + 0.5, k + 0.5);
+        if (Free(w, p)) {
+          if (free_count++ == 0) first = index(i, j, k);
+          free[index(i, j, k)] = 1;
+        }
+      }
+    }
+  }
+  ASSERT_GT(free_count, 0u);
+  std::vector<size_t> stack = {first};
+  free[first] = 2;
+  size_t reached = 1;
+  while (!stack.empty()) {
+    const size_t c = stack.back();
+    stack.pop_back();
+    const int i = static_cast<int>(c % n[0]), j = static_cast<int>(c / n[0] % n[1]),
+              k = static_cast<int>(c / (static_cast<size_t>(n[0]) * n[1]));
+    const int step[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (const auto& d : step) {
+      const int a = i + d[0], b = j + d[1], e = k + d[2];
+      if (a < 0 || b < 0 || e < 0 || a >= n[0] || b >= n[1] || e >= n[2]) continue;
+      const size_t next = index(a, b, e);
+      if (free[next] == 1) {
+        free[next] = 2;
+        ++reached;
+        stack.push_back(next);
+      }
+    }
+  }
+  EXPECT_EQ(reached, free_count);
 }
 
 TEST_P(Generator3dTest, SameSeedSameWorldOtherSeedOtherWorld) {
