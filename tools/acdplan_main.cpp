@@ -34,6 +34,7 @@
 #include "bench/targets.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
+#include "planning/scenario_cfg.h"
 #include "tools/check_report.h"
 #include "tools/decompose3d_command.h"
 #include "tools/env_command.h"
@@ -252,7 +253,7 @@ struct PlanArguments {
 /// `acdplan plan`: exit 0 solved, 3 not solved within the budget, 2 bad input.
 int RunPlan(const PlanArguments& args) {
   namespace planning = acdplan::planning;
-  planning::Scenario scenario = planning::LoadScenario(args.scenario);
+  planning::Scenario scenario = planning::LoadScenarioFile(args.scenario);
   for (const std::string& warning : scenario.warnings) {
     std::fprintf(stderr, "acdplan: warning: %s\n", warning.c_str());
   }
@@ -544,11 +545,14 @@ int main(int argc, char** argv) {
   PlanArguments plan_args;
   CLI::App* plan = app.add_subcommand(
       "plan",
-      "Plan the scenario of SCENARIO.yaml (planning/scenario.h) with an OMPL planner and a "
+      "Plan the scenario of SCENARIO.yaml (planning/scenario.h), or an OMPL.app problem "
+      "SCENARIO.cfg (2D problems; planning/scenario_cfg.h), with an OMPL planner and a "
       "sampler (acd: around the ACD's centroids and openings, Algorithm 10) and print a "
       "summary. Exit status: 0 solved, 3 no solution within the budget, 2 bad input or usage, "
       "1 internal error.");
-  plan->add_option("SCENARIO", plan_args.scenario, "Scenario YAML file")->required();
+  plan->add_option("SCENARIO", plan_args.scenario,
+                   "Scenario YAML file, or OMPL.app problem file (.cfg)")
+      ->required();
   // The names come from the planning registry's tables, as the scenario validation does.
   plan->add_option("--sampler", plan_args.sampler,
                    "One of: " + acdplan::JoinNames(acdplan::planning::SamplerNames()))
