@@ -549,4 +549,12 @@ OmplAppProblem ReadOmplAppProblem(const std::string& path) {
   return p;
 }
 
+Workspace3d OmplAppWorkspace3d(const OmplAppProblem& problem) {
+  Workspace3d world;
+  world.bounds = problem.bounds;
+  if (problem.world.vertices.rows() > 0) world.obstacles.push_back(problem.world);
+  world.description = "OMPL.app problem " + problem.name;
+  return world;
+}
+
 }  // namespace acdplan::envs

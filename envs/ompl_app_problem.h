@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "acd/triangle_mesh.h"
+#include "envs/workspace3d.h"
 
 namespace acdplan::envs {
 
@@ -80,6 +81,12 @@ struct OmplAppProblem {
 ///         twice, missing or mixed pose keys, bad numbers, empty bounds, unknown samplers or
 ///         planners, and mesh files that ReadMesh() cannot read.
 OmplAppProblem ReadOmplAppProblem(const std::string& path);
+
+/// The 3D world of `problem` (for SE(3) scenarios): `problem.bounds` as the bounds and the
+/// world mesh, unmoved, as the one obstacle (none without a world); the description names the
+/// problem. OMPL.app's volume bounds limit the robot's reference point, not its body, and its
+/// world meshes need not be closed (several shipped ones are not).
+Workspace3d OmplAppWorkspace3d(const OmplAppProblem& problem);
 
 /// OMPL.app's planner names (lower case) that acdplan runs, with acdplan's name for each
 /// (planning/registry.h PlannerNames()), in OMPL.app's order.

@@ -134,6 +134,15 @@ TEST(ReadOmplAppProblem, ShiftsThe3dRobotByItsVertexMean) {
   EXPECT_TRUE(p.robot.vertices.colwise().mean().isZero(1e-12));
 }
 
+TEST(OmplAppWorkspace3d, IsTheBoundsAndTheUnmovedWorld) {
+  const OmplAppProblem p = ReadOmplAppProblem(kData + "spatial.cfg");
+  const Workspace3d w = OmplAppWorkspace3d(p);
+  EXPECT_TRUE(w.bounds.isApprox(p.bounds));
+  ASSERT_EQ(w.obstacles.size(), 1u);
+  EXPECT_EQ(w.obstacles[0].vertices, p.world.vertices);
+  EXPECT_EQ(w.description, "OMPL.app problem spatial_fixture");
+}
+
 TEST(ReadOmplAppProblem, ResolvesMeshPathsAgainstTheFilesFolderAndAppliesNodeTransforms) {
   const OmplAppProblem p = ReadOmplAppProblem(kData + "sub/relative.cfg");
   EXPECT_EQ(p.robot_path, kData + "meshes/moved_cube.dae");
