@@ -45,9 +45,9 @@ Scenario RunScenario(const BenchSpec& spec, const BenchCase& c, std::uint64_t se
   const BenchRobot& robot = spec.robots[c.robot];
   Scenario s = world.scenario;
   s.path = spec.path;
-  s.robot = robot.robot;
-  s.start = Fitted(s.start, robot.robot);
-  s.goal = Fitted(s.goal, robot.robot);
+  if (!robot.from_scenario) s.robot = robot.robot;
+  s.start = Fitted(s.start, s.robot);
+  s.goal = Fitted(s.goal, s.robot);
   s.sampler = c.sampler;
   s.planner = c.planner;
   s.samples = c.budget.samples;
@@ -85,12 +85,13 @@ void CheckQueries(const BenchSpec& spec) {
     }
     collision::CollisionWorldOptions options;
     options.mode = world.scenario.collision_mode;
-    const collision::CollisionWorld check(obstacles[w], robot.robot, options);
+    const envs::Robot& body = robot.from_scenario ? world.scenario.robot : robot.robot;
+    const collision::CollisionWorld check(obstacles[w], body, options);
     const Eigen::AlignedBox2d& bounds = world.scenario.workspace.bounds;
     for (const char* which : {"start", "goal"}) {
       const std::vector<double> q =
-          Fitted(which[0] == 's' ? world.scenario.start : world.scenario.goal, robot.robot);
-      if (!Fits(check, robot.robot, bounds, Pose(q))) {
+          Fitted(which[0] == 's' ? world.scenario.start : world.scenario.goal, body);
+      if (!Fits(check, body, bounds, Pose(q))) {
         throw InputError(spec.path + ": worlds: " + world.name + ": robot " + robot.name + ": " +
                          which + ": the robot is in collision or out of bounds there");
       }

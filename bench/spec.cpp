@@ -12,6 +12,7 @@
 #include "bench/summary.h"
 #include "envs/load_workspace.h"
 #include "planning/registry.h"
+#include "planning/scenario_cfg.h"
 #include "planning/scenario_yaml.h"
 
 namespace acdplan::bench {
@@ -67,13 +68,15 @@ void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& 
     }
     const std::string path = file.ResolvePath(file.String(node["scenario"], child("scenario")));
     try {
-      world.scenario = planning::LoadScenario(path);
+      world.scenario = planning::LoadScenarioFile(path);
     } catch (const InputError& error) {
       file.Fail(child("scenario"), error.what());
     }
     world.name = std::filesystem::path(path).stem().string();
     // The generator's passage width, for the plots (the scenario keeps only the workspace).
-    const YAML::Node generated = YamlFile::Load(path).root()["workspace"];
+    const YAML::Node generated = planning::IsOmplAppProblemFile(path)
+                                     ? YAML::Node()
+                                     : YamlFile::Load(path).root()["workspace"];
     if (generated.IsMap() && generated["passage_width"]) {
       double width = 0;
       if (YAML::convert<double>::decode(generated["passage_width"], width)) {
@@ -303,8 +306,16 @@ BenchSpec LoadBenchSpec(const std::string& path) {
                       ? "required"
                       : "expected letters, digits, '_', '-' or '.', got '" + robot.name + "'");
       }
-      robot.robot =
-          planning::ReadRobot(file, shape.IsNull() ? YAML::Node(YAML::NodeType::Map) : shape, key);
+      robot.from_scenario =
+          shape["shape"] && shape["shape"].IsScalar() && shape["shape"].Scalar() == "scenario";
+      if (robot.from_scenario) {
+        for (const char* k : {"radius", "polygon"}) {
+          if (shape[k]) file.Fail(key + "." + k, "not with shape: scenario");
+        }
+      } else {
+        robot.robot = planning::ReadRobot(
+            file, shape.IsNull() ? YAML::Node(YAML::NodeType::Map) : shape, key);
+      }
       for (const BenchRobot& other : spec.robots) {
         if (other.name == robot.name)
           file.Fail(key + ".name", "duplicate robot name '" + robot.name + "'");

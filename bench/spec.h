@@ -27,7 +27,10 @@ struct BenchWorld {
 /// One robot of a benchmark.
 struct BenchRobot {
   std::string name;
-  envs::Robot robot;
+  envs::Robot robot;  ///< Unused when `from_scenario`.
+  /// `shape: scenario`: each world's own robot (its scenario file's, e.g. an OMPL.app
+  /// problem's robot mesh footprint).
+  bool from_scenario = false;
   planning::AcdSamplerOptions
       acd_options;  ///< The bench's acd_sampler options, orientation per robot.
 };
@@ -64,6 +67,7 @@ struct BenchCase {
 ///   worlds:                         # required, non-empty
 ///     - name: demo                  # required unless `scenario` gives one (its file stem)
 ///       scenario: ../demo.yaml      # a scenario file: workspace, start, goal, acd, collision
+///                                   # (or an OMPL.app problem .cfg, planning/scenario_cfg.h)
 ///     - name: gap                   # or inline:
 ///       workspace: {generator: wall_gap, seed: 1, wall_thickness: 1.0}   # or a file name
 ///       start: [2.5, 5.0]
@@ -73,6 +77,7 @@ struct BenchCase {
 ///   robots:                         # default [{name: point, shape: point}]
 ///     - {name: disc, shape: disc, radius: 0.05}
 ///     - {name: bar, shape: polygon, polygon: [[x, y], ...], orientation: aligned}
+///     - {name: own, shape: scenario}  # each world's scenario's robot (an OMPL.app .cfg's)
 ///   cases:                          # required, non-empty; each a cross product
 ///     - worlds: [demo]              # optional subsets by name (default: all)
 ///       robots: [disc]

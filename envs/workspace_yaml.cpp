@@ -1,6 +1,7 @@
 #include "envs/workspace_yaml.h"
 
 #include <cmath>
+#include <filesystem>
 
 #include "acd/prepare_polygon.h"
 #include "acd/read_polygons.h"
@@ -172,6 +173,36 @@ Workspace3d LoadWorkspace3dYaml(const std::string& path) {
     workspace.obstacles.push_back(std::move(mesh));
   }
   return workspace;
+}
+
+void WriteWorkspace3dYaml(const Workspace3d& workspace, const std::string& path) {
+  const std::filesystem::path yaml(path);
+  const std::string stem = yaml.stem().string();
+  std::string text;
+  if (!workspace.description.empty())
+    text += "description: " + Quoted(workspace.description) + "\n";
+  const Eigen::Vector3d lo = workspace.bounds.min(), hi = workspace.bounds.max();
+  text += "bounds: [" + FormatShortest(lo.x()) + ", " + FormatShortest(lo.y()) + ", " +
+          FormatShortest(lo.z()) + ", " + FormatShortest(hi.x()) + ", " + FormatShortest(hi.y()) +
+          ", " + FormatShortest(hi.z()) + "]\n";
+  text += workspace.obstacles.empty() ? "obstacles: []\n" : "obstacles:\n";
+  for (size_t k = 0; k < workspace.obstacles.size(); ++k) {
+    const acd::TriangleMesh& mesh = workspace.obstacles[k];
+    const std::string name = stem + "_" + std::to_string(k) + ".obj";
+    std::string obj = "# " + stem + " obstacle " + std::to_string(k) + "\n";
+    for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
+      obj += "v " + FormatShortest(mesh.vertices(v, 0)) + " " +
+             FormatShortest(mesh.vertices(v, 1)) + " " + FormatShortest(mesh.vertices(v, 2)) + "\n";
+    }
+    for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+      obj += "f " + std::to_string(mesh.triangles(f, 0) + 1) + " " +
+             std::to_string(mesh.triangles(f, 1) + 1) + " " +
+             std::to_string(mesh.triangles(f, 2) + 1) + "\n";
+    }
+    WriteFileAtomically((yaml.parent_path() / name).string(), obj);
+    text += "  - mesh: " + name + "\n";
+  }
+  WriteFileAtomically(path, text);
 }
 
 }  // namespace acdplan::envs

@@ -38,4 +38,10 @@ void WriteWorkspace2dYaml(const Workspace2d& workspace, const std::string& path)
 /// @throws InputError as LoadWorkspace2dYaml().
 Workspace3d LoadWorkspace3dYaml(const std::string& path);
 
+/// Writes `workspace` in the format LoadWorkspace3dYaml() reads: obstacle k as the OBJ file
+/// "<stem>_<k>.obj" beside `path` (shortest round-trip numbers, triangles as given), then the
+/// YAML naming them; each file atomically.
+/// @throws std::runtime_error "<path>: cannot write the file: <reason>" (base/file_io.h).
+void WriteWorkspace3dYaml(const Workspace3d& workspace, const std::string& path);
+
 }  // namespace acdplan::envs

@@ -36,6 +36,8 @@
 #include "planning/plan_picture3d.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
+#include "planning/scenario_cfg.h"
+#include "tools/check_report.h"
 #include "tools/decompose3d_command.h"
 #include "tools/env_command.h"
 #include "tools/plot_bench.h"
@@ -166,13 +168,7 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
 
   if (args.check) {
     const acd::DecompositionCheck check = acd::CheckDecomposition(polygons, decomposition);
-    if (!check.ok()) {
-      std::cerr << "acdplan: internal error: the decomposition of " << args.input
-                << " failed its check (" << check.problems.size()
-                << " problems); no output written:\n";
-      for (const std::string& problem : check.problems) std::cerr << "  " << problem << "\n";
-      return 1;
-    }
+    if (!check.ok()) return acdplan::tools::ReportFailedCheck(args.input, check);
   }
 
   // Outputs are produced in memory first and each written atomically, so a failure leaves
@@ -260,7 +256,7 @@ struct PlanArguments {
 /// `acdplan plan`: exit 0 solved, 3 not solved within the budget, 2 bad input.
 int RunPlan(const PlanArguments& args) {
   namespace planning = acdplan::planning;
-  planning::Scenario scenario = planning::LoadScenario(args.scenario);
+  planning::Scenario scenario = planning::LoadScenarioFile(args.scenario);
   for (const std::string& warning : scenario.warnings) {
     std::fprintf(stderr, "acdplan: warning: %s\n", warning.c_str());
   }
@@ -577,11 +573,14 @@ int main(int argc, char** argv) {
   PlanArguments plan_args;
   CLI::App* plan = app.add_subcommand(
       "plan",
-      "Plan the scenario of SCENARIO.yaml (planning/scenario.h) with an OMPL planner and a "
+      "Plan the scenario of SCENARIO.yaml (planning/scenario.h), or an OMPL.app problem "
+      "SCENARIO.cfg (2D problems; planning/scenario_cfg.h), with an OMPL planner and a "
       "sampler (acd: around the ACD's centroids and openings, Algorithm 10) and print a "
       "summary. Exit status: 0 solved, 3 no solution within the budget, 2 bad input or usage, "
       "1 internal error.");
-  plan->add_option("SCENARIO", plan_args.scenario, "Scenario YAML file")->required();
+  plan->add_option("SCENARIO", plan_args.scenario,
+                   "Scenario YAML file, or OMPL.app problem file (.cfg)")
+      ->required();
   // The names come from the planning registry's tables, as the scenario validation does.
   plan->add_option("--sampler", plan_args.sampler,
                    "One of: " + acdplan::JoinNames(acdplan::planning::SamplerNames()))

@@ -18,6 +18,7 @@
 #include "base/input_error.h"
 #include "base/stopwatch.h"
 #include "envs/mesh_loader.h"
+#include "tools/check_report.h"
 
 namespace acdplan::tools {
 namespace {
@@ -122,13 +123,7 @@ int RunDecompose3d(const Decompose3dArguments& args) {
 
   if (args.check) {
     const acd::DecompositionCheck check = acd::CheckDecomposition3d(prepared, decomposition);
-    if (!check.ok()) {
-      std::cerr << "acdplan: internal error: the decomposition of " << args.input
-                << " failed its check (" << check.problems.size()
-                << " problems); no output written:\n";
-      for (const std::string& problem : check.problems) std::cerr << "  " << problem << "\n";
-      return 1;
-    }
+    if (!check.ok()) return ReportFailedCheck(args.input, check);
   }
 
   // Every output is produced in memory first and written atomically, so a failure leaves no

@@ -19,6 +19,7 @@
 #include "envs/robot.h"
 #include "envs/world_svg.h"
 #include "planning/scenario.h"
+#include "planning/scenario_cfg.h"
 
 namespace acdplan::tools {
 namespace {
@@ -273,8 +274,8 @@ int RunEnv(const EnvArguments& given) {
                  "radius)\n");
     args.tau_diag = args.tau_rel;
   }
-  if (IsScenarioFile(args.input)) {
-    const planning::Scenario scenario = planning::LoadScenario(args.input);
+  if (IsScenarioFile(args.input) || planning::IsOmplAppProblemFile(args.input)) {
+    const planning::Scenario scenario = planning::LoadScenarioFile(args.input);
     for (const std::string& warning : scenario.warnings) {
       std::fprintf(stderr, "acdplan: warning: %s\n", warning.c_str());
     }

@@ -19,25 +19,11 @@ namespace {
 
 using test::Box;
 using test::Concatenate;
+using test::IsClosed;
 using test::LBlock;
 using test::PreparedSolid;
 using test::Torus;
 using test::UBlock;
-
-// Every directed edge is met by its reverse exactly once: closed, manifold, consistently
-// oriented.
-bool IsClosed(const TriangleMesh& mesh) {
-  std::map<std::pair<int, int>, int> directed;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    for (int k = 0; k < 3; ++k) ++directed[{mesh.triangles(f, k), mesh.triangles(f, (k + 1) % 3)}];
-  }
-  for (const auto& [edge, count] : directed) {
-    if (count != 1) return false;
-    auto it = directed.find({edge.second, edge.first});
-    if (it == directed.end() || it->second != 1) return false;
-  }
-  return true;
-}
 
 int EulerCharacteristic(const TriangleMesh& mesh) {
   std::set<std::pair<int, int>> edges;

@@ -15,6 +15,7 @@
 #include "acd/mesh_measures.h"
 #include "base/input_error.h"
 #include "envs/mesh_loader.h"
+#include "solid_test_meshes.h"
 
 namespace acdplan::acd {
 namespace {
@@ -32,17 +33,6 @@ TriangleMesh CubeAt(double side, const Eigen::Vector3d& offset) {
   TriangleMesh cube = Cube(side);
   cube.vertices.rowwise() += offset.transpose();
   return cube;
-}
-
-// The triangles of `a` and then of `b`, one mesh (vertices not shared).
-TriangleMesh Join(const TriangleMesh& a, const TriangleMesh& b) {
-  TriangleMesh out;
-  out.vertices.resize(a.vertices.rows() + b.vertices.rows(), 3);
-  out.vertices << a.vertices, b.vertices;
-  out.triangles.resize(a.triangles.rows() + b.triangles.rows(), 3);
-  out.triangles << a.triangles,
-      (b.triangles.array() + static_cast<int>(a.vertices.rows())).matrix();
-  return out;
 }
 
 TriangleMesh WithoutTriangles(const TriangleMesh& mesh, const std::vector<int>& drop) {
@@ -270,7 +260,8 @@ TEST(PrepareMeshTest, ThreeFacesOnOneEdgeAreNonManifold) {
 }
 
 TEST(PrepareMeshTest, CubesSharingAnEdgeNameTheNonManifoldEdge) {
-  const TriangleMesh pair = Join(CubeAt(1, {0.5, 0.5, 0.5}), CubeAt(1, {1.5, 1.5, 0.5}));
+  const TriangleMesh pair =
+      test::Concatenate(CubeAt(1, {0.5, 0.5, 0.5}), CubeAt(1, {1.5, 1.5, 0.5}));
   const PreparedMesh prepared = PrepareMesh(pair);
   EXPECT_FALSE(prepared.solid());
   EXPECT_EQ(prepared.defects.boundary_edges, 0);
@@ -281,7 +272,7 @@ TEST(PrepareMeshTest, CubesSharingAnEdgeNameTheNonManifoldEdge) {
 }
 
 TEST(PrepareMeshTest, InterpenetratingCubesSelfIntersectAndRepairUnitesThem) {
-  const TriangleMesh pair = Join(Cube(2), CubeAt(2, {1, 1, 1}));
+  const TriangleMesh pair = test::Concatenate(Cube(2), CubeAt(2, {1, 1, 1}));
   const PreparedMesh prepared = PrepareMesh(pair);
   EXPECT_FALSE(prepared.solid());
   EXPECT_EQ(prepared.defects.boundary_edges, 0);
@@ -300,7 +291,7 @@ TEST(PrepareMeshTest, InterpenetratingCubesSelfIntersectAndRepairUnitesThem) {
 }
 
 TEST(PrepareMeshTest, TwoDisjointCubesAreTwoSolidParts) {
-  const TriangleMesh pair = Join(Cube(2), CubeAt(1, {5, 0, 0}));
+  const TriangleMesh pair = test::Concatenate(Cube(2), CubeAt(1, {5, 0, 0}));
   const PreparedMesh prepared = PrepareMesh(pair);
   EXPECT_TRUE(prepared.solid());
   ASSERT_EQ(prepared.parts.size(), 2u);
@@ -310,7 +301,7 @@ TEST(PrepareMeshTest, TwoDisjointCubesAreTwoSolidParts) {
 }
 
 TEST(PrepareMeshTest, CubesTouchingAtAVertexAreTwoSolidParts) {
-  const TriangleMesh pair = Join(Cube(2), CubeAt(2, {2, 2, 2}));
+  const TriangleMesh pair = test::Concatenate(Cube(2), CubeAt(2, {2, 2, 2}));
   const PreparedMesh prepared = PrepareMesh(pair);
   EXPECT_TRUE(prepared.solid()) << prepared.defects.first;
   EXPECT_EQ(prepared.mesh.vertices.rows(), 15);  // The shared corner merged.
@@ -322,7 +313,8 @@ TEST(PrepareMeshTest, BoxWithACavityIsOnePartOfTwoShells) {
   // The cavity as given faces outward, like the box: preparation turns it inward.
   for (const bool cavity_first : {false, true}) {
     const TriangleMesh outer = Cube(4), inner = CubeAt(2, {0.5, 0, 0});
-    const TriangleMesh box = cavity_first ? Join(inner, outer) : Join(outer, inner);
+    const TriangleMesh box =
+        cavity_first ? test::Concatenate(inner, outer) : test::Concatenate(outer, inner);
     const PreparedMesh prepared = PrepareMesh(box);
     EXPECT_TRUE(prepared.solid());
     ASSERT_EQ(prepared.parts.size(), 1u);
@@ -335,7 +327,8 @@ TEST(PrepareMeshTest, BoxWithACavityIsOnePartOfTwoShells) {
 }
 
 TEST(PrepareMeshTest, AnIslandInACavityIsASecondPart) {
-  const TriangleMesh shells = Join(Join(Cube(8), CubeAt(4, {0, 0, 0})), CubeAt(2, {0, 0, 0}));
+  const TriangleMesh shells =
+      test::Concatenate(test::Concatenate(Cube(8), CubeAt(4, {0, 0, 0})), CubeAt(2, {0, 0, 0}));
   const PreparedMesh prepared = PrepareMesh(shells);
   EXPECT_TRUE(prepared.solid());
   ASSERT_EQ(prepared.parts.size(), 2u);
@@ -344,7 +337,7 @@ TEST(PrepareMeshTest, AnIslandInACavityIsASecondPart) {
 }
 
 TEST(PrepareMeshTest, ResultDoesNotDependOnTriangleOrder) {
-  const TriangleMesh box = Join(CubeAt(4, {1, 2, 3}), CubeAt(2, {1.5, 2, 3}));
+  const TriangleMesh box = test::Concatenate(CubeAt(4, {1, 2, 3}), CubeAt(2, {1.5, 2, 3}));
   TriangleMesh reversed = box;
   reversed.triangles = box.triangles.colwise().reverse();
   const PreparedMesh a = PrepareMesh(box), b = PrepareMesh(reversed);

@@ -10,23 +10,13 @@
 
 #include "acd/decompose3d.h"
 #include "acd/mesh_measures.h"
+#include "acd/prepare_mesh.h"
 #include "solid_test_meshes.h"
 
 namespace acdplan::acd {
 namespace {
 
-bool IsClosed(const TriangleMesh& mesh) {
-  std::map<std::pair<int, int>, int> directed;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    for (int k = 0; k < 3; ++k) ++directed[{mesh.triangles(f, k), mesh.triangles(f, (k + 1) % 3)}];
-  }
-  for (const auto& [edge, count] : directed) {
-    if (count != 1) return false;
-    auto it = directed.find({edge.second, edge.first});
-    if (it == directed.end() || it->second != 1) return false;
-  }
-  return true;
-}
+using test::IsClosed;
 
 TriangleMesh Load(const std::string& name) {
   TriangleMesh mesh =
@@ -34,9 +24,6 @@ TriangleMesh Load(const std::string& name) {
   if (MeshVolume(mesh) < 0) mesh.triangles.col(1).swap(mesh.triangles.col(2));
   return mesh;
 }
-
-// Half the bounding-box diagonal: the reference radius until acd::ReferenceRadius lands.
-double Radius(const TriangleMesh& mesh) { return BoundingBox(mesh).diagonal().norm() / 2; }
 
 Decomposition3d Solve(const TriangleMesh& mesh, double tau) {
   Decompose3dOptions options;
@@ -51,7 +38,7 @@ TEST_P(Corpus, PiecesAreClosedTauConvexAndSumToTheInput) {
   ASSERT_GT(mesh.triangles.rows(), 0);
   ASSERT_TRUE(IsClosed(mesh));
   const double volume = MeshVolume(mesh);
-  const double tau = 0.05 * Radius(mesh);
+  const double tau = 0.05 * ReferenceRadius(mesh);
   const Decomposition3d d = Solve(mesh, tau);
   double sum = 0;
   for (size_t i = 0; i < d.components.size(); ++i) {

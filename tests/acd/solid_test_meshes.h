@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "acd/internal/triangulate_ring.h"
@@ -94,6 +95,21 @@ inline PreparedMesh PreparedSolid(const TriangleMesh& mesh) {
   prepared.mesh = mesh;
   prepared.parts = {mesh};
   return prepared;
+}
+
+/// True if every directed edge is met by its reverse exactly once: closed, 2-manifold at its
+/// edges, consistently oriented.
+inline bool IsClosed(const TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, int> directed;
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) ++directed[{mesh.triangles(f, k), mesh.triangles(f, (k + 1) % 3)}];
+  }
+  for (const auto& [edge, count] : directed) {
+    if (count != 1) return false;
+    auto it = directed.find({edge.second, edge.first});
+    if (it == directed.end() || it->second != 1) return false;
+  }
+  return true;
 }
 
 }  // namespace acdplan::acd::test

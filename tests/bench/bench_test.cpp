@@ -336,6 +336,29 @@ TEST(BenchRunner, AcdBeatsUniformOnFigure4) {
   }
 }
 
+TEST(BenchRunner, RunsAnOmplAppProblemWithItsOwnRobot) {
+  const std::string cfg = std::string(ACDPLAN_SOURCE_DIR) + "/tests/data/ompl_app/planar.cfg";
+  const BenchSpec spec = LoadBenchSpec(WriteBench(
+      "cfg", "name: cfg\nseed: 3\nruns: 2\nworlds:\n  - scenario: " + cfg +
+                 "\nrobots:\n  - {name: own, shape: scenario}\n"
+                 "cases:\n  - {samplers: [acd], planners: [PRM], budgets: [{samples: 600}]}\n"));
+  ASSERT_EQ(spec.worlds.size(), 1u);
+  EXPECT_EQ(spec.worlds[0].name, "planar");
+  EXPECT_EQ(spec.worlds[0].scenario.robot.shape, envs::RobotShape::kPolygon);
+  EXPECT_TRUE(spec.robots[0].from_scenario);
+  const BenchRunOutcome outcome = RunBench(spec);
+  ASSERT_EQ(outcome.records.size(), 2u);
+  for (const BenchRecord& r : outcome.records) {
+    EXPECT_EQ(r.samples, 600u);
+    EXPECT_TRUE(r.solved) << "run " << r.run;
+  }
+  // `shape: scenario` takes no shape keys of its own.
+  EXPECT_HAS(ErrorOf("name: cfg\nworlds:\n  - scenario: " + cfg +
+                     "\nrobots:\n  - {name: own, shape: scenario, radius: 1}\n"
+                     "cases:\n  - {samplers: [acd], planners: [PRM], budgets: [{samples: 9}]}\n"),
+             "robots[0].radius: not with shape: scenario");
+}
+
 TEST(BenchReport, SpecTargetsAreCheckedInTheSummaryAndSurviveAMerge) {
   const std::string text = SmallFigure4(2) +
                            "targets:\n"

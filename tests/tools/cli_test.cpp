@@ -620,4 +620,29 @@ TEST_F(CliTest, DecomposesACorpusMesh) {
               1e-9 * j.at("stats").at("volume").get<double>());
 }
 
+TEST_F(CliTest, PlansA2dOmplAppProblemFile) {
+  const std::string cfg = kSource + "tests/data/ompl_app/planar.cfg";
+  const RunResult run =
+      Acdplan("plan " + Quote(cfg) + " --planner PRM --samples 300 --sampler acd --seed 1");
+  EXPECT_EQ(run.status, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("robot             polygon"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("solved            yes"), std::string::npos) << run.out;
+  // The file's ignored lines are warnings naming their line.
+  EXPECT_NE(run.err.find("planar.cfg:21: longest_valid_segment_fraction"), std::string::npos)
+      << run.err;
+
+  const RunResult env = Acdplan("env " + Quote(cfg));
+  EXPECT_EQ(env.status, 0) << env.err;
+  EXPECT_NE(env.out.find("OMPL.app problem planar_fixture"), std::string::npos) << env.out;
+  EXPECT_NE(env.out.find("obstacles        2 polygons"), std::string::npos) << env.out;
+
+  ExpectUsageError(Acdplan("plan " + Quote(kSource + "tests/data/ompl_app/spatial.cfg")));
+  const RunResult car =
+      Acdplan("plan " + Quote(Write("car.cfg", "[problem]\ncontrol=dynamic_car\n").string()));
+  ExpectUsageError(car);
+  EXPECT_NE(car.err.find("car.cfg:2: control: control-space robots are not supported yet"),
+            std::string::npos)
+      << car.err;
+}
+
 }  // namespace

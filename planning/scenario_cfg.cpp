@@ -1,0 +1,90 @@
+#include "planning/scenario_cfg.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+#include "base/input_error.h"
+#include "envs/mesh_footprint.h"
+
+namespace acdplan::planning {
+namespace {
+
+/// The yaw of a rotation about z.
+double Yaw(const Eigen::Isometry3d& pose) {
+  const Eigen::Vector3d x = pose.linear() * Eigen::Vector3d::UnitX();
+  return std::atan2(x.y(), x.x());
+}
+
+}  // namespace
+
+Scenario ScenarioFromOmplApp(const envs::OmplAppProblem& problem) {
+  if (problem.dimension != 2) {
+    throw InputError(problem.path +
+                     ": 3D .cfg problems: SE(3) scenarios are not wired into acdplan plan and "
+                     "bench yet (2D .cfg problems are)");
+  }
+  Scenario s;
+  s.path = problem.path;
+  s.description = "OMPL.app problem " + problem.name;
+  s.warnings = problem.warnings;
+
+  s.robot = envs::Robot::Polygon(envs::FootprintOutline(problem.robot, problem.robot_path));
+  envs::Workspace2d raw;
+  raw.bounds = Eigen::AlignedBox2d(problem.bounds.min().head<2>(), problem.bounds.max().head<2>());
+  raw.description = s.description;
+  if (problem.world.vertices.rows() > 0) {
+    // OMPL.app checks collisions in 3D with the robot at z = 0: a world triangle entirely
+    // above or below the robot's slab never touches it.
+    envs::FootprintOptions slab;
+    slab.z_min = problem.robot.vertices.col(2).minCoeff();
+    slab.z_max = problem.robot.vertices.col(2).maxCoeff();
+    raw.obstacles = envs::Footprint(problem.world, problem.world_path, slab);
+    s.workspace_label = problem.world_path + " (footprint)";
+  } else {
+    s.workspace_label = "empty world";
+  }
+  s.workspace = envs::PrepareWorkspace2d(raw, problem.path);
+
+  for (const Eigen::Isometry3d* pose : {&problem.start, &problem.goal}) {
+    std::vector<double>& q = pose == &problem.start ? s.start : s.goal;
+    q = {pose->translation().x(), pose->translation().y(), Yaw(*pose)};
+  }
+
+  if (!problem.planners.empty()) {
+    const envs::OmplAppPlanner& first = problem.planners.front();
+    s.planner = ParsePlannerType(first.planner);
+    if (problem.planners.size() > 1) {
+      s.warnings.push_back(problem.path + ":" + std::to_string(first.line) +
+                           ": acdplan plan runs the first planner (" + first.ompl_app_name +
+                           "); `acdplan bench` compares planners");
+    }
+    for (const envs::OmplAppPlanner& planner : problem.planners) {
+      if (!planner.parameters.empty() || !planner.context.empty()) {
+        s.warnings.push_back(problem.path + ":" + std::to_string(planner.line) + ": " +
+                             planner.ompl_app_name +
+                             ": planner parameters and problem.* settings are ignored (OMPL's "
+                             "defaults are used)");
+      }
+    }
+  }
+  if (problem.time_limit > 0) s.time_limit = problem.time_limit;
+  if (!problem.sampler.empty()) s.sampler = ParseSamplerType(problem.sampler);
+  CheckScenario(s);
+  return s;
+}
+
+bool IsOmplAppProblemFile(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension == ".cfg";
+}
+
+Scenario LoadScenarioFile(const std::string& path) {
+  if (IsOmplAppProblemFile(path)) return ScenarioFromOmplApp(envs::ReadOmplAppProblem(path));
+  return LoadScenario(path);
+}
+
+}  // namespace acdplan::planning

@@ -1,0 +1,29 @@
+#pragma once
+// OMPL.app problem files (`.cfg`, envs/ompl_app_problem.h) as planning scenarios.
+
+#include <string>
+
+#include "envs/ompl_app_problem.h"
+#include "planning/scenario.h"
+
+namespace acdplan::planning {
+
+/// The scenario of a 2D (SE(2)) OMPL.app problem: the world mesh's footprint (triangles that
+/// reach the robot's z-slab, envs::Footprint) inside the volume's xy bounds is the workspace,
+/// the robot mesh's footprint (shifted by OMPL.app's robot centre) is a polygon robot, start
+/// and goal are [x, y, theta]. The first [planner] entry is the planner (PRM when there is
+/// none; the others, and planner parameters, are named in `warnings`), [benchmark] time_limit
+/// the budget, the file's sampler the sampler (acd when it names none).
+/// @throws InputError "<file>: 3D .cfg problems: ..." for a 3D problem (SE(3) scenarios are
+///         not wired yet), and the footprint's or the workspace's errors naming the mesh file.
+Scenario ScenarioFromOmplApp(const envs::OmplAppProblem& problem);
+
+/// Whether `path` names an OMPL.app problem file (extension `.cfg`, any case).
+bool IsOmplAppProblemFile(const std::string& path);
+
+/// LoadScenario() for a YAML scenario, ScenarioFromOmplApp(envs::ReadOmplAppProblem()) for a
+/// `.cfg` file; what the command line and benchmark specs call.
+/// @throws InputError from either.
+Scenario LoadScenarioFile(const std::string& path);
+
+}  // namespace acdplan::planning

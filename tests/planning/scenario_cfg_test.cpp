@@ -1,0 +1,109 @@
+// OMPL.app .cfg problems as scenarios: the 2D fixture becomes a footprint workspace and a
+// polygon robot and plans end to end; 3D problems get a clear error until SE(3) is wired.
+
+#include "planning/scenario_cfg.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "acd/polygon2d.h"
+#include "base/input_error.h"
+#include "envs/ompl_app_problem.h"
+#include "planning/plan_scenario.h"
+
+namespace acdplan::planning {
+namespace {
+
+const std::string kData = std::string(ACDPLAN_SOURCE_DIR) + "/tests/data/ompl_app/";
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(ScenarioFromOmplApp, Turns2dMeshesIntoFootprints) {
+  const Scenario s = LoadScenarioFile(kData + "planar.cfg");
+  EXPECT_EQ(s.path, kData + "planar.cfg");
+  EXPECT_EQ(s.description, "OMPL.app problem planar_fixture");
+  ASSERT_EQ(s.robot.shape, envs::RobotShape::kPolygon);
+  // The plate's trapezoid, shifted by its vertex mean (2, 1).
+  EXPECT_NEAR(acd::Area(s.robot.polygon), 8.0, 1e-12);
+  for (const acd::Point2d& p : s.robot.polygon.outer) {
+    EXPECT_GE(p.x(), -2 - 1e-12);
+    EXPECT_LE(p.x(), 2 + 1e-12);
+    EXPECT_GE(p.y(), -1 - 1e-12);
+    EXPECT_LE(p.y(), 2 + 1e-12);
+  }
+  ASSERT_EQ(s.workspace.obstacles.size(), 2u);
+  EXPECT_NEAR(acd::Area(s.workspace.obstacles[0]) + acd::Area(s.workspace.obstacles[1]), 8.0,
+              1e-12);
+  EXPECT_TRUE(s.workspace.bounds.min().isApprox(Eigen::Vector2d(-3, -3)));
+  EXPECT_TRUE(s.workspace.bounds.max().isApprox(Eigen::Vector2d(10, 9)));
+  ASSERT_EQ(s.start.size(), 3u);
+  EXPECT_EQ(s.start, (std::vector<double>{0, 6, 0}));
+  ASSERT_EQ(s.goal.size(), 3u);
+  EXPECT_NEAR(s.goal[0], 8, 1e-12);
+  EXPECT_NEAR(s.goal[1], 0, 1e-12);
+  EXPECT_NEAR(s.goal[2], kPi / 2, 1e-12);
+  EXPECT_EQ(s.planner, PlannerType::kRrtConnect);  // the first [planner] entry
+  EXPECT_EQ(s.time_limit, 2.5);
+  EXPECT_EQ(s.sampler, SamplerType::kBridge);
+  bool first_planner_warning = false, parameter_warning = false;
+  for (const std::string& warning : s.warnings) {
+    first_planner_warning |=
+        warning.find("runs the first planner (rrtconnect)") != std::string::npos;
+    parameter_warning |=
+        warning.find("planar.cfg:31: rrtconnect: planner parameters") != std::string::npos;
+  }
+  EXPECT_TRUE(first_planner_warning);
+  EXPECT_TRUE(parameter_warning);
+}
+
+TEST(ScenarioFromOmplApp, IgnoresWorldTrianglesOutsideTheRobotsSlab) {
+  envs::OmplAppProblem p = envs::ReadOmplAppProblem(kData + "planar.cfg");
+  // Lift the robot above the walls (z in [2, 2]): no obstacle is left.
+  p.robot.vertices.col(2).array() += 2.0;
+  EXPECT_TRUE(ScenarioFromOmplApp(p).workspace.obstacles.empty());
+}
+
+TEST(ScenarioFromOmplApp, Rejects3dProblemsForNow) {
+  try {
+    LoadScenarioFile(kData + "spatial.cfg");
+    FAIL() << "expected acdplan::InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("spatial.cfg: 3D .cfg problems: "), std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(ScenarioFromOmplApp, EveryMappedPlannerIsOneOfOurs) {
+  for (const auto& [ompl_app, ours] : envs::OmplAppPlannerTable()) {
+    EXPECT_EQ(ToString(ParsePlannerType(ours)), ours) << ompl_app;
+  }
+}
+
+TEST(ScenarioFromOmplApp, Plans2dProblemEndToEnd) {
+  Scenario s = LoadScenarioFile(kData + "planar.cfg");
+  s.planner = PlannerType::kPrm;
+  s.samples = 300;
+  s.sampler = SamplerType::kAcd;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    s.seed = seed;
+    const PlanResult result = PlanScenario(s);
+    EXPECT_EQ(result.samples, 300u);
+    // The plate is large for the gaps; the ACD sampler connects on each of these seeds.
+    EXPECT_TRUE(result.solved) << "seed " << seed;
+    if (result.solved) {
+      EXPECT_EQ(result.path.front(), s.start);
+      EXPECT_EQ(result.path.back(), s.goal);
+    }
+  }
+}
+
+TEST(LoadScenarioFile, ReadsYamlScenariosAsBefore) {
+  const Scenario s = LoadScenarioFile(std::string(ACDPLAN_SOURCE_DIR) + "/configs/demo.yaml");
+  EXPECT_FALSE(s.workspace.obstacles.empty());
+  EXPECT_FALSE(IsOmplAppProblemFile("configs/demo.yaml"));
+  EXPECT_TRUE(IsOmplAppProblemFile("x/Twistycool.CFG"));
+}
+
+}  // namespace
+}  // namespace acdplan::planning
