@@ -69,6 +69,9 @@ Scenario LoadScenario(const std::string& path) {
     s.dimension = world.dimension;
     s.workspace = std::move(world.workspace2d);
     s.workspace3d = std::move(world.workspace3d);
+  } else if (NamesGenerator3d(workspace)) {
+    s.dimension = 3;
+    s.workspace3d = ReadGeneratedWorkspace3d(file, workspace, "workspace", &s.workspace_label);
   } else if (workspace.IsMap()) {
     s.workspace = ReadGeneratedWorkspace(file, workspace, "workspace", &s.workspace_label);
   } else {

@@ -24,7 +24,9 @@ namespace acdplan::planning {
 ///                                    # planned in R^3 or SE(3)), or a generator:
 ///   workspace: {generator: wall_gap, seed: 1, passage_width: 0.05, wall_thickness: 1.0}
 ///                                    # generators: envs::GeneratorNames(); wall_thickness
-///                                    # for wall_gap, bug_trap, two_rooms, spiral and maze
+///                                    # for wall_gap, bug_trap, two_rooms, spiral and maze;
+///                                    # 3D: envs::Generator3dNames() (window_wall, ...;
+///                                    # passage_width = the window/mouth/hatch/tube side)
 ///   repair: true                     # with a workspace file: make invalid obstacle polygons
 ///                                    # valid (acd::RepairPolygon), each change a warning
 ///   robot: {shape: point}            # point (default) | disc (radius) | polygon (polygon:

@@ -20,36 +20,49 @@ double Yaw(const Eigen::Isometry3d& pose) {
 }  // namespace
 
 Scenario ScenarioFromOmplApp(const envs::OmplAppProblem& problem) {
-  if (problem.dimension != 2) {
-    throw InputError(problem.path +
-                     ": 3D .cfg problems: SE(3) scenarios are not wired into acdplan plan and "
-                     "bench yet (2D .cfg problems are)");
-  }
   Scenario s;
   s.path = problem.path;
   s.description = "OMPL.app problem " + problem.name;
   s.warnings = problem.warnings;
-
-  s.robot = envs::Robot::Polygon(envs::FootprintOutline(problem.robot, problem.robot_path));
-  envs::Workspace2d raw;
-  raw.bounds = Eigen::AlignedBox2d(problem.bounds.min().head<2>(), problem.bounds.max().head<2>());
-  raw.description = s.description;
-  if (problem.world.vertices.rows() > 0) {
-    // OMPL.app checks collisions in 3D with the robot at z = 0: a world triangle entirely
-    // above or below the robot's slab never touches it.
-    envs::FootprintOptions slab;
-    slab.z_min = problem.robot.vertices.col(2).minCoeff();
-    slab.z_max = problem.robot.vertices.col(2).maxCoeff();
-    raw.obstacles = envs::Footprint(problem.world, problem.world_path, slab);
-    s.workspace_label = problem.world_path + " (footprint)";
-  } else {
-    s.workspace_label = "empty world";
+  if (problem.dimension == 3) {
+    // SE(3): the world mesh unmoved, the robot mesh about its centre, poses as x, y, z, roll,
+    // pitch, yaw (planning/plan_scenario3d.h PoseFromXyzRpy), the 3D ACD samplers aligned.
+    s.dimension = 3;
+    s.workspace3d = envs::OmplAppWorkspace3d(problem);
+    s.workspace_label = problem.world_path.empty() ? "empty world" : problem.world_path;
+    s.robot = envs::Robot::Mesh(problem.robot);
+    s.sampler_options.orientation = AcdOrientation::kAligned;
+    for (const Eigen::Isometry3d* pose : {&problem.start, &problem.goal}) {
+      std::vector<double>& q = pose == &problem.start ? s.start : s.goal;
+      const Eigen::Vector3d t = pose->translation();
+      const Eigen::Vector3d ypr = pose->linear().eulerAngles(2, 1, 0);  // yaw, pitch, roll.
+      q = {t.x(), t.y(), t.z(), ypr[2], ypr[1], ypr[0]};
+    }
   }
-  s.workspace = envs::PrepareWorkspace2d(raw, problem.path);
 
-  for (const Eigen::Isometry3d* pose : {&problem.start, &problem.goal}) {
-    std::vector<double>& q = pose == &problem.start ? s.start : s.goal;
-    q = {pose->translation().x(), pose->translation().y(), Yaw(*pose)};
+  if (s.dimension == 2) {
+    s.robot = envs::Robot::Polygon(envs::FootprintOutline(problem.robot, problem.robot_path));
+    envs::Workspace2d raw;
+    raw.bounds =
+        Eigen::AlignedBox2d(problem.bounds.min().head<2>(), problem.bounds.max().head<2>());
+    raw.description = s.description;
+    if (problem.world.vertices.rows() > 0) {
+      // OMPL.app checks collisions in 3D with the robot at z = 0: a world triangle entirely
+      // above or below the robot's slab never touches it.
+      envs::FootprintOptions slab;
+      slab.z_min = problem.robot.vertices.col(2).minCoeff();
+      slab.z_max = problem.robot.vertices.col(2).maxCoeff();
+      raw.obstacles = envs::Footprint(problem.world, problem.world_path, slab);
+      s.workspace_label = problem.world_path + " (footprint)";
+    } else {
+      s.workspace_label = "empty world";
+    }
+    s.workspace = envs::PrepareWorkspace2d(raw, problem.path);
+
+    for (const Eigen::Isometry3d* pose : {&problem.start, &problem.goal}) {
+      std::vector<double>& q = pose == &problem.start ? s.start : s.goal;
+      q = {pose->translation().x(), pose->translation().y(), Yaw(*pose)};
+    }
   }
 
   if (!problem.planners.empty()) {

@@ -14,8 +14,11 @@ namespace acdplan::planning {
 /// and goal are [x, y, theta]. The first [planner] entry is the planner (PRM when there is
 /// none; the others, and planner parameters, are named in `warnings`), [benchmark] time_limit
 /// the budget, the file's sampler the sampler (acd when it names none).
-/// @throws InputError "<file>: 3D .cfg problems: ..." for a 3D problem (SE(3) scenarios are
-///         not wired yet), and the footprint's or the workspace's errors naming the mesh file.
+/// A 3D (SE(3)) problem: the world mesh unmoved as the one obstacle inside the volume bounds
+/// (envs::OmplAppWorkspace3d), the robot mesh about OMPL.app's robot centre, start and goal as
+/// [x, y, z, roll, pitch, yaw], the 3D ACD samplers with aligned orientations
+/// (planning/plan_scenario3d.h).
+/// @throws InputError for the footprint's or the workspace's errors naming the mesh file.
 Scenario ScenarioFromOmplApp(const envs::OmplAppProblem& problem);
 
 /// Whether `path` names an OMPL.app problem file (extension `.cfg`, any case).

@@ -1,7 +1,10 @@
 #include "planning/scenario_yaml.h"
 
+#include <algorithm>
+
 #include "base/input_error.h"
 #include "envs/generators.h"
+#include "envs/generators3d.h"
 #include "envs/mesh_loader.h"
 
 namespace acdplan::planning {
@@ -26,6 +29,36 @@ envs::Workspace2d ReadGeneratedWorkspace(const YamlFile& file, const YAML::Node&
   *label = "generator " + name + " (seed " + std::to_string(seed) + ")";
   try {
     return envs::GenerateWorkspace2d(name, seed, parameters);
+  } catch (const InputError& error) {
+    file.Fail(key, error.what());
+  }
+}
+
+bool NamesGenerator3d(const YAML::Node& node) {
+  if (!node.IsMap() || !node["generator"] || !node["generator"].IsScalar()) return false;
+  const std::vector<std::string> names = envs::Generator3dNames();
+  return std::find(names.begin(), names.end(), node["generator"].Scalar()) != names.end();
+}
+
+envs::Workspace3d ReadGeneratedWorkspace3d(const YamlFile& file, const YAML::Node& node,
+                                           const std::string& key, std::string* label) {
+  auto child = [&key](const char* name) { return YamlFile::Child(key, name); };
+  file.CheckKeys(node, key, {"generator", "seed", "passage_width", "wall_thickness"});
+  const std::string name = file.String(node["generator"], child("generator"));
+  const std::uint64_t seed =
+      node["seed"] ? file.Integer(node["seed"], child("seed"), "an integer >= 0", 0) : 1;
+  envs::Generator3dParameters parameters;
+  if (node["passage_width"]) {
+    parameters.passage_width =
+        file.Number(node["passage_width"], child("passage_width"), "a positive number", Positive);
+  }
+  if (node["wall_thickness"]) {
+    parameters.wall_thickness =
+        file.Number(node["wall_thickness"], child("wall_thickness"), "a positive number", Positive);
+  }
+  *label = "generator " + name + " (seed " + std::to_string(seed) + ")";
+  try {
+    return envs::GenerateWorkspace3d(name, seed, parameters);
   } catch (const InputError& error) {
     file.Fail(key, error.what());
   }

@@ -8,6 +8,7 @@
 #include "base/yaml_file.h"
 #include "envs/robot.h"
 #include "envs/workspace2d.h"
+#include "envs/workspace3d.h"
 #include "planning/acd_sampler_options.h"
 
 namespace acdplan::planning {
@@ -17,6 +18,16 @@ namespace acdplan::planning {
 /// @throws InputError "<file>: <key>...: <rule>".
 envs::Workspace2d ReadGeneratedWorkspace(const YamlFile& file, const YAML::Node& node,
                                          const std::string& key, std::string* label);
+
+/// Whether mapping `node` names a 3D generator (envs::Generator3dNames()) as its `generator`.
+bool NamesGenerator3d(const YAML::Node& node);
+
+/// A generated 3D workspace from `{generator, seed, passage_width, wall_thickness}` at `key`
+/// (envs::GenerateWorkspace3d: passage_width is the window, mouth, hatch or tube side);
+/// `*label` becomes "generator <name> (seed s)".
+/// @throws InputError "<file>: <key>...: <rule>".
+envs::Workspace3d ReadGeneratedWorkspace3d(const YamlFile& file, const YAML::Node& node,
+                                           const std::string& key, std::string* label);
 
 /// The ACD sampler options present in mapping `node` at `key` (uniform_share, opening_weight,
 /// centroid_spread, opening_spread, max_attempts, orientation, aligned_jitter) into `*options`;

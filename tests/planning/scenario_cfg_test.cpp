@@ -1,5 +1,5 @@
 // OMPL.app .cfg problems as scenarios: the 2D fixture becomes a footprint workspace and a
-// polygon robot and plans end to end; 3D problems get a clear error until SE(3) is wired.
+// polygon robot and plans end to end; 3D problems become SE(3) scenarios (plan_scenario3d.h).
 
 #include "planning/scenario_cfg.h"
 
@@ -12,6 +12,7 @@
 #include "base/input_error.h"
 #include "envs/ompl_app_problem.h"
 #include "planning/plan_scenario.h"
+#include "planning/plan_scenario3d.h"
 
 namespace acdplan::planning {
 namespace {
@@ -64,14 +65,20 @@ TEST(ScenarioFromOmplApp, IgnoresWorldTrianglesOutsideTheRobotsSlab) {
   EXPECT_TRUE(ScenarioFromOmplApp(p).workspace.obstacles.empty());
 }
 
-TEST(ScenarioFromOmplApp, Rejects3dProblemsForNow) {
-  try {
-    LoadScenarioFile(kData + "spatial.cfg");
-    FAIL() << "expected acdplan::InputError";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("spatial.cfg: 3D .cfg problems: "), std::string::npos)
-        << error.what();
-  }
+TEST(ScenarioFromOmplApp, Reads3dProblemsAsSe3Scenarios) {
+  const envs::OmplAppProblem p = envs::ReadOmplAppProblem(kData + "spatial.cfg");
+  const Scenario s = LoadScenarioFile(kData + "spatial.cfg");
+  EXPECT_EQ(s.dimension, 3);
+  EXPECT_EQ(s.robot.shape, envs::RobotShape::kMesh);
+  EXPECT_EQ(s.workspace3d.obstacles.size(), 1u);
+  EXPECT_TRUE(s.workspace3d.bounds.isApprox(p.bounds));
+  ASSERT_EQ(s.start.size(), 6u);
+  ASSERT_EQ(s.goal.size(), 6u);
+  // [x, y, z, roll, pitch, yaw] gives back the file's poses (theta about the axis).
+  EXPECT_TRUE(PoseFromXyzRpy(s.start).isApprox(p.start, 1e-12));
+  EXPECT_TRUE(PoseFromXyzRpy(s.goal).isApprox(p.goal, 1e-12));
+  EXPECT_EQ(s.sampler, SamplerType::kObstacleBased);
+  EXPECT_EQ(s.sampler_options.orientation, AcdOrientation::kAligned);
 }
 
 TEST(ScenarioFromOmplApp, EveryMappedPlannerIsOneOfOurs) {
