@@ -342,5 +342,22 @@ TEST_F(Plan3d, ATargetInAnObstacleIsReachedByItsSpread) {
   EXPECT_EQ(inside, 1);  // The one component's centroid, in the cube.
 }
 
+TEST_F(Plan3d, Shipped3dConfigsLoad) {
+  for (const char* name :
+       {"window_wall_3d.yaml", "bug_trap_3d.yaml", "cubicles_3d.yaml", "bent_tube_3d.yaml"}) {
+    SCOPED_TRACE(name);
+    const Scenario s = LoadScenario(std::string(ACDPLAN_SOURCE_DIR) + "/configs/" + name);
+    EXPECT_EQ(s.dimension, 3);
+    EXPECT_FALSE(s.workspace3d.obstacles.empty());
+  }
+  // The window wall's one opening is the window (side 1), and acd solves it at seed 1.
+  Scenario s = LoadScenario(std::string(ACDPLAN_SOURCE_DIR) + "/configs/window_wall_3d.yaml");
+  EXPECT_EQ(s.robot.shape, envs::RobotShape::kMesh);
+  const PlanResult r = PlanScenario(s);
+  EXPECT_TRUE(r.solved);
+  ASSERT_EQ(r.openings, 1);
+  EXPECT_NEAR(r.decomposition3d->openings[0].width, 1.0, 1e-6);
+}
+
 }  // namespace
 }  // namespace acdplan::planning
