@@ -46,13 +46,23 @@ Scenario RunScenario(const BenchSpec& spec, const BenchCase& c, std::uint64_t se
   Scenario s = world.scenario;
   s.path = spec.path;
   if (!robot.from_scenario) s.robot = robot.robot;
-  s.start = Fitted(s.start, s.robot);
-  s.goal = Fitted(s.goal, s.robot);
+  if (s.dimension == 3) {
+    // A 3D world keeps its poses ([x, y, z] for a point, 6 numbers for a mesh robot).
+    if (s.robot.shape == envs::RobotShape::kPoint) s.start.resize(3), s.goal.resize(3);
+  } else {
+    s.start = Fitted(s.start, s.robot);
+    s.goal = Fitted(s.goal, s.robot);
+  }
   s.sampler = c.sampler;
   s.planner = c.planner;
   s.samples = c.budget.samples;
   if (c.budget.samples == 0) s.time_limit = c.budget.time_limit;
   s.sampler_options = robot.acd_options;
+  if (s.dimension == 3 && robot.from_scenario) {
+    // The scenario's own robot in 3D: its orientation law (aligned for a mesh) and spread.
+    s.sampler_options.orientation = world.scenario.sampler_options.orientation;
+    s.sampler_options.aligned_jitter = world.scenario.sampler_options.aligned_jitter;
+  }
   s.seed = seed;
   return s;
 }
@@ -78,6 +88,8 @@ void CheckQueries(const BenchSpec& spec) {
   std::map<int, std::shared_ptr<const collision::ObstacleSet>> obstacles;
   for (const auto& [w, r] : pairs) {
     const BenchWorld& world = spec.worlds[w];
+    // 3D worlds: PlanScenario3d() checks the start and the goal of each run (an InputError).
+    if (world.scenario.dimension == 3) continue;
     const BenchRobot& robot = spec.robots[r];
     if (!obstacles.count(w)) {
       obstacles[w] = std::make_shared<const collision::ObstacleSet>(

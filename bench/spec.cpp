@@ -137,7 +137,9 @@ void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& 
   }
 
   if (!node["passage_widths"]) {
-    world.workspace_width = world.scenario.workspace.bounds.sizes().x();
+    world.workspace_width = world.scenario.dimension == 3
+                                ? world.scenario.workspace3d.bounds.sizes().x()
+                                : world.scenario.workspace.bounds.sizes().x();
     worlds->push_back(world);
     return;
   }
