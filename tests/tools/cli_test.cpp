@@ -636,13 +636,38 @@ TEST_F(CliTest, PlansA2dOmplAppProblemFile) {
   EXPECT_NE(env.out.find("OMPL.app problem planar_fixture"), std::string::npos) << env.out;
   EXPECT_NE(env.out.find("obstacles        2 polygons"), std::string::npos) << env.out;
 
-  ExpectUsageError(Acdplan("plan " + Quote(kSource + "tests/data/ompl_app/spatial.cfg")));
+  // A 3D problem plans in SE(3); this fixture's start lies outside its bounds (the moved cube's
+  // bounding box), which is bad input (exit 2).
+  const RunResult spatial = Acdplan("plan " + Quote(kSource + "tests/data/ompl_app/spatial.cfg"));
+  EXPECT_EQ(spatial.status, 2) << spatial.err;  // After the file's warnings.
+  EXPECT_NE(spatial.err.find("spatial.cfg: start: the robot is in collision or out of bounds"),
+            std::string::npos)
+      << spatial.err;
   const RunResult car =
       Acdplan("plan " + Quote(Write("car.cfg", "[problem]\ncontrol=dynamic_car\n").string()));
   ExpectUsageError(car);
   EXPECT_NE(car.err.find("car.cfg:2: control: control-space robots are not supported yet"),
             std::string::npos)
       << car.err;
+}
+
+TEST_F(CliTest, PlansA3dScenarioAndDrawsIt) {
+  const fs::path svg = dir_ / "plan.svg", obj = dir_ / "plan.obj", glb = dir_ / "plan.glb";
+  setenv("ACDPLAN_CACHE_DIR", (dir_ / "cache").c_str(), 1);  // Not the user's cache.
+  const RunResult run = Acdplan("plan " + Quote(kSource + "configs/window_wall_3d.yaml") +
+                                " --svg " + Quote(svg.string()) + " --obj " + Quote(obj.string()) +
+                                " --glb " + Quote(glb.string()));
+  EXPECT_EQ(run.status, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("robot             mesh"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("2 components, 1 openings"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("solved            yes"), std::string::npos) << run.out;
+  EXPECT_TRUE(fs::exists(svg) && fs::exists(obj) && fs::exists(glb));
+  EXPECT_TRUE(fs::exists(dir_ / "plan.mtl"));
+  // --obj and --glb are for 3D scenarios only.
+  ExpectUsageError(
+      Acdplan("plan " + Quote(kSource + "configs/demo.yaml") + " --obj " + Quote(obj.string())));
+  EXPECT_TRUE(fs::exists(dir_ / "cache"));
+  unsetenv("ACDPLAN_CACHE_DIR");
 }
 
 }  // namespace
