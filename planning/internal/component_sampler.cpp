@@ -44,24 +44,29 @@ bool ComponentSampler::Contains(const Eigen::Vector2d& p) const {
   return inside;
 }
 
-Eigen::Vector2d ComponentSampler::SampleHull(RandomEngine& rng) const {
+Eigen::Vector2d ComponentSampler::SampleHull(const std::function<double()>& unit) const {
   if (cumulative_.empty() || !(cumulative_.back() > 0)) {
     return hull_.empty() ? Eigen::Vector2d::Zero() : hull_.front();
   }
-  const double u = UniformReal(rng, 0.0, cumulative_.back());
+  const double u = unit() * cumulative_.back();
   const size_t t = std::min<size_t>(
       std::upper_bound(cumulative_.begin(), cumulative_.end(), u) - cumulative_.begin(),
       cumulative_.size() - 1);
   // Uniform in the triangle (hull_[0], hull_[t+1], hull_[t+2]) by folding the unit square.
-  double r = UniformReal(rng, 0.0, 1.0), s = UniformReal(rng, 0.0, 1.0);
+  double r = unit();
+  double s = unit();
   if (r + s > 1) r = 1 - r, s = 1 - s;
   return hull_[0] + r * (hull_[t + 1] - hull_[0]) + s * (hull_[t + 2] - hull_[0]);
 }
 
-Eigen::Vector2d ComponentSampler::Sample(RandomEngine& rng) const {
-  Eigen::Vector2d p = SampleHull(rng);
-  for (int attempt = 0; attempt < kMaxRejections && !Contains(p); ++attempt) p = SampleHull(rng);
+Eigen::Vector2d ComponentSampler::Sample(const std::function<double()>& unit) const {
+  Eigen::Vector2d p = SampleHull(unit);
+  for (int attempt = 0; attempt < kMaxRejections && !Contains(p); ++attempt) p = SampleHull(unit);
   return p;
+}
+
+Eigen::Vector2d ComponentSampler::Sample(RandomEngine& rng) const {
+  return Sample([&rng] { return UniformReal(rng, 0.0, 1.0); });
 }
 
 }  // namespace acdplan::planning::internal

@@ -2,6 +2,7 @@
 // Uniform points inside one ACD component (private to planning).
 
 #include <Eigen/Core>
+#include <functional>
 #include <vector>
 
 #include "acd/decomposition2d.h"
@@ -22,13 +23,15 @@ class ComponentSampler {
 
   /// A point inside the component (see the class comment).
   Eigen::Vector2d Sample(RandomEngine& rng) const;
+  /// As Sample(), drawing from `unit` (uniform in [0, 1); e.g. OMPL's RNG in a Decomposition).
+  Eigen::Vector2d Sample(const std::function<double()>& unit) const;
   /// True if `p` lies inside the polygon (even-odd; boundary points either way).
   bool Contains(const Eigen::Vector2d& p) const;
   /// Area of the component's polygon [units^2].
   double area() const { return area_; }
 
  private:
-  Eigen::Vector2d SampleHull(RandomEngine& rng) const;
+  Eigen::Vector2d SampleHull(const std::function<double()>& unit) const;
 
   acd::Polygon2d polygon_;
   std::vector<Eigen::Vector2d> hull_;
