@@ -291,6 +291,31 @@ std::string BenchSummaryMarkdown(const BenchManifest& m,
   }
   md << "\n";
 
+  // The lead (acd_lead, planning/acd_lead_sampler.h) beside acd and uniform, where it ran.
+  bool any_lead = false;
+  for (const Group& g : groups) any_lead = any_lead || g.Get("acd_lead") != nullptr;
+  if (any_lead) {
+    md << "## acd_lead against acd and uniform\n\n";
+    md << "Success rates on the same world, robot, planner and budget; time ratios: their "
+          "median time to solve / acd_lead's (> 1: acd_lead faster).\n\n";
+    md << "| world | robot | planner | budget | acd_lead | acd | uniform | time uniform/acd_lead "
+          "| time acd/acd_lead |\n";
+    md << "|---|---|---|---|---:|---:|---:|---:|---:|\n";
+    for (const Group& g : groups) {
+      const BenchCaseSummary* lead = g.Get("acd_lead");
+      if (!lead) continue;
+      const BenchCaseSummary* acd = g.Get("acd");
+      const BenchCaseSummary* uniform = g.Get("uniform");
+      md << "| " << g.what.world << " | " << g.what.robot << " | " << g.what.planner << " | "
+         << g.what.budget << " | " << Percent(lead->success_rate) << " | "
+         << (acd ? Percent(acd->success_rate) : "—") << " | "
+         << (uniform ? Percent(uniform->success_rate) : "—") << " | "
+         << (uniform ? Ratio(uniform->median_time_s, lead->median_time_s) : "—") << " | "
+         << (acd ? Ratio(acd->median_time_s, lead->median_time_s) : "—") << " |\n";
+    }
+    md << "\n";
+  }
+
   if (!m.targets.empty()) {
     md << "## Targets\n\n";
     md << "The benchmark file's targets (`targets:`), checked on this run's data. A row is one "
