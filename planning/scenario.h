@@ -38,6 +38,8 @@ namespace acdplan::planning {
 ///                                    # time_limit 5
 ///   sampler: {name: acd, uniform_share: 0.1, orientation: random, opening_weight: 4,
 ///             centroid_spread: 0.3, opening_spread: 0.5}   # name: registry.h SamplerNames()
+///                                    # lead: true (name acd): acd_lead, samples along the
+///                                    # shortest chain of components (acd_lead_sampler.h)
 ///   collision: {mode: hulls+exact}   # bvh | hulls | hulls+exact
 ///   seed: 1                          # integer >= 0: samplers (and the CLI's OMPL seed)
 struct Scenario {
