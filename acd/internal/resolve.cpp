@@ -10,6 +10,7 @@
 
 #include "acd/internal/edge_grid.h"
 #include "acd/internal/exact_predicates.h"
+#include "acd/internal/is_notch.h"
 #include "acd/internal/ring_locator.h"
 
 namespace acdplan::acd::internal {
@@ -213,7 +214,7 @@ double ConcavityAt(const Concavity2d& concavity, const Ring2d& outer, const Endp
 // angles at v are at most 180 degrees. A side counts as straight within rounding noise, the
 // tolerance IsNotch() uses, so that a rotated copy of a collinear configuration keeps its cuts.
 bool InCone(const Point2d& a, const Point2d& v, const Point2d& b, const Point2d& x) {
-  return !IsNotch(a, v, x) && !IsNotch(x, v, b);
+  return !IsNotchInline(a, v, x) && !IsNotchInline(x, v, b);
 }
 
 // Whether a cut from `r` also resolves outer vertex `x`: x is a notch and r lies in its cone.
@@ -221,7 +222,7 @@ bool ResolvesBoth(const Ring2d& outer, int x, const Point2d& r) {
   const int n = static_cast<int>(outer.size());
   const Point2d& a = outer[Prev(x, n)];
   const Point2d& b = outer[Next(x, n)];
-  return IsNotch(a, outer[x], b) && InCone(a, outer[x], b, r);
+  return IsNotchInline(a, outer[x], b) && InCone(a, outer[x], b, r);
 }
 
 // Candidate end points on the outer ring for a cut from `from` (vertex `index` of ring
@@ -305,8 +306,10 @@ std::vector<Candidate> NearestCandidates(const Polygon2d& polygon, const Point2d
 }
 
 // The ring `ring` from index `from` forward to index `to`, both included.
-void AppendChain(const Ring2d& ring, int from, int to, Ring2d* out) {
+template <typename Ring>
+void AppendChain(const Ring& ring, int from, int to, Ring* out) {
   const int n = static_cast<int>(ring.size());
+  out->reserve(out->size() + (to - from + n) % n + 1);
   for (int i = from;; i = Next(i, n)) {
     out->push_back(ring[i]);
     if (i == to) break;
@@ -314,15 +317,19 @@ void AppendChain(const Ring2d& ring, int from, int to, Ring2d* out) {
 }
 
 // Inserts the new points of `ends` (on outer edges) into a copy of the outer ring and returns
-// it; each end's index then names its vertex.
-Ring2d InsertOnOuter(const Ring2d& outer, std::vector<Endpoint*> ends) {
+// it; each end's index then names its vertex. `origin` receives, per vertex of the result, its
+// index in `outer`, or -1 for a new point.
+Ring2d InsertOnOuter(const Ring2d& outer, std::vector<Endpoint*> ends, std::vector<int>* origin) {
   std::sort(ends.begin(), ends.end(), [](const Endpoint* x, const Endpoint* y) {
     return x->index > y->index;  // Back to front, so earlier indices stay valid.
   });
   Ring2d ring = outer;
+  origin->resize(outer.size());
+  std::iota(origin->begin(), origin->end(), 0);
   for (Endpoint* e : ends) {
     if (!e->on_edge) continue;
     ring.insert(ring.begin() + e->index + 1, e->point);
+    origin->insert(origin->begin() + e->index + 1, -1);
     for (Endpoint* other : ends) {
       if (other != e && other->index > e->index) ++other->index;
     }
@@ -371,10 +378,14 @@ bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeQuery& grid,
   if (!to) return false;
   Endpoint start = from;
   Endpoint end = *to;
-  const Ring2d ring = InsertOnOuter(polygon.outer, {&start, &end});
+  std::vector<int> origin;
+  const Ring2d ring = InsertOnOuter(polygon.outer, {&start, &end}, &origin);
   resolution->pieces = {};
+  resolution->origin = {};
   AppendChain(ring, start.index, end.index, &resolution->pieces[0].outer);
   AppendChain(ring, end.index, start.index, &resolution->pieces[1].outer);
+  AppendChain(origin, start.index, end.index, &resolution->origin[0]);
+  AppendChain(origin, end.index, start.index, &resolution->origin[1]);
   DistributeHoles(polygon, -1, &resolution->pieces);
   resolution->cuts = {{from.point, to->point}};
   resolution->witness = from.point;
@@ -425,13 +436,20 @@ void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x,
   const Ring2d& hole = polygon.holes[h];
   Endpoint end_x = x;
   Endpoint end_y = y;
-  const Ring2d ring = InsertOnOuter(polygon.outer, {&end_x, &end_y});
+  std::vector<int> origin;
+  const Ring2d ring = InsertOnOuter(polygon.outer, {&end_x, &end_y}, &origin);
   resolution->pieces = {};
+  resolution->origin = {};
   // Piece 0: outer x..y, cut to b, hole b..a (forward keeps the interior on the left), cut to x.
   AppendChain(ring, end_x.index, end_y.index, &resolution->pieces[0].outer);
   AppendChain(hole, b, a, &resolution->pieces[0].outer);
   AppendChain(ring, end_y.index, end_x.index, &resolution->pieces[1].outer);
   AppendChain(hole, a, b, &resolution->pieces[1].outer);
+  AppendChain(origin, end_x.index, end_y.index, &resolution->origin[0]);
+  AppendChain(origin, end_y.index, end_x.index, &resolution->origin[1]);
+  for (int side = 0; side < 2; ++side) {
+    resolution->origin[side].resize(resolution->pieces[side].outer.size(), -1);  // Hole vertices.
+  }
   DistributeHoles(polygon, h, &resolution->pieces);
   resolution->cuts = {{hole[a], x.point}, {hole[b], y.point}};
   resolution->witness = hole[a];
@@ -515,7 +533,8 @@ bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const Resol
   const int n = static_cast<int>(outer.size());
   std::vector<int> notches;
   for (int i = 0; i < n; ++i) {
-    if (i != concavity.witness_vertex && IsNotch(outer[Prev(i, n)], outer[i], outer[Next(i, n)])) {
+    if (i != concavity.witness_vertex &&
+        IsNotchInline(outer[Prev(i, n)], outer[i], outer[Next(i, n)])) {
       notches.push_back(i);
     }
   }

@@ -27,6 +27,9 @@ struct ResolveOptions {
 /// Two pieces and the cut(s) between them.
 struct Resolution {
   std::array<Polygon2d, 2> pieces;
+  /// Per piece, per outer vertex: the index of the outer vertex of the resolved polygon it
+  /// copies, or -1 (a new point on an edge, a vertex of a hole).
+  std::array<std::vector<int>, 2> origin;
   std::vector<Cut2d> cuts;
   Point2d witness;  ///< The feature resolved.
 };
