@@ -72,6 +72,7 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   if (radius > 0.0) resolve.concavity_unit = radius / 100.0;
   resolve.steiner_cuts = options.steiner_cuts;
   resolve.tau = options.min_convexity > 0.0 ? 0.0 : options.tau;
+  resolve.double_resolves_first = options.tau == 0.0 && options.min_convexity == 0.0;
   const int root = static_cast<int>(out->tree.size());
   out->roots.push_back(root);
   out->tree.push_back({});

@@ -28,6 +28,7 @@ struct Endpoint {
 struct Candidate {
   Endpoint end;
   double score;
+  int rank = 0;  // Ranks before the score: 1 for a diagonal that must win (see ResolveOptions).
 };
 
 // Feet of perpendiculars (a hole's fallback cut ends) closer than this, relative to the edge
@@ -264,10 +265,12 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
     const double relative_concavity = ConcavityAt(concavity, outer, x) / options.concavity_unit;
     double score =
         (1.0 + options.score_concavity * relative_concavity) / (options.score_distance * distance);
+    int rank = 0;
     if (!x.on_edge && concavity.outer[x.index] > options.tau && ResolvesBoth(outer, x.index, r)) {
       score *= options.double_resolve_bonus;
+      rank = options.double_resolves_first ? 1 : 0;
     }
-    candidates.push_back({x, score});
+    candidates.push_back({x, score, rank});
   };
   const int m = static_cast<int>(outer.size());
   for (int i = 0; i < m; ++i) {
@@ -288,13 +291,15 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
 // accepted candidate. A heap, since the first few candidates usually suffice.
 template <typename Accept>
 std::optional<Endpoint> FirstAccepted(std::vector<Candidate> candidates, Accept accept) {
-  auto worse = [](const Candidate& x, const Candidate& y) { return x.score < y.score; };
+  auto worse = [](const Candidate& x, const Candidate& y) {
+    return x.rank < y.rank || (x.rank == y.rank && x.score < y.score);
+  };
   // Usually the best candidate is accepted: when it is the only one with the best score, the
   // heap below would pop it first too, so try it before building the heap.
   const auto best = std::max_element(candidates.begin(), candidates.end(), worse);
   if (best != candidates.end() &&
       std::count_if(candidates.begin(), candidates.end(),
-                    [&](const Candidate& c) { return !(c.score < best->score); }) == 1 &&
+                    [&](const Candidate& c) { return !worse(c, *best); }) == 1 &&
       accept(best->end)) {
     return best->end;
   }
