@@ -340,27 +340,27 @@ void AppendChain(const Ring& ring, int from, int to, Ring* out) {
   }
 }
 
-// Inserts the new points of `ends` (on outer edges) into a copy of the outer ring and returns
-// it; each end's index then names its vertex. `origin` receives, per vertex of the result, its
-// index in `outer`, or -1 for a new point.
-Ring2d InsertOnOuter(const Ring2d& outer, std::vector<Endpoint*> ends, std::vector<int>* origin) {
-  std::sort(ends.begin(), ends.end(), [](const Endpoint* x, const Endpoint* y) {
-    return x->index > y->index;  // Back to front, so earlier indices stay valid.
-  });
-  Ring2d ring = outer;
-  origin->resize(outer.size());
-  std::iota(origin->begin(), origin->end(), 0);
-  for (Endpoint* e : ends) {
-    if (!e->on_edge) continue;
-    ring.insert(ring.begin() + e->index + 1, e->point);
-    origin->insert(origin->begin() + e->index + 1, -1);
-    for (Endpoint* other : ends) {
-      if (other != e && other->index > e->index) ++other->index;
-    }
-    e->index += 1;
-    e->on_edge = false;
+// Appends the outer ring from cut end `a` forward to cut end `b`, both included, to `ring`,
+// and to `origin` the outer index of each point (-1 for an end on an edge). Ends are ordered
+// along the ring by position: vertex k at 2k, a point on edge k at 2k + 1 (two ends on one
+// edge never occur: such a cut would run along the edge).
+void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b, Ring2d* ring,
+                      std::vector<int>* origin) {
+  const int n = static_cast<int>(outer.size());
+  const int pos_a = 2 * a.index + (a.on_edge ? 1 : 0);
+  const int pos_b = 2 * b.index + (b.on_edge ? 1 : 0);
+  const int span = (pos_b - pos_a + 2 * n) % (2 * n);
+  const int between = (span - 1 + (pos_a & 1)) / 2;  // Vertices strictly between a and b.
+  ring->reserve(ring->size() + between + 2);
+  origin->reserve(origin->size() + between + 2);
+  ring->push_back(a.on_edge ? a.point : outer[a.index]);
+  origin->push_back(a.on_edge ? -1 : a.index);
+  for (int k = 0, i = Next(a.index, n); k < between; ++k, i = Next(i, n)) {
+    ring->push_back(outer[i]);
+    origin->push_back(i);
   }
-  return ring;
+  ring->push_back(b.on_edge ? b.point : outer[b.index]);
+  origin->push_back(b.on_edge ? -1 : b.index);
 }
 
 // Gives each hole of `polygon` other than `skip` to the piece that contains it: piece 0 if the
@@ -400,16 +400,12 @@ bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeQuery& grid,
       FirstAccepted(ScoredCandidates(polygon, concavity, -1, r, options),
                     [&](const Endpoint& x) { return IsClearCut(polygon, grid, from, x); });
   if (!to) return false;
-  Endpoint start = from;
-  Endpoint end = *to;
-  std::vector<int> origin;
-  const Ring2d ring = InsertOnOuter(polygon.outer, {&start, &end}, &origin);
   resolution->pieces = {};
   resolution->origin = {};
-  AppendChain(ring, start.index, end.index, &resolution->pieces[0].outer);
-  AppendChain(ring, end.index, start.index, &resolution->pieces[1].outer);
-  AppendChain(origin, start.index, end.index, &resolution->origin[0]);
-  AppendChain(origin, end.index, start.index, &resolution->origin[1]);
+  for (int side = 0; side < 2; ++side) {
+    AppendOuterChain(polygon.outer, side == 0 ? from : *to, side == 0 ? *to : from,
+                     &resolution->pieces[side].outer, &resolution->origin[side]);
+  }
   DistributeHoles(polygon, -1, &resolution->pieces);
   resolution->cuts = {{from.point, to->point}};
   resolution->witness = from.point;
@@ -458,19 +454,13 @@ std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const EdgeQuery&
 void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x, int b,
                       const Endpoint& y, Resolution* resolution) {
   const Ring2d& hole = polygon.holes[h];
-  Endpoint end_x = x;
-  Endpoint end_y = y;
-  std::vector<int> origin;
-  const Ring2d ring = InsertOnOuter(polygon.outer, {&end_x, &end_y}, &origin);
   resolution->pieces = {};
   resolution->origin = {};
   // Piece 0: outer x..y, cut to b, hole b..a (forward keeps the interior on the left), cut to x.
-  AppendChain(ring, end_x.index, end_y.index, &resolution->pieces[0].outer);
+  AppendOuterChain(polygon.outer, x, y, &resolution->pieces[0].outer, &resolution->origin[0]);
   AppendChain(hole, b, a, &resolution->pieces[0].outer);
-  AppendChain(ring, end_y.index, end_x.index, &resolution->pieces[1].outer);
+  AppendOuterChain(polygon.outer, y, x, &resolution->pieces[1].outer, &resolution->origin[1]);
   AppendChain(hole, a, b, &resolution->pieces[1].outer);
-  AppendChain(origin, end_x.index, end_y.index, &resolution->origin[0]);
-  AppendChain(origin, end_y.index, end_x.index, &resolution->origin[1]);
   for (int side = 0; side < 2; ++side) {
     resolution->origin[side].resize(resolution->pieces[side].outer.size(), -1);  // Hole vertices.
   }
