@@ -412,15 +412,20 @@ bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeQuery& grid,
   return true;
 }
 
-// The first cut of a hole: from hole vertex `a` to the best-scoring, else the closest, visible
-// outer point (Algorithm 5).
+// The first cut of a hole: from hole vertex `a` to the closest visible outer point in its
+// cone (Algorithm 5), a diagonal that also resolves an outer notch counting double; else the
+// closest visible outer point. The concavity at the far end does not weigh in: this cut only
+// joins the hole to the boundary, and a short one leaves the shallowest pocket for the second
+// cut (neuron.poly at tau-rel 0.01: SL and H2 164 -> 161 pieces, no acd_bench row rises).
 std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const EdgeQuery& grid,
                                      const Concavity2d& concavity, int h, int a,
                                      const ResolveOptions& options) {
   const Endpoint from{h, a, false, polygon.holes[h][a]};
   auto clear = [&](const Endpoint& e) { return IsClearCut(polygon, grid, from, e); };
+  ResolveOptions closest = options;
+  closest.score_concavity = 0.0;
   std::optional<Endpoint> x =
-      FirstAccepted(ScoredCandidates(polygon, concavity, h, a, options), clear);
+      FirstAccepted(ScoredCandidates(polygon, concavity, h, a, closest), clear);
   if (!x) x = FirstAccepted(NearestCandidates(polygon, from.point), clear);
   return x;
 }
