@@ -489,7 +489,9 @@ TEST(Decompose2dTest, BisectorHitNearTheEndOfAVeryLongEdge) {
         EXPECT_TRUE(check.ok()) << input[0].outer[3].transpose() << ", " << ToString(measure)
                                 << ", tau " << tau << ": "
                                 << ::testing::PrintToString(check.problems);
-        if (tau == 0.0) EXPECT_GE(decomposition.components.size(), 2u);
+        if (tau == 0.0) {
+          EXPECT_GE(decomposition.components.size(), 2u);
+        }
       }
     }
   }
