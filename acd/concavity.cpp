@@ -10,6 +10,7 @@
 #include <numeric>
 
 #include "acd/internal/exact_predicates.h"
+#include "acd/internal/is_notch.h"
 #include "acd/internal/pocket_cache.h"
 #include "acd/internal/point_tree.h"
 #include "acd/internal/shortest_paths.h"
@@ -17,16 +18,8 @@
 namespace acdplan::acd {
 namespace {
 
+using internal::IsNotchInline;
 using internal::Orientation;
-
-// Rounding noise of a coordinate of magnitude 1, relative (a few hundred ulps).
-constexpr double kRoundingNoise = 1e-13;
-
-double MaxAbsCoordinate(const Point2d& a, const Point2d& b, const Point2d& c) {
-  return std::max({a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff()});
-}
-
-double Cross(const Point2d& u, const Point2d& v) { return u.x() * v.y() - u.y() * v.x(); }
 
 double DistanceToSegment(const Point2d& p, const Point2d& a, const Point2d& b) {
   const Point2d ab = b - a;
@@ -43,30 +36,32 @@ struct Pocket {
   int end;
 };
 
-// Bridges and pockets of the outer ring (Ch. III.B, Observation B.3). Ring vertices lying on a
-// bridge (on the hull boundary) split a pocket, so every pocket vertex is strictly inside.
+// The pockets of one hull gap, from hull vertex `begin` forward to hull vertex `end` (the
+// bridge). Ring vertices lying on the bridge (on the hull boundary) split a pocket, so every
+// pocket vertex is strictly inside.
+void AppendGapPockets(const Ring2d& ring, int begin, int end, std::vector<Pocket>* pockets) {
+  const int n = static_cast<int>(ring.size());
+  const int gap = (end - begin + n) % n;
+  if (gap <= 1) return;
+  int start = begin;
+  int since_start = 0;  // (i - start) mod n, without a division per vertex.
+  for (int step = 1, i = begin; step < gap; ++step) {
+    i = i + 1 == n ? 0 : i + 1;
+    ++since_start;
+    if (Orientation(ring[begin], ring[end], ring[i]) == 0) {
+      if (since_start > 1) pockets->push_back({start, i});
+      start = i;
+      since_start = 0;
+    }
+  }
+  if ((end - start + n) % n > 1) pockets->push_back({start, end});
+}
+
+// Bridges and pockets of the outer ring (Ch. III.B, Observation B.3).
 std::vector<Pocket> FindPockets(const Ring2d& ring, const std::vector<int>& hull) {
   std::vector<Pocket> pockets;
-  const int n = static_cast<int>(ring.size());
   const int h = static_cast<int>(hull.size());
-  for (int k = 0; k < h; ++k) {
-    const int begin = hull[k];
-    const int end = hull[(k + 1) % h];
-    const int gap = (end - begin + n) % n;
-    if (gap <= 1) continue;
-    int start = begin;
-    int since_start = 0;  // (i - start) mod n, without a division per vertex.
-    for (int step = 1, i = begin; step < gap; ++step) {
-      i = i + 1 == n ? 0 : i + 1;
-      ++since_start;
-      if (Orientation(ring[begin], ring[end], ring[i]) == 0) {
-        if (since_start > 1) pockets.push_back({start, i});
-        start = i;
-        since_start = 0;
-      }
-    }
-    if ((end - start + n) % n > 1) pockets.push_back({start, end});
-  }
+  for (int k = 0; k < h; ++k) AppendGapPockets(ring, hull[k], hull[(k + 1) % h], &pockets);
   return pockets;
 }
 
@@ -323,23 +318,7 @@ std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
 }  // namespace
 
 bool IsNotch(const Point2d& prev, const Point2d& v, const Point2d& next) {
-  if (Orientation(prev, v, next) >= 0) return false;
-  const Point2d chord = next - prev;
-  const double noise = kRoundingNoise * std::max(1.0, MaxAbsCoordinate(prev, v, next));
-  const double cross = Cross(chord, v - prev);
-  // The same comparison squared, without the square root and the division (this runs for every
-  // candidate of every cut): decided when clear of a relative band of 1e-9, far wider than the
-  // few ulps either form errs by; inside the band, and where squares could overflow or
-  // underflow, the form below decides.
-  const double length2 = chord.squaredNorm();
-  if (length2 >= 1e-150 && length2 <= 1e150 && std::abs(cross) <= 1e150 && noise <= 1e75) {
-    const double lhs = cross * cross, rhs = noise * noise * length2;
-    if (lhs > rhs * (1.0 + 1e-9)) return true;
-    if (lhs < rhs * (1.0 - 1e-9)) return false;
-  }
-  const double length = std::sqrt(length2);
-  if (length == 0.0) return (v - prev).norm() > noise;  // A spike back onto itself.
-  return std::abs(cross) / length > noise;
+  return internal::IsNotchInline(prev, v, next);
 }
 
 int CountNotches(const Polygon2d& polygon) {
@@ -347,7 +326,7 @@ int CountNotches(const Polygon2d& polygon) {
   auto count_ring = [&count](const Ring2d& ring) {
     const size_t n = ring.size();
     for (size_t i = 0; i < n; ++i) {
-      if (IsNotch(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n])) ++count;
+      if (internal::IsNotchInline(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n])) ++count;
     }
   };
   count_ring(polygon.outer);
@@ -355,23 +334,27 @@ int CountNotches(const Polygon2d& polygon) {
   return count;
 }
 
-std::vector<int> ConvexHullIndices(const Ring2d& ring) {
-  // Melkman's linear-time hull of a simple polygonal chain, started at the lexicographically
-  // smallest vertex (always a strict hull vertex), with exact orientation; strict turns only.
-  const int n = static_cast<int>(ring.size());
+namespace {
+
+// Melkman's linear-time hull of a simple polygonal chain: the points ring[index(k)],
+// k = 0..count-1, in ring order (increasing indices), started at the lexicographically smallest
+// one (always a strict hull vertex), with exact orientation; strict turns only. Returns ring
+// indices in increasing order.
+template <typename Index>
+std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index) {
+  const int n = count;
   if (n < 3) {
     std::vector<int> all(n);
-    std::iota(all.begin(), all.end(), 0);
+    for (int k = 0; k < n; ++k) all[k] = index(k);
     return all;
   }
   int start = 0;
-  for (int i = 1; i < n; ++i) {
-    if (ring[i].x() < ring[start].x() ||
-        (ring[i].x() == ring[start].x() && ring[i].y() < ring[start].y())) {
-      start = i;
-    }
+  for (int k = 1; k < n; ++k) {
+    const Point2d& p = ring[index(k)];
+    const Point2d& q = ring[index(start)];
+    if (p.x() < q.x() || (p.x() == q.x() && p.y() < q.y())) start = k;
   }
-  auto at = [&](int k) { return start + k < n ? start + k : start + k - n; };
+  auto at = [&](int k) { return index(start + k < n ? start + k : start + k - n); };
   auto turn = [&](int a, int b, int c) { return Orientation(ring[a], ring[b], ring[c]); };
   // Skip vertices collinear with the first edge: they lie on it (the chain is simple).
   int second = at(1);
@@ -409,6 +392,12 @@ std::vector<int> ConvexHullIndices(const Ring2d& ring) {
   std::vector<int> hull(deque.begin() + bottom, deque.begin() + top);  // Drop the repeated end.
   std::sort(hull.begin(), hull.end());
   return hull;
+}
+
+}  // namespace
+
+std::vector<int> ConvexHullIndices(const Ring2d& ring) {
+  return MelkmanHull(ring, static_cast<int>(ring.size()), [](int k) { return k; });
 }
 
 Ring2d ConvexHull(const Ring2d& points) {
@@ -466,65 +455,147 @@ void PocketCache::InsertAntipodes(const Ring2d& hole, const HoleAntipodes& antip
   antipodes_.emplace(Hash(hole), AntipodesEntry{hole, antipodes});
 }
 
+namespace {
+
+// The concavity of every vertex of `pocket` into result->outer (Ch. IV.A.1).
+void MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOptions& options,
+                   PocketCache* cache, Concavity2d* result) {
+  const int n = static_cast<int>(ring.size());
+  // SL distances straight off the ring: no copy, no lookup. They are final for SL, for H2
+  // when they exceed tau, and for SP and H1 when the pocket has no hazard (see
+  // PocketConcavity()).
+  const Point2d& from = ring[pocket.begin];
+  const Point2d& to = ring[pocket.end];
+  const Point2d bridge = to - from;
+  bool hazard = false;
+  double sl_max = 0.0;
+  for (int i = pocket.begin; i != pocket.end;) {
+    const int next = i + 1 == n ? 0 : i + 1;
+    hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
+    if (i != pocket.begin) {
+      result->outer[i] = DistanceToSegment(ring[i], from, to);
+      sl_max = std::max(sl_max, result->outer[i]);
+    }
+    i = next;
+  }
+  const bool needs_sp =
+      hazard && (options.measure == ConcavityMeasure::kShortestPath ||
+                 options.measure == ConcavityMeasure::kHybrid1 ||
+                 (options.measure == ConcavityMeasure::kHybrid2 && sl_max <= options.tau));
+  if (!needs_sp) return;
+  const Ring2d chain = PocketChain(ring, pocket);
+  const std::vector<double>* cached = cache != nullptr ? cache->Find(chain) : nullptr;
+  std::vector<double> computed;
+  if (cached == nullptr) {
+    computed = internal::ShortestPathsToBridge(chain);
+    if (cache != nullptr) cache->Insert(chain, computed);
+  }
+  const std::vector<double>& d = cached != nullptr ? *cached : computed;
+  for (size_t k = 1; k + 1 < chain.size(); ++k) {
+    result->outer[(pocket.begin + static_cast<int>(k)) % n] = d[k];
+  }
+}
+
+// The witness notch and the holes, once result->outer is complete.
+void FinishMeasure(const Polygon2d& polygon, const ConcavityOptions& options, PocketCache* cache,
+                   Concavity2d* result) {
+  const Ring2d& ring = polygon.outer;
+  const int n = static_cast<int>(ring.size());
+  // The maximum over notches only (Lemma C.2: the most concave point is a notch).
+  for (int i = 0; i < n; ++i) {
+    if ((result->witness_vertex < 0 || result->outer[i] > result->value) &&
+        internal::IsNotchInline(ring[i == 0 ? n - 1 : i - 1], ring[i],
+                                ring[i + 1 == n ? 0 : i + 1])) {
+      result->value = result->outer[i];
+      result->witness_vertex = i;
+    }
+  }
+  const double delta = result->value;
+  result->holes = MeasureHoles(polygon, result->outer, delta, options, cache);
+  for (int i = 0; i < static_cast<int>(result->holes.size()); ++i) {
+    if (result->holes[i].concavity >= result->value) {
+      result->value = result->holes[i].concavity;
+      result->witness_hole = i;
+      result->witness_vertex = -1;
+    }
+  }
+}
+
+}  // namespace
+
 Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOptions& options,
                                    PocketCache* cache) {
   Concavity2d result;
   const Ring2d& ring = polygon.outer;
-  const int n = static_cast<int>(ring.size());
-  result.outer.assign(n, 0.0);
+  result.outer.assign(ring.size(), 0.0);
   result.hull = ConvexHullIndices(ring);
   for (const Pocket& pocket : FindPockets(ring, result.hull)) {
-    // SL distances straight off the ring: no copy, no lookup. They are final for SL, for H2
-    // when they exceed tau, and for SP and H1 when the pocket has no hazard (see
-    // PocketConcavity()).
-    const Point2d& from = ring[pocket.begin];
-    const Point2d& to = ring[pocket.end];
-    const Point2d bridge = to - from;
-    bool hazard = false;
-    double sl_max = 0.0;
-    for (int i = pocket.begin; i != pocket.end;) {
-      const int next = i + 1 == n ? 0 : i + 1;
-      hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
-      if (i != pocket.begin) {
-        result.outer[i] = DistanceToSegment(ring[i], from, to);
-        sl_max = std::max(sl_max, result.outer[i]);
+    MeasurePocket(ring, pocket, options, cache, &result);
+  }
+  FinishMeasure(polygon, options, cache, &result);
+  return result;
+}
+
+Concavity2d MeasureChildConcavity(const Polygon2d& piece, const std::vector<int>& origin,
+                                  const Concavity2d& parent,
+                                  const std::vector<char>& parent_on_hull,
+                                  const ConcavityOptions& options, PocketCache* cache) {
+  const Ring2d& ring = piece.outer;
+  const int n = static_cast<int>(ring.size());
+  const int parent_n = static_cast<int>(parent_on_hull.size());
+  // Edge i -> i + 1 is an edge of the parent.
+  auto inherited_edge = [&](int i) {
+    const int a = origin[i], b = origin[i + 1 == n ? 0 : i + 1];
+    return a >= 0 && b == (a + 1 == parent_n ? 0 : a + 1);
+  };
+  int run_start = -1;  // A vertex where a run of inherited edges starts.
+  if (static_cast<int>(origin.size()) == n) {
+    for (int i = 0; i < n && run_start < 0; ++i) {
+      if (!inherited_edge(i == 0 ? n - 1 : i - 1)) run_start = i;
+    }
+  }
+  if (run_start < 0) return MeasureConcavityCached(piece, options, cache);
+  // A gap of the parent's hull whose whole chain the piece inherits keeps its bridge: its
+  // vertices keep their concavity, and they are not vertices of the piece's hull (the piece
+  // lies in the parent, so the chain lies strictly inside the union of the piece and the
+  // pocket, whose hull is the piece's). The hull is built over the other vertices, in ring
+  // order from `run_start`; the first vertex of such a gap is marked with a negative
+  // concavity until its gap is skipped below.
+  constexpr double kInheritedGap = -1.0;
+  Concavity2d result;
+  result.outer.assign(n, 0.0);
+  std::vector<int> kept;
+  kept.reserve(n);
+  int last_hull = -1;  // Where in `kept` the run's last parent hull vertex is, or -1.
+  for (int k = 0, i = run_start; k < n; ++k, i = i + 1 == n ? 0 : i + 1) {
+    const int from = origin[i];
+    if (from >= 0 && parent_on_hull[from]) {
+      if (last_hull >= 0) {
+        const int begin = kept[last_hull];
+        for (int j = begin + 1 == n ? 0 : begin + 1; j != i; j = j + 1 == n ? 0 : j + 1) {
+          result.outer[j] = parent.outer[origin[j]];
+        }
+        kept.resize(last_hull + 1);
+        result.outer[begin] = kInheritedGap;
       }
-      i = next;
+      last_hull = static_cast<int>(kept.size());
     }
-    const bool needs_sp =
-        hazard && (options.measure == ConcavityMeasure::kShortestPath ||
-                   options.measure == ConcavityMeasure::kHybrid1 ||
-                   (options.measure == ConcavityMeasure::kHybrid2 && sl_max <= options.tau));
-    if (!needs_sp) continue;
-    const Ring2d chain = PocketChain(ring, pocket);
-    const std::vector<double>* cached = cache != nullptr ? cache->Find(chain) : nullptr;
-    std::vector<double> computed;
-    if (cached == nullptr) {
-      computed = internal::ShortestPathsToBridge(chain);
-      if (cache != nullptr) cache->Insert(chain, computed);
-    }
-    const std::vector<double>& d = cached != nullptr ? *cached : computed;
-    for (size_t k = 1; k + 1 < chain.size(); ++k) {
-      result.outer[(pocket.begin + static_cast<int>(k)) % n] = d[k];
-    }
+    kept.push_back(i);
+    if (!inherited_edge(i)) last_hull = -1;
   }
-  // The maximum over notches only (Lemma C.2: the most concave point is a notch).
-  for (int i = 0; i < n; ++i) {
-    if ((result.witness_vertex < 0 || result.outer[i] > result.value) &&
-        IsNotch(ring[i == 0 ? n - 1 : i - 1], ring[i], ring[i + 1 == n ? 0 : i + 1])) {
-      result.value = result.outer[i];
-      result.witness_vertex = i;
+  result.hull = MelkmanHull(ring, static_cast<int>(kept.size()), [&](int k) { return kept[k]; });
+  const int h = static_cast<int>(result.hull.size());
+  std::vector<Pocket> pockets;
+  for (int k = 0; k < h; ++k) {
+    const int begin = result.hull[k];
+    if (result.outer[begin] == kInheritedGap) {
+      result.outer[begin] = 0.0;
+      continue;
     }
+    AppendGapPockets(ring, begin, result.hull[(k + 1) % h], &pockets);
   }
-  const double delta = result.value;
-  result.holes = MeasureHoles(polygon, result.outer, delta, options, cache);
-  for (int i = 0; i < static_cast<int>(result.holes.size()); ++i) {
-    if (result.holes[i].concavity >= result.value) {
-      result.value = result.holes[i].concavity;
-      result.witness_hole = i;
-      result.witness_vertex = -1;
-    }
-  }
+  for (const Pocket& pocket : pockets) MeasurePocket(ring, pocket, options, cache, &result);
+  FinishMeasure(piece, options, cache, &result);
   return result;
 }
 

@@ -72,6 +72,7 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   if (radius > 0.0) resolve.concavity_unit = radius / 100.0;
   resolve.steiner_cuts = options.steiner_cuts;
   resolve.tau = options.min_convexity > 0.0 ? 0.0 : options.tau;
+  resolve.double_resolves_first = options.tau == 0.0 && options.min_convexity == 0.0;
   const int root = static_cast<int>(out->tree.size());
   out->roots.push_back(root);
   out->tree.push_back({});
@@ -82,11 +83,16 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   long splits = 0;
   internal::PocketCache cache;
   std::vector<int> stack = {root};
+  // Pieces waiting on the stack are measured when they are cut from their parent, while the
+  // parent's measure is at hand to reuse (MeasureChildConcavity()); indexed by node - root.
+  std::vector<Concavity2d> measured(1);
+  std::vector<char> on_hull;
   while (!stack.empty()) {
     const int id = stack.back();
     stack.pop_back();
     const Concavity2d concavity =
-        internal::MeasureConcavityCached(out->tree[id].piece, measure, &cache);
+        id == root ? internal::MeasureConcavityCached(out->tree[id].piece, measure, &cache)
+                   : std::move(measured[id - root]);
     out->tree[id].concavity = concavity.value;
     if (IsAccepted(out->tree[id].piece, concavity, options)) {
       HierarchyNode2d& node = out->tree[id];
@@ -106,8 +112,13 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
     }
     out->tree[id].witness = resolution.witness;
     out->tree[id].cuts = resolution.cuts;
+    on_hull.assign(out->tree[id].piece.outer.size(), 0);
+    for (const int i : concavity.hull) on_hull[i] = 1;
     for (int side = 1; side >= 0; --side) {  // Child 0 is processed first (depth-first order).
       const int child = static_cast<int>(out->tree.size());
+      measured.resize(child - root + 1);
+      measured[child - root] = internal::MeasureChildConcavity(
+          resolution.pieces[side], resolution.origin[side], concavity, on_hull, measure, &cache);
       HierarchyNode2d node;
       node.piece = std::move(resolution.pieces[side]);
       node.parent = id;

@@ -21,6 +21,7 @@
 #include "collision/collision_mode.h"
 #include "collision/collision_world.h"
 #include "collision/obstacle_set.h"
+#include "planning/decomposition_cache.h"
 #include "planning/plan_scenario.h"
 
 namespace acdplan::bench {
@@ -122,13 +123,17 @@ void CheckQueries(const BenchSpec& spec) {
     planning::ConfigureOmpl(scenario.seed, true);
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);  // Keep the progress line readable.
     const planning::PlanResult result = planning::PlanScenario(scenario);
-    const bool acd = scenario.sampler == planning::SamplerType::kAcd;
-    const double decomposition_s = result.decomposition_ms / 1e3;
+    // acd samplers: the run's time with the decomposition as this run paid for it (a cache
+    // look-up: the parent decomposed each map before forking), and the map's one-off
+    // decomposition cost beside it. The other samplers do not use it: not in their time.
+    const bool acd = planning::UsesDecomposition(scenario.sampler);
+    const double paid_s = result.decomposition_ms / 1e3;
     char buffer[512];
     std::snprintf(buffer, sizeof(buffer), "OK %d %.17g %.17g %llu %llu %.17g %d %d\n",
                   result.solved ? 1 : 0,
-                  acd ? result.time_s : std::max(0.0, result.time_s - decomposition_s),
-                  acd ? decomposition_s : 0.0, static_cast<unsigned long long>(result.samples),
+                  acd ? result.time_s : std::max(0.0, result.time_s - paid_s),
+                  acd ? result.decomposition_compute_ms / 1e3 : 0.0,
+                  static_cast<unsigned long long>(result.samples),
                   static_cast<unsigned long long>(result.collision_checks), result.path_length,
                   result.components, result.openings);
     line = buffer;
@@ -220,6 +225,9 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
       const BenchRunId id = ids[next++];
       const BenchCase& c = spec.cases[id.case_index];
       const Scenario scenario = RunScenario(spec, c, id.seed);
+      // Decompose each map once, here in the parent: the children inherit the cache.
+      planning::DecomposeFreeSpaceCached(scenario.workspace,
+                                         planning::ScenarioAcdOptions(scenario));
       const double watchdog = c.budget.samples > 0 ? 600.0 : 10.0 * c.budget.time_limit + 60.0;
       int fds[2];
       if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe(): ") + std::strerror(errno));

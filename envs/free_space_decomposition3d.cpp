@@ -22,7 +22,7 @@
 namespace acdplan::envs {
 namespace {
 
-constexpr const char* kFormat = "acdplan.free_space_decomposition3d/2";
+constexpr const char* kFormat = "acdplan.free_space_decomposition3d/3";
 
 // FNV-1a over the inputs' bytes, twice with different offsets: a 128-bit content key.
 class ContentHash {
@@ -169,8 +169,8 @@ std::string Serialise(const FreeSpaceDecomposition3d& d) {
   out << kFormat << "\nkey " << d.key << "\nbounds";
   for (int k = 0; k < 3; ++k) out << ' ' << Hex(d.bounds.min()[k]);
   for (int k = 0; k < 3; ++k) out << ' ' << Hex(d.bounds.max()[k]);
-  out << "\ntau " << Hex(d.tau) << "\nfree_volume " << Hex(d.free_volume) << "\nnotes "
-      << d.notes.size() << '\n';
+  out << "\ntau " << Hex(d.tau) << "\nfree_volume " << Hex(d.free_volume) << "\ncompute_ms "
+      << Hex(d.compute_ms) << "\nnotes " << d.notes.size() << '\n';
   for (const std::string& note : d.notes) out << note << '\n';
   out << "components " << d.components.size() << '\n';
   for (const FreeComponent3d& c : d.components) {
@@ -258,6 +258,8 @@ FreeSpaceDecomposition3d Parse(const std::string& text, const std::string& key) 
   d.tau = in.Real();
   in.Expect("free_volume");
   d.free_volume = in.Real();
+  in.Expect("compute_ms");
+  d.compute_ms = in.Real();
   in.Expect("notes");
   const long notes = in.Integer(0, 1 << 20);
   in.SkipNewline();
@@ -473,6 +475,7 @@ FreeSpaceDecomposition3d DecomposeFreeSpace3d(const Workspace3d& workspace,
   }
   FreeSpaceDecomposition3d d = Compute(workspace, options.tau);
   d.key = key;
+  d.compute_ms = stopwatch.Milliseconds();
   if (!file.empty()) {
     try {
       WriteFileAtomically(file, Serialise(d));

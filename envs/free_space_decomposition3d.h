@@ -54,6 +54,8 @@ struct FreeSpaceDecomposition3d {
   std::string key;          ///< The content hash of the inputs (32 hex digits).
   bool from_cache = false;  ///< Read from the disk cache rather than computed.
   double time_ms = 0.0;     ///< Free space + ACD (or the cache read) [ms].
+  double compute_ms = 0.0;  ///< What computing the free space and its ACD cost [ms] (kept in
+                            ///< the cache: a cache hit reports the original cost).
 
   /// The index of the component whose hull holds `point` most deeply (largest distance to
   /// the hull's nearest face), or -1 if none holds it. O(total hull faces).

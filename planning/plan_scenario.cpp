@@ -26,7 +26,9 @@
 #include "collision/obstacle_set.h"
 #include "envs/free_space2d.h"
 #include "envs/world_svg.h"
+#include "planning/acd_lead_sampler.h"
 #include "planning/counting_validity_checker.h"
+#include "planning/decomposition_cache.h"
 #include "planning/plan_picture3d.h"
 #include "planning/plan_scenario3d.h"
 #include "planning/registry.h"
@@ -53,6 +55,13 @@ Eigen::Isometry2d Pose(bool se2, const ob::State* state) {
 
 }  // namespace
 
+acd::Decompose2dOptions ScenarioAcdOptions(const Scenario& scenario) {
+  acd::Decompose2dOptions options;
+  options.tau = scenario.tau_diag * scenario.workspace.bounds.sizes().norm();
+  options.measure = scenario.measure;
+  return options;
+}
+
 PlanResult PlanScenario(const Scenario& scenario) {
   CheckScenario(scenario);
   if (scenario.dimension == 3) return PlanScenario3d(scenario);
@@ -67,12 +76,12 @@ PlanResult PlanScenario(const Scenario& scenario) {
   // Free space and its ACD (the sampler's targets; decomposed for every sampler, so time_s
   // compares like with like).
   const envs::Workspace2d& workspace = scenario.workspace;
-  const std::vector<acd::Polygon2d> free_space = envs::FreeSpace2d(workspace);
-  acd::Decompose2dOptions acd_options;
-  acd_options.tau = scenario.tau_diag * workspace.bounds.sizes().norm();
-  acd_options.measure = scenario.measure;
-  result.decomposition = acd::Decompose2d(free_space, acd_options);
+  const CachedDecomposition cached =
+      DecomposeFreeSpaceCached(workspace, ScenarioAcdOptions(scenario));
+  result.decomposition = *cached.decomposition;
   result.decomposition_ms = stopwatch.Milliseconds();
+  result.decomposition_compute_ms = cached.compute_ms;
+  result.decomposition_cached = cached.hit;
   result.components = static_cast<int>(result.decomposition.components.size());
   result.openings = static_cast<int>(result.decomposition.openings.size());
 
@@ -128,7 +137,11 @@ PlanResult PlanScenario(const Scenario& scenario) {
 
   AcdSamplerOptions sampler_options = scenario.sampler_options;
   sampler_options.seed = scenario.seed;
-  InstallSampler(scenario.sampler, si, result.decomposition, sampler_options);
+  AcdLeadQuery lead;
+  lead.start = Eigen::Vector2d(scenario.start[0], scenario.start[1]);
+  lead.goal = Eigen::Vector2d(scenario.goal[0], scenario.goal[1]);
+  lead.robot_width = RobotWidth(scenario.robot);
+  InstallSampler(scenario.sampler, si, result.decomposition, sampler_options, &lead);
 
   if (scenario.samples > 0) {
     SampleBudgetOptions options;
@@ -198,6 +211,8 @@ std::string PlanResultToJson(const Scenario& scenario, const PlanResult& result)
   j["seed"] = scenario.seed;
   j["time_s"] = result.time_s;
   j["decomposition_ms"] = result.decomposition_ms;
+  j["decomposition_compute_ms"] = result.decomposition_compute_ms;
+  j["decomposition_cached"] = result.decomposition_cached;
   j["samples"] = result.samples;
   j["collision_checks"] = result.collision_checks;
   j["path_length"] = result.path_length;

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "acd/decompose2d.h"
 #include "acd/decomposition2d.h"
 #include "envs/free_space_decomposition3d.h"
 #include "planning/scenario.h"
@@ -21,9 +22,13 @@ struct PlanResult {
   PlannerType planner = PlannerType::kPrm;
   std::string budget;             ///< "200 samples" or "5 s".
   double time_s = 0.0;            ///< Wall time of the whole run, decomposition included [s].
-  double decomposition_ms = 0.0;  ///< Free space + ACD [ms].
-  std::uint64_t samples = 0;      ///< Sample budget: collision-free samples placed; time budget:
-                                  ///< vertices of the planner's roadmap or tree(s).
+  double decomposition_ms = 0.0;  ///< Free space + ACD as this run paid it [ms]: the whole
+                                  ///< computation, or only the cache look-up on a map seen
+                                  ///< before (DecomposeFreeSpaceCached()).
+  double decomposition_compute_ms = 0.0;  ///< What computing the map's ACD cost [ms].
+  bool decomposition_cached = false;      ///< True if the ACD came from the cache.
+  std::uint64_t samples = 0;  ///< Sample budget: collision-free samples placed; time budget:
+                              ///< vertices of the planner's roadmap or tree(s).
   std::uint64_t collision_checks = 0;  ///< State validity checks (samples and motions).
   double path_length = 0.0;  ///< In the state space's metric (SE(2): OMPL's weighted sum); 0
                              ///< without a solution.
@@ -38,7 +43,11 @@ struct PlanResult {
   std::vector<std::string> notes;  ///< What the planner should tell the user (3D free space).
 };
 
-/// Plans `scenario`: free space (envs::FreeSpace2d), its ACD (tau = tau_diag x bounds diagonal),
+/// The ACD options of `scenario`: tau = tau_diag x the bounds' diagonal, its measure.
+acd::Decompose2dOptions ScenarioAcdOptions(const Scenario& scenario);
+
+/// Plans `scenario`: free space (envs::FreeSpace2d), its ACD (tau = tau_diag x bounds diagonal;
+/// from the process's cache when the map was decomposed before, planning/decomposition_cache.h),
 /// a collision::CollisionWorld (robot kept inside the bounds too), the state space (R^2 for a
 /// point or disc robot, SE(2) for a polygon robot), the sampler installed with the scenario's
 /// seed, then either the Figure-4 protocol (scenario.samples > 0:

@@ -71,6 +71,11 @@ PlanResult PlanScenario3d(const Scenario& scenario) {
   CheckScenario(scenario);
   const Stopwatch stopwatch;
   const std::string where = scenario.path.empty() ? "scenario" : scenario.path;
+  if (scenario.sampler == SamplerType::kAcdLead) {
+    throw InputError(where +
+                     ": sampler: acd_lead leads through a 2D decomposition; a 3D world "
+                     "gets the 3D acd sampler (name: acd)");
+  }
   PlanResult result;
   result.sampler = scenario.sampler;
   result.planner = scenario.planner;
@@ -87,6 +92,7 @@ PlanResult PlanScenario3d(const Scenario& scenario) {
   result.decomposition3d = decomposition;
   result.notes = decomposition->notes;
   result.decomposition_ms = stopwatch.Milliseconds();
+  result.decomposition_compute_ms = decomposition->compute_ms;
   result.components = static_cast<int>(decomposition->components.size());
   result.openings = static_cast<int>(decomposition->openings.size());
 

@@ -22,6 +22,7 @@
 
 #include "base/enum_names.h"
 #include "base/input_error.h"
+#include "planning/acd_lead_sampler.h"
 #include "planning/acd_prm.h"
 #include "planning/install_acd_samplers.h"
 
@@ -58,7 +59,7 @@ std::shared_ptr<ob::Planner> MakeAcdPrm(const ob::SpaceInformationPtr& si,
 struct SamplerEntry {
   SamplerType type;
   const char* name;
-  SamplerAllocator (*allocator)();  ///< OMPL's sampler; null for kAcd.
+  SamplerAllocator (*allocator)();  ///< OMPL's sampler; null for kAcd, kAcdLead.
 };
 
 struct PlannerEntry {
@@ -68,7 +69,7 @@ struct PlannerEntry {
   PlannerFactory make;
 };
 
-const std::array<SamplerEntry, 6> kSamplers = {{
+const std::array<SamplerEntry, 7> kSamplers = {{
     {SamplerType::kUniform, "uniform", &Allocator<ob::UniformValidStateSampler>},
     {SamplerType::kGaussian, "gaussian", &Allocator<ob::GaussianValidStateSampler>},
     {SamplerType::kBridge, "bridge", &Allocator<ob::BridgeTestValidStateSampler>},
@@ -76,6 +77,7 @@ const std::array<SamplerEntry, 6> kSamplers = {{
     {SamplerType::kMaxClearance, "max_clearance",
      &Allocator<ob::MaximizeClearanceValidStateSampler>},
     {SamplerType::kAcd, "acd", nullptr},
+    {SamplerType::kAcdLead, "acd_lead", nullptr},
 }};
 
 const std::array<PlannerEntry, 11> kPlanners = {{
@@ -100,7 +102,7 @@ std::array<EnumName<Enum>, N> Names(const std::array<Entry, N>& table) {
   return names;
 }
 
-const std::array<EnumName<SamplerType>, 6> kSamplerNames = Names<SamplerType>(kSamplers);
+const std::array<EnumName<SamplerType>, 7> kSamplerNames = Names<SamplerType>(kSamplers);
 const std::array<EnumName<PlannerType>, 11> kPlannerNames = Names<PlannerType>(kPlanners);
 
 const PlannerEntry& Entry(PlannerType planner) {
@@ -126,12 +128,22 @@ PlannerType ParsePlannerType(const std::string& name) {
 std::vector<std::string> SamplerNames() { return NamesOf(kSamplerNames); }
 std::vector<std::string> PlannerNames() { return NamesOf(kPlannerNames); }
 
+bool UsesDecomposition(SamplerType sampler) {
+  return sampler == SamplerType::kAcd || sampler == SamplerType::kAcdLead;
+}
+
 bool HonoursSampleBudget(PlannerType planner) { return Entry(planner).sample_budget; }
 
 void InstallSampler(SamplerType sampler, const std::shared_ptr<ob::SpaceInformation>& si,
-                    const acd::Decomposition2d& decomposition, const AcdSamplerOptions& options) {
+                    const acd::Decomposition2d& decomposition, const AcdSamplerOptions& options,
+                    const AcdLeadQuery* lead) {
   if (sampler == SamplerType::kAcd) {
     InstallAcdSamplers(si, decomposition, options);
+    return;
+  }
+  if (sampler == SamplerType::kAcdLead) {
+    if (!lead) throw std::invalid_argument("InstallSampler(): acd_lead needs the query");
+    InstallAcdLeadSamplers(si, decomposition, *lead, options);
     return;
   }
   for (const SamplerEntry& entry : kSamplers) {

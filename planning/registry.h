@@ -17,6 +17,8 @@ class SpaceInformation;
 
 namespace acdplan::planning {
 
+struct AcdLeadQuery;
+
 /// The valid-state samplers: OMPL's five and acdplan's ACD sampler.
 enum class SamplerType {
   kUniform,        ///< "uniform": ompl::base::UniformValidStateSampler.
@@ -25,6 +27,8 @@ enum class SamplerType {
   kObstacleBased,  ///< "obstacle_based": ObstacleBasedValidStateSampler.
   kMaxClearance,   ///< "max_clearance": MaximizeClearanceValidStateSampler.
   kAcd,            ///< "acd": AcdValidStateSampler (planning/install_acd_samplers.h).
+  kAcdLead,        ///< "acd_lead": the ACD as a lead (planning/acd_lead_sampler.h); also
+                   ///< `sampler: {name: acd, lead: true}` in a scenario.
 };
 
 /// The geometric planners.
@@ -60,11 +64,18 @@ std::vector<std::string> PlannerNames();
 /// (BuildSampleBudgetRoadmap()): PRM, PRM_ACD and PRMstar.
 bool HonoursSampleBudget(PlannerType planner);
 
-/// Installs `sampler` on `si`. kAcd: InstallAcdSamplers(si, decomposition, options). Any
-/// other: seeded uniform state sampling (InstallSeededUniformSampler(si, options.seed)) and
-/// OMPL's valid-state sampler, so every sampler is reproducible from the seed.
+/// Installs `sampler` on `si`. kAcd: InstallAcdSamplers(si, decomposition, options).
+/// kAcdLead: InstallAcdLeadSamplers(si, decomposition, *lead, options). Any other: seeded
+/// uniform state sampling (InstallSeededUniformSampler(si, options.seed)) and OMPL's
+/// valid-state sampler, so every sampler is reproducible from the seed.
+/// @throws std::invalid_argument for kAcdLead without `lead` (the query it follows).
 void InstallSampler(SamplerType sampler, const std::shared_ptr<ompl::base::SpaceInformation>& si,
-                    const acd::Decomposition2d& decomposition, const AcdSamplerOptions& options);
+                    const acd::Decomposition2d& decomposition, const AcdSamplerOptions& options,
+                    const AcdLeadQuery* lead = nullptr);
+
+/// True for the samplers that use the decomposition (acd, acd_lead): their runs count its
+/// time.
+bool UsesDecomposition(SamplerType sampler);
 
 /// A new geometric planner on `si` with OMPL's default parameters. kPrmAcd connects along
 /// `decomposition` (of the workspace the robot moves in) with random picks seeded by `seed`;

@@ -109,9 +109,15 @@ Scenario LoadScenario(const std::string& path) {
   }
   if (const YAML::Node& sampler = root["sampler"]) {
     file.CheckKeys(sampler, "sampler",
-                   {"name", "uniform_share", "orientation", "opening_weight", "centroid_spread",
-                    "opening_spread", "max_attempts", "aligned_jitter"});
+                   {"name", "lead", "uniform_share", "orientation", "opening_weight",
+                    "centroid_spread", "opening_spread", "max_attempts", "aligned_jitter"});
     if (sampler["name"]) s.sampler = file.Parsed(sampler["name"], "sampler.name", ParseSamplerType);
+    if (sampler["lead"] && file.Bool(sampler["lead"], "sampler.lead")) {
+      if (s.sampler != SamplerType::kAcd && s.sampler != SamplerType::kAcdLead) {
+        file.Fail("sampler.lead", "only for the acd sampler (the lead is its decomposition)");
+      }
+      s.sampler = SamplerType::kAcdLead;
+    }
     ReadAcdSamplerOptions(file, sampler, "sampler", &s.sampler_options);
   }
   // A rigid body in 3D passes an opening lengthwise: aligned unless the file says otherwise.

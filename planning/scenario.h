@@ -48,6 +48,8 @@ namespace acdplan::planning {
 ///                                    # time_limit 5
 ///   sampler: {name: acd, uniform_share: 0.1, orientation: random, opening_weight: 4,
 ///             centroid_spread: 0.3, opening_spread: 0.5}   # name: registry.h SamplerNames()
+///                                    # lead: true (name acd): acd_lead, samples along the
+///                                    # shortest chain of components (acd_lead_sampler.h)
 ///                                    # aligned_jitter [rad]: the spread of aligned poses
 ///                                    # 3D with a mesh robot: orientation defaults to aligned
 ///                                    # (the mesh's principal axis along the openings'

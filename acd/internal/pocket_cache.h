@@ -51,4 +51,15 @@ class PocketCache {
 Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOptions& options,
                                    PocketCache* cache);
 
+/// MeasureConcavityCached() of a piece cut from a measured parent, the same result for less work:
+/// `origin[i]` is the parent outer vertex that outer vertex i of `piece` copies, or -1 (a new
+/// point, a former hole vertex); `parent_on_hull[j]` whether parent vertex j is on the parent's
+/// hull. Hull gaps of the parent that the piece inherits whole keep their vertices' concavity
+/// and stay hull gaps of the piece, so only the chains next to the cuts are measured again and
+/// the hull is built over the other vertices.
+Concavity2d MeasureChildConcavity(const Polygon2d& piece, const std::vector<int>& origin,
+                                  const Concavity2d& parent,
+                                  const std::vector<char>& parent_on_hull,
+                                  const ConcavityOptions& options, PocketCache* cache);
+
 }  // namespace acdplan::acd::internal

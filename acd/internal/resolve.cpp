@@ -10,6 +10,7 @@
 
 #include "acd/internal/edge_grid.h"
 #include "acd/internal/exact_predicates.h"
+#include "acd/internal/is_notch.h"
 #include "acd/internal/ring_locator.h"
 
 namespace acdplan::acd::internal {
@@ -27,10 +28,11 @@ struct Endpoint {
 struct Candidate {
   Endpoint end;
   double score;
+  int rank = 0;  // Ranks before the score: 1 for a diagonal that must win (see ResolveOptions).
 };
 
-// New points closer than this (relative to the edge length) to an edge end snap to that end:
-// a sliver edge would carry rounding noise into the pieces.
+// Feet of perpendiculars (a hole's fallback cut ends) closer than this, relative to the edge
+// length, to an edge end are dropped: the end itself is a candidate too.
 constexpr double kMinEdgeFraction = 1e-6;
 
 const Ring2d& RingOf(const Polygon2d& polygon, int ring) {
@@ -163,8 +165,27 @@ bool SegmentsMeet(const Point2d& a, const Point2d& b, const Point2d& c, const Po
                             Kernel::Segment_2(ToCgal(c), ToCgal(d)));
 }
 
+// Where the ray v + t d meets the edge from `origin` along `edge` (origin + s edge): t and s,
+// or nothing if they are parallel. Accurate near `origin`: the error of s edge is relative to
+// the vectors from `origin`, so the edge end nearest to the hit should be `origin`.
+struct RayHit {
+  double t, s;
+};
+std::optional<RayHit> RayEdgeHit(const Point2d& v, const Point2d& d, const Point2d& origin,
+                                 const Point2d& edge) {
+  const double denom = d.x() * edge.y() - d.y() * edge.x();
+  if (denom == 0.0) return std::nullopt;
+  const Point2d w = origin - v;
+  return RayHit{(w.x() * edge.y() - w.y() * edge.x()) / denom,
+                (w.x() * d.y() - w.y() * d.x()) / denom};
+}
+
 // The first boundary point hit by the ray from vertex `r` of ring `ring` along the bisector of
-// the cone its two edges' extensions span (the cut that splits a reflex angle in halves).
+// the cone its two edges' extensions span (the cut that splits a reflex angle in halves). The
+// hit is constructed from the edge end nearer to it, and it snaps to that end only when
+// within rounding noise of it (an absolute distance: a bound relative to the edge length
+// snapped a hit 1e-7 from the notch on a 6.5e7-long edge to an end 1 unit away, outside the
+// cone, and left the notch without a cut).
 std::optional<Endpoint> BisectorHit(const Polygon2d& polygon, int ring_id, int r) {
   const Ring2d& ring = RingOf(polygon, ring_id);
   const int n = static_cast<int>(ring.size());
@@ -178,22 +199,22 @@ std::optional<Endpoint> BisectorHit(const Polygon2d& polygon, int ring_id, int r
     const int m = static_cast<int>(other.size());
     for (int i = 0; i < m; ++i) {
       if (k == ring_id && (i == r || Next(i, m) == r)) continue;
-      const Point2d& p = other[i];
-      const Point2d e = other[Next(i, m)] - p;
-      const double denom = d.x() * e.y() - d.y() * e.x();
-      if (denom == 0.0) continue;
-      const Point2d w = p - v;
-      const double t = (w.x() * e.y() - w.y() * e.x()) / denom;
-      const double s = (w.x() * d.y() - w.y() * d.x()) / denom;
-      if (t <= 0.0 || s < 0.0 || s > 1.0 || t >= best_t) continue;
-      best_t = t;
-      Endpoint hit{k, i, true, p + s * e};
-      if (s < kMinEdgeFraction) {
-        hit = {k, i, false, p};
-      } else if (s > 1.0 - kMinEdgeFraction) {
-        hit = {k, Next(i, m), false, other[Next(i, m)]};
+      const int j = Next(i, m);
+      std::optional<RayHit> hit = RayEdgeHit(v, d, other[i], other[j] - other[i]);
+      if (!hit || hit->t <= 0.0 || hit->s < 0.0 || hit->s > 1.0 || hit->t >= best_t) continue;
+      const bool from_end = hit->s > 0.5;
+      if (from_end) {  // Again from the nearer end, other[j].
+        hit = RayEdgeHit(v, d, other[j], other[i] - other[j]);
+        if (!hit || hit->t <= 0.0 || hit->t >= best_t) continue;
+        hit->s = std::clamp(hit->s, 0.0, 1.0);
       }
-      best = hit;
+      best_t = hit->t;
+      const int near = from_end ? j : i;
+      const Point2d& origin = other[near];
+      const Point2d offset = hit->s * (other[from_end ? i : j] - origin);
+      const double noise = kRoundingNoise * std::max(1.0, MaxAbs(origin));
+      best = offset.cwiseAbs().maxCoeff() <= noise ? Endpoint{k, near, false, origin}
+                                                   : Endpoint{k, i, true, origin + offset};
     }
   }
   return best;
@@ -213,7 +234,7 @@ double ConcavityAt(const Concavity2d& concavity, const Ring2d& outer, const Endp
 // angles at v are at most 180 degrees. A side counts as straight within rounding noise, the
 // tolerance IsNotch() uses, so that a rotated copy of a collinear configuration keeps its cuts.
 bool InCone(const Point2d& a, const Point2d& v, const Point2d& b, const Point2d& x) {
-  return !IsNotch(a, v, x) && !IsNotch(x, v, b);
+  return !IsNotchInline(a, v, x) && !IsNotchInline(x, v, b);
 }
 
 // Whether a cut from `r` also resolves outer vertex `x`: x is a notch and r lies in its cone.
@@ -221,7 +242,7 @@ bool ResolvesBoth(const Ring2d& outer, int x, const Point2d& r) {
   const int n = static_cast<int>(outer.size());
   const Point2d& a = outer[Prev(x, n)];
   const Point2d& b = outer[Next(x, n)];
-  return IsNotch(a, outer[x], b) && InCone(a, outer[x], b, r);
+  return IsNotchInline(a, outer[x], b) && InCone(a, outer[x], b, r);
 }
 
 // Candidate end points on the outer ring for a cut from `from` (vertex `index` of ring
@@ -244,10 +265,12 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
     const double relative_concavity = ConcavityAt(concavity, outer, x) / options.concavity_unit;
     double score =
         (1.0 + options.score_concavity * relative_concavity) / (options.score_distance * distance);
+    int rank = 0;
     if (!x.on_edge && concavity.outer[x.index] > options.tau && ResolvesBoth(outer, x.index, r)) {
       score *= options.double_resolve_bonus;
+      rank = options.double_resolves_first ? 1 : 0;
     }
-    candidates.push_back({x, score});
+    candidates.push_back({x, score, rank});
   };
   const int m = static_cast<int>(outer.size());
   for (int i = 0; i < m; ++i) {
@@ -268,13 +291,15 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
 // accepted candidate. A heap, since the first few candidates usually suffice.
 template <typename Accept>
 std::optional<Endpoint> FirstAccepted(std::vector<Candidate> candidates, Accept accept) {
-  auto worse = [](const Candidate& x, const Candidate& y) { return x.score < y.score; };
+  auto worse = [](const Candidate& x, const Candidate& y) {
+    return x.rank < y.rank || (x.rank == y.rank && x.score < y.score);
+  };
   // Usually the best candidate is accepted: when it is the only one with the best score, the
   // heap below would pop it first too, so try it before building the heap.
   const auto best = std::max_element(candidates.begin(), candidates.end(), worse);
   if (best != candidates.end() &&
       std::count_if(candidates.begin(), candidates.end(),
-                    [&](const Candidate& c) { return !(c.score < best->score); }) == 1 &&
+                    [&](const Candidate& c) { return !worse(c, *best); }) == 1 &&
       accept(best->end)) {
     return best->end;
   }
@@ -305,31 +330,37 @@ std::vector<Candidate> NearestCandidates(const Polygon2d& polygon, const Point2d
 }
 
 // The ring `ring` from index `from` forward to index `to`, both included.
-void AppendChain(const Ring2d& ring, int from, int to, Ring2d* out) {
+template <typename Ring>
+void AppendChain(const Ring& ring, int from, int to, Ring* out) {
   const int n = static_cast<int>(ring.size());
+  out->reserve(out->size() + (to - from + n) % n + 1);
   for (int i = from;; i = Next(i, n)) {
     out->push_back(ring[i]);
     if (i == to) break;
   }
 }
 
-// Inserts the new points of `ends` (on outer edges) into a copy of the outer ring and returns
-// it; each end's index then names its vertex.
-Ring2d InsertOnOuter(const Ring2d& outer, std::vector<Endpoint*> ends) {
-  std::sort(ends.begin(), ends.end(), [](const Endpoint* x, const Endpoint* y) {
-    return x->index > y->index;  // Back to front, so earlier indices stay valid.
-  });
-  Ring2d ring = outer;
-  for (Endpoint* e : ends) {
-    if (!e->on_edge) continue;
-    ring.insert(ring.begin() + e->index + 1, e->point);
-    for (Endpoint* other : ends) {
-      if (other != e && other->index > e->index) ++other->index;
-    }
-    e->index += 1;
-    e->on_edge = false;
+// Appends the outer ring from cut end `a` forward to cut end `b`, both included, to `ring`,
+// and to `origin` the outer index of each point (-1 for an end on an edge). Ends are ordered
+// along the ring by position: vertex k at 2k, a point on edge k at 2k + 1 (two ends on one
+// edge never occur: such a cut would run along the edge).
+void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b, Ring2d* ring,
+                      std::vector<int>* origin) {
+  const int n = static_cast<int>(outer.size());
+  const int pos_a = 2 * a.index + (a.on_edge ? 1 : 0);
+  const int pos_b = 2 * b.index + (b.on_edge ? 1 : 0);
+  const int span = (pos_b - pos_a + 2 * n) % (2 * n);
+  const int between = (span - 1 + (pos_a & 1)) / 2;  // Vertices strictly between a and b.
+  ring->reserve(ring->size() + between + 2);
+  origin->reserve(origin->size() + between + 2);
+  ring->push_back(a.on_edge ? a.point : outer[a.index]);
+  origin->push_back(a.on_edge ? -1 : a.index);
+  for (int k = 0, i = Next(a.index, n); k < between; ++k, i = Next(i, n)) {
+    ring->push_back(outer[i]);
+    origin->push_back(i);
   }
-  return ring;
+  ring->push_back(b.on_edge ? b.point : outer[b.index]);
+  origin->push_back(b.on_edge ? -1 : b.index);
 }
 
 // Gives each hole of `polygon` other than `skip` to the piece that contains it: piece 0 if the
@@ -369,27 +400,32 @@ bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeQuery& grid,
       FirstAccepted(ScoredCandidates(polygon, concavity, -1, r, options),
                     [&](const Endpoint& x) { return IsClearCut(polygon, grid, from, x); });
   if (!to) return false;
-  Endpoint start = from;
-  Endpoint end = *to;
-  const Ring2d ring = InsertOnOuter(polygon.outer, {&start, &end});
   resolution->pieces = {};
-  AppendChain(ring, start.index, end.index, &resolution->pieces[0].outer);
-  AppendChain(ring, end.index, start.index, &resolution->pieces[1].outer);
+  resolution->origin = {};
+  for (int side = 0; side < 2; ++side) {
+    AppendOuterChain(polygon.outer, side == 0 ? from : *to, side == 0 ? *to : from,
+                     &resolution->pieces[side].outer, &resolution->origin[side]);
+  }
   DistributeHoles(polygon, -1, &resolution->pieces);
   resolution->cuts = {{from.point, to->point}};
   resolution->witness = from.point;
   return true;
 }
 
-// The first cut of a hole: from hole vertex `a` to the best-scoring, else the closest, visible
-// outer point (Algorithm 5).
+// The first cut of a hole: from hole vertex `a` to the closest visible outer point in its
+// cone (Algorithm 5), a diagonal that also resolves an outer notch counting double; else the
+// closest visible outer point. The concavity at the far end does not weigh in: this cut only
+// joins the hole to the boundary, and a short one leaves the shallowest pocket for the second
+// cut (neuron.poly at tau-rel 0.01: SL and H2 164 -> 161 pieces, no acd_bench row rises).
 std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const EdgeQuery& grid,
                                      const Concavity2d& concavity, int h, int a,
                                      const ResolveOptions& options) {
   const Endpoint from{h, a, false, polygon.holes[h][a]};
   auto clear = [&](const Endpoint& e) { return IsClearCut(polygon, grid, from, e); };
+  ResolveOptions closest = options;
+  closest.score_concavity = 0.0;
   std::optional<Endpoint> x =
-      FirstAccepted(ScoredCandidates(polygon, concavity, h, a, options), clear);
+      FirstAccepted(ScoredCandidates(polygon, concavity, h, a, closest), clear);
   if (!x) x = FirstAccepted(NearestCandidates(polygon, from.point), clear);
   return x;
 }
@@ -423,15 +459,16 @@ std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const EdgeQuery&
 void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x, int b,
                       const Endpoint& y, Resolution* resolution) {
   const Ring2d& hole = polygon.holes[h];
-  Endpoint end_x = x;
-  Endpoint end_y = y;
-  const Ring2d ring = InsertOnOuter(polygon.outer, {&end_x, &end_y});
   resolution->pieces = {};
+  resolution->origin = {};
   // Piece 0: outer x..y, cut to b, hole b..a (forward keeps the interior on the left), cut to x.
-  AppendChain(ring, end_x.index, end_y.index, &resolution->pieces[0].outer);
+  AppendOuterChain(polygon.outer, x, y, &resolution->pieces[0].outer, &resolution->origin[0]);
   AppendChain(hole, b, a, &resolution->pieces[0].outer);
-  AppendChain(ring, end_y.index, end_x.index, &resolution->pieces[1].outer);
+  AppendOuterChain(polygon.outer, y, x, &resolution->pieces[1].outer, &resolution->origin[1]);
   AppendChain(hole, a, b, &resolution->pieces[1].outer);
+  for (int side = 0; side < 2; ++side) {
+    resolution->origin[side].resize(resolution->pieces[side].outer.size(), -1);  // Hole vertices.
+  }
   DistributeHoles(polygon, h, &resolution->pieces);
   resolution->cuts = {{hole[a], x.point}, {hole[b], y.point}};
   resolution->witness = hole[a];
@@ -515,7 +552,8 @@ bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const Resol
   const int n = static_cast<int>(outer.size());
   std::vector<int> notches;
   for (int i = 0; i < n; ++i) {
-    if (i != concavity.witness_vertex && IsNotch(outer[Prev(i, n)], outer[i], outer[Next(i, n)])) {
+    if (i != concavity.witness_vertex &&
+        IsNotchInline(outer[Prev(i, n)], outer[i], outer[Next(i, n)])) {
       notches.push_back(i);
     }
   }

@@ -101,6 +101,7 @@ TEST(DecomposeFreeSpace3d, CacheHitReturnsTheIdenticalDecomposition) {
   EXPECT_TRUE(second.from_cache);
   EXPECT_EQ(second.key, first.key);
   EXPECT_EQ(second.free_volume, first.free_volume);
+  EXPECT_EQ(second.compute_ms, first.compute_ms);  // The original cost, not the read's.
   ASSERT_EQ(second.components.size(), first.components.size());
   for (size_t i = 0; i < first.components.size(); ++i) {
     EXPECT_EQ(second.components[i].centroid, first.components[i].centroid);
@@ -133,7 +134,7 @@ TEST(DecomposeFreeSpace3d, CorruptOrStaleEntryIsRecomputed) {
   ASSERT_EQ(cache.Files().size(), 1u);
   const std::filesystem::path file = cache.Files()[0];
   std::ofstream(file, std::ios::trunc)
-      << "acdplan.free_space_decomposition3d/2\nkey " << first.key << "\nbounds 0 0";
+      << "acdplan.free_space_decomposition3d/3\nkey " << first.key << "\nbounds 0 0";
   ::testing::internal::CaptureStderr();
   const FreeSpaceDecomposition3d again = DecomposeFreeSpace3d(world, Options(cache));
   const std::string warning = ::testing::internal::GetCapturedStderr();
@@ -141,7 +142,7 @@ TEST(DecomposeFreeSpace3d, CorruptOrStaleEntryIsRecomputed) {
   EXPECT_NE(warning.find("unusable cache entry (truncated)"), std::string::npos) << warning;
   EXPECT_EQ(again.components.size(), first.components.size());
   // A stale entry: another key inside the file.
-  std::ofstream(file, std::ios::trunc) << "acdplan.free_space_decomposition3d/2\nkey 0123\n";
+  std::ofstream(file, std::ios::trunc) << "acdplan.free_space_decomposition3d/3\nkey 0123\n";
   ::testing::internal::CaptureStderr();
   EXPECT_FALSE(DecomposeFreeSpace3d(world, Options(cache)).from_cache);
   EXPECT_NE(::testing::internal::GetCapturedStderr().find("is not its name's"), std::string::npos);

@@ -1,0 +1,157 @@
+#include "planning/control/car.h"
+
+#include <ompl/base/ProjectionEvaluator.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
+#include <ompl/control/ODESolver.h>
+#include <ompl/control/spaces/RealVectorControlSpace.h>
+
+#include <cmath>
+
+#include "base/input_error.h"
+
+namespace acdplan::planning::control {
+
+namespace ob = ompl::base;
+namespace oc = ompl::control;
+
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+
+const ob::SE2StateSpace::StateType* Se2(CarModel model, const ob::State* state) {
+  return model == CarModel::kKinematic
+             ? state->as<ob::SE2StateSpace::StateType>()
+             : state->as<ob::CompoundStateSpace::StateType>()->as<ob::SE2StateSpace::StateType>(0);
+}
+
+/// Projects a car state to its (x, y), cells 1/20 of the bounds (KPIECE1, EST, PDST).
+class XyProjection : public ob::ProjectionEvaluator {
+ public:
+  XyProjection(const ob::StateSpace* space, CarModel model, const Eigen::AlignedBox2d& bounds)
+      : ob::ProjectionEvaluator(space), model_(model), bounds_(bounds) {}
+  unsigned int getDimension() const override { return 2; }
+  void defaultCellSizes() override {
+    cellSizes_ = {bounds_.sizes().x() / 20, bounds_.sizes().y() / 20};
+  }
+  void project(const ob::State* state, Eigen::Ref<Eigen::VectorXd> out) const override {
+    const auto* s = Se2(model_, state);
+    out[0] = s->getX();
+    out[1] = s->getY();
+  }
+
+ private:
+  CarModel model_;
+  Eigen::AlignedBox2d bounds_;
+};
+
+}  // namespace
+
+CarModel ParseCarModel(const std::string& name) {
+  if (name == "kinematic_car") return CarModel::kKinematic;
+  if (name == "dynamic_car") return CarModel::kDynamic;
+  throw InputError("unknown car '" + name + "' (expected one of: kinematic_car, dynamic_car)");
+}
+
+std::string ToString(CarModel model) {
+  return model == CarModel::kKinematic ? "kinematic_car" : "dynamic_car";
+}
+
+Eigen::Isometry2d CarPose(CarModel model, const ob::State* state) {
+  const auto* s = Se2(model, state);
+  Eigen::Isometry2d pose = Eigen::Isometry2d::Identity();
+  pose.translate(Eigen::Vector2d(s->getX(), s->getY()));
+  pose.rotate(s->getYaw());
+  return pose;
+}
+
+oc::SpaceInformationPtr MakeCarSpaceInformation(CarModel model,
+                                                const Eigen::AlignedBox2d& xy_bounds,
+                                                std::function<bool(const Eigen::Isometry2d&)> valid,
+                                                const CarOptions& options) {
+  if (!(options.length > 0) || !(options.step > 0) || options.min_control_steps < 1 ||
+      options.max_control_steps < options.min_control_steps) {
+    throw InputError(
+        "MakeCarSpaceInformation(): length and step must be > 0, and 1 <= "
+        "min_control_steps <= max_control_steps");
+  }
+  ob::RealVectorBounds xy(2);
+  for (int i = 0; i < 2; ++i) {
+    xy.setLow(i, xy_bounds.min()[i]);
+    xy.setHigh(i, xy_bounds.max()[i]);
+  }
+  auto se2 = std::make_shared<ob::SE2StateSpace>();
+  se2->setBounds(xy);
+  ob::StateSpacePtr space = se2;
+  ob::RealVectorBounds controls(2);
+  if (model == CarModel::kKinematic) {
+    controls.setLow(0, -1.0), controls.setHigh(0, 1.0);
+    controls.setLow(1, -30 * kDegree), controls.setHigh(1, 30 * kDegree);
+  } else {
+    auto velocity = std::make_shared<ob::RealVectorStateSpace>(2);
+    ob::RealVectorBounds vphi(2);
+    vphi.setLow(0, -1.0), vphi.setHigh(0, 1.0);
+    vphi.setLow(1, -30 * kDegree), vphi.setHigh(1, 30 * kDegree);
+    velocity->setBounds(vphi);
+    auto compound = std::make_shared<ob::CompoundStateSpace>();
+    compound->addSubspace(se2, 1.0);
+    compound->addSubspace(velocity, 0.3);
+    compound->lock();
+    space = compound;
+    controls.setLow(0, -0.5), controls.setHigh(0, 0.5);
+    controls.setLow(1, -2 * kDegree), controls.setHigh(1, 2 * kDegree);
+  }
+  auto control_space = std::make_shared<oc::RealVectorControlSpace>(space, 2);
+  control_space->setBounds(controls);
+  auto si = std::make_shared<oc::SpaceInformation>(space, control_space);
+
+  const double inverse_length = 1.0 / options.length;
+  oc::ODESolver::ODE ode;
+  if (model == CarModel::kKinematic) {
+    ode = [inverse_length](const oc::ODESolver::StateType& q, const oc::Control* control,
+                           oc::ODESolver::StateType& qdot) {
+      const double* u = control->as<oc::RealVectorControlSpace::ControlType>()->values;
+      qdot.assign(q.size(), 0.0);
+      qdot[0] = u[0] * std::cos(q[2]);
+      qdot[1] = u[0] * std::sin(q[2]);
+      qdot[2] = u[0] * inverse_length * std::tan(u[1]);
+    };
+  } else {
+    ode = [inverse_length](const oc::ODESolver::StateType& q, const oc::Control* control,
+                           oc::ODESolver::StateType& qdot) {
+      const double* u = control->as<oc::RealVectorControlSpace::ControlType>()->values;
+      const double mass = 1.0;
+      qdot.assign(q.size(), 0.0);
+      qdot[0] = q[3] * std::cos(q[2]);
+      qdot[1] = q[3] * std::sin(q[2]);
+      qdot[2] = q[3] * mass * inverse_length * std::tan(q[4]);
+      qdot[3] = u[0];
+      qdot[4] = u[1];
+    };
+  }
+  auto solver = std::make_shared<oc::ODEBasicSolver<>>(si, ode, options.step);
+  // After integrating: wrap theta and clamp (v, phi) into their bounds, as OMPL.app does.
+  auto post = [model, space](const ob::State*, const oc::Control*, double, ob::State* result) {
+    ob::SE2StateSpace::StateType* s =
+        model == CarModel::kKinematic
+            ? result->as<ob::SE2StateSpace::StateType>()
+            : result->as<ob::CompoundStateSpace::StateType>()->as<ob::SE2StateSpace::StateType>(0);
+    s->setYaw(std::remainder(s->getYaw(), 2 * M_PI));
+    if (model == CarModel::kDynamic) {
+      space->as<ob::CompoundStateSpace>()->getSubspace(1)->enforceBounds(
+          result->as<ob::CompoundStateSpace::StateType>()->components[1]);
+    }
+  };
+  si->setStatePropagator(oc::ODESolver::getStatePropagator(solver, post));
+  si->setPropagationStepSize(options.step);
+  si->setMinMaxControlDuration(options.min_control_steps, options.max_control_steps);
+  si->setStateValidityChecker(
+      [model, valid = std::move(valid), si_raw = si.get()](const ob::State* state) {
+        return si_raw->satisfiesBounds(state) && valid(CarPose(model, state));
+      });
+  space->registerDefaultProjection(std::make_shared<XyProjection>(space.get(), model, xy_bounds));
+  si->setup();
+  return si;
+}
+
+}  // namespace acdplan::planning::control
