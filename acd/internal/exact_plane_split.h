@@ -47,6 +47,15 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
 /// smallest triangle index, so the order is deterministic.
 std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece);
 
+/// Whether `piece` rounded to doubles (ToDouble) is still the boundary of a solid, judged as
+/// CheckDecomposition3d judges a component: vertices merged by rounded position, no triangle
+/// with two corners at one position, a 2-manifold CGAL accepts, free of self-intersections
+/// (exact predicates on the doubles). Exact cut points closer than a double's resolution
+/// (two crossings on a sliver triangle's edges 1e-18 apart) round onto one position, and
+/// rounding can fold near-coplanar faces through each other; a cut whose pieces do not round
+/// cleanly is rejected rather than output. O(n log n) for n triangles.
+bool RoundsToValidSolid(const ExactPiece& piece);
+
 /// Whether every directed edge of `triangles` is met by its reverse exactly once (closed,
 /// edge-manifold, consistently oriented).
 bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles);

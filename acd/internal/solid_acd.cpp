@@ -78,13 +78,14 @@ std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane) {
   std::vector<ExactPiece> out = ConnectedSolids(below);
   for (ExactPiece& p : ConnectedSolids(above)) out.push_back(std::move(p));
   // A section the cap could not close cleanly (constraints that overlap or cross, which a
-  // valid solid's section should not have) rejects the plane rather than leak an open piece.
+  // valid solid's section should not have) rejects the plane rather than leak an open piece;
+  // so does a piece that is valid exactly but not once rounded to the doubles it is output as.
   // So does a plane that only shaves off a rounding-level sliver (a plane through a vertex
   // whose neighbours lie a hair off it): such a piece would be a component of no use.
   std::vector<double> volumes;
   double total = 0;
   for (const ExactPiece& p : out) {
-    if (!IsClosedSurface(p.triangles)) return {};
+    if (!IsClosedSurface(p.triangles) || !RoundsToValidSolid(p)) return {};
     volumes.push_back(MeshVolume(ToDouble(p)));
     total += volumes.back();
   }
