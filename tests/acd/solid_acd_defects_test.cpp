@@ -46,5 +46,17 @@ TEST(SolidAcdDefectsTest, DefsphereAtTauRel002RoundsToValidPieces) {
   ExpectPasses("defsphere.obj", 0.02, false);
 }
 
+// A hull plane grouped by a sliver facet's own normal cut through the hull, so a face 0.56 deep
+// measured 0 ("concavity 0.00036 is below its re-measured lower bound 0.558"); pieces also
+// self-intersected after rounding.
+TEST(SolidAcdDefectsTest, HoseAtTauRel002MeasuresEveryPieceFromTrueHullPlanes) {
+  ExpectPasses("hose.obj", 0.02, false);
+}
+
+// The repaired bunny: a stored concavity below the checker's re-measured lower bound.
+TEST(SolidAcdDefectsTest, RepairedBunnyAtTauRel005MeasuresEveryPieceFromTrueHullPlanes) {
+  ExpectPasses("bunny.obj", 0.05, true);
+}
+
 }  // namespace
 }  // namespace acdplan::acd
