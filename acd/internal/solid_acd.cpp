@@ -26,6 +26,9 @@ namespace {
 constexpr int kMaxPiecesPerPart = 2048;
 // A cut leaving a piece below this fraction of the cut piece's volume is rejected.
 constexpr double kMinPieceFraction = 1e-9;
+// When no ranked plane cuts a piece cleanly, the planes are tried again moved by this fraction
+// of tau along their normals.
+constexpr double kPlaneShift = 1e-3;
 
 struct Piece {
   ExactPiece exact;
@@ -143,9 +146,22 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
     Plane3d chosen;
     if (live < kMaxPiecesPerPart) {
       // The best-ranked plane that splits; for a handle, the best one that lowers the genus.
+      // If none does, the same planes moved off by kPlaneShift x tau either way: a plane
+      // through the witness vertex can leave a piece pinched at a vertex, or one that
+      // self-intersects once its cut points are rounded, where a plane beside it does not.
       std::vector<ExactPiece> fallback;
       Plane3d fallback_plane;
-      for (const Plane3d& plane : RankCutPlanes(piece.mesh, piece.concavity, tau)) {
+      const std::vector<Plane3d> ranked = RankCutPlanes(piece.mesh, piece.concavity, tau);
+      std::vector<Plane3d> candidates = ranked;
+      for (const double shift : {kPlaneShift * tau, -kPlaneShift * tau}) {
+        for (Plane3d plane : ranked) {
+          plane.offset += shift;
+          candidates.push_back(plane);
+        }
+      }
+      for (size_t i = 0; i < candidates.size(); ++i) {
+        if (i == ranked.size() && !fallback.empty()) break;  // unshifted planes split it
+        const Plane3d& plane = candidates[i];
         std::vector<ExactPiece> result = Cut(piece.exact, plane);
         if (result.size() < 2) continue;
         if (piece.topology.genus == 0 && piece.topology.shells == 1) {
