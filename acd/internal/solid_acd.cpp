@@ -95,6 +95,15 @@ std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane) {
   for (double v : volumes) {
     if (!(v > kMinPieceFraction * total)) return {};
   }
+  // Each piece goes on from its rounded coordinates, which RoundsToValidSolid has just found a
+  // valid solid (and which the pieces share where they meet): exact cut points of cut points
+  // grow without bound (measured: teapot at tau_rel 0.2 spent minutes in the section's
+  // triangulation on rationals of deep cuts), while doubles keep every cut's arithmetic small.
+  for (ExactPiece& p : out) {
+    for (size_t i = 0; i < p.points.size(); ++i) {
+      p.points[i] = ExactKernel::Point_3(p.rounded[i].x(), p.rounded[i].y(), p.rounded[i].z());
+    }
+  }
   return out;
 }
 
