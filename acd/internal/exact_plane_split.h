@@ -14,8 +14,9 @@ namespace acdplan::acd::internal {
 using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
 
 /// A closed, outward-oriented triangle mesh with exact (Epeck) vertices: one or more shells
-/// (an outer shell and the cavity shells inside it). Repeated cuts stay exact: the guide's
-/// measurements show double-rounded clip chains break after two levels of oblique cuts.
+/// (an outer shell and the cavity shells inside it). Each cut is exact: the guide's measurements
+/// show double-rounded clip chains break after two levels of oblique cuts. The solid ACD rounds
+/// a piece to doubles between cuts only after RoundsToValidSolid() accepts the rounding.
 struct ExactPiece {
   std::vector<ExactKernel::Point_3> points;
   /// Each point rounded to doubles once, when it was made: a lazy exact number's
