@@ -1,6 +1,9 @@
 #include "acd/internal/exact_plane_split.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -337,6 +340,12 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
     return plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d();
   };
   std::map<std::pair<int, int>, int> crossing;  // edge (a < b) -> its exact intersection point
+  // Crossings that round to one double position are one vertex: on a needle triangle (two
+  // corners 1e-17 apart) the plane crosses both long edges 1e-17 apart, and two distinct exact
+  // points output as one position would leave a triangle with two corners there. Joining
+  // them collapses the short edge between them (its triangles, now degenerate, are dropped
+  // below), moving a point by less than a double's resolution; the halves stay closed.
+  std::map<std::array<double, 3>, int> crossing_at;
   auto cross = [&](int a, int b) {
     if (a > b) std::swap(a, b);
     auto it = crossing.find({a, b});
@@ -345,13 +354,26 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
     const FT t = ha / (ha - hb);
     const Point3& p = points[static_cast<size_t>(a)];
     const Point3& q = points[static_cast<size_t>(b)];
-    const int id = static_cast<int>(points.size());
-    points.emplace_back(p.x() + (q.x() - p.x()) * t, p.y() + (q.y() - p.y()) * t,
-                        p.z() + (q.z() - p.z()) * t);
-    rounded.push_back(Approx(points.back()));
-    side.push_back(0);
-    crossing.emplace(std::make_pair(a, b), id);
-    return id;
+    const Point3 x(p.x() + (q.x() - p.x()) * t, p.y() + (q.y() - p.y()) * t,
+                   p.z() + (q.z() - p.z()) * t);
+    const Eigen::Vector3d r = Approx(x);
+    auto [at, inserted] = crossing_at.emplace(std::array<double, 3>{r.x(), r.y(), r.z()},
+                                              static_cast<int>(points.size()));
+    if (inserted) {
+      points.push_back(x);
+      rounded.push_back(r);
+      side.push_back(0);
+    }
+    crossing.emplace(std::make_pair(a, b), at->second);
+    return at->second;
+  };
+  // Fans a clipped polygon, without the corners a joined crossing repeats.
+  auto fan = [](std::vector<int> polygon, std::vector<Tri>* out) {
+    std::vector<int> kept;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+      if (polygon[i] != polygon[(i + 1) % polygon.size()]) kept.push_back(polygon[i]);
+    }
+    for (size_t i = 1; i + 1 < kept.size(); ++i) out->push_back({kept[0], kept[i], kept[i + 1]});
   };
   const ExactKernel::Vector_3 normal = plane.orthogonal_vector();
   std::vector<Tri> lower, upper;
@@ -388,8 +410,8 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
         pos.push_back(x);
       }
     }
-    for (size_t i = 1; i + 1 < neg.size(); ++i) lower.push_back({neg[0], neg[i], neg[i + 1]});
-    for (size_t i = 1; i + 1 < pos.size(); ++i) upper.push_back({pos[0], pos[i], pos[i + 1]});
+    fan(std::move(neg), &lower);
+    fan(std::move(pos), &upper);
   }
   std::vector<Tri> cap = SectionCap(lower, plane, &points, &rounded);
   for (const Tri& t : cap) {
@@ -460,6 +482,30 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
     SplitPinchedVertices(&out.back());
   }
   return out;
+}
+
+bool RoundsToValidSolid(const ExactPiece& piece) {
+  using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Mesh = CGAL::Surface_mesh<Inexact::Point_3>;
+  Mesh mesh;
+  std::map<std::array<double, 3>, Mesh::Vertex_index> by_position;
+  std::vector<Mesh::Vertex_index> vertex;
+  vertex.reserve(piece.rounded.size());
+  for (const Eigen::Vector3d& p : piece.rounded) {
+    auto [it, inserted] =
+        by_position.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, Mesh::Vertex_index());
+    if (inserted) it->second = mesh.add_vertex(Inexact::Point_3(p.x(), p.y(), p.z()));
+    vertex.push_back(it->second);
+  }
+  for (const Tri& t : piece.triangles) {
+    const Mesh::Vertex_index a = vertex[static_cast<size_t>(t[0])],
+                             b = vertex[static_cast<size_t>(t[1])],
+                             c = vertex[static_cast<size_t>(t[2])];
+    if (a == b || b == c || c == a) return false;
+    if (mesh.add_face(a, b, c) == Mesh::null_face()) return false;
+  }
+  if (!CGAL::is_closed(mesh)) return false;
+  return !CGAL::Polygon_mesh_processing::does_self_intersect(mesh);
 }
 
 bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles) {

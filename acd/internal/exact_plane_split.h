@@ -14,8 +14,9 @@ namespace acdplan::acd::internal {
 using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
 
 /// A closed, outward-oriented triangle mesh with exact (Epeck) vertices: one or more shells
-/// (an outer shell and the cavity shells inside it). Repeated cuts stay exact: the guide's
-/// measurements show double-rounded clip chains break after two levels of oblique cuts.
+/// (an outer shell and the cavity shells inside it). Each cut is exact: the guide's measurements
+/// show double-rounded clip chains break after two levels of oblique cuts. The solid ACD rounds
+/// a piece to doubles between cuts only after RoundsToValidSolid() accepts the rounding.
 struct ExactPiece {
   std::vector<ExactKernel::Point_3> points;
   /// Each point rounded to doubles once, when it was made: a lazy exact number's
@@ -46,6 +47,15 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
 /// (negative volume) given to the smallest outer shell that contains it. Ordered by their
 /// smallest triangle index, so the order is deterministic.
 std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece);
+
+/// Whether `piece` rounded to doubles (ToDouble) is still the boundary of a solid, judged as
+/// CheckDecomposition3d judges a component: vertices merged by rounded position, no triangle
+/// with two corners at one position, a 2-manifold CGAL accepts, free of self-intersections
+/// (exact predicates on the doubles). Exact cut points closer than a double's resolution
+/// (two crossings on a sliver triangle's edges 1e-18 apart) round onto one position, and
+/// rounding can fold near-coplanar faces through each other; a cut whose pieces do not round
+/// cleanly is rejected rather than output. O(n log n) for n triangles.
+bool RoundsToValidSolid(const ExactPiece& piece);
 
 /// Whether every directed edge of `triangles` is met by its reverse exactly once (closed,
 /// edge-manifold, consistently oriented).

@@ -31,9 +31,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numeric>
+#include <set>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -495,6 +497,160 @@ void AddOpenings(const SurfacePart& part, const std::vector<int>& face_component
   }
 }
 
+// After Algorithm 1 on a part: adjacent patches whose union is within tau are merged, the pair
+// whose union is least concave first, until no adjacent pair's union is within tau. A cut through
+// the most concave point resolves it, but its sides are cut again where their own witnesses lie,
+// so patches on either side of an early cut that together are nearly convex stay apart (bunny.obj
+// at tau_rel 0.02: 146 patches, against the dissertation's Table 5's 97). Every patch, merged or
+// not, is still measured by MeasurePatch, so the result stays tau-convex. The hierarchy keeps the
+// surviving leaf of each merged pair (its node takes the union); the other leaf leaves the tree,
+// and an internal node left with one child is replaced by that child. Components are renumbered
+// in depth-first order of the leaves. O(M P) measures for M merges and P adjacent pairs per patch.
+void MergePatches(const SurfacePart& part, int source, double tau, int base, int first_component,
+                  std::vector<int>* face_component, Decomposition3d* out) {
+  const int count = static_cast<int>(out->components.size()) - first_component;
+  if (count < 2) return;
+  std::vector<std::vector<int>> faces(static_cast<size_t>(count));
+  for (size_t f = 0; f < face_component->size(); ++f) {
+    faces[static_cast<size_t>((*face_component)[f] - first_component)].push_back(
+        static_cast<int>(f));
+  }
+  std::vector<std::set<int>> neighbours(static_cast<size_t>(count));
+  const auto& edges = part.edges();
+  for (size_t i = 0; i < edges.size();) {
+    size_t j = i;
+    while (j < edges.size() && edges[j].a == edges[i].a && edges[j].b == edges[i].b) ++j;
+    for (size_t p = i; p < j; ++p) {
+      for (size_t q = i; q < j; ++q) {
+        const int a = (*face_component)[static_cast<size_t>(edges[p].face)] - first_component;
+        const int b = (*face_component)[static_cast<size_t>(edges[q].face)] - first_component;
+        if (a != b) neighbours[static_cast<size_t>(a)].insert(b);
+      }
+    }
+    i = j;
+  }
+  auto united = [&](int a, int b) {
+    std::vector<int> u;
+    std::merge(faces[static_cast<size_t>(a)].begin(), faces[static_cast<size_t>(a)].end(),
+               faces[static_cast<size_t>(b)].begin(), faces[static_cast<size_t>(b)].end(),
+               std::back_inserter(u));
+    return u;
+  };
+  std::vector<int> version(static_cast<size_t>(count), 0);
+  std::vector<char> alive(static_cast<size_t>(count), 1), merged(static_cast<size_t>(count), 0);
+  std::vector<Measure> measure(static_cast<size_t>(count));
+  // (union concavity, a, b, version of a, version of b), a < b: least concave first.
+  std::set<std::tuple<double, int, int, int, int>> queue;
+  auto consider = [&](int a, int b) {
+    if (a > b) std::swap(a, b);
+    const double c = MeasurePatch(part, united(a, b)).concavity;
+    if (c <= tau)
+      queue.emplace(c, a, b, version[static_cast<size_t>(a)], version[static_cast<size_t>(b)]);
+  };
+  for (int a = 0; a < count; ++a) {
+    for (int b : neighbours[static_cast<size_t>(a)]) {
+      if (a < b) consider(a, b);
+    }
+  }
+  while (!queue.empty()) {
+    const auto [c, a, b, va, vb] = *queue.begin();
+    queue.erase(queue.begin());
+    if (!alive[static_cast<size_t>(a)] || !alive[static_cast<size_t>(b)] ||
+        va != version[static_cast<size_t>(a)] || vb != version[static_cast<size_t>(b)]) {
+      continue;
+    }
+    faces[static_cast<size_t>(a)] = united(a, b);
+    faces[static_cast<size_t>(b)].clear();
+    measure[static_cast<size_t>(a)] = MeasurePatch(part, faces[static_cast<size_t>(a)]);
+    merged[static_cast<size_t>(a)] = 1;
+    alive[static_cast<size_t>(b)] = 0;
+    ++version[static_cast<size_t>(a)];
+    for (int n : neighbours[static_cast<size_t>(b)]) {
+      neighbours[static_cast<size_t>(n)].erase(b);
+      if (n != a) {
+        neighbours[static_cast<size_t>(n)].insert(a);
+        neighbours[static_cast<size_t>(a)].insert(n);
+      }
+    }
+    neighbours[static_cast<size_t>(b)].clear();
+    neighbours[static_cast<size_t>(a)].erase(b);
+    for (int n : neighbours[static_cast<size_t>(a)]) consider(a, n);
+  }
+  // The hierarchy: drop the merged-away leaves and the internal nodes left with one child.
+  const int end = static_cast<int>(out->tree.size());
+  std::vector<char> node_alive(static_cast<size_t>(end - base), 1);
+  auto node = [&](int n) -> HierarchyNode3d& { return out->tree[static_cast<size_t>(n)]; };
+  for (int n = base; n < end; ++n) {
+    if (!node(n).children.empty()) continue;
+    const int local = node(n).component - first_component;
+    if (alive[static_cast<size_t>(local)]) {
+      if (merged[static_cast<size_t>(local)]) {
+        node(n).concavity = measure[static_cast<size_t>(local)].concavity;
+        node(n).witness = measure[static_cast<size_t>(local)].witness;
+      }
+      continue;
+    }
+    node_alive[static_cast<size_t>(n - base)] = 0;
+    const int parent = node(n).parent;
+    auto& siblings = node(parent).children;
+    siblings.erase(std::find(siblings.begin(), siblings.end(), n));
+    if (siblings.size() != 1) continue;
+    const int only = siblings[0];  // the parent is replaced by its one remaining child
+    node_alive[static_cast<size_t>(parent - base)] = 0;
+    const int grand = node(parent).parent;
+    node(only).parent = grand;
+    if (grand >= 0) {
+      std::replace(node(grand).children.begin(), node(grand).children.end(), parent, only);
+    } else {
+      out->roots.back() = only;
+    }
+  }
+  std::vector<int> id(static_cast<size_t>(end - base), -1);
+  std::vector<HierarchyNode3d> kept;
+  for (int n = base; n < end; ++n) {
+    if (!node_alive[static_cast<size_t>(n - base)]) continue;
+    id[static_cast<size_t>(n - base)] = base + static_cast<int>(kept.size());
+    kept.push_back(node(n));
+  }
+  auto renumber = [&](int n) { return n < base ? n : id[static_cast<size_t>(n - base)]; };
+  for (HierarchyNode3d& k : kept) {
+    if (k.parent >= 0) k.parent = renumber(k.parent);
+    for (int& ch : k.children) ch = renumber(ch);
+  }
+  out->tree.resize(static_cast<size_t>(base));
+  out->tree.insert(out->tree.end(), kept.begin(), kept.end());
+  out->roots.back() = renumber(out->roots.back());
+  // Depths and components in depth-first order of the leaves.
+  std::vector<Component3d> old(std::make_move_iterator(out->components.begin() + first_component),
+                               std::make_move_iterator(out->components.end()));
+  out->components.resize(static_cast<size_t>(first_component));
+  std::vector<int> stack = {out->roots.back()};
+  node(out->roots.back()).depth = 0;
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    HierarchyNode3d& x = node(n);
+    if (x.children.empty()) {
+      const int local = x.component - first_component;
+      const int component = static_cast<int>(out->components.size());
+      for (int f : faces[static_cast<size_t>(local)]) {
+        (*face_component)[static_cast<size_t>(f)] = component;
+      }
+      out->components.push_back(merged[static_cast<size_t>(local)]
+                                    ? MakeComponent(part, faces[static_cast<size_t>(local)],
+                                                    measure[static_cast<size_t>(local)].concavity,
+                                                    source)
+                                    : std::move(old[static_cast<size_t>(local)]));
+      x.component = component;
+      continue;
+    }
+    for (auto it = x.children.rbegin(); it != x.children.rend(); ++it) {
+      node(*it).depth = x.depth + 1;
+      stack.push_back(*it);
+    }
+  }
+}
+
 // Algorithm 1 on one part, appending its nodes, leaves and openings to `out`.
 void DecomposePart(const TriangleMesh& mesh, int source, double tau, Decomposition3d* out) {
   const SurfacePart part(mesh);
@@ -548,7 +704,7 @@ void DecomposePart(const TriangleMesh& mesh, int source, double tau, Decompositi
     out->tree[id].children = children;
     for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back(*it);
   }
-  (void)first_component;
+  MergePatches(part, source, tau, base, first_component, &face_component, out);
   AddOpenings(part, face_component, &out->openings);
 }
 
