@@ -1,13 +1,10 @@
 #include "planning/plan_scenario3d.h"
 
 #include <ompl/base/Planner.h>
-#include <ompl/base/PlannerData.h>
-#include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
-#include <ompl/geometric/PathGeometric.h>
 
 #include "base/format.h"
 #include "base/input_error.h"
@@ -18,6 +15,7 @@
 #include "planning/acd_prm.h"
 #include "planning/acd_samplers3d.h"
 #include "planning/counting_validity_checker.h"
+#include "planning/internal/run_on_time_limit.h"
 #include "planning/internal/space_access.h"
 #include "planning/internal/space_access3d.h"
 #include "planning/registry.h"
@@ -165,37 +163,11 @@ PlanResult PlanScenario3d(const Scenario& scenario) {
     result.vertices = std::move(roadmap.vertices);
     result.edges = std::move(roadmap.edges);
   } else {
-    auto pdef = std::make_shared<ob::ProblemDefinition>(si);
-    pdef->setStartAndGoalStates(start, goal);
     ob::PlannerPtr planner =
         scenario.planner == PlannerType::kPrmAcd
             ? std::make_shared<AcdPrm>(si, decomposition, /*star=*/false, scenario.seed)
             : MakePlanner(scenario.planner, si, nullptr, scenario.seed);
-    planner->setProblemDefinition(pdef);
-    planner->setup();
-    const ob::PlannerStatus status = planner->solve(scenario.time_limit);
-    result.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
-    if (result.solved) {
-      auto* path = pdef->getSolutionPath()->as<ompl::geometric::PathGeometric>();
-      result.path_length = path->length();
-      for (const ob::State* state : path->getStates()) {
-        std::vector<double> reals;
-        space->copyToReals(reals, state);
-        result.path.push_back(reals);
-      }
-    }
-    ob::PlannerData data(si);
-    planner->getPlannerData(data);
-    result.samples = data.numVertices();
-    for (unsigned int i = 0; i < data.numVertices(); ++i) {
-      std::vector<double> reals;
-      space->copyToReals(reals, data.getVertex(i).getState());
-      result.vertices.push_back(reals);
-      std::vector<unsigned int> out;
-      data.getEdges(i, out);
-      for (unsigned int j : out)
-        result.edges.emplace_back(static_cast<int>(i), static_cast<int>(j));
-    }
+    internal::RunOnTimeLimit(planner, start, goal, scenario.time_limit, &result);
   }
   result.collision_checks = checker->checks();
   result.time_s = stopwatch.Seconds();
