@@ -129,7 +129,10 @@ oc::SpaceInformationPtr MakeCarSpaceInformation(CarModel model,
       qdot[4] = u[1];
     };
   }
-  auto solver = std::make_shared<oc::ODEBasicSolver<>>(si, ode, options.step);
+  // The solver sees `si` through a non-owning pointer: `si` owns the propagator, which owns the
+  // solver, so an owning pointer back would be a reference cycle that leaks both.
+  const oc::SpaceInformationPtr si_view(si.get(), [](oc::SpaceInformation*) {});
+  auto solver = std::make_shared<oc::ODEBasicSolver<>>(si_view, ode, options.step);
   // After integrating: wrap theta and clamp (v, phi) into their bounds, as OMPL.app does.
   auto post = [model, space](const ob::State*, const oc::Control*, double, ob::State* result) {
     ob::SE2StateSpace::StateType* s =
