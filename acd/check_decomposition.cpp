@@ -52,6 +52,7 @@
 #include "acd/concavity_measure.h"
 #include "acd/internal/box_sweep.h"
 #include "acd/internal/exact_predicates.h"
+#include "acd/internal/problem_list.h"
 #include "acd/internal/ring_locator.h"
 #include "base/format.h"
 
@@ -68,30 +69,12 @@ using internal::ToCgal;
 
 constexpr double kRelative = 1e-9;    // Areas, centroids, tau, distances (x reference radius).
 constexpr double kHullNoise = 1e-12;  // Hull containment (x coordinate magnitude).
-constexpr size_t kMaxProblems = 50;
 
 std::string Num(double v) { return FormatSignificant(v, 12); }
 
 std::string Pt(const Point2d& p) { return "(" + Num(p.x()) + ", " + Num(p.y()) + ")"; }
 
-class ProblemList {
- public:
-  void Add(std::string line) {
-    ++count_;
-    if (lines_.size() < kMaxProblems) lines_.push_back(std::move(line));
-  }
-  std::vector<std::string> Finish() && {
-    if (count_ > lines_.size()) {
-      const size_t more = count_ - lines_.size();
-      lines_.push_back("... and " + std::to_string(more) + " more");
-    }
-    return std::move(lines_);
-  }
-
- private:
-  std::vector<std::string> lines_;
-  size_t count_ = 0;
-};
+using internal::ProblemList;
 
 // Ring r of a polygon: 0 is the outer boundary, h + 1 is hole h.
 const Ring2d& RingOf(const Polygon2d& polygon, int r) {

@@ -62,6 +62,7 @@
 #include <vector>
 
 #include "acd/convex_hull3d.h"
+#include "acd/internal/problem_list.h"
 #include "acd/mesh_measures.h"
 #include "base/format.h"
 #include "base/random.h"
@@ -79,7 +80,6 @@ using SideOf = CGAL::Side_of_triangle_mesh<Mesh, Kernel>;
 constexpr double kRelative = 1e-9;        // Areas, stored figures, tau, distances (x S).
 constexpr double kVolumeRelative = 1e-6;  // Volume sums (cut vertices are rounded).
 constexpr double kNoise = 1e-12;          // Distances (x largest |coordinate|).
-constexpr size_t kMaxProblems = 50;
 constexpr int kSamplesPerComponent = 16;
 constexpr std::uint64_t kSeed = 0x3D3D3D3D;  // Samples are seeded per component index.
 
@@ -89,23 +89,7 @@ std::string Pt(const Eigen::Vector3d& p) {
   return "(" + Num(p.x()) + ", " + Num(p.y()) + ", " + Num(p.z()) + ")";
 }
 
-class ProblemList {
- public:
-  void Add(std::string line) {
-    ++count_;
-    if (lines_.size() < kMaxProblems) lines_.push_back(std::move(line));
-  }
-  std::vector<std::string> Finish() && {
-    if (count_ > lines_.size()) {
-      lines_.push_back("... and " + std::to_string(count_ - lines_.size()) + " more");
-    }
-    return std::move(lines_);
-  }
-
- private:
-  std::vector<std::string> lines_;
-  size_t count_ = 0;
-};
+using internal::ProblemList;
 
 using Key = std::array<double, 3>;
 Key KeyOf(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }

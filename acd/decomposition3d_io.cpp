@@ -343,6 +343,108 @@ class InteriorFaces {
   double tolerance_;
 };
 
+/// The preview's caption line naming the view.
+std::string ViewCaption(bool z_up) {
+  return std::string("orthographic view from azimuth 35, elevation 25 degrees (") +
+         (z_up ? "+z" : "+y") + " up)";
+}
+
+/// The SVG of `scene` in the oblique view, painter's algorithm: every triangle flat-shaded in
+/// its mesh's colour and opacity; a one-sided (closed) mesh's back faces are dropped, and so is
+/// any triangle `hidden(k, corners)` names. With `z_up` the scene is turned so that its +z
+/// points up. `group`: the id of the SVG group of triangles.
+template <typename Hidden>
+std::string RenderSvg(const std::vector<SceneMesh3d>& scene, const Hidden& hidden, bool z_up,
+                      const std::string& group, const std::vector<std::string>& caption,
+                      const std::string& title) {
+  const View view;
+  // (x, y, z) -> (x, z, -y): a turn about x that brings +z to the view's +y (up).
+  auto turned = [z_up](const Eigen::Vector3d& p) {
+    return z_up ? Eigen::Vector3d(p.x(), p.z(), -p.y()) : p;
+  };
+  std::vector<Facet> facets;
+  Eigen::AlignedBox2d bounds;
+  const int n = static_cast<int>(scene.size());
+  for (int k = 0; k < n; ++k) {
+    const TriangleMesh& mesh = scene[k].mesh;
+    for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+      Eigen::Vector3d p[3];
+      bool valid = true;
+      for (int c = 0; c < 3 && valid; ++c) {
+        const int v = mesh.triangles(f, c);
+        valid = v >= 0 && v < mesh.vertices.rows();
+        if (valid) p[c] = turned(mesh.vertices.row(v).transpose());
+        valid = valid && p[c].allFinite();
+      }
+      if (!valid) continue;
+      const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
+      const double length = normal.norm();
+      if (!(length > 0.0)) continue;
+      const double facing = normal.dot(view.toward_viewer);
+      if (!scene[k].two_sided && !(facing > 0.0)) continue;  // A closed mesh's back faces.
+      if (hidden(k, p)) continue;
+      Facet facet;
+      facet.component = k;
+      facet.triangle = f;
+      facet.depth = (p[0] + p[1] + p[2]).dot(view.toward_viewer) / 3.0;
+      const Eigen::Vector3d seen = (facing >= 0.0 ? 1.0 : -1.0) / length * normal;
+      facet.shade = std::max(0.0, seen.dot(view.light));
+      for (int c = 0; c < 3; ++c) {
+        facet.corners[c] = Eigen::Vector2d(p[c].dot(view.right), p[c].dot(view.up));
+        bounds.extend(facet.corners[c]);
+      }
+      facets.push_back(facet);
+    }
+  }
+  // Far triangles first. Ties are broken by mesh and triangle, so the picture is the same on
+  // every standard library.
+  std::sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) {
+    if (a.depth != b.depth) return a.depth < b.depth;
+    if (a.component != b.component) return a.component < b.component;
+    return a.triangle < b.triangle;
+  });
+
+  // Pixels are computed here, rounded to 0.1 px, and the canvas maps them 1:1, so every
+  // length is in picture pixels whatever the mesh's units.
+  const double pixels = 900.0;
+  const double size = bounds.isEmpty() ? 0.0 : bounds.sizes().maxCoeff();
+  const double scale = size > 0.0 ? pixels / size : 1.0;
+  auto to_pixels = [&](const Eigen::Vector2d& p) {
+    return Eigen::Vector2d(Tenth((p.x() - bounds.min().x()) * scale),
+                           Tenth((p.y() - bounds.min().y()) * scale));
+  };
+  Eigen::AlignedBox2d picture(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero());
+  if (!bounds.isEmpty()) picture.extend(to_pixels(bounds.max()));
+  SvgCanvasOptions options;
+  options.pixels = std::max(1.0, picture.sizes().maxCoeff());
+  options.margin = 36.0;
+  options.font = 23.0;
+  SvgCanvas canvas(picture, options);
+  std::ostringstream svg;
+  // An opaque triangle gets a hairline stroke of its own colour, which closes the
+  // anti-aliasing seams between neighbouring triangles.
+  svg << "<g id=\"" << group << "\" stroke-width=\"0.5\" stroke-linejoin=\"round\">\n";
+  for (const Facet& facet : facets) {
+    const SceneMesh3d& item = scene[facet.component];
+    const std::string fill = Hex(item.rgb * (0.35 + 0.65 * facet.shade));
+    svg << "<polygon points=\"";
+    for (int c = 0; c < 3; ++c) {
+      const Eigen::Vector2d q = to_pixels(facet.corners[c]);
+      svg << (c ? " " : "") << canvas.X(q.x()) << "," << canvas.Y(q.y());
+    }
+    svg << "\" fill=\"" << fill << "\"";
+    if (item.opacity < 1.0) {
+      svg << " fill-opacity=\"" << FormatSignificant(item.opacity, 3) << "\" stroke=\"none\"";
+    } else {
+      svg << " stroke=\"" << fill << "\"";
+    }
+    svg << "/>\n";
+  }
+  svg << "</g>\n";
+  canvas.Add(svg.str());
+  return canvas.Finish(caption, title);
+}
+
 }  // namespace
 
 std::string Decomposition3dToJson(const Decomposition3d& decomposition,
@@ -466,98 +568,25 @@ std::vector<std::uint8_t> Decomposition3dToGlb(const Decomposition3d& decomposit
 
 std::string Decomposition3dToSvg(const Decomposition3d& decomposition,
                                  const DecompositionLabels& labels) {
-  const View view;
   // A solid's components are closed and outward-oriented: a triangle facing away from the
   // viewer is hidden behind the front ones, so it is dropped (half the file). Surface patches
   // are open: both sides show, shaded by the side seen.
-  const bool cull = !decomposition.stats.surface;
+  std::vector<SceneMesh3d> scene;
   Eigen::AlignedBox3d extent;
-  for (const Component3d& component : decomposition.components) {
-    for (Eigen::Index i = 0; i < component.mesh.vertices.rows(); ++i) {
-      const Eigen::Vector3d p = component.mesh.vertices.row(i).transpose();
-      if (p.allFinite()) extent.extend(p);
-    }
-  }
-  const InteriorFaces interior(decomposition, extent.isEmpty() ? 0.0 : extent.diagonal().norm());
-  std::vector<Facet> facets;
-  Eigen::AlignedBox2d bounds;
   const int n = static_cast<int>(decomposition.components.size());
   for (int k = 0; k < n; ++k) {
     const TriangleMesh& mesh = decomposition.components[k].mesh;
-    for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-      Eigen::Vector3d p[3];
-      bool valid = true;
-      for (int c = 0; c < 3; ++c) {
-        const int v = mesh.triangles(f, c);
-        if (v < 0 || v >= mesh.vertices.rows()) {
-          valid = false;
-          break;
-        }
-        p[c] = mesh.vertices.row(v).transpose();
-        valid = valid && p[c].allFinite();
-      }
-      if (!valid) continue;
-      const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
-      const double length = normal.norm();
-      if (!(length > 0.0)) continue;
-      const double facing = normal.dot(view.toward_viewer);
-      if (cull && !(facing > 0.0)) continue;
-      if (cull && interior.Contains(k, p)) continue;
-      Facet facet;
-      facet.component = k;
-      facet.triangle = f;
-      facet.depth = (p[0] + p[1] + p[2]).dot(view.toward_viewer) / 3.0;
-      const Eigen::Vector3d seen = (facing >= 0.0 ? 1.0 : -1.0) / length * normal;
-      facet.shade = std::max(0.0, seen.dot(view.light));
-      for (int c = 0; c < 3; ++c) {
-        facet.corners[c] = Eigen::Vector2d(p[c].dot(view.right), p[c].dot(view.up));
-        bounds.extend(facet.corners[c]);
-      }
-      facets.push_back(facet);
+    for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
+      const Eigen::Vector3d p = mesh.vertices.row(i).transpose();
+      if (p.allFinite()) extent.extend(p);
     }
+    scene.push_back({"component_" + std::to_string(k), mesh, ComponentRgb(k), 1.0,
+                     decomposition.stats.surface});
   }
-  // Painter's algorithm: far triangles first. Ties are broken by component and triangle, so
-  // the picture is the same on every standard library.
-  std::sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) {
-    if (a.depth != b.depth) return a.depth < b.depth;
-    if (a.component != b.component) return a.component < b.component;
-    return a.triangle < b.triangle;
-  });
-
-  // Pixels are computed here, rounded to 0.1 px, and the canvas maps them 1:1, so every
-  // length is in picture pixels whatever the mesh's units.
-  const double pixels = 900.0;
-  const double size = bounds.isEmpty() ? 0.0 : bounds.sizes().maxCoeff();
-  const double scale = size > 0.0 ? pixels / size : 1.0;
-  auto to_pixels = [&](const Eigen::Vector2d& p) {
-    return Eigen::Vector2d(Tenth((p.x() - bounds.min().x()) * scale),
-                           Tenth((p.y() - bounds.min().y()) * scale));
+  const InteriorFaces interior(decomposition, extent.isEmpty() ? 0.0 : extent.diagonal().norm());
+  const auto hidden = [&](int k, const Eigen::Vector3d p[3]) {
+    return !decomposition.stats.surface && interior.Contains(k, p);
   };
-  Eigen::AlignedBox2d picture(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero());
-  if (!bounds.isEmpty()) picture.extend(to_pixels(bounds.max()));
-  SvgCanvasOptions options;
-  options.pixels = std::max(1.0, picture.sizes().maxCoeff());
-  options.margin = 36.0;
-  options.font = 23.0;
-  SvgCanvas canvas(picture, options);
-
-  std::vector<Eigen::Vector3d> colours;
-  for (int k = 0; k < n; ++k) colours.push_back(ComponentRgb(k));
-  std::ostringstream svg;
-  // A hairline stroke of each triangle's own colour closes the anti-aliasing seams between
-  // neighbouring triangles.
-  svg << "<g id=\"components\" stroke-width=\"0.5\" stroke-linejoin=\"round\">\n";
-  for (const Facet& facet : facets) {
-    const std::string fill = Hex(colours[facet.component] * (0.35 + 0.65 * facet.shade));
-    svg << "<polygon points=\"";
-    for (int c = 0; c < 3; ++c) {
-      const Eigen::Vector2d q = to_pixels(facet.corners[c]);
-      svg << (c ? " " : "") << canvas.X(q.x()) << "," << canvas.Y(q.y());
-    }
-    svg << "\" fill=\"" << fill << "\" stroke=\"" << fill << "\"/>\n";
-  }
-  svg << "</g>\n";
-  canvas.Add(svg.str());
 
   const DecompositionStats3d& stats = decomposition.stats;
   std::vector<std::string> caption;
@@ -573,10 +602,9 @@ std::string Decomposition3dToSvg(const Decomposition3d& decomposition,
   }
   line += ", max concavity " + Short(stats.max_concavity) + ", " + Short(stats.time_ms) + " ms";
   caption.push_back(line);
-  caption.push_back(
-      "orthographic view from azimuth 35, elevation 25 degrees (+y up); one colour per "
-      "component");
-  return canvas.Finish(caption, caption[0] + ": " + caption[1]);
+  const std::string title = caption[0] + ": " + caption[1];
+  caption.push_back(ViewCaption(false) + "; one colour per component");
+  return RenderSvg(scene, hidden, false, "components", caption, title);
 }
 
 std::vector<std::uint8_t> SceneToGlb(const std::vector<SceneMesh3d>& scene) {
@@ -590,87 +618,11 @@ std::vector<std::uint8_t> SceneToGlb(const std::vector<SceneMesh3d>& scene) {
 
 std::string SceneToSvg(const std::vector<SceneMesh3d>& scene,
                        const std::vector<std::string>& caption, bool z_up) {
-  const View view;
-  // (x, y, z) -> (x, z, -y): a turn about x that brings +z to the view's +y (up).
-  auto turned = [z_up](const Eigen::Vector3d& p) {
-    return z_up ? Eigen::Vector3d(p.x(), p.z(), -p.y()) : p;
-  };
-  std::vector<Facet> facets;
-  Eigen::AlignedBox2d bounds;
-  const int n = static_cast<int>(scene.size());
-  for (int k = 0; k < n; ++k) {
-    const TriangleMesh& mesh = scene[k].mesh;
-    for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-      Eigen::Vector3d p[3];
-      bool valid = true;
-      for (int c = 0; c < 3 && valid; ++c) {
-        const int v = mesh.triangles(f, c);
-        valid = v >= 0 && v < mesh.vertices.rows();
-        if (valid) p[c] = turned(mesh.vertices.row(v).transpose());
-        valid = valid && p[c].allFinite();
-      }
-      if (!valid) continue;
-      const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
-      const double length = normal.norm();
-      if (!(length > 0.0)) continue;
-      const double facing = normal.dot(view.toward_viewer);
-      if (!scene[k].two_sided && !(facing > 0.0)) continue;  // A closed mesh's back faces.
-      Facet facet;
-      facet.component = k;
-      facet.triangle = f;
-      facet.depth = (p[0] + p[1] + p[2]).dot(view.toward_viewer) / 3.0;
-      const Eigen::Vector3d seen = (facing >= 0.0 ? 1.0 : -1.0) / length * normal;
-      facet.shade = std::max(0.0, seen.dot(view.light));
-      for (int c = 0; c < 3; ++c) {
-        facet.corners[c] = Eigen::Vector2d(p[c].dot(view.right), p[c].dot(view.up));
-        bounds.extend(facet.corners[c]);
-      }
-      facets.push_back(facet);
-    }
-  }
-  std::sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) {
-    if (a.depth != b.depth) return a.depth < b.depth;
-    if (a.component != b.component) return a.component < b.component;
-    return a.triangle < b.triangle;
-  });
-  const double pixels = 900.0;
-  const double size = bounds.isEmpty() ? 0.0 : bounds.sizes().maxCoeff();
-  const double scale = size > 0.0 ? pixels / size : 1.0;
-  auto to_pixels = [&](const Eigen::Vector2d& p) {
-    return Eigen::Vector2d(Tenth((p.x() - bounds.min().x()) * scale),
-                           Tenth((p.y() - bounds.min().y()) * scale));
-  };
-  Eigen::AlignedBox2d picture(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero());
-  if (!bounds.isEmpty()) picture.extend(to_pixels(bounds.max()));
-  SvgCanvasOptions options;
-  options.pixels = std::max(1.0, picture.sizes().maxCoeff());
-  options.margin = 36.0;
-  options.font = 23.0;
-  SvgCanvas canvas(picture, options);
-  std::ostringstream svg;
-  svg << "<g id=\"scene\" stroke-width=\"0.5\" stroke-linejoin=\"round\">\n";
-  for (const Facet& facet : facets) {
-    const SceneMesh3d& item = scene[facet.component];
-    const std::string fill = Hex(item.rgb * (0.35 + 0.65 * facet.shade));
-    svg << "<polygon points=\"";
-    for (int c = 0; c < 3; ++c) {
-      const Eigen::Vector2d q = to_pixels(facet.corners[c]);
-      svg << (c ? " " : "") << canvas.X(q.x()) << "," << canvas.Y(q.y());
-    }
-    svg << "\" fill=\"" << fill << "\"";
-    if (item.opacity < 1.0) {
-      svg << " fill-opacity=\"" << FormatSignificant(item.opacity, 3) << "\" stroke=\"none\"";
-    } else {
-      svg << " stroke=\"" << fill << "\"";
-    }
-    svg << "/>\n";
-  }
-  svg << "</g>\n";
-  canvas.Add(svg.str());
   std::vector<std::string> lines = caption;
-  lines.push_back(std::string("orthographic view from azimuth 35, elevation 25 degrees (") +
-                  (z_up ? "+z" : "+y") + " up)");
-  return canvas.Finish(lines, lines.empty() ? std::string() : lines[0]);
+  const std::string title = lines.empty() ? std::string() : lines[0];
+  lines.push_back(ViewCaption(z_up));
+  return RenderSvg(
+      scene, [](int, const Eigen::Vector3d*) { return false; }, z_up, "scene", lines, title);
 }
 
 }  // namespace acdplan::acd

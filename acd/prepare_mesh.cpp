@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "acd/internal/closed_shells.h"
+#include "acd/internal/disjoint_sets.h"
 #include "acd/internal/face_intersections.h"
 #include "acd/internal/mesh_edges.h"
 #include "acd/internal/mesh_repair.h"
@@ -43,29 +44,7 @@ std::string Plural(int count, const std::string& noun) {
   return std::to_string(count) + " " + (count == 1 ? noun : plural);
 }
 
-class DisjointSets {
- public:
-  explicit DisjointSets(int n) : parent_(static_cast<size_t>(n)) {
-    std::iota(parent_.begin(), parent_.end(), 0);
-  }
-  int Find(int x) {
-    while (parent_[static_cast<size_t>(x)] != x) {
-      parent_[static_cast<size_t>(x)] =
-          parent_[static_cast<size_t>(parent_[static_cast<size_t>(x)])];
-      x = parent_[static_cast<size_t>(x)];
-    }
-    return x;
-  }
-  // The lower root survives, so each set is named by its lowest member.
-  void Unite(int a, int b) {
-    a = Find(a);
-    b = Find(b);
-    if (a != b) parent_[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
-  }
-
- private:
-  std::vector<int> parent_;
-};
+using internal::DisjointSets;
 
 // The triangles `faces` of `mesh` (ascending) with their own compacted vertex list.
 TriangleMesh ExtractFaces(const TriangleMesh& mesh, const std::vector<int>& faces) {

@@ -1,9 +1,7 @@
 #include "envs/free_space2d.h"
 
 #include <CGAL/Boolean_set_operations_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
-#include <CGAL/Polygon_set_2.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,16 +13,18 @@
 
 #include "acd/prepare_polygon.h"
 #include "base/input_error.h"
+#include "envs/internal/exact_polygons.h"
 
 namespace acdplan::envs {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using Point = Kernel::Point_2;
-using Polygon = CGAL::Polygon_2<Kernel>;
-using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
-using PolygonSet = CGAL::Polygon_set_2<Kernel>;
+using Kernel = internal::ExactKernel;
+using Point = internal::ExactPoint;
+using Polygon = internal::ExactPolygon;
+using PolygonWithHoles = internal::ExactPolygonWithHoles;
+using PolygonSet = internal::ExactPolygonSet;
 using Loop = std::vector<Point>;
+using internal::ToDouble;
 
 struct PointLess {
   bool operator()(const Point& a, const Point& b) const {
@@ -42,13 +42,6 @@ PolygonWithHoles ToCgal(const acd::Polygon2d& polygon) {
   PolygonWithHoles result(ToCgal(polygon.outer));
   for (const acd::Ring2d& hole : polygon.holes) result.add_hole(ToCgal(hole));
   return result;
-}
-
-acd::Ring2d ToDouble(const Loop& loop) {
-  acd::Ring2d ring;
-  ring.reserve(loop.size());
-  for (const Point& p : loop) ring.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
-  return ring;
 }
 
 // Splits a closed vertex cycle that may pass through a point several times (CGAL's output

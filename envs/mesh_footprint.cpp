@@ -1,32 +1,20 @@
 #include "envs/mesh_footprint.h"
 
 #include <CGAL/Boolean_set_operations_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Polygon_set_2.h>
 
 #include <algorithm>
 #include <iterator>
 
 #include "acd/prepare_polygon.h"
 #include "base/input_error.h"
+#include "envs/internal/exact_polygons.h"
 
 namespace acdplan::envs {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using Point = Kernel::Point_2;
-using Polygon = CGAL::Polygon_2<Kernel>;
-using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
-using PolygonSet = CGAL::Polygon_set_2<Kernel>;
-
-acd::Ring2d ToDouble(const Polygon& ring) {
-  acd::Ring2d result;
-  result.reserve(ring.size());
-  for (auto p = ring.vertices_begin(); p != ring.vertices_end(); ++p) {
-    result.emplace_back(CGAL::to_double(p->x()), CGAL::to_double(p->y()));
-  }
-  return result;
-}
+using Point = internal::ExactPoint;
+using Polygon = internal::ExactPolygon;
+using internal::ToDouble;
 
 }  // namespace
 
@@ -53,14 +41,14 @@ std::vector<acd::Polygon2d> Footprint(const acd::TriangleMesh& mesh, const std::
   }
   std::vector<acd::Polygon2d> result;
   if (triangles.empty()) return result;
-  PolygonSet united;
+  internal::ExactPolygonSet united;
   united.join(triangles.begin(), triangles.end());
-  std::vector<PolygonWithHoles> parts;
+  std::vector<internal::ExactPolygonWithHoles> parts;
   united.polygons_with_holes(std::back_inserter(parts));
   for (size_t i = 0; i < parts.size(); ++i) {
-    acd::Polygon2d raw{ToDouble(parts[i].outer_boundary()), {}};
+    acd::Polygon2d raw{ToDouble(parts[i].outer_boundary().container()), {}};
     for (auto hole = parts[i].holes_begin(); hole != parts[i].holes_end(); ++hole) {
-      raw.holes.push_back(ToDouble(*hole));
+      raw.holes.push_back(ToDouble(hole->container()));
     }
     // CGAL's boundaries may pass a point twice (parts touching at a vertex): PreparePolygons
     // splits those into valid polygons.

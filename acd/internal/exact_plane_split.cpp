@@ -12,9 +12,10 @@
 #include <limits>
 #include <list>
 #include <map>
-#include <numeric>
 #include <stdexcept>
 #include <utility>
+
+#include "acd/internal/disjoint_sets.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -39,31 +40,12 @@ using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt =
     CGAL::Constrained_Delaunay_triangulation_2<ExactKernel, Tds, CGAL::Exact_intersections_tag>;
 
-struct UnionFind {
-  explicit UnionFind(int n) : parent(static_cast<size_t>(n)) {
-    std::iota(parent.begin(), parent.end(), 0);
-  }
-  int Find(int x) {
-    while (parent[static_cast<size_t>(x)] != x) {
-      parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
-      x = parent[static_cast<size_t>(x)];
-    }
-    return x;
-  }
-  void Unite(int a, int b) {
-    a = Find(a);
-    b = Find(b);
-    if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
-  }
-  std::vector<int> parent;
-};
-
 // Labels each triangle with its shell (edge-connected set), numbered by smallest triangle.
 // Only edges with exactly two faces join: two lobes touching along an edge (a cut through
 // the edge where they meet) stay apart.
 std::vector<int> ShellLabels(const std::vector<Tri>& triangles, int* count) {
   const int n = static_cast<int>(triangles.size());
-  UnionFind uf(n);
+  DisjointSets uf(n);
   std::map<std::pair<int, int>, std::vector<int>> edge_faces;
   for (int f = 0; f < n; ++f) {
     for (int k = 0; k < 3; ++k) {
@@ -124,7 +106,7 @@ void SplitPinchedVertices(ExactPiece* piece) {
     const auto& around = corners[v];
     if (around.size() < 2) continue;
     // Faces around v are joined when they share an edge at v (the same other endpoint).
-    UnionFind uf(static_cast<int>(around.size()));
+    DisjointSets uf(static_cast<int>(around.size()));
     std::map<int, int> by_neighbour;
     for (size_t i = 0; i < around.size(); ++i) {
       const Tri& t = piece->triangles[static_cast<size_t>(around[i].first)];

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::acd {
 namespace {
@@ -26,11 +27,10 @@ std::string ErrorOf(const std::string& path) {
   return "";
 }
 
-// A scratch file under the test's temporary directory.
+// A file in the process's scratch folder.
 std::string WriteTemp(const std::string& name, const std::string& text) {
-  const fs::path path = fs::temp_directory_path() / ("acdplan_read_polygons_test_" + name);
-  std::ofstream(path) << text;
-  return path.string();
+  static const test::ScratchDir dir("acdplan_read_polygons_test");  // Removed at exit.
+  return dir.Write(name, text);
 }
 
 TEST(ReadPolygonsTest, DispatchesByExtensionCaseInsensitiveAndPrepares) {

@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <csignal>
 #include <filesystem>
@@ -23,6 +22,7 @@
 #include "bench/runner.h"
 #include "bench/spec.h"
 #include "bench/stats.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::bench {
 namespace {
@@ -32,8 +32,8 @@ namespace fs = std::filesystem;
 const std::string kConfigs = std::string(ACDPLAN_SOURCE_DIR) + "/configs";
 
 fs::path Scratch(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("acdplan_bench_test_" + std::to_string(getpid())) / name;
+  static const test::ScratchDir root("acdplan_bench_test");  // Removed when the process ends.
+  const fs::path dir = root.path() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

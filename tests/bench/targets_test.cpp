@@ -4,7 +4,6 @@
 #include "bench/targets.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -15,6 +14,7 @@
 #include "bench/acd3d_bench.h"
 #include "bench/collision_bench.h"
 #include "bench/summary.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::bench {
 namespace {
@@ -25,12 +25,8 @@ namespace fs = std::filesystem;
   EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << (haystack)
 
 std::string WriteFile(const std::string& name, const std::string& text) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("acdplan_targets_test_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  const fs::path path = dir / name;
-  std::ofstream(path) << text;
-  return path.string();
+  static const test::ScratchDir dir("acdplan_targets_test");  // Removed when the process ends.
+  return dir.Write(name, text);
 }
 
 /// The message LoadTargetsFile() throws for `text` with the planning vocabulary; "" if none.

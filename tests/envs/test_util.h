@@ -13,34 +13,12 @@
 #include "acd/polygon2d.h"
 #include "acd/prepare_polygon.h"
 #include "base/input_error.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::envs::testing {
 
-/// A fresh folder under the system's temporary folder, removed at the end of the test.
-class TempDir {
- public:
-  TempDir() {
-    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("acdplan_envs_" + std::string(info->test_suite_name()) + "_" + info->name());
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() { std::filesystem::remove_all(path_); }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  /// Writes `text` to `name` in the folder and returns the file's path.
-  std::string Write(const std::string& name, const std::string& text) const {
-    const std::filesystem::path file = path_ / name;
-    std::ofstream(file, std::ios::binary) << text;
-    return file.string();
-  }
-  std::string Path(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
+/// Tests here say TempDir for the shared scratch folder.
+using TempDir = acdplan::test::ScratchDir;
 
 /// The acdplan::InputError message `f()` throws, or "" when it throws nothing.
 template <typename F>

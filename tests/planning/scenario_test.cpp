@@ -11,24 +11,17 @@
 
 #include "base/input_error.h"
 #include "planning/plan_scenario.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::planning {
 namespace {
 
 const std::string kConfigs = std::string(ACDPLAN_SOURCE_DIR) + "/configs";
 
-/// Writes `text` to a scenario file in a scratch folder next to configs/ (so relative
-/// workspace paths like ../envs/2d/wall_gap.yaml resolve) and returns its path.
+/// Writes `text` to a scenario file in the process's scratch folder and returns its path.
 std::string Write(const std::string& name, const std::string& text) {
-  // One folder per test: ctest runs the tests of this file in parallel processes.
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() /
-      ("acdplan_scenario_test_" +
-       std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / name).string();
-  std::ofstream(path) << text;
-  return path;
+  static const test::ScratchDir dir("acdplan_scenario_test");  // Removed when the process ends.
+  return dir.Write(name, text);
 }
 
 const std::string kWorld = "workspace: {generator: wall_gap, seed: 1}\n";

@@ -3,10 +3,11 @@
 #include "tools/plot_bench.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+
+#include "tests/scratch_dir.h"
 
 namespace acdplan::tools {
 namespace {
@@ -14,8 +15,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path Scratch(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("acdplan_plot_test_" + std::to_string(getpid())) / name;
+  static const test::ScratchDir root("acdplan_plot_test");  // Removed when the process ends.
+  const fs::path dir = root.path() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -1,0 +1,31 @@
+#pragma once
+// The exact 2D polygons envs' booleans (free space, footprints) work in, and their rounding
+// to acd's doubles. Internal: includes CGAL.
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_set_2.h>
+
+#include <vector>
+
+#include "acd/polygon2d.h"
+
+namespace acdplan::envs::internal {
+
+using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using ExactPoint = ExactKernel::Point_2;
+using ExactPolygon = CGAL::Polygon_2<ExactKernel>;
+using ExactPolygonWithHoles = CGAL::Polygon_with_holes_2<ExactKernel>;
+using ExactPolygonSet = CGAL::Polygon_set_2<ExactKernel>;
+
+/// The ring of `points` (any sequence of ExactPoint) rounded to the nearest doubles.
+template <typename Points>
+acd::Ring2d ToDouble(const Points& points) {
+  acd::Ring2d ring;
+  ring.reserve(points.size());
+  for (const ExactPoint& p : points) {
+    ring.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+  }
+  return ring;
+}
+
+}  // namespace acdplan::envs::internal
