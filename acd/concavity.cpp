@@ -564,8 +564,8 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const std::vector<int>
   constexpr double kInheritedGap = -1.0;
   Concavity2d result;
   result.outer.assign(n, 0.0);
-  std::vector<int> kept;
-  kept.reserve(n);
+  std::vector<int> kept(n);  // kept[0, kept_size), a stack without capacity checks.
+  int kept_size = 0;
   int last_hull = -1;  // Where in `kept` the run's last parent hull vertex is, or -1.
   for (int k = 0, i = run_start; k < n; ++k, i = i + 1 == n ? 0 : i + 1) {
     const int from = origin[i];
@@ -575,15 +575,15 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const std::vector<int>
         for (int j = begin + 1 == n ? 0 : begin + 1; j != i; j = j + 1 == n ? 0 : j + 1) {
           result.outer[j] = parent.outer[origin[j]];
         }
-        kept.resize(last_hull + 1);
+        kept_size = last_hull + 1;
         result.outer[begin] = kInheritedGap;
       }
-      last_hull = static_cast<int>(kept.size());
+      last_hull = kept_size;
     }
-    kept.push_back(i);
+    kept[kept_size++] = i;
     if (!inherited_edge(i)) last_hull = -1;
   }
-  result.hull = MelkmanHull(ring, static_cast<int>(kept.size()), [&](int k) { return kept[k]; });
+  result.hull = MelkmanHull(ring, kept_size, [&](int k) { return kept[k]; });
   const int h = static_cast<int>(result.hull.size());
   std::vector<Pocket> pockets;
   for (int k = 0; k < h; ++k) {

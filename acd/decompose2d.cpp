@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "acd/concavity.h"
+#include "acd/internal/centroid_area.h"
 #include "acd/internal/openings.h"
 #include "acd/internal/pocket_cache.h"
 #include "acd/internal/resolve.h"
@@ -61,9 +62,10 @@ Point2d WitnessPoint(const Polygon2d& piece, const Concavity2d& concavity) {
   return piece.outer.front();
 }
 
-// Algorithm 1 (or 9) on one input polygon, appending its nodes and leaves to `out`.
+// Algorithm 1 (or 9) on one input polygon, appending its nodes and leaves to `out` and the
+// leaves' areas to `areas`.
 void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions& options,
-                  Decomposition2d* out) {
+                  Decomposition2d* out, std::vector<double>* areas) {
   const ConcavityOptions measure{options.measure, options.hole_diameter, options.tau};
   internal::ResolveOptions resolve;
   resolve.score_concavity = options.score_concavity;
@@ -98,8 +100,11 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
       HierarchyNode2d& node = out->tree[id];
       node.component = static_cast<int>(out->components.size());
       node.witness = WitnessPoint(node.piece, concavity);
-      out->components.push_back({node.piece, HullOf(node.piece.outer, concavity.hull),
-                                 Centroid(node.piece), concavity.value, source});
+      double area = 0.0;
+      const Point2d centroid = internal::CentroidAndArea(node.piece, &area);
+      areas->push_back(area);
+      out->components.push_back({node.piece, HullOf(node.piece.outer, concavity.hull), centroid,
+                                 concavity.value, source});
       continue;
     }
     internal::Resolution resolution;
@@ -140,15 +145,17 @@ Decomposition2d Decompose2d(const std::vector<Polygon2d>& polygons,
   out.tau = options.tau;
   out.min_convexity = options.min_convexity;
   const Stopwatch stopwatch;
+  std::vector<double> areas;  // Per component.
   for (int i = 0; i < static_cast<int>(polygons.size()); ++i) {
-    DecomposeOne(polygons[i], i, options, &out);
+    DecomposeOne(polygons[i], i, options, &out, &areas);
   }
   out.openings = internal::FindOpenings(out);
   out.stats.time_ms = stopwatch.Milliseconds();
 
   double area = 0.0, hull_area = 0.0;
-  for (const Component2d& c : out.components) {
-    area += Area(c.polygon);
+  for (size_t k = 0; k < out.components.size(); ++k) {
+    const Component2d& c = out.components[k];
+    area += areas[k];
     hull_area += std::abs(SignedArea(c.hull));
     out.stats.max_concavity = std::max(out.stats.max_concavity, c.concavity);
   }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "acd/internal/centroid_area.h"
+
 namespace acdplan::acd {
 
 namespace {
@@ -134,8 +136,9 @@ double Area(const Polygon2d& polygon) {
 }
 
 namespace {
-// First moment of the region bounded by `ring` (signed like SignedArea), divided by 6.
-Point2d RingMoment(const Ring2d& ring) {
+// First moment of the region bounded by `ring` (signed like SignedArea), divided by 6;
+// `signed_area` is SignedArea(ring).
+Point2d RingMoment(const Ring2d& ring, double signed_area) {
   const size_t n = ring.size();
   Point2d moment = Point2d::Zero();
   // Translate to the first vertex to keep the products small (cancellation at 1e6 scale).
@@ -146,19 +149,33 @@ Point2d RingMoment(const Ring2d& ring) {
     const double cross = a.x() * b.y() - a.y() * b.x();
     moment += (a + b) * cross;
   }
-  return moment / 6.0 + origin * SignedArea(ring);
+  return moment / 6.0 + origin * signed_area;
 }
 }  // namespace
 
 Point2d Centroid(const Polygon2d& polygon) {
-  Point2d moment = RingMoment(polygon.outer);
-  for (const Ring2d& hole : polygon.holes) {
-    // Holes are clockwise, so their signed moment already subtracts; be orientation-agnostic.
-    const double sign = SignedArea(hole) < 0 ? 1.0 : -1.0;
-    moment += sign * RingMoment(hole);
-  }
-  return moment / Area(polygon);
+  double area = 0.0;
+  return internal::CentroidAndArea(polygon, &area);
 }
+
+namespace internal {
+
+Point2d CentroidAndArea(const Polygon2d& polygon, double* area) {
+  // Each ring's signed area once; the area sums them as Area() does.
+  double outer_area = SignedArea(polygon.outer);
+  Point2d moment = RingMoment(polygon.outer, outer_area);
+  for (const Ring2d& hole : polygon.holes) {
+    const double hole_area = SignedArea(hole);
+    // Holes are clockwise, so their signed moment already subtracts; be orientation-agnostic.
+    const double sign = hole_area < 0 ? 1.0 : -1.0;
+    moment += sign * RingMoment(hole, hole_area);
+    outer_area -= std::abs(hole_area);
+  }
+  *area = outer_area;
+  return moment / outer_area;
+}
+
+}  // namespace internal
 
 int VertexCount(const Polygon2d& polygon) {
   size_t count = polygon.outer.size();

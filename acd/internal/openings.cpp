@@ -11,10 +11,24 @@ struct Interval {
   int component;
 };
 
+// The bounding box of a ring.
+struct Box {
+  Point2d min, max;
+};
+Box BoxOf(const Ring2d& ring) {
+  Box box{ring.front(), ring.front()};
+  for (const Point2d& p : ring) {
+    box.min = box.min.cwiseMin(p);
+    box.max = box.max.cwiseMax(p);
+  }
+  return box;
+}
+
 // The parameter intervals, along cut `from` -> `to`, of outer edges of components
-// [first, last) that lie on the cut.
-std::vector<Interval> IntervalsOnCut(const Decomposition2d& d, const Cut2d& cut, int first,
-                                     int last) {
+// [first, last) that lie on the cut. `boxes`: the components' outer boxes; one that keeps
+// clear of the cut by more than the tolerance has no edge on it.
+std::vector<Interval> IntervalsOnCut(const Decomposition2d& d, const std::vector<Box>& boxes,
+                                     const Cut2d& cut, int first, int last) {
   const Point2d axis = cut.to - cut.from;
   const double length = axis.norm();
   std::vector<Interval> intervals;
@@ -23,7 +37,14 @@ std::vector<Interval> IntervalsOnCut(const Decomposition2d& d, const Cut2d& cut,
   const double scale =
       std::max({length, cut.from.cwiseAbs().maxCoeff(), cut.to.cwiseAbs().maxCoeff()});
   const double tolerance = 1e-9 * scale;
+  const Point2d pad = Point2d::Constant(2.0 * tolerance);
+  const Point2d cut_min = cut.from.cwiseMin(cut.to) - pad;
+  const Point2d cut_max = cut.from.cwiseMax(cut.to) + pad;
   for (int c = first; c < last; ++c) {
+    const Box& box = boxes[c];
+    if ((box.min.array() > cut_max.array()).any() || (box.max.array() < cut_min.array()).any()) {
+      continue;
+    }
     const Ring2d& ring = d.components[c].polygon.outer;
     const size_t n = ring.size();
     for (size_t i = 0; i < n; ++i) {
@@ -57,14 +78,17 @@ std::pair<int, int> LeafRange(const Decomposition2d& d, int node) {
 
 std::vector<Opening2d> FindOpenings(const Decomposition2d& d) {
   std::vector<Opening2d> openings;
+  std::vector<Box> boxes;
+  boxes.reserve(d.components.size());
+  for (const Component2d& c : d.components) boxes.push_back(BoxOf(c.polygon.outer));
   for (int id = 0; id < static_cast<int>(d.tree.size()); ++id) {
     const HierarchyNode2d& node = d.tree[id];
     if (node.children[0] < 0) continue;
     const auto [a0, a1] = LeafRange(d, node.children[0]);
     const auto [b0, b1] = LeafRange(d, node.children[1]);
     for (const Cut2d& cut : node.cuts) {
-      const std::vector<Interval> left = IntervalsOnCut(d, cut, a0, a1);
-      const std::vector<Interval> right = IntervalsOnCut(d, cut, b0, b1);
+      const std::vector<Interval> left = IntervalsOnCut(d, boxes, cut, a0, a1);
+      const std::vector<Interval> right = IntervalsOnCut(d, boxes, cut, b0, b1);
       const double length = (cut.to - cut.from).norm();
       const double tolerance = 1e-9 * std::max(1.0, length);
       std::vector<Opening2d> found;

@@ -186,20 +186,35 @@ std::optional<RayHit> RayEdgeHit(const Point2d& v, const Point2d& d, const Point
 // within rounding noise of it (an absolute distance: a bound relative to the edge length
 // snapped a hit 1e-7 from the notch on a 6.5e7-long edge to an end 1 unit away, outside the
 // cone, and left the notch without a cut).
-std::optional<Endpoint> BisectorHit(const Polygon2d& polygon, int ring_id, int r) {
+// With a finite `reach`, edges whose bounding box keeps farther than `reach` from the vertex (in
+// both coordinates) are skipped: a hit returned within `reach` is then still the first hit
+// (an edge holding an earlier hit passes the box test), one beyond it may not be.
+std::optional<Endpoint> BisectorHit(const Polygon2d& polygon, int ring_id, int r,
+                                    double reach = std::numeric_limits<double>::infinity()) {
   const Ring2d& ring = RingOf(polygon, ring_id);
   const int n = static_cast<int>(ring.size());
   const Point2d& v = ring[r];
   const Point2d d = (v - ring[Prev(r, n)]).normalized() + (v - ring[Next(r, n)]).normalized();
   if (d.squaredNorm() < 1e-24) return std::nullopt;
+  const double xmin = v.x() - reach, xmax = v.x() + reach;
+  const double ymin = v.y() - reach, ymax = v.y() + reach;
+  // Cohen-Sutherland outcodes: an edge whose two ends share a side of the box misses it.
+  auto outcode = [&](const Point2d& p) {
+    return (p.x() < xmin ? 1 : 0) | (p.x() > xmax ? 2 : 0) | (p.y() < ymin ? 4 : 0) |
+           (p.y() > ymax ? 8 : 0);
+  };
   double best_t = std::numeric_limits<double>::infinity();
   std::optional<Endpoint> best;
   for (int k = -1; k < static_cast<int>(polygon.holes.size()); ++k) {
     const Ring2d& other = RingOf(polygon, k);
     const int m = static_cast<int>(other.size());
+    int code_j = m > 0 ? outcode(other[0]) : 0;
     for (int i = 0; i < m; ++i) {
-      if (k == ring_id && (i == r || Next(i, m) == r)) continue;
       const int j = Next(i, m);
+      const int code_i = code_j;
+      code_j = outcode(other[j]);
+      if ((code_i & code_j) != 0) continue;
+      if (k == ring_id && (i == r || j == r)) continue;
       std::optional<RayHit> hit = RayEdgeHit(v, d, other[i], other[j] - other[i]);
       if (!hit || hit->t <= 0.0 || hit->s < 0.0 || hit->s > 1.0 || hit->t >= best_t) continue;
       const bool from_end = hit->s > 0.5;
@@ -245,70 +260,246 @@ bool ResolvesBoth(const Ring2d& outer, int x, const Point2d& r) {
   return IsNotchInline(a, outer[x], b) && InCone(a, outer[x], b, r);
 }
 
-// Candidate end points on the outer ring for a cut from `from` (vertex `index` of ring
-// `ring_id`), scored by Ch. IV.D.1: f = (1 + s_c concavity(x)) / (s_d dist(r, x)); only those
-// in the cone that resolves the notch (both angles at r at most 180 degrees).
+// The score of cut ends for a cut from vertex `index` of ring `ring_id` (Ch. IV.D.1):
+// f(r, x) = (1 + s_c concavity(x)) / (s_d dist(r, x)), for the x in the cone that resolves the
+// notch (both angles at r at most 180 degrees); times the bonus for a diagonal that also
+// resolves x (ResolveOptions::double_resolve_bonus).
+class CutScorer {
+ public:
+  CutScorer(const Polygon2d& polygon, const Concavity2d& concavity, int ring_id, int index,
+            const ResolveOptions& options)
+      : outer_(polygon.outer),
+        concavity_(concavity),
+        options_(options),
+        ring_id_(ring_id),
+        index_(index),
+        n_(static_cast<int>(RingOf(polygon, ring_id).size())),
+        a_(RingOf(polygon, ring_id)[Prev(index, n_)]),
+        r_(RingOf(polygon, ring_id)[index]),
+        b_(RingOf(polygon, ring_id)[Next(index, n_)]) {}
+
+  const Point2d& From() const { return r_; }
+  const Point2d& Before() const { return a_; }  ///< The vertex before r on its ring.
+  const Point2d& After() const { return b_; }   ///< The vertex after r on its ring.
+
+  // Outer vertex i is not a cut end: it is r or one of its neighbours.
+  bool Skips(int i) const {
+    return ring_id_ < 0 && (i == index_ || i == Prev(index_, n_) || i == Next(index_, n_));
+  }
+
+  // Scores `x` into `candidate`; false when x does not resolve r or is r.
+  bool Score(const Endpoint& x, Candidate* candidate) const {
+    if (!InCone(a_, r_, b_, x.point)) return false;
+    const double distance = (x.point - r_).norm();
+    if (distance == 0.0) return false;
+    const double relative_concavity = ConcavityAt(concavity_, outer_, x) / options_.concavity_unit;
+    double score = (1.0 + options_.score_concavity * relative_concavity) /
+                   (options_.score_distance * distance);
+    int rank = 0;
+    if (!x.on_edge && concavity_.outer[x.index] > options_.tau &&
+        ResolvesBoth(outer_, x.index, r_)) {
+      score *= options_.double_resolve_bonus;
+      rank = options_.double_resolves_first ? 1 : 0;
+    }
+    *candidate = {x, score, rank};
+    return true;
+  }
+
+ private:
+  const Ring2d& outer_;
+  const Concavity2d& concavity_;
+  const ResolveOptions& options_;
+  int ring_id_, index_, n_;
+  const Point2d &a_, &r_, &b_;
+};
+
+// Candidate end points on the outer ring for a cut from vertex `index` of ring `ring_id`,
+// scored by CutScorer: every outer vertex, in ring order, then the hit of r's bisector on an
+// outer edge.
 std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavity2d& concavity,
                                         int ring_id, int index, const ResolveOptions& options) {
-  const Ring2d& ring = RingOf(polygon, ring_id);
-  const int n = static_cast<int>(ring.size());
-  const Point2d& a = ring[Prev(index, n)];
-  const Point2d& r = ring[index];
-  const Point2d& b = ring[Next(index, n)];
+  const CutScorer scorer(polygon, concavity, ring_id, index, options);
   const Ring2d& outer = polygon.outer;
   std::vector<Candidate> candidates;
   candidates.reserve(outer.size() + 1);
-  auto add = [&](const Endpoint& x) {
-    if (!InCone(a, r, b, x.point)) return;
-    const double distance = (x.point - r).norm();
-    if (distance == 0.0) return;
-    const double relative_concavity = ConcavityAt(concavity, outer, x) / options.concavity_unit;
-    double score =
-        (1.0 + options.score_concavity * relative_concavity) / (options.score_distance * distance);
-    int rank = 0;
-    if (!x.on_edge && concavity.outer[x.index] > options.tau && ResolvesBoth(outer, x.index, r)) {
-      score *= options.double_resolve_bonus;
-      rank = options.double_resolves_first ? 1 : 0;
-    }
-    candidates.push_back({x, score, rank});
-  };
+  Candidate candidate;
   const int m = static_cast<int>(outer.size());
   for (int i = 0; i < m; ++i) {
-    if (ring_id < 0 && (i == index || i == Prev(index, n) || i == Next(index, n))) continue;
-    add({-1, i, false, outer[i]});
+    if (!scorer.Skips(i) && scorer.Score({-1, i, false, outer[i]}, &candidate)) {
+      candidates.push_back(candidate);
+    }
   }
   // The bisector's hit always resolves the notch and always sees it, so it stays in the list
   // as a last resort even without Steiner cuts: no vertex may lie in the resolving cone.
   if (const std::optional<Endpoint> hit = BisectorHit(polygon, ring_id, index);
-      hit && hit->ring < 0 && hit->on_edge) {
-    add(*hit);
-    if (!options.steiner_cuts) candidates.back().score = -1.0;
+      hit && hit->ring < 0 && hit->on_edge && scorer.Score(*hit, &candidate)) {
+    if (!options.steiner_cuts) candidate.score = -1.0;
+    candidates.push_back(candidate);
   }
   return candidates;
 }
 
-// Calls `accept` on the candidates from best to worst score until it returns true; returns the
-// accepted candidate. A heap, since the first few candidates usually suffice.
-template <typename Accept>
-std::optional<Endpoint> FirstAccepted(std::vector<Candidate> candidates, Accept accept) {
-  auto worse = [](const Candidate& x, const Candidate& y) {
-    return x.rank < y.rank || (x.rank == y.rank && x.score < y.score);
+bool Worse(const Candidate& x, const Candidate& y) {
+  return x.rank < y.rank || (x.rank == y.rank && x.score < y.score);
+}
+
+// Whether IsNotch(p, v, q) holds clearly: the turn is clockwise by more than twice
+// IsNotchInline()'s noise band, counting the rounding of this cheaper form (no exact
+// predicate, no square root), so that IsNotchInline() agrees whenever this says yes.
+bool ClearlyNotch(const Point2d& p, const Point2d& v, const Point2d& q) {
+  const Point2d in = v - p, out = q - v;
+  const double left = in.x() * out.y(), right = in.y() * out.x();
+  const double turn = right - left;  // > 0: clockwise.
+  if (!(turn > 0.0)) return false;
+  constexpr double kRoundingNoise = 1e-13;  // IsNotchInline()'s.
+  const double magnitude = std::max({std::abs(p.x()), std::abs(p.y()), std::abs(v.x()),
+                                     std::abs(v.y()), std::abs(q.x()), std::abs(q.y()), 1.0});
+  const double chord_l1 = std::abs(q.x() - p.x()) + std::abs(q.y() - p.y());  // >= |chord|.
+  return turn - 1e-15 * (std::abs(left) + std::abs(right)) >
+         2.0 * kRoundingNoise * magnitude * chord_l1;
+}
+
+// Whether x is clearly outside the cone that resolves notch v between a and b: !InCone().
+bool SurelyOutsideCone(const Point2d& a, const Point2d& v, const Point2d& b, const Point2d& x) {
+  return ClearlyNotch(a, v, x) || ClearlyNotch(x, v, b);
+}
+
+// The best of ScoredCandidates() and whether another candidate ties with it, without listing
+// them. A vertex x scores at most (1 + s_c concavity(x) / unit) * bonus / (s_d dist(r, x)) (the
+// bonus only if concavity(x) > tau), so once some candidate scores f, every vertex whose bound
+// is below f is skipped on its distance alone; a point on an edge is bounded with the largest
+// concavity. A first pass picks that candidate: the vertex of best score by a plain
+// floating-point cone test, a guess the second pass then scores exactly.
+struct BestCut {
+  std::optional<Candidate> best;
+  bool unique = false;
+};
+BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, int ring_id,
+                      int index, const ResolveOptions& options) {
+  const CutScorer scorer(polygon, concavity, ring_id, index, options);
+  const Ring2d& outer = polygon.outer;
+  const int m = static_cast<int>(outer.size());
+  const Point2d& r = scorer.From();
+  auto cross = [](const Point2d& u, const Point2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+  // 1 + s_c concavity / unit, to within rounding (the bounds below have slack for it).
+  const double per_unit = options.score_concavity / options.concavity_unit;
+  auto relative = [&](double c) { return 1.0 + per_unit * c; };
+  // Pass 1: the guess.
+  const Point2d in = r - scorer.Before(), out = scorer.After() - r;
+  int guess = -1;
+  double guess_value = 0.0;  // (s_d score)^2 without the bonus.
+  for (int i = 0; i < m; ++i) {
+    const Point2d to = outer[i] - r;
+    if (cross(in, to) < 0.0 || cross(out, to) < 0.0 || scorer.Skips(i)) continue;
+    const double d2 = to.squaredNorm();
+    const double f = relative(concavity.outer[i]);
+    if (d2 > 0.0 && f * f > guess_value * d2) {
+      guess = i;
+      guess_value = f * f / d2;
+    }
+  }
+  // Pass 2: every candidate that may reach the floor, the best candidate known so far.
+  constexpr double kSlack = 1.0 + 1e-9;  // Against rounding in the bounds.
+  const double bonus = std::max(1.0, options.double_resolve_bonus);
+  double max_concavity = 0.0;
+  for (const double c : concavity.outer) max_concavity = std::max(max_concavity, c);
+  const double edge_bound = relative(max_concavity) * bonus * kSlack / options.score_distance;
+  Candidate floor;
+  floor.score = -std::numeric_limits<double>::infinity();
+  floor.rank = -1;
+  double floor2 = 0.0;                                     // (s_d floor score)^2.
+  double reach = std::numeric_limits<double>::infinity();  // No point on an edge wins beyond.
+  auto raise_floor = [&](const Candidate& c) {
+    floor = c;
+    if (c.score > 0.0) {
+      floor2 = c.score * options.score_distance * c.score * options.score_distance;
+      reach = edge_bound / c.score;
+    }
   };
+  Candidate candidate;
+  if (guess >= 0 && scorer.Score({-1, guess, false, outer[guess]}, &candidate)) {
+    raise_floor(candidate);
+  }
+  BestCut result;
+  Candidate& best = result.best.emplace();
+  best.score = -std::numeric_limits<double>::infinity();
+  best.rank = -1;
+  int ties = 0;
+  auto consider = [&](const Candidate& c) {
+    if (Worse(best, c)) {
+      best = c;
+      ties = 1;
+      if (Worse(floor, c)) raise_floor(c);
+    } else if (!Worse(c, best)) {
+      ++ties;
+    }
+  };
+  for (int i = 0; i < m; ++i) {
+    // Whether x may rank 1 (a diagonal that must win, ResolveOptions::double_resolves_first).
+    const double c = concavity.outer[i];
+    const bool may_rank = options.double_resolves_first && c > options.tau;
+    if (floor.rank == 1 && !may_rank) continue;
+    if (floor.rank == 1 || !may_rank) {  // Only its score can lift it above the floor.
+      const double d2 = (outer[i] - r).squaredNorm();
+      const double f = relative(c) * (c > options.tau ? bonus : 1.0) * kSlack;
+      if (f * f < floor2 * d2) continue;
+    }
+    if (SurelyOutsideCone(scorer.Before(), r, scorer.After(), outer[i])) continue;
+    if (!scorer.Skips(i) && scorer.Score({-1, i, false, outer[i]}, &candidate)) {
+      consider(candidate);
+    }
+  }
+  // The bisector's hit (see ScoredCandidates()), a point on an edge: rank 0.
+  if (floor.rank < 1) {
+    const std::optional<Endpoint> hit = BisectorHit(polygon, ring_id, index, reach * 1.000001);
+    if (hit && hit->ring < 0 && hit->on_edge && (hit->point - r).norm() <= reach &&
+        scorer.Score(*hit, &candidate)) {
+      if (!options.steiner_cuts) candidate.score = -1.0;
+      consider(candidate);
+    }
+  }
+  if (ties == 0) result.best.reset();
+  result.unique = ties == 1;
+  return result;
+}
+
+// Calls `accept` on the candidates from best to worst score until it returns true; returns the
+// accepted candidate. A heap, since the first few candidates usually suffice. `best_refused`:
+// the best candidate, unique, was already refused.
+template <typename Accept>
+std::optional<Endpoint> FirstAccepted(std::vector<Candidate> candidates, Accept accept,
+                                      bool best_refused = false) {
   // Usually the best candidate is accepted: when it is the only one with the best score, the
   // heap below would pop it first too, so try it before building the heap.
-  const auto best = std::max_element(candidates.begin(), candidates.end(), worse);
-  if (best != candidates.end() &&
-      std::count_if(candidates.begin(), candidates.end(),
-                    [&](const Candidate& c) { return !worse(c, *best); }) == 1 &&
-      accept(best->end)) {
-    return best->end;
+  if (!best_refused) {
+    const auto best = std::max_element(candidates.begin(), candidates.end(), Worse);
+    if (best != candidates.end() &&
+        std::count_if(candidates.begin(), candidates.end(),
+                      [&](const Candidate& c) { return !Worse(c, *best); }) == 1 &&
+        accept(best->end)) {
+      return best->end;
+    }
   }
-  std::make_heap(candidates.begin(), candidates.end(), worse);
+  std::make_heap(candidates.begin(), candidates.end(), Worse);
   for (auto end = candidates.end(); end != candidates.begin(); --end) {
-    std::pop_heap(candidates.begin(), end, worse);
+    std::pop_heap(candidates.begin(), end, Worse);
+    if (best_refused && end == candidates.end()) continue;  // The best, refused already.
     if (accept((end - 1)->end)) return (end - 1)->end;
   }
   return std::nullopt;
+}
+
+// FirstAccepted(ScoredCandidates(...), accept), listing the candidates only when the best one
+// (BestCandidate()) ties with another or is refused.
+template <typename Accept>
+std::optional<Endpoint> FirstAcceptedCut(const Polygon2d& polygon, const Concavity2d& concavity,
+                                         int ring_id, int index, const ResolveOptions& options,
+                                         Accept accept) {
+  const BestCut quick = BestCandidate(polygon, concavity, ring_id, index, options);
+  if (!quick.best) return std::nullopt;
+  if (quick.unique && accept(quick.best->end)) return quick.best->end;
+  return FirstAccepted(ScoredCandidates(polygon, concavity, ring_id, index, options), accept,
+                       quick.unique);
 }
 
 // Outer vertices and closest edge points, nearest first: the fallback ends of a hole's cut.
@@ -355,10 +546,15 @@ void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b,
   origin->reserve(origin->size() + between + 2);
   ring->push_back(a.on_edge ? a.point : outer[a.index]);
   origin->push_back(a.on_edge ? -1 : a.index);
-  for (int k = 0, i = Next(a.index, n); k < between; ++k, i = Next(i, n)) {
-    ring->push_back(outer[i]);
-    origin->push_back(i);
-  }
+  // The vertices between, in at most two runs of the outer ring.
+  const int first = Next(a.index, n);
+  const int run = std::min(between, n - first);
+  ring->insert(ring->end(), outer.begin() + first, outer.begin() + first + run);
+  ring->insert(ring->end(), outer.begin(), outer.begin() + (between - run));
+  const size_t from = origin->size();
+  origin->resize(from + between);
+  std::iota(origin->begin() + from, origin->begin() + from + run, first);
+  std::iota(origin->begin() + from + run, origin->end(), 0);
   ring->push_back(b.on_edge ? b.point : outer[b.index]);
   origin->push_back(b.on_edge ? -1 : b.index);
 }
@@ -397,8 +593,8 @@ bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeQuery& grid,
                        Resolution* resolution) {
   const Endpoint from{-1, r, false, polygon.outer[r]};
   const std::optional<Endpoint> to =
-      FirstAccepted(ScoredCandidates(polygon, concavity, -1, r, options),
-                    [&](const Endpoint& x) { return IsClearCut(polygon, grid, from, x); });
+      FirstAcceptedCut(polygon, concavity, -1, r, options,
+                       [&](const Endpoint& x) { return IsClearCut(polygon, grid, from, x); });
   if (!to) return false;
   resolution->pieces = {};
   resolution->origin = {};
@@ -424,8 +620,7 @@ std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const EdgeQuery& 
   auto clear = [&](const Endpoint& e) { return IsClearCut(polygon, grid, from, e); };
   ResolveOptions closest = options;
   closest.score_concavity = 0.0;
-  std::optional<Endpoint> x =
-      FirstAccepted(ScoredCandidates(polygon, concavity, h, a, closest), clear);
+  std::optional<Endpoint> x = FirstAcceptedCut(polygon, concavity, h, a, closest, clear);
   if (!x) x = FirstAccepted(NearestCandidates(polygon, from.point), clear);
   return x;
 }
@@ -443,7 +638,7 @@ std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const EdgeQuery&
            IsClearCut(polygon, grid, from, y);
   };
   std::optional<Endpoint> y;
-  if (thorough) y = FirstAccepted(ScoredCandidates(polygon, concavity, h, b, options), compatible);
+  if (thorough) y = FirstAcceptedCut(polygon, concavity, h, b, options, compatible);
   if (y) return y;
   std::vector<Candidate> nearest = NearestCandidates(polygon, from.point);
   if (!thorough && nearest.size() > 8) {

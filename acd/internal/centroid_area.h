@@ -1,0 +1,13 @@
+#pragma once
+// Centroid() and Area() of a polygon in one pass over its rings. Internal: the 2D ACD records
+// each component's area for its statistics while it computes the centroid.
+
+#include "acd/polygon2d.h"
+
+namespace acdplan::acd::internal {
+
+/// Centroid(polygon), and Area(polygon) into `*area`: the same values, each ring's signed area
+/// computed once. Requires Area(polygon) > 0.
+Point2d CentroidAndArea(const Polygon2d& polygon, double* area);
+
+}  // namespace acdplan::acd::internal
