@@ -16,6 +16,10 @@ struct Decompose3dOptions {
   /// volume until at most this many components remain (a cap for physics engines; the merged
   /// components may then exceed tau). 0 = no cap.
   int max_hulls = 0;
+  /// Solid ACD: also try the plane of the global cut (feature grouping, Sec. V.B.2: knots,
+  /// pocket cuts and the lightest cycle through the most concave vertex) when resolving a
+  /// piece; the cheap score still picks among it and the planes through the witness.
+  bool feature_grouping = true;
 };
 
 /// Splits every part of `prepared` into components whose concavity is at most `options.tau`,

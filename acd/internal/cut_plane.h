@@ -10,6 +10,8 @@
 namespace acdplan::acd::internal {
 
 /// Candidate cut planes through the witness of `concavity`, best first. Candidates:
+///  - with `feature_grouping`, the plane best fitting the global cut (FindGlobalCut(),
+///    Sec. V.B.2-3), and the plane parallel to it through the witness;
 ///  - the planes of the faces at the witness (extending a notch's walls, as the 2D Resolve
 ///    extends an edge of the notch);
 ///  - the three axis-aligned planes through the witness;
@@ -23,6 +25,6 @@ namespace acdplan::acd::internal {
 /// then by the sum of the two hulls' volumes, then by the order above. Planes that leave a
 /// side without a vertex strictly on it are dropped. O(C V log V) for C candidates.
 std::vector<Plane3d> RankCutPlanes(const TriangleMesh& mesh, const SolidConcavity& concavity,
-                                   double tau);
+                                   double tau, bool feature_grouping = true);
 
 }  // namespace acdplan::acd::internal
