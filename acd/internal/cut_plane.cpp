@@ -15,8 +15,9 @@
 namespace acdplan::acd::internal {
 namespace {
 
-// The lightest global cuts whose planes are tried.
-constexpr int kGlobalCuts = 3;
+// The lightest global cuts whose planes are tried (3 gave fewer parts on some meshes but many
+// more on others, plaque and torus1 at tau_rel 0.02: docs/bench/acd3d_solid.md).
+constexpr int kGlobalCuts = 1;
 
 // The candidate planes, each listed once.
 struct Candidates {

@@ -16,6 +16,6 @@ namespace acdplan::acd::internal {
 /// never appear); merged components may exceed tau. `feature_grouping`: RankCutPlanes() also
 /// tries the global cut's plane (Decompose3dOptions::feature_grouping).
 Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max_hulls = 0,
-                               bool feature_grouping = true);
+                               bool feature_grouping = false);
 
 }  // namespace acdplan::acd::internal

@@ -125,6 +125,23 @@ TEST(FeatureGrouping, ConvexAndCavityPiecesHaveNoGlobalCut) {
   EXPECT_FALSE(FindGlobalCut(box, c, 0.1).found);
 }
 
+TEST(FeatureGrouping, LighterCutsComeFirst) {
+  const TriangleMesh torus = Torus(2.0, 1.0, 24, 12);
+  const SolidConcavity c = MeasureSolidConcavity(torus, 0.2);
+  FeatureGroupingOptions options;
+  options.max_cuts = 3;
+  const std::vector<GlobalCut> cuts = FindGlobalCuts(torus, c, 0.2, options);
+  ASSERT_GE(cuts.size(), 2u);
+  EXPECT_LE(cuts.size(), 3u);
+  const GlobalCut best = FindGlobalCut(torus, c, 0.2);
+  EXPECT_EQ(cuts[0].cycle, best.cycle);
+  for (size_t i = 1; i < cuts.size(); ++i) {
+    EXPECT_LE(cuts[i - 1].weight, cuts[i].weight);
+    EXPECT_FALSE(cuts[i].plane.normal == cuts[i - 1].plane.normal &&
+                 cuts[i].plane.offset == cuts[i - 1].plane.offset);
+  }
+}
+
 TEST(FeatureGrouping, SameInputSameCut) {
   const TriangleMesh torus = Torus(2.0, 1.0, 16, 8);
   const SolidConcavity c = MeasureSolidConcavity(torus, 0.3);
