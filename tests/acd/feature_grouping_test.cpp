@@ -111,6 +111,11 @@ TEST(FeatureGrouping, GlobalCutOfATorusCutsTheTube) {
   const SolidConcavity c = MeasureSolidConcavity(torus, 0.2);
   const GlobalCut cut = FindGlobalCut(torus, c, 0.2);
   ASSERT_TRUE(cut.found);
+  // The rims lie in the caps (concavity 0): no knot, the witness is not one (Fig. 42's cup),
+  // and the cut is forced through it from the rims' start and far points.
+  EXPECT_TRUE(cut.cup);
+  EXPECT_EQ(cut.knots.size(), 4u);
+  ASSERT_GE(cut.root_cut_length, 3);
   EXPECT_LT(std::abs(cut.plane.normal.z()), 0.2);
   EXPECT_LT(std::abs(cut.plane.offset), 0.3);
 }
