@@ -30,9 +30,9 @@ Decomposition3d Decompose3d(const PreparedMesh& prepared, const Decompose3dOptio
   ValidateOptions(options, prepared);
   const Stopwatch watch;
   const bool surface = options.surface || !prepared.solid();
-  Decomposition3d out = surface
-                            ? internal::DecomposeSurface(prepared, options.tau)
-                            : internal::DecomposeSolid(prepared, options.tau, options.max_hulls);
+  Decomposition3d out = surface ? internal::DecomposeSurface(prepared, options.tau)
+                                : internal::DecomposeSolid(prepared, options.tau, options.max_hulls,
+                                                           options.feature_grouping);
   out.tau = options.tau;
   out.max_hulls = options.max_hulls;
   out.stats.surface = surface;

@@ -156,6 +156,7 @@ std::string OursWork(const BenchMesh& mesh, bool solid, double tau,
   acd::Decompose3dOptions decompose;
   decompose.tau = tau;
   decompose.surface = !solid;
+  decompose.feature_grouping = options.feature_grouping;
   auto timed = TimeRuns([&] { return acd::Decompose3d(prepared, decompose); }, options.repeats,
                         options.cell_budget_ms, 1);
   const acd::Decomposition3d& result = timed.result;
@@ -411,7 +412,7 @@ std::string Acd3dBenchMarkdown(const Acd3dBenchResult& result, const Acd3dBenchO
          "on meshes that are solid, or solid after PrepareMesh's repair; surface ACD on the "
          "others"
       << (options.surface_on_solids ? " and on the solids too" : ", and on repairable ones too")
-      << ")";
+      << (options.feature_grouping ? "; solid ACD with feature grouping" : "") << ")";
   if (result.vhacd) {
     out << " and V-HACD v4.1 (defaults: <= 64 hulls, 400,000 voxels; synchronous, one thread) on "
            "the mesh as read";

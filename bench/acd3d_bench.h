@@ -32,6 +32,9 @@ struct Acd3dBenchOptions {
   double cell_timeout_s = 120;     ///< A cell's child process is killed after this long [s].
   std::string data_dir = "data/meshes/vhacd";
   bool check = false;  ///< Run CheckDecomposition3d on our decompositions (untimed).
+  /// Decompose3dOptions::feature_grouping for the solid ACD (the global cut's plane among the
+  /// candidates), for before / after comparisons.
+  bool feature_grouping = false;
 };
 
 /// One line of the table (and one object of the JSON list).

@@ -73,6 +73,8 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   app.add_flag("--surface-on-solids", options.surface_on_solids,
                "Also run the surface ACD on meshes that are solid");
+  app.add_flag("--feature-grouping", options.feature_grouping,
+               "Solid ACD: also try the global cut's plane (feature grouping, Sec. V.B.2)");
   app.add_option("--repeats", options.repeats, "Timed runs per cell (median)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));

@@ -9,29 +9,43 @@
 #include <utility>
 
 #include "acd/internal/canonical_hull.h"
+#include "acd/internal/feature_grouping.h"
 #include "acd/mesh_measures.h"
 
 namespace acdplan::acd::internal {
 namespace {
 
-// Adds the plane through `point` with normal `normal` unless it is (nearly) one already listed.
-void AddCandidate(const Eigen::Vector3d& normal, const Eigen::Vector3d& point,
-                  std::vector<Plane3d>* out) {
-  const double len = normal.norm();
-  if (!(len > 1e-12)) return;
-  Eigen::Vector3d n = normal / len;
-  // One sign per direction, so a plane and its opposite are one candidate.
-  for (int k = 0; k < 3; ++k) {
-    if (std::abs(n(k)) > 1e-12) {
-      if (n(k) < 0) n = -n;
-      break;
+// The lightest global cuts whose planes are tried (3 gave fewer parts on some meshes but many
+// more on others, plaque and torus1 at tau_rel 0.02: docs/bench/acd3d_solid.md).
+constexpr int kGlobalCuts = 1;
+
+// The candidate planes, each listed once.
+struct Candidates {
+  std::vector<Plane3d> planes;
+  std::vector<char> through_witness;
+  // Adds the plane through `point` with normal `normal` unless it is (nearly) one already
+  // listed: parallel, and both through the witness or within `tol` [units] of each other.
+  void Add(const Eigen::Vector3d& normal, const Eigen::Vector3d& point, bool at_witness,
+           double tol) {
+    const double len = normal.norm();
+    if (!(len > 1e-12)) return;
+    Eigen::Vector3d n = normal / len;
+    // One sign per direction, so a plane and its opposite are one candidate.
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(n(k)) > 1e-12) {
+        if (n(k) < 0) n = -n;
+        break;
+      }
     }
+    const double offset = n.dot(point);
+    for (size_t i = 0; i < planes.size(); ++i) {
+      if (std::abs(planes[i].normal.dot(n)) <= 1 - 1e-6) continue;
+      if ((at_witness && through_witness[i]) || std::abs(planes[i].offset - offset) <= tol) return;
+    }
+    planes.push_back({n, offset});
+    through_witness.push_back(at_witness);
   }
-  for (const Plane3d& p : *out) {
-    if (std::abs(p.normal.dot(n)) > 1 - 1e-6) return;
-  }
-  out->push_back({n, n.dot(point)});
-}
+};
 
 struct SideScore {
   bool valid = false;
@@ -117,9 +131,14 @@ SideScore ScoreSide(const TriangleMesh& mesh, const Eigen::VectorXd& s, int sign
 }  // namespace
 
 std::vector<Plane3d> RankCutPlanes(const TriangleMesh& mesh, const SolidConcavity& concavity,
-                                   double tau) {
+                                   double tau, bool feature_grouping) {
   const Eigen::Vector3d w = concavity.witness;
-  std::vector<Plane3d> candidates;
+  const double scale = BoundingBox(mesh).diagonal().norm();
+  const double tol = 1e-9 * scale;
+  // Two planes are one candidate when parallel and this close (the planes through the witness
+  // all share a point, so for them only the direction tells them apart).
+  const double same = tau > 0 ? 1e-3 * tau : 1e-6 * scale;
+  Candidates listed;
   std::vector<Eigen::Vector3d> pca, bisectors;
   // The pocket's principal planes (Eq. 5.3: the least-squares plane is the smallest one).
   if (!concavity.pocket_faces.empty()) {
@@ -152,7 +171,7 @@ std::vector<Plane3d> RankCutPlanes(const TriangleMesh& mesh, const SolidConcavit
     for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
       for (int k = 0; k < 3; ++k) {
         if (mesh.triangles(f, k) != concavity.witness_vertex) continue;
-        AddCandidate(face_normal(static_cast<int>(f)), w, &candidates);
+        listed.Add(face_normal(static_cast<int>(f)), w, true, same);
         for (int other : {mesh.triangles(f, (k + 1) % 3), mesh.triangles(f, (k + 2) % 3)}) {
           edges[{std::min(other, concavity.witness_vertex),
                  std::max(other, concavity.witness_vertex)}]
@@ -168,15 +187,22 @@ std::vector<Plane3d> RankCutPlanes(const TriangleMesh& mesh, const SolidConcavit
       bisectors.push_back(n1 + n2);
     }
   } else if (concavity.witness_face >= 0) {
-    AddCandidate(face_normal(concavity.witness_face), w, &candidates);
+    listed.Add(face_normal(concavity.witness_face), w, true, same);
   }
   // On ties the first listed wins: a notch's own walls extended, then the axes, then the fits.
-  for (int k = 0; k < 3; ++k) AddCandidate(Eigen::Vector3d::Unit(k), w, &candidates);
-  for (const auto& n : pca) AddCandidate(n, w, &candidates);
-  for (const auto& n : bisectors) AddCandidate(n, w, &candidates);
+  if (feature_grouping) {
+    FeatureGroupingOptions grouping;
+    grouping.max_cuts = kGlobalCuts;
+    for (const GlobalCut& cut : FindGlobalCuts(mesh, concavity, tau, grouping)) {
+      listed.Add(cut.plane.normal, cut.plane.offset * cut.plane.normal, false, same);
+      listed.Add(cut.plane.normal, w, true, same);
+    }
+  }
+  for (int k = 0; k < 3; ++k) listed.Add(Eigen::Vector3d::Unit(k), w, true, same);
+  for (const auto& n : pca) listed.Add(n, w, true, same);
+  for (const auto& n : bisectors) listed.Add(n, w, true, same);
+  const std::vector<Plane3d>& candidates = listed.planes;
 
-  const double scale = BoundingBox(mesh).diagonal().norm();
-  const double tol = 1e-9 * scale;
   const double bin = tau > 0 ? tau / 4 : scale * 1e-3;
   const double volume_unit = std::max(1e-9 * concavity.hull_volume, 1e-300);
   std::vector<std::tuple<long long, long long, int>> keys;

@@ -12,6 +12,11 @@ namespace acdplan::acd::internal {
 /// Candidate cut planes through the witness of `concavity`, best first. Candidates:
 ///  - the planes of the faces at the witness (extending a notch's walls, as the 2D Resolve
 ///    extends an edge of the notch);
+///  - with `feature_grouping`, the plane best fitting the global cut (FindGlobalCut(),
+///    Sec. V.B.2-3), and the plane parallel to it through the witness. After the walls, so
+///    that they win ties: on a coarse block the edge-graph cycle crosses big faces on their
+///    diagonals (an L-block's would cut it on the diagonal, an opening of area sqrt(2) where
+///    its wall extended gives 1, both convex);
 ///  - the three axis-aligned planes through the witness;
 ///  - the principal planes of the witness's pocket (the PCA fit of Eq. 5.3 and the two
 ///    planes across it, which cut a pocket's walls or a handle open, Sec. V.C);
@@ -23,6 +28,6 @@ namespace acdplan::acd::internal {
 /// then by the sum of the two hulls' volumes, then by the order above. Planes that leave a
 /// side without a vertex strictly on it are dropped. O(C V log V) for C candidates.
 std::vector<Plane3d> RankCutPlanes(const TriangleMesh& mesh, const SolidConcavity& concavity,
-                                   double tau);
+                                   double tau, bool feature_grouping = false);
 
 }  // namespace acdplan::acd::internal

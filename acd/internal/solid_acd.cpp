@@ -110,7 +110,7 @@ std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane) {
 // Algorithm 1 on part `source`: pieces wait in a max-heap by concavity (ties: creation order),
 // the most concave is resolved by one plane cut, its pieces are measured and pushed.
 void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_internal,
-                   Decomposition3d* out, std::map<int, Component3d>* leaves,
+                   bool feature_grouping, Decomposition3d* out, std::map<int, Component3d>* leaves,
                    std::map<int, Component3d>* internal_nodes) {
   std::vector<Piece> pieces;
   auto add_node = [&](Piece piece, int parent) {
@@ -160,7 +160,8 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
       // self-intersects once its cut points are rounded, where a plane beside it does not.
       std::vector<ExactPiece> fallback;
       Plane3d fallback_plane;
-      const std::vector<Plane3d> ranked = RankCutPlanes(piece.mesh, piece.concavity, tau);
+      const std::vector<Plane3d> ranked =
+          RankCutPlanes(piece.mesh, piece.concavity, tau, feature_grouping);
       std::vector<Plane3d> candidates = ranked;
       for (const double shift : {kPlaneShift * tau, -kPlaneShift * tau}) {
         for (Plane3d plane : ranked) {
@@ -276,14 +277,15 @@ void CapHulls(int max_hulls, Decomposition3d* out, std::map<int, Component3d>* l
 
 }  // namespace
 
-Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max_hulls) {
+Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max_hulls,
+                               bool feature_grouping) {
   Decomposition3d out;
   out.tau = tau;
   out.max_hulls = max_hulls;
   std::map<int, Component3d> leaves, internal_nodes;  // by tree node
   for (size_t p = 0; p < prepared.parts.size(); ++p) {
-    DecomposePart(prepared.parts[p], static_cast<int>(p), tau, max_hulls > 0, &out, &leaves,
-                  &internal_nodes);
+    DecomposePart(prepared.parts[p], static_cast<int>(p), tau, max_hulls > 0, feature_grouping,
+                  &out, &leaves, &internal_nodes);
   }
   if (max_hulls > 0) CapHulls(max_hulls, &out, &leaves, &internal_nodes);
   // Number the leaves in depth-first order of the tree.

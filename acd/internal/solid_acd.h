@@ -13,7 +13,9 @@ namespace acdplan::acd::internal {
 /// `max_hulls` > 0 caps the components (Decompose3dOptions::max_hulls): the hierarchy is
 /// collapsed back up, the node whose piece's hull adds the least volume over its children's
 /// first, so a merged component is an exact piece of the decomposition (its own cut's caps
-/// never appear); merged components may exceed tau.
-Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max_hulls = 0);
+/// never appear); merged components may exceed tau. `feature_grouping`: RankCutPlanes() also
+/// tries the global cut's plane (Decompose3dOptions::feature_grouping).
+Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max_hulls = 0,
+                               bool feature_grouping = false);
 
 }  // namespace acdplan::acd::internal

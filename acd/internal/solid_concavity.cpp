@@ -126,7 +126,12 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
       pockets[find(static_cast<int>(f))].push_back(static_cast<int>(f));
   }
   const double spacing = tau > 0 ? tau : scale / 8;
+  out.face_pocket.assign(static_cast<size_t>(nf), -1);
+  out.vertex_concavity.assign(static_cast<size_t>(n), 0.0);
+  int pocket_id = -1;
   for (const auto& [root, faces] : pockets) {
+    ++pocket_id;
+    for (int f : faces) out.face_pocket[static_cast<size_t>(f)] = pocket_id;
     // Border vertices and the bridge planes they span.
     std::map<int, std::vector<Eigen::Vector3d>> in_plane;
     std::vector<int> verts;
@@ -185,9 +190,11 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
       return std::max(facing < 1e300 ? facing : any, 0.0);
     };
     const std::vector<int>& pocket = faces;  // C++17 lambdas cannot capture a structured binding.
+    const int id = pocket_id;
     auto consider = [&](const Eigen::Vector3d& p, double d, int vertex, int face) {
       if (d > out.value) {
         out.value = d;
+        out.witness_pocket = id;
         out.witness = p;
         out.witness_vertex = vertex;
         out.witness_face = face;
@@ -211,7 +218,10 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
     }
     for (int v : verts) {
       const Eigen::Vector3d& p = points[static_cast<size_t>(v)];
-      consider(p, measure(p, vertex_normal[v]), v, vertex_face[v]);
+      const double d = measure(p, vertex_normal[v]);
+      double& stored = out.vertex_concavity[static_cast<size_t>(v)];
+      stored = std::max(stored, d);
+      consider(p, d, v, vertex_face[v]);
     }
     for (size_t fi = 0; fi < faces.size(); ++fi) {
       const int f = faces[fi];
@@ -237,6 +247,7 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
     out.value = 0.0;
     out.witness_vertex = -1;
     out.witness_face = -1;
+    out.witness_pocket = -1;
     out.pocket_faces.clear();
   }
   return out;

@@ -16,7 +16,13 @@ struct SolidConcavity {
   int witness_vertex = -1;                            ///< Its vertex, or -1 when a face sample won.
   int witness_face = -1;          ///< A pocket face at the witness (-1 if convex).
   std::vector<int> pocket_faces;  ///< The faces of the witness's pocket.
-  TriangleMesh hull;              ///< The convex hull of the piece.
+  int witness_pocket = -1;        ///< The witness's pocket: an index into the ids below.
+  /// Per face: its pocket (0, 1, ... in order of their smallest face), or -1 on the hull.
+  std::vector<int> face_pocket;
+  /// Per vertex: its measured depth [units], the largest over the pockets it borders; 0 for a
+  /// vertex of hull faces only. Feature grouping reads pocket borders in this space (Eq. 5.1).
+  std::vector<double> vertex_concavity;
+  TriangleMesh hull;  ///< The convex hull of the piece.
   double hull_volume = 0.0;
 };
 

@@ -169,6 +169,34 @@ TEST(Decompose3d, MaxHullsMergesAlongTheTree) {
   EXPECT_GE(capped.stats.hull_volume, full.stats.hull_volume * (1 - 1e-9));
 }
 
+TEST(Decompose3d, FeatureGroupingKeepsTheKnownAnswers) {
+  // The global cut's plane joins the candidates; the blocks still split into their boxes (the
+  // walls extended win ties) and every result passes the same checks.
+  auto solve = [](const TriangleMesh& mesh, double tau) {
+    Decompose3dOptions options;
+    options.tau = tau;
+    options.feature_grouping = true;
+    return Decompose3d(PreparedSolid(mesh), options);
+  };
+  const TriangleMesh l = LBlock(), u = UBlock(), torus = Torus(2.0, 1.0, 16, 8);
+  const Decomposition3d dl = solve(l, 0.05), du = solve(u, 0.05), dt = solve(torus, 0.3);
+  ExpectValid(l, dl);
+  ASSERT_EQ(dl.components.size(), 2u);
+  ASSERT_EQ(dl.openings.size(), 1u);
+  EXPECT_NEAR(dl.openings[0].area, 1.0, 1e-9);
+  ExpectValid(u, du);
+  EXPECT_EQ(du.components.size(), 3u);
+  ExpectValid(torus, dt);
+  EXPECT_GE(dt.components.size(), 2u);
+  for (const Component3d& c : dt.components) EXPECT_EQ(EulerCharacteristic(c.mesh), 2);
+  // Deterministic like the default.
+  const Decomposition3d again = solve(torus, 0.3);
+  ASSERT_EQ(again.components.size(), dt.components.size());
+  for (size_t i = 0; i < dt.components.size(); ++i) {
+    EXPECT_TRUE(again.components[i].mesh.vertices == dt.components[i].mesh.vertices);
+  }
+}
+
 TEST(Decompose3d, RejectsBadOptions) {
   const PreparedMesh cube = PreparedSolid(Cube(1.0));
   Decompose3dOptions options;
