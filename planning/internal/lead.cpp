@@ -131,20 +131,19 @@ LeadLevels::LeadLevels(const Lead& lead, const std::vector<LeadEdge>& openings,
     if (usable_opening[o]) levels_[2].push_back({static_cast<int>(o), true});
   }
   for (int level = 0; level < 3; ++level) {
-    double total = 0;
-    int opening_count = 0;
+    double total = 0, opening_total = 0;
     for (const LeadPart& part : levels_[level]) {
       if (part.opening) {
-        ++opening_count;
+        opening_total += openings[part.index].weight;
       } else {
         total += component_length[part.index];
       }
     }
-    const double share = opening_count == 0 ? 0.0 : total > 0 ? options.opening_share : 1.0;
+    const double share = !(opening_total > 0) ? 0.0 : total > 0 ? options.opening_share : 1.0;
     double sum = 0;
     for (const LeadPart& part : levels_[level]) {
-      sum +=
-          part.opening ? share / opening_count : (1 - share) * component_length[part.index] / total;
+      sum += part.opening ? share * openings[part.index].weight / opening_total
+                          : (1 - share) * component_length[part.index] / total;
       cumulative_[level].push_back(sum);
     }
   }

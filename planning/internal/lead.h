@@ -27,6 +27,9 @@ struct Lead {
 struct LeadEdge {
   int a = -1, b = -1;  ///< Component indices (out of range: the edge is ignored).
   double cost = 0.0;   ///< Length of the way through the opening, narrowness penalty included.
+  /// Its weight among a level's openings (LeadLevels): 1 in 2D (spread evenly), the
+  /// narrowness in 3D; > 0.
+  double weight = 1.0;
 };
 
 /// Dijkstra's shortest chain from `from` to `to` in the graph of `components` nodes whose
@@ -57,7 +60,8 @@ struct LeadPart {
 /// schedule (AcdLeadOptions), for a 2D or a 3D decomposition: level 0 the lead's components
 /// and openings, level 1 adds the components adjacent to the lead and the openings to them,
 /// level 2 every component and opening. Weights: `opening_share` of a level's draws spread
-/// evenly over its openings, the rest over its components by `component_length`.
+/// over its openings by their LeadEdge::weight, the rest over its components by
+/// `component_length`.
 class LeadLevels {
  public:
   LeadLevels() = default;

@@ -38,13 +38,21 @@ int LocateComponent3d(const envs::FreeSpaceDecomposition3d& decomposition,
 Lead FindLead3d(const envs::FreeSpaceDecomposition3d& decomposition, int from, int to,
                 double robot_width, double narrow_penalty) {
   const int n = static_cast<int>(decomposition.components.size());
+  // A component thinner than the robot (a sliver the ACD cut beside a passage) cannot hold it
+  // on the way through either: the ways into it pay the penalty too.
+  std::vector<bool> thin(decomposition.components.size(), false);
+  if (robot_width > 0) {
+    for (size_t c = 0; c < thin.size(); ++c) {
+      thin[c] = RobotWidth3d(decomposition.components[c].hull.vertices) < robot_width;
+    }
+  }
   std::vector<LeadEdge> edges;
   for (const envs::FreeOpening3d& opening : decomposition.openings) {
     LeadEdge edge{opening.component_a, opening.component_b, 0.0};
     if (edge.a >= 0 && edge.b >= 0 && edge.a < n && edge.b < n) {
       edge.cost = (decomposition.components[edge.a].centroid - opening.centroid).norm() +
                   (opening.centroid - decomposition.components[edge.b].centroid).norm();
-      if (opening.width < robot_width) edge.cost *= narrow_penalty;
+      if (opening.width < robot_width || thin[edge.a] || thin[edge.b]) edge.cost *= narrow_penalty;
     }
     edges.push_back(edge);
   }
@@ -64,10 +72,14 @@ bool HullSampler3d::Contains(const Eigen::Vector3d& p) const {
 }
 
 Eigen::Vector3d HullSampler3d::Sample(RandomEngine& rng) const {
+  return Sample([&rng] { return UniformReal(rng, 0.0, 1.0); });
+}
+
+Eigen::Vector3d HullSampler3d::Sample(const std::function<double()>& unit) const {
   if (box_.isEmpty()) return centroid_;
   for (int attempt = 0; attempt < kMaxRejections; ++attempt) {
     Eigen::Vector3d p;
-    for (int k = 0; k < 3; ++k) p[k] = UniformReal(rng, box_.min()[k], box_.max()[k]);
+    for (int k = 0; k < 3; ++k) p[k] = box_.min()[k] + unit() * (box_.max()[k] - box_.min()[k]);
     if (Contains(p)) return p;
   }
   return centroid_;
@@ -95,6 +107,14 @@ LeadDistribution3d::LeadDistribution3d(const envs::FreeSpaceDecomposition3d& dec
     usable_component.push_back(component.volume > 0 && component.planes.rows() > 0);
     size.push_back(std::cbrt(std::max(component.volume, 0.0)));
   }
+  // Narrower openings draw more (AcdTargets3d's law: mean width / width, capped at
+  // max_narrowness): a lead through rooms cut by wide planes puts its draws at the hatches.
+  double total_width = 0;
+  int widths = 0;
+  for (const envs::FreeOpening3d& opening : decomposition.openings) {
+    if (opening.width > 0) total_width += opening.width, ++widths;
+  }
+  const double mean_width = widths > 0 ? total_width / widths : 0.0;
   std::vector<LeadEdge> edges;
   std::vector<Eigen::Vector3d> centroids;
   for (const envs::FreeOpening3d& opening : decomposition.openings) {
@@ -116,7 +136,11 @@ LeadDistribution3d::LeadDistribution3d(const envs::FreeSpaceDecomposition3d& dec
     }
     usable_opening.push_back(opening.width > 0 && sum > 0);
     openings_.push_back(std::move(shape));
-    edges.push_back({opening.component_a, opening.component_b});
+    LeadEdge edge{opening.component_a, opening.component_b};
+    if (opening.width > 0) {
+      edge.weight = std::min(mean_width / opening.width, sampler_options.max_narrowness);
+    }
+    edges.push_back(edge);
     centroids.push_back(opening.centroid);
   }
   levels_ =

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "base/random.h"
@@ -35,7 +36,8 @@ int LocateComponent3d(const envs::FreeSpaceDecomposition3d& decomposition,
 
 /// ShortestLead() in the 3D adjacency graph: an opening joining a and b costs
 /// |centroid(a) - opening centroid| + |opening centroid - centroid(b)|, times `narrow_penalty`
-/// if its narrowest width is below `robot_width`.
+/// if its narrowest width is below `robot_width` or one of its components is thinner than that
+/// (RobotWidth3d() of the component's hull: a sliver the robot cannot be in).
 Lead FindLead3d(const envs::FreeSpaceDecomposition3d& decomposition, int from, int to,
                 double robot_width, double narrow_penalty);
 
@@ -48,6 +50,8 @@ class HullSampler3d {
   explicit HullSampler3d(const envs::FreeComponent3d& component);
   /// After kMaxRejections misses (a sliver hull), the centroid.
   Eigen::Vector3d Sample(RandomEngine& rng) const;
+  /// As Sample(), drawing from `unit` (uniform in [0, 1); e.g. OMPL's RNG in a Decomposition).
+  Eigen::Vector3d Sample(const std::function<double()>& unit) const;
   bool Contains(const Eigen::Vector3d& p) const;
   double volume() const { return volume_; }
 

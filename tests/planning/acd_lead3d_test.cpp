@@ -6,6 +6,7 @@
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
+#include <ompl/util/RandomNumbers.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +18,7 @@
 
 #include "envs/free_space_decomposition3d.h"
 #include "envs/generators3d.h"
+#include "planning/acd_decomposition3d.h"
 #include "planning/acd_lead_sampler3d.h"
 #include "planning/internal/lead3d.h"
 #include "planning/plan_scenario.h"
@@ -218,6 +220,62 @@ TEST_F(Lead3d, WindowWallLeadConnects) {
   const int prm_acd = LeadSolvedSeeds(PlannerType::kPrmAcd);
   std::printf("acd_lead, 150 samples: PRM %d/10, PRM_ACD %d/10\n", prm, prm_acd);
   EXPECT_GE(std::max(prm, prm_acd), 9);
+}
+
+// The 3D ACD as Syclop's regions: the cubicles' components, their volumes and adjacency, the
+// region of a state, and region samples inside their region.
+TEST_F(Lead3d, AcdDecomposition3dRegions) {
+  const Cubicles c = MakeCubicles();
+  auto space = std::make_shared<ob::SE3StateSpace>();
+  ob::RealVectorBounds bounds(3);
+  for (int i = 0; i < 3; ++i) {
+    bounds.setLow(i, c.world.bounds.min()[i]);
+    bounds.setHigh(i, c.world.bounds.max()[i]);
+  }
+  space->setBounds(bounds);
+  AcdDecomposition3d regions(c.acd, bounds, space.get());
+  ASSERT_EQ(regions.getNumRegions(), static_cast<int>(c.acd.components.size()));
+  double volume = 0;
+  for (int r = 0; r < regions.getNumRegions(); ++r) volume += regions.getRegionVolume(r);
+  EXPECT_NEAR(volume, c.acd.free_volume, 1e-6 * c.acd.free_volume);
+
+  // Neighbours are symmetric and are the openings' ends.
+  for (const envs::FreeOpening3d& o : c.acd.openings) {
+    std::vector<int> a, b;
+    regions.getNeighbors(o.component_a, a);
+    regions.getNeighbors(o.component_b, b);
+    EXPECT_TRUE(std::count(a.begin(), a.end(), o.component_b));
+    EXPECT_TRUE(std::count(b.begin(), b.end(), o.component_a));
+  }
+
+  // A state in the bottom room and one in the top room: different regions, those of the lead.
+  ob::ScopedState<ob::SE3StateSpace> state(space);
+  state->setXYZ(kBottom.x(), kBottom.y(), kBottom.z());
+  state->rotation().setIdentity();
+  EXPECT_EQ(regions.locateRegion(state.get()), c.acd.Locate(kBottom));
+  state->setXYZ(kTop.x(), kTop.y(), kTop.z());
+  EXPECT_EQ(regions.locateRegion(state.get()), c.acd.Locate(kTop));
+  EXPECT_NE(c.acd.Locate(kBottom), c.acd.Locate(kTop));
+  state->setXYZ(5, 5, 20);  // Above the world: in no hull.
+  EXPECT_EQ(regions.locateRegion(state.get()), -1);
+
+  // Region samples lie in their region; the full state keeps them.
+  ompl::RNG rng(3);
+  auto sampler = space->allocDefaultStateSampler();
+  std::vector<double> coord;
+  for (int r = 0; r < regions.getNumRegions(); ++r) {
+    for (int i = 0; i < 20; ++i) {
+      regions.sampleFromRegion(r, rng, coord);
+      ASSERT_EQ(coord.size(), 3u);
+      const Eigen::Vector3d p(coord[0], coord[1], coord[2]);
+      EXPECT_TRUE(internal::HullSampler3d(c.acd.components[static_cast<size_t>(r)]).Contains(p))
+          << r;
+      regions.sampleFullState(sampler, coord, state.get());
+      std::vector<double> back;
+      regions.project(state.get(), back);
+      EXPECT_EQ(back, coord);
+    }
+  }
 }
 
 }  // namespace
