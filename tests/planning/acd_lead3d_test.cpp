@@ -105,8 +105,18 @@ TEST_F(Lead3d, ChainUpTheCubiclesPassesEveryHatch) {
   const internal::Lead rod = internal::FindLead3d(c.acd, from, to, 0.3, 100.0);
   ASSERT_TRUE(std::isfinite(rod.cost));
   EXPECT_GE(rod.cost, lead.cost);
-  for (int o : rod.openings) EXPECT_GE(c.acd.openings[static_cast<size_t>(o)].width, 0.3) << o;
-  if (narrowest < 0.3) EXPECT_NE(rod.components, lead.components);
+  for (int o : rod.openings) {
+    EXPECT_GE(c.acd.openings[static_cast<size_t>(o)].width, 0.3) << o;
+  }
+  if (narrowest < 0.3) {
+    EXPECT_NE(rod.components, lead.components);
+  }
+  // Nor through a component thinner than the rod (the 0.17-thick sliver the ACD cuts beside
+  // the first hatch).
+  for (int k : rod.components) {
+    EXPECT_GE(internal::RobotWidth3d(c.acd.components[static_cast<size_t>(k)].hull.vertices), 0.3)
+        << k;
+  }
   // A body wider than every hatch pays the penalty whichever way it goes.
   EXPECT_GT(internal::FindLead3d(c.acd, from, to, 2.0, 100.0).cost, 10 * lead.cost);
 }
