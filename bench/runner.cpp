@@ -21,6 +21,7 @@
 #include "collision/collision_mode.h"
 #include "collision/collision_world.h"
 #include "collision/obstacle_set.h"
+#include "envs/free_space_decomposition3d.h"
 #include "planning/decomposition_cache.h"
 #include "planning/plan_scenario.h"
 
@@ -225,9 +226,16 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
       const BenchRunId id = ids[next++];
       const BenchCase& c = spec.cases[id.case_index];
       const Scenario scenario = RunScenario(spec, c, id.seed);
-      // Decompose each map once, here in the parent: the children inherit the cache.
-      planning::DecomposeFreeSpaceCached(scenario.workspace,
-                                         planning::ScenarioAcdOptions(scenario));
+      // Decompose each map once, here in the parent: the children inherit the cache (2D, in
+      // process) or read it from disk (3D, as PlanScenario3d() decomposes).
+      if (scenario.dimension == 3) {
+        envs::FreeSpaceDecomposition3dOptions acd3d;
+        acd3d.tau = scenario.tau_diag * scenario.workspace3d.bounds.sizes().norm();
+        envs::DecomposeFreeSpace3d(scenario.workspace3d, acd3d);
+      } else {
+        planning::DecomposeFreeSpaceCached(scenario.workspace,
+                                           planning::ScenarioAcdOptions(scenario));
+      }
       const double watchdog = c.budget.samples > 0 ? 600.0 : 10.0 * c.budget.time_limit + 60.0;
       int fds[2];
       if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe(): ") + std::strerror(errno));

@@ -26,9 +26,7 @@ int LocateComponent(const acd::Decomposition2d& decomposition, const Eigen::Vect
   return best;
 }
 
-Lead FindLead(const acd::Decomposition2d& decomposition, int from, int to, double robot_width,
-              double narrow_penalty) {
-  const int n = static_cast<int>(decomposition.components.size());
+Lead ShortestLead(int n, const std::vector<LeadEdge>& openings, int from, int to) {
   if (from < 0 || from >= n || to < 0 || to >= n) {
     throw std::invalid_argument("FindLead(): component index out of range");
   }
@@ -37,16 +35,11 @@ Lead FindLead(const acd::Decomposition2d& decomposition, int from, int to, doubl
     double cost;
   };
   std::vector<std::vector<Edge>> graph(n);
-  for (size_t o = 0; o < decomposition.openings.size(); ++o) {
-    const acd::Opening2d& opening = decomposition.openings[o];
-    const int a = opening.component_a, b = opening.component_b;
+  for (size_t o = 0; o < openings.size(); ++o) {
+    const int a = openings[o].a, b = openings[o].b;
     if (a < 0 || b < 0 || a >= n || b >= n) continue;
-    const Eigen::Vector2d mid = 0.5 * (opening.a + opening.b);
-    double cost = (decomposition.components[a].centroid - mid).norm() +
-                  (mid - decomposition.components[b].centroid).norm();
-    if ((opening.b - opening.a).norm() < robot_width) cost *= narrow_penalty;
-    graph[a].push_back({b, static_cast<int>(o), cost});
-    graph[b].push_back({a, static_cast<int>(o), cost});
+    graph[a].push_back({b, static_cast<int>(o), openings[o].cost});
+    graph[b].push_back({a, static_cast<int>(o), openings[o].cost});
   }
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> distance(n, inf);
@@ -86,6 +79,107 @@ Lead FindLead(const acd::Decomposition2d& decomposition, int from, int to, doubl
   return lead;
 }
 
+Lead FindLead(const acd::Decomposition2d& decomposition, int from, int to, double robot_width,
+              double narrow_penalty) {
+  const int n = static_cast<int>(decomposition.components.size());
+  std::vector<LeadEdge> edges;
+  for (const acd::Opening2d& opening : decomposition.openings) {
+    LeadEdge edge{opening.component_a, opening.component_b, 0.0};
+    if (edge.a >= 0 && edge.b >= 0 && edge.a < n && edge.b < n) {
+      const Eigen::Vector2d mid = 0.5 * (opening.a + opening.b);
+      edge.cost = (decomposition.components[edge.a].centroid - mid).norm() +
+                  (mid - decomposition.components[edge.b].centroid).norm();
+      if ((opening.b - opening.a).norm() < robot_width) edge.cost *= narrow_penalty;
+    }
+    edges.push_back(edge);
+  }
+  return ShortestLead(n, edges, from, to);
+}
+
+LeadLevels::LeadLevels(const Lead& lead, const std::vector<LeadEdge>& openings,
+                       const std::vector<bool>& usable_component,
+                       const std::vector<bool>& usable_opening,
+                       const std::vector<double>& component_length, const AcdLeadOptions& options) {
+  std::set<int> lead_components(lead.components.begin(), lead.components.end());
+  for (int c : lead.components) {
+    if (usable_component[c]) levels_[0].push_back({c, false});
+  }
+  for (int o : lead.openings) {
+    if (usable_opening[o]) levels_[0].push_back({o, true});
+  }
+  levels_[1] = levels_[0];
+  std::set<int> added;
+  for (size_t o = 0; o < openings.size(); ++o) {
+    const bool in_a = lead_components.count(openings[o].a) > 0;
+    const bool in_b = lead_components.count(openings[o].b) > 0;
+    if (!in_a && !in_b) continue;
+    const int oi = static_cast<int>(o);
+    if (std::find(lead.openings.begin(), lead.openings.end(), oi) == lead.openings.end() &&
+        usable_opening[o]) {
+      levels_[1].push_back({oi, true});
+    }
+    const int other = in_a ? openings[o].b : openings[o].a;
+    if (other >= 0 && other < static_cast<int>(usable_component.size()) &&
+        !lead_components.count(other) && added.insert(other).second && usable_component[other]) {
+      levels_[1].push_back({other, false});
+    }
+  }
+  for (size_t c = 0; c < usable_component.size(); ++c) {
+    if (usable_component[c]) levels_[2].push_back({static_cast<int>(c), false});
+  }
+  for (size_t o = 0; o < usable_opening.size(); ++o) {
+    if (usable_opening[o]) levels_[2].push_back({static_cast<int>(o), true});
+  }
+  for (int level = 0; level < 3; ++level) {
+    double total = 0, opening_total = 0;
+    for (const LeadPart& part : levels_[level]) {
+      if (part.opening) {
+        opening_total += openings[part.index].weight;
+      } else {
+        total += component_length[part.index];
+      }
+    }
+    const double share = !(opening_total > 0) ? 0.0 : total > 0 ? options.opening_share : 1.0;
+    double sum = 0;
+    for (const LeadPart& part : levels_[level]) {
+      sum += part.opening ? share * openings[part.index].weight / opening_total
+                          : (1 - share) * component_length[part.index] / total;
+      cumulative_[level].push_back(sum);
+    }
+  }
+  const std::uint64_t parts = levels_[0].size();
+  stage_ = std::max<std::uint64_t>(
+      static_cast<std::uint64_t>(std::max(1, options.min_stage_draws)),
+      static_cast<std::uint64_t>(std::max(1, options.stage_draws_per_part)) * parts);
+}
+
+int LeadLevels::LevelAfter(std::uint64_t draws) const {
+  if (draws < stage_) return 0;
+  if (draws < 3 * stage_) return 1;
+  return 2;
+}
+
+const LeadPart* LeadLevels::Pick(int level, double pick_u) const {
+  level = std::min(std::max(level, 0), 2);
+  const std::vector<LeadPart>& parts = levels_[level];
+  if (parts.empty()) return nullptr;
+  const std::vector<double>& cumulative = cumulative_[level];
+  const double u = std::min(std::max(pick_u, 0.0), 1.0) * cumulative.back();
+  const size_t pick = std::min<size_t>(
+      std::upper_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin(),
+      parts.size() - 1);
+  return &parts[pick];
+}
+
+std::vector<int> LeadLevels::ComponentsAt(int level) const {
+  std::vector<int> out;
+  for (const LeadPart& p : levels_[std::min(std::max(level, 0), 2)]) {
+    if (!p.opening) out.push_back(p.index);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 LeadDistribution::LeadDistribution(const acd::Decomposition2d& decomposition,
                                    const AcdLeadQuery& query,
                                    const AcdSamplerOptions& sampler_options,
@@ -113,97 +207,33 @@ LeadDistribution::LeadDistribution(const acd::Decomposition2d& decomposition,
     openings_.push_back(target);
   }
 
-  // Level 0: the lead. Level 1: + the components adjacent to it and the openings to them.
-  // Level 2: everything. Degenerate parts (no area, zero-length opening) are left out.
-  auto usable_component = [&](int c) { return components_[c].area() > 0; };
-  auto usable_opening = [&](int o) { return openings_[o].sigma > 0; };
-  std::set<int> lead_components(lead_.components.begin(), lead_.components.end());
-  for (int c : lead_.components) {
-    if (usable_component(c)) levels_[0].push_back({c, false});
-  }
-  for (int o : lead_.openings) {
-    if (usable_opening(o)) levels_[0].push_back({o, true});
-  }
-  levels_[1] = levels_[0];
-  std::set<int> added;
-  for (size_t o = 0; o < decomposition.openings.size(); ++o) {
-    const acd::Opening2d& opening = decomposition.openings[o];
-    const bool in_a = lead_components.count(opening.component_a) > 0;
-    const bool in_b = lead_components.count(opening.component_b) > 0;
-    if (!in_a && !in_b) continue;
-    const int oi = static_cast<int>(o);
-    if (std::find(lead_.openings.begin(), lead_.openings.end(), oi) == lead_.openings.end() &&
-        usable_opening(oi)) {
-      levels_[1].push_back({oi, true});
-    }
-    const int other = in_a ? opening.component_b : opening.component_a;
-    if (!lead_components.count(other) && added.insert(other).second && usable_component(other)) {
-      levels_[1].push_back({other, false});
-    }
-  }
-  for (size_t c = 0; c < components_.size(); ++c) {
-    if (usable_component(static_cast<int>(c))) levels_[2].push_back({static_cast<int>(c), false});
+  // The levels and their weights (LeadLevels); degenerate parts (no area, a zero-length
+  // opening) are left out.
+  std::vector<LeadEdge> edges;
+  std::vector<bool> usable_component, usable_opening;
+  std::vector<double> size;
+  std::vector<Eigen::Vector2d> midpoints;
+  for (const ComponentSampler& component : components_) {
+    usable_component.push_back(component.area() > 0);
+    size.push_back(std::sqrt(component.area()));
   }
   for (size_t o = 0; o < openings_.size(); ++o) {
-    if (usable_opening(static_cast<int>(o))) levels_[2].push_back({static_cast<int>(o), true});
+    edges.push_back({decomposition.openings[o].component_a, decomposition.openings[o].component_b});
+    usable_opening.push_back(openings_[o].sigma > 0);
+    midpoints.push_back(openings_[o].position);
   }
-  // Weights: `opening_share` of the targeted draws spread evenly over the level's openings,
-  // the rest over its components by their length along the lead -- the straight distance from
-  // entry to exit (start, goal or opening midpoints; a nearly convex component holds that
-  // segment), at least half sqrt(area), for a lead component; sqrt(area) for the others -- so
-  // samples are spaced about evenly along the way, whether a component is a long thin
-  // corridor or a wide room the lead only cuts across.
-  std::vector<double> length(components_.size());
-  for (size_t c = 0; c < components_.size(); ++c) length[c] = std::sqrt(components_[c].area());
-  for (size_t i = 0; i < lead_.components.size(); ++i) {
-    const int c = lead_.components[i];
-    auto mid = [&](int o) { return openings_[o].position; };
-    const Eigen::Vector2d in = i == 0 ? query.start : mid(lead_.openings[i - 1]);
-    const Eigen::Vector2d out =
-        i + 1 == lead_.components.size() ? query.goal : mid(lead_.openings[i]);
-    length[c] = std::max((in - out).norm(), 0.5 * length[c]);
-  }
-  for (int level = 0; level < 3; ++level) {
-    double total = 0;
-    int openings = 0;
-    for (const Part& part : levels_[level]) {
-      if (part.opening) {
-        ++openings;
-      } else {
-        total += length[part.index];
-      }
-    }
-    const double share = openings == 0 ? 0.0 : total > 0 ? lead_options.opening_share : 1.0;
-    double sum = 0;
-    for (const Part& part : levels_[level]) {
-      sum += part.opening ? share / openings : (1 - share) * length[part.index] / total;
-      cumulative_[level].push_back(sum);
-    }
-  }
-  const std::uint64_t parts = levels_[0].size();
-  stage_ = std::max<std::uint64_t>(
-      static_cast<std::uint64_t>(std::max(1, lead_options.min_stage_draws)),
-      static_cast<std::uint64_t>(std::max(1, lead_options.stage_draws_per_part)) * parts);
-}
-
-int LeadDistribution::LevelAfter(std::uint64_t draws) const {
-  if (draws < stage_) return 0;
-  if (draws < 3 * stage_) return 1;
-  return 2;
+  levels_ =
+      LeadLevels(lead_, edges, usable_component, usable_opening,
+                 LengthsAlongLead(lead_, size, query.start, query.goal, midpoints), lead_options);
 }
 
 AcdDraw LeadDistribution::Draw(RandomEngine& rng, int level, double pick_u, int* part) const {
   level = std::min(std::max(level, 0), 2);
-  const std::vector<Part>& parts = levels_[level];
   const double uniform_share =
       level < 2 ? lead_options_.lead_uniform_share : options_.uniform_share;
-  if (parts.empty() || UniformReal(rng, 0.0, 1.0) < uniform_share) return AcdDraw{};
-  const std::vector<double>& cumulative = cumulative_[level];
-  const double u = std::min(std::max(pick_u, 0.0), 1.0) * cumulative.back();
-  const size_t pick = std::min<size_t>(
-      std::upper_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin(),
-      parts.size() - 1);
-  const Part& chosen = parts[pick];
+  const LeadPart* picked = levels_.Pick(level, pick_u);
+  if (!picked || UniformReal(rng, 0.0, 1.0) < uniform_share) return AcdDraw{};
+  const LeadPart& chosen = *picked;
   AcdDraw draw;
   draw.uniform = false;
   if (!chosen.opening) {
@@ -231,15 +261,6 @@ AcdDraw LeadDistribution::Draw(RandomEngine& rng, int level, double pick_u, int*
   }
   if (part) *part = -1 - chosen.index;
   return draw;
-}
-
-std::vector<int> LeadDistribution::ComponentsAt(int level) const {
-  std::vector<int> out;
-  for (const Part& p : levels_[std::min(std::max(level, 0), 2)]) {
-    if (!p.opening) out.push_back(p.index);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
 }
 
 }  // namespace acdplan::planning::internal

@@ -3,6 +3,7 @@
 // distribution that follows it and widens (private to planning).
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -22,18 +23,86 @@ struct Lead {
   double cost = 0.0;            ///< Sum of the edge costs; infinity if the goal is unreachable.
 };
 
+/// An edge of the component adjacency graph: the opening joining components `a` and `b`.
+struct LeadEdge {
+  int a = -1, b = -1;  ///< Component indices (out of range: the edge is ignored).
+  double cost = 0.0;   ///< Length of the way through the opening, narrowness penalty included.
+  /// Its weight among a level's openings (LeadLevels): 1 in 2D (spread evenly), the
+  /// narrowness in 3D; > 0.
+  double weight = 1.0;
+};
+
+/// Dijkstra's shortest chain from `from` to `to` in the graph of `components` nodes whose
+/// edge i is `openings[i]` (2D and 3D decompositions alike). Ties go to the lower index, so
+/// the lead is deterministic. Unreachable: components {from, to}, no openings, cost infinity.
+/// @throws std::invalid_argument if `from` or `to` is out of range.
+Lead ShortestLead(int components, const std::vector<LeadEdge>& openings, int from, int to);
+
 /// The component holding `p` (exact point location, acd::ComponentLocator2d), or, if none
 /// does (a point on the free space's boundary), the one whose centroid is nearest; -1 only
 /// for an empty decomposition.
 int LocateComponent(const acd::Decomposition2d& decomposition, const Eigen::Vector2d& p);
 
-/// Dijkstra's shortest chain from `from` to `to` in the component adjacency graph. An
-/// opening joining a and b costs |centroid(a) - mid| + |mid - centroid(b)|, times
-/// `narrow_penalty` if it is shorter than `robot_width` (the robot cannot pass it, unless the
-/// cut is oblique to a wider passage: penalised, not removed). Ties go to the lower index, so
-/// the lead is deterministic. Unreachable: components {from, to}, no openings, cost infinity.
+/// ShortestLead() in the component adjacency graph. An opening joining a and b costs
+/// |centroid(a) - mid| + |mid - centroid(b)|, times `narrow_penalty` if it is shorter than
+/// `robot_width` (the robot cannot pass it, unless the cut is oblique to a wider passage:
+/// penalised, not removed).
 Lead FindLead(const acd::Decomposition2d& decomposition, int from, int to, double robot_width,
               double narrow_penalty);
+
+/// A part of the lead distribution: a component or an opening.
+struct LeadPart {
+  int index;     ///< Component index, or opening index.
+  bool opening;  ///< True for an opening.
+};
+
+/// The parts of the three levels of a lead distribution and their weights, and the widening
+/// schedule (AcdLeadOptions), for a 2D or a 3D decomposition: level 0 the lead's components
+/// and openings, level 1 adds the components adjacent to the lead and the openings to them,
+/// level 2 every component and opening. Weights: `opening_share` of a level's draws spread
+/// over its openings by their LeadEdge::weight, the rest over its components by
+/// `component_length`.
+class LeadLevels {
+ public:
+  LeadLevels() = default;
+  /// `openings[i]` joins the components of opening i; unusable parts (no volume, a degenerate
+  /// opening) are left out of every level.
+  LeadLevels(const Lead& lead, const std::vector<LeadEdge>& openings,
+             const std::vector<bool>& usable_component, const std::vector<bool>& usable_opening,
+             const std::vector<double>& component_length, const AcdLeadOptions& options);
+
+  /// 0 for the first `stage` draws, 1 for the next 2 x `stage`, 2 afterwards.
+  int LevelAfter(std::uint64_t draws) const;
+  std::uint64_t stage_draws() const { return stage_; }
+  /// The part `pick_u` in [0, 1] falls on through the level's cumulative weights; null if the
+  /// level has no parts.
+  const LeadPart* Pick(int level, double pick_u) const;
+  /// The components of `level` (sorted).
+  std::vector<int> ComponentsAt(int level) const;
+
+ private:
+  std::vector<LeadPart> levels_[3];
+  std::vector<double> cumulative_[3];  ///< Prefix sums of the parts' weights per level.
+  std::uint64_t stage_ = 0;
+};
+
+/// The length of each lead component along the way -- the straight distance from its entry
+/// to its exit (start, goal or the `opening_points` of the lead's openings; a nearly convex
+/// component holds that segment), at least half its `size` -- and `size` for the others, so
+/// that samples are spaced about evenly along the way whether a component is a long thin
+/// corridor or a wide room the lead only cuts across. `size`: sqrt(area) in 2D, cbrt(volume)
+/// in 3D.
+template <class Point>
+std::vector<double> LengthsAlongLead(const Lead& lead, std::vector<double> size, const Point& start,
+                                     const Point& goal, const std::vector<Point>& opening_points) {
+  for (size_t i = 0; i < lead.components.size(); ++i) {
+    const int c = lead.components[i];
+    const Point in = i == 0 ? start : opening_points[lead.openings[i - 1]];
+    const Point out = i + 1 == lead.components.size() ? goal : opening_points[lead.openings[i]];
+    size[c] = std::max((in - out).norm(), 0.5 * size[c]);
+  }
+  return size;
+}
 
 /// The lead-guided distribution of the reference point. Three levels, each a set of parts
 /// drawn by weight (AcdLeadOptions::opening_share of the draws spread evenly over the openings,
@@ -53,9 +122,9 @@ class LeadDistribution {
 
   /// The level in force after `draws` draws (AcdLeadOptions' schedule): 0 for the first
   /// `stage` draws, 1 for the next 2 x `stage`, 2 afterwards.
-  int LevelAfter(std::uint64_t draws) const;
+  int LevelAfter(std::uint64_t draws) const { return levels_.LevelAfter(draws); }
   /// Draws at the first level change (`stage` above).
-  std::uint64_t stage_draws() const { return stage_; }
+  std::uint64_t stage_draws() const { return levels_.stage_draws(); }
 
   /// A draw at `level` (or "uniform": AcdLeadOptions::lead_uniform_share at levels 0 and 1,
   /// AcdSamplerOptions::uniform_share at level 2). `pick_u` in [0, 1] picks the part through
@@ -65,23 +134,16 @@ class LeadDistribution {
   AcdDraw Draw(RandomEngine& rng, int level, double pick_u, int* part = nullptr) const;
 
   /// The components of `level` (sorted).
-  std::vector<int> ComponentsAt(int level) const;
+  std::vector<int> ComponentsAt(int level) const { return levels_.ComponentsAt(level); }
 
  private:
-  struct Part {
-    int index;     ///< Component index, or opening index.
-    bool opening;  ///< True for an opening.
-  };
-
   AcdSamplerOptions options_;
   AcdLeadOptions lead_options_;
   Lead lead_;
+  LeadLevels levels_;
   std::vector<acd::Opening2d> openings_segments_;
-  std::vector<double> cumulative_[3];  ///< Prefix sums of the parts' weights per level.
   std::vector<ComponentSampler> components_;
   std::vector<AcdTarget> openings_;  ///< One per opening (position, sigma, across).
-  std::vector<Part> levels_[3];
-  std::uint64_t stage_ = 0;
 };
 
 }  // namespace acdplan::planning::internal

@@ -359,6 +359,29 @@ TEST(BenchRunner, RunsAnOmplAppProblemWithItsOwnRobot) {
              "robots[0].radius: not with shape: scenario");
 }
 
+// A 3D world runs (its ACD decomposed in the parent into the disk cache; the in-process 2D
+// cache once tried to decompose its empty 2D workspace and stopped every run), acd_lead too.
+TEST(BenchRunner, RunsA3dWorldWithTheLead) {
+  const std::filesystem::path cache =
+      std::filesystem::temp_directory_path() / "acdplan_bench_test_3d_cache";
+  std::filesystem::remove_all(cache);
+  setenv("ACDPLAN_CACHE_DIR", cache.c_str(), 1);
+  const std::string scenario = std::string(ACDPLAN_SOURCE_DIR) + "/configs/window_wall_3d.yaml";
+  const BenchSpec spec = LoadBenchSpec(
+      WriteBench("world3d", "name: world3d\nseed: 2\nruns: 1\nworlds:\n  - scenario: " + scenario +
+                                "\nrobots:\n  - {name: own, shape: scenario}\n"
+                                "cases:\n  - {samplers: [uniform, acd_lead], planners: [PRM], "
+                                "budgets: [{samples: 60}]}\n"));
+  const BenchRunOutcome outcome = RunBench(spec);
+  unsetenv("ACDPLAN_CACHE_DIR");
+  std::filesystem::remove_all(cache);
+  ASSERT_EQ(outcome.records.size(), 2u);
+  for (const BenchRecord& r : outcome.records) {
+    EXPECT_NE(r.status, RunStatus::kCrashed) << r.what.sampler;
+    EXPECT_EQ(r.samples, 60u) << r.what.sampler;
+  }
+}
+
 TEST(BenchReport, SpecTargetsAreCheckedInTheSummaryAndSurviveAMerge) {
   const std::string text = SmallFigure4(2) +
                            "targets:\n"
