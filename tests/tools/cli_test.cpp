@@ -667,9 +667,10 @@ TEST_F(CliTest, PlansA2dOmplAppProblemFile) {
             std::string::npos)
       << spatial.err;
   const RunResult car =
-      Acdplan("plan " + Quote(Write("car.cfg", "[problem]\ncontrol=dynamic_car\n").string()));
+      Acdplan("plan " + Quote(Write("car.cfg", "[problem]\ncontrol=blimp\n").string()));
   ExpectUsageError(car);
-  EXPECT_NE(car.err.find("car.cfg:2: control: control-space robots are not supported yet"),
+  EXPECT_NE(car.err.find("car.cfg:2: control: 'blimp' is not supported (acdplan plans "
+                         "kinematic_car and dynamic_car"),
             std::string::npos)
       << car.err;
 }
