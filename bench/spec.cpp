@@ -219,15 +219,15 @@ BenchDecomposition ParseBenchDecomposition(const std::string& name) {
   BenchDecomposition d;
   if (name == "acd") return d;
   const std::string digits = name.substr(std::min<size_t>(4, name.size()));
-  if (name.rfind("grid", 0) == 0 && !digits.empty() && digits.size() <= 6 &&
+  if (name.rfind("grid", 0) == 0 && !digits.empty() && digits.size() <= 4 &&
       std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
-      std::stoi(digits) >= 1) {
+      std::stoi(digits) >= 1 && std::stoi(digits) <= 1000) {
     d.kind = planning::control::DecompositionKind::kGrid;
     d.cells = std::stoi(digits);
     return d;
   }
   throw InputError("unknown decomposition '" + name +
-                   "' (expected acd or grid<cells per side>, e.g. grid20)");
+                   "' (expected acd or grid<cells per side, 1-1000>, e.g. grid20)");
 }
 
 /// A group of `cases` whose robots are cars: control planners x decompositions (Syclop) x

@@ -204,8 +204,11 @@ Scenario LoadScenario(const std::string& path) {
       if (s.car->decomposition != control::DecompositionKind::kGrid) {
         file.Fail("decomposition.cells", "only for name: grid (the ACD's regions are its own)");
       }
-      s.car->grid_cells = static_cast<int>(file.Integer(
-          decomposition["cells"], "decomposition.cells", "an integer >= 1 (cells per side)", 1));
+      const long long cells = file.Integer(decomposition["cells"], "decomposition.cells",
+                                           "an integer >= 1 (cells per side)", 1);
+      // OMPL's grid allocates its cells: a bound keeps a typo from exhausting memory.
+      if (cells > 1000) file.Fail("decomposition.cells", "expected at most 1000 cells per side");
+      s.car->grid_cells = static_cast<int>(cells);
     }
     if (s.car->planner != control::ControlPlanner::kSyclopRrt &&
         s.car->planner != control::ControlPlanner::kSyclopEst) {

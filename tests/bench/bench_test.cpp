@@ -199,7 +199,7 @@ TEST(BenchSpec, CarCasesExpandDecompositionsAndCheckTheirKeys) {
                      "cases:\n  - {planners: [SyclopEST], decompositions: [grid0], budgets: "
                      "[{time_limit: 1}]}\n"),
              "bad.yaml: cases[0].decompositions[0]: unknown decomposition 'grid0' (expected acd "
-             "or grid<cells per side>, e.g. grid20)");
+             "or grid<cells per side, 1-1000>, e.g. grid20)");
   EXPECT_HAS(ErrorOf(kCarWorld + kCars +
                      "cases:\n  - {planners: [SyclopEST], budgets: [{samples: 100}]}\n"),
              "bad.yaml: cases[0].budgets[0]: a car's control planner takes a time_limit");

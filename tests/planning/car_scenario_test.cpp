@@ -75,6 +75,8 @@ TEST(CarScenario, EveryNewKeyIsValidatedWithTheKeyPath) {
               "decomposition.cells: only for name: grid");
   ExpectError(kWorld + kCar + kPoses + "decomposition: {name: grid, cells: 0}\n",
               "decomposition.cells: expected an integer >= 1 (cells per side), got '0'");
+  ExpectError(kWorld + kCar + kPoses + "decomposition: {name: grid, cells: 5000000000}\n",
+              "decomposition.cells: expected at most 1000 cells per side");
   ExpectError(kWorld + kCar + kPoses + "decomposition: {name: grid, size: 3}\n",
               "decomposition.size: unknown key");
   ExpectError(kWorld + kCar + kPoses + "sampler: {name: acd}\n",
