@@ -31,10 +31,10 @@ namespace {
 
 using planning::Scenario;
 
-/// `q` with the dimension `robot` plans in: [x, y, yaw] for a polygon (yaw 0 if absent),
-/// [x, y] otherwise.
-std::vector<double> Fitted(std::vector<double> q, const envs::Robot& robot) {
-  if (robot.shape == envs::RobotShape::kPolygon) {
+/// `q` with the dimension `robot` plans in: [x, y, yaw] for a polygon or a car (yaw 0 if
+/// absent), [x, y] otherwise.
+std::vector<double> Fitted(std::vector<double> q, const envs::Robot& robot, bool car = false) {
+  if (car || robot.shape == envs::RobotShape::kPolygon) {
     if (q.size() == 2) q.push_back(0.0);
   } else {
     q.resize(2);
@@ -48,6 +48,26 @@ Scenario RunScenario(const BenchSpec& spec, const BenchCase& c, std::uint64_t se
   Scenario s = world.scenario;
   s.path = spec.path;
   if (!robot.from_scenario) s.robot = robot.robot;
+  if (c.control) {
+    // A car: the robot's model and bounds (or the world scenario's own car), the case's control
+    // planner and decomposition, the world scenario's goal radius.
+    planning::CarScenario car;
+    if (world.scenario.car) car = *world.scenario.car;
+    if (robot.car) car.model = robot.car->model, car.options = robot.car->options;
+    car.planner = c.control_planner;
+    if (c.decomposition) {
+      car.decomposition = c.decomposition->kind;
+      car.grid_cells = std::max(1, c.decomposition->cells);
+    }
+    s.car = car;
+    s.start = Fitted(s.start, s.robot, true);
+    s.goal = Fitted(s.goal, s.robot, true);
+    s.samples = 0;
+    s.time_limit = c.budget.time_limit;
+    s.seed = seed;
+    return s;
+  }
+  s.car.reset();
   if (s.dimension == 3) {
     // A 3D world keeps its poses ([x, y, z] for a point, 6 numbers for a mesh robot).
     if (s.robot.shape == envs::RobotShape::kPoint) s.start.resize(3), s.goal.resize(3);
@@ -100,11 +120,12 @@ void CheckQueries(const BenchSpec& spec) {
     collision::CollisionWorldOptions options;
     options.mode = world.scenario.collision_mode;
     const envs::Robot& body = robot.from_scenario ? world.scenario.robot : robot.robot;
+    const bool car = robot.car.has_value() || (robot.from_scenario && world.scenario.car);
     const collision::CollisionWorld check(obstacles[w], body, options);
     const Eigen::AlignedBox2d& bounds = world.scenario.workspace.bounds;
     for (const char* which : {"start", "goal"}) {
       const std::vector<double> q =
-          Fitted(which[0] == 's' ? world.scenario.start : world.scenario.goal, body);
+          Fitted(which[0] == 's' ? world.scenario.start : world.scenario.goal, body, car);
       if (!Fits(check, body, bounds, Pose(q))) {
         throw InputError(spec.path + ": worlds: " + world.name + ": robot " + robot.name + ": " +
                          which + ": the robot is in collision or out of bounds there");
@@ -127,7 +148,10 @@ void CheckQueries(const BenchSpec& spec) {
     // acd samplers: the run's time with the decomposition as this run paid for it (a cache
     // look-up: the parent decomposed each map before forking), and the map's one-off
     // decomposition cost beside it. The other samplers do not use it: not in their time.
-    const bool acd = planning::UsesDecomposition(scenario.sampler);
+    // A car's case uses the ACD when Syclop follows it.
+    const bool acd = scenario.car ? result.car && result.car->decomposition ==
+                                                      planning::control::DecompositionKind::kAcd
+                                  : planning::UsesDecomposition(scenario.sampler);
     const double paid_s = result.decomposition_ms / 1e3;
     char buffer[512];
     std::snprintf(buffer, sizeof(buffer), "OK %d %.17g %.17g %llu %llu %.17g %d %d\n",
@@ -291,8 +315,8 @@ BenchRunOutcome RunBench(const BenchSpec& spec, const BenchRunOptions& options) 
       r.what.passage_width = world.passage_width;
       r.what.workspace_width = world.workspace_width;
       r.what.robot = spec.robots[c.robot].name;
-      r.what.sampler = planning::ToString(c.sampler);
-      r.what.planner = planning::ToString(c.planner);
+      r.what.sampler = c.SamplerLabel();
+      r.what.planner = c.PlannerLabel();
       r.what.budget = c.budget.Label();
       r.what.time_limit = c.budget.samples > 0 ? 0.0 : c.budget.time_limit;
       r.what.sample_budget = c.budget.samples;

@@ -214,15 +214,113 @@ auto ParsedList(const YamlFile& file, const YAML::Node& node, const std::string&
   return values;
 }
 
+/// "acd" or "grid<cells>" (cells >= 1). @throws InputError otherwise.
+BenchDecomposition ParseBenchDecomposition(const std::string& name) {
+  BenchDecomposition d;
+  if (name == "acd") return d;
+  const std::string digits = name.substr(std::min<size_t>(4, name.size()));
+  if (name.rfind("grid", 0) == 0 && !digits.empty() && digits.size() <= 4 &&
+      std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
+      std::stoi(digits) >= 1 && std::stoi(digits) <= 1000) {
+    d.kind = planning::control::DecompositionKind::kGrid;
+    d.cells = std::stoi(digits);
+    return d;
+  }
+  throw InputError("unknown decomposition '" + name +
+                   "' (expected acd or grid<cells per side, 1-1000>, e.g. grid20)");
+}
+
+/// A group of `cases` whose robots are cars: control planners x decompositions (Syclop) x
+/// time budgets.
+void ReadCarCases(const YamlFile& file, const YAML::Node& group, const std::string& key,
+                  const std::vector<int>& world_ids, const std::vector<int>& robot_ids,
+                  BenchSpec* spec) {
+  using planning::control::ControlPlanner;
+  if (group["samplers"]) {
+    file.Fail(key + ".samplers",
+              "a car is planned by control planners, which take no sampler (Syclop's guide is "
+              "`decompositions`)");
+  }
+  const std::vector<ControlPlanner> planners = ParsedList(
+      file, group["planners"], key + ".planners", planning::control::ParseControlPlanner);
+  std::vector<BenchDecomposition> decompositions = {BenchDecomposition{}};
+  if (group["decompositions"]) {
+    decompositions =
+        ParsedList(file, group["decompositions"], key + ".decompositions", ParseBenchDecomposition);
+  }
+  const YAML::Node& budgets = group["budgets"];
+  if (!budgets) file.Fail(key + ".budgets", "required");
+  if (!budgets.IsSequence() || budgets.size() == 0) {
+    file.Fail(key + ".budgets", "expected a non-empty list, got " + YamlFile::Shown(budgets));
+  }
+  std::vector<BenchBudget> budget_list;
+  for (size_t b = 0; b < budgets.size(); ++b) {
+    const std::string bkey = YamlFile::Item(key + ".budgets", b);
+    file.CheckKeys(budgets[b], bkey, {"time_limit", "samples"});
+    if (budgets[b]["samples"] || !budgets[b]["time_limit"]) {
+      file.Fail(bkey, "a car's control planner takes a time_limit, not a sample budget");
+    }
+    BenchBudget budget;
+    budget.time_limit =
+        file.Number(budgets[b]["time_limit"], bkey + ".time_limit", "a positive number", Positive);
+    budget_list.push_back(budget);
+  }
+  for (int w : world_ids) {
+    for (int rb : robot_ids) {
+      for (ControlPlanner planner : planners) {
+        const bool syclop =
+            planner == ControlPlanner::kSyclopRrt || planner == ControlPlanner::kSyclopEst;
+        std::vector<std::optional<BenchDecomposition>> guides;
+        if (syclop) {
+          guides.assign(decompositions.begin(), decompositions.end());
+        } else {
+          guides.push_back(std::nullopt);  // RRT, KPIECE1, EST, PDST follow no decomposition.
+        }
+        for (const auto& guide : guides) {
+          for (const BenchBudget& budget : budget_list) {
+            BenchCase c;
+            c.index = static_cast<int>(spec->cases.size());
+            c.world = w;
+            c.robot = rb;
+            c.control = true;
+            c.control_planner = planner;
+            c.decomposition = guide;
+            c.budget = budget;
+            const std::string k = c.Key(*spec);
+            for (const BenchCase& other : spec->cases) {
+              if (other.Key(*spec) == k) file.Fail(key, "case " + k + " appears twice");
+            }
+            spec->cases.push_back(c);
+          }
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::string BenchBudget::Label() const {
   return samples > 0 ? std::to_string(samples) + " samples" : Shortest(time_limit) + " s";
 }
 
+std::string BenchDecomposition::Label() const {
+  return kind == planning::control::DecompositionKind::kAcd ? "acd"
+                                                            : "grid" + std::to_string(cells);
+}
+
+std::string BenchCase::SamplerLabel() const {
+  if (!control) return planning::ToString(sampler);
+  return decomposition ? decomposition->Label() : "none";
+}
+
+std::string BenchCase::PlannerLabel() const {
+  return control ? planning::control::ToString(control_planner) : planning::ToString(planner);
+}
+
 std::string BenchCase::Key(const BenchSpec& spec) const {
-  return spec.worlds[world].name + "/" + spec.robots[robot].name + "/" +
-         planning::ToString(sampler) + "/" + planning::ToString(planner) + "/" + budget.Label();
+  return spec.worlds[world].name + "/" + spec.robots[robot].name + "/" + SamplerLabel() + "/" +
+         PlannerLabel() + "/" + budget.Label();
 }
 
 BenchSpec LoadBenchSpec(const std::string& path) {
@@ -295,11 +393,16 @@ BenchSpec LoadBenchSpec(const std::string& path) {
           YAML::Node o;
           o["orientation"] = entry.second;
           ReadSamplerOptions(file, o, key, &robot.acd_options);
-        } else if (k == "shape" || k == "radius" || k == "polygon") {
+        } else if (k == "shape" || k == "radius" || k == "polygon" || k == "type" ||
+                   k == "length" || k == "width" || k == "max_speed" || k == "max_steer" ||
+                   k == "max_accel" || k == "max_steer_rate" || k == "step" ||
+                   k == "min_control_steps" || k == "max_control_steps") {
           shape[k] = entry.second;
         } else {
           file.Fail(key + "." + k,
-                    "unknown key (expected one of: name, shape, radius, polygon, orientation)");
+                    "unknown key (expected one of: name, shape, radius, polygon, orientation; a "
+                    "car: type, length, width, max_speed, max_steer, max_accel, max_steer_rate, "
+                    "step, min_control_steps, max_control_steps)");
         }
       }
       if (!SafeName(robot.name)) {
@@ -311,9 +414,12 @@ BenchSpec LoadBenchSpec(const std::string& path) {
       robot.from_scenario =
           shape["shape"] && shape["shape"].IsScalar() && shape["shape"].Scalar() == "scenario";
       if (robot.from_scenario) {
-        for (const char* k : {"radius", "polygon"}) {
+        for (const char* k : {"radius", "polygon", "type"}) {
           if (shape[k]) file.Fail(key + "." + k, "not with shape: scenario");
         }
+      } else if (planning::NamesCarRobot(shape)) {
+        robot.car = planning::ReadCarRobot(file, shape, key);
+        robot.robot = robot.car->body;
       } else {
         robot.robot = planning::ReadRobot(
             file, shape.IsNull() ? YAML::Node(YAML::NodeType::Map) : shape, key);
@@ -339,9 +445,25 @@ BenchSpec LoadBenchSpec(const std::string& path) {
   for (size_t g = 0; g < cases.size(); ++g) {
     const std::string key = YamlFile::Item("cases", g);
     const YAML::Node& group = cases[g];
-    file.CheckKeys(group, key, {"worlds", "robots", "samplers", "planners", "budgets"});
+    file.CheckKeys(group, key,
+                   {"worlds", "robots", "samplers", "planners", "decompositions", "budgets"});
     const std::vector<int> world_ids = Subset(file, group["worlds"], key + ".worlds", spec.worlds);
     const std::vector<int> robot_ids = Subset(file, group["robots"], key + ".robots", spec.robots);
+    const bool cars = spec.robots[robot_ids.front()].car.has_value();
+    for (int r : robot_ids) {
+      if (spec.robots[r].car.has_value() != cars) {
+        file.Fail(key + ".robots",
+                  "mixes cars (control planners) and rigid robots (samplers and geometric "
+                  "planners): give them cases of their own");
+      }
+    }
+    if (cars) {
+      ReadCarCases(file, group, key, world_ids, robot_ids, &spec);
+      continue;
+    }
+    if (group["decompositions"]) {
+      file.Fail(key + ".decompositions", "only for car robots (Syclop's regions)");
+    }
     const std::vector<SamplerType> samplers =
         ParsedList(file, group["samplers"], key + ".samplers", planning::ParseSamplerType);
     const std::vector<PlannerType> planners =

@@ -3,11 +3,13 @@
 // and runs (a fixed global order, so shards and seeds are reproducible).
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bench/targets.h"
 #include "planning/scenario.h"
+#include "planning/scenario_yaml.h"
 
 namespace acdplan::bench {
 
@@ -33,6 +35,9 @@ struct BenchRobot {
   bool from_scenario = false;
   planning::AcdSamplerOptions
       acd_options;  ///< The bench's acd_sampler options, orientation per robot.
+  /// A car (`type: kinematic_car | dynamic_car`, planning::ReadCarRobot()): planned by control
+  /// planners; `robot` is then its body.
+  std::optional<planning::CarRobot> car;
 };
 
 /// A budget: exactly one of `time_limit` (> 0) and `samples` (>= 1, the Figure-4 protocol).
@@ -43,13 +48,31 @@ struct BenchBudget {
   std::string Label() const;
 };
 
-/// One cell of the benchmark: world x robot x sampler x planner x budget.
+/// Syclop's decomposition in a car's case: the ACD's regions, or OMPL's grid of `cells` per
+/// side.
+struct BenchDecomposition {
+  planning::control::DecompositionKind kind = planning::control::DecompositionKind::kAcd;
+  int cells = 0;  ///< kGrid: cells per side (>= 1).
+  /// "acd" or "grid<cells>" (as `decompositions:` names it).
+  std::string Label() const;
+};
+
+/// One cell of the benchmark: world x robot x sampler x planner x budget. A car's case:
+/// world x robot x decomposition x control planner x budget, the decomposition in the sampler's
+/// column ("acd", "grid20", or "none" for the planners without one).
 struct BenchCase {
   int index = 0;             ///< Position in BenchSpec::cases.
   int world = 0, robot = 0;  ///< Indices into BenchSpec::worlds / robots.
   planning::SamplerType sampler = planning::SamplerType::kAcd;
   planning::PlannerType planner = planning::PlannerType::kPrm;
   BenchBudget budget;
+  bool control = false;  ///< A car's case: the two fields below instead of sampler, planner.
+  planning::control::ControlPlanner control_planner = planning::control::ControlPlanner::kSyclopRrt;
+  std::optional<BenchDecomposition> decomposition;  ///< Syclop planners only.
+  /// The sampler's name, or a car's decomposition label ("none" without one).
+  std::string SamplerLabel() const;
+  /// The planner's name (geometric or control).
+  std::string PlannerLabel() const;
   /// "world/robot/sampler/planner/budget": stable, seeds are derived from it.
   std::string Key(const BenchSpec& spec) const;
 };
@@ -78,12 +101,19 @@ struct BenchCase {
 ///     - {name: disc, shape: disc, radius: 0.05}
 ///     - {name: bar, shape: polygon, polygon: [[x, y], ...], orientation: aligned}
 ///     - {name: own, shape: scenario}  # each world's scenario's robot (an OMPL.app .cfg's)
+///     - {name: car, type: kinematic_car, length: 0.3, width: 0.15}   # a car: the keys of a
+///                                   # scenario's car robot (planning/scenario.h)
 ///   cases:                          # required, non-empty; each a cross product
 ///     - worlds: [demo]              # optional subsets by name (default: all)
 ///       robots: [disc]
 ///       samplers: [uniform, acd]    # registry.h SamplerNames()
 ///       planners: [PRM]             # registry.h PlannerNames()
 ///       budgets: [{samples: 200}, {time_limit: 2}]   # samples: PRM, PRM_ACD, PRMstar
+///     - robots: [car]               # cars only (not mixed with rigid robots in one case):
+///       planners: [SyclopRRT, RRT]  # control planners (plan_car.h ControlPlannerNames())
+///       decompositions: [acd, grid10, grid20]  # Syclop's (default [acd]); no `samplers`;
+///       budgets: [{time_limit: 5}]  # time limits only. A world's scenario that is a car's
+///                                   # gives its goal_radius (else 0.5).
 ///   targets:                        # optional acceptance targets (bench/targets.h), on rows
 ///     - where: {planner: PRM}       # world x robot x planner x budget (bench/summary.h
 ///       metric: acd.success_rate    # PlanningTargetVocabulary())

@@ -11,6 +11,7 @@
 #include "base/format.h"
 #include "base/input_error.h"
 #include "base/json_number.h"
+#include "planning/control/plan_car.h"
 #include "planning/registry.h"
 
 namespace acdplan::bench {
@@ -137,7 +138,12 @@ std::string CheckPlanningMetric(const std::string& metric) {
   const size_t slash = sampler.find('/');
   if (slash != std::string::npos) {
     const std::string planner = sampler.substr(0, slash);
-    const std::vector<std::string> planners = planning::PlannerNames();
+    std::vector<std::string> planners = planning::PlannerNames();
+    for (const std::string& name : planning::control::ControlPlannerNames()) {
+      if (std::find(planners.begin(), planners.end(), name) == planners.end()) {
+        planners.push_back(name);
+      }
+    }
     if (std::find(planners.begin(), planners.end(), planner) == planners.end()) {
       return "unknown planner '" + planner + "' in '" + metric +
              "' (expected one of: " + JoinNames(planners) + ")";
@@ -147,7 +153,11 @@ std::string CheckPlanningMetric(const std::string& metric) {
   std::vector<std::string> samplers = planning::SamplerNames();
   samplers.push_back("best_other");
   samplers.push_back("fastest_other");
-  if (std::find(samplers.begin(), samplers.end(), sampler) == samplers.end()) {
+  // A car's cases: Syclop's decomposition in the sampler's place (bench/spec.h).
+  samplers.push_back("none");
+  const bool grid = sampler.size() > 4 && sampler.rfind("grid", 0) == 0 &&
+                    sampler.find_first_not_of("0123456789", 4) == std::string::npos;
+  if (!grid && std::find(samplers.begin(), samplers.end(), sampler) == samplers.end()) {
     return "unknown sampler '" + sampler + "' in '" + metric +
            "' (expected one of: " + JoinNames(samplers) + ")";
   }

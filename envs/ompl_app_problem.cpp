@@ -41,6 +41,16 @@ const std::vector<std::pair<std::string, std::string>>& PlannerNameTable() {
   return table;
 }
 
+/// OMPL.app's control planner names and ours (planning/control/plan_car.h).
+const std::vector<std::pair<std::string, std::string>>& ControlPlannerNameTable() {
+  static const std::vector<std::pair<std::string, std::string>> table = {
+      {"rrt", "RRT"},   {"kpiece", "KPIECE1"},      {"est", "EST"},
+      {"pdst", "PDST"}, {"sycloprrt", "SyclopRRT"}, {"syclopest", "SyclopEST"},
+      {"sst", ""},
+  };
+  return table;
+}
+
 /// OMPL.app's valid-state sampler names and ours.
 const std::vector<std::pair<std::string, std::string>>& SamplerNameTable() {
   static const std::vector<std::pair<std::string, std::string>> table = {
@@ -382,8 +392,11 @@ void ReadBenchmark(const IniFile& ini, OmplAppProblem* p) {
 void ReadPlanners(const IniFile& ini, OmplAppProblem* p) {
   const auto section = ini.sections.find("planner");
   if (section == ini.sections.end()) return;
+  // A car's problem names control planners.
+  const std::vector<std::pair<std::string, std::string>>& planner_names =
+      p->control.empty() ? PlannerNameTable() : ControlPlannerNameTable();
   std::vector<std::string> available;
-  for (const auto& [ompl_app, ours] : PlannerNameTable()) {
+  for (const auto& [ompl_app, ours] : planner_names) {
     if (!ours.empty()) available.push_back(ompl_app);
   }
   std::vector<std::pair<std::string, std::string>> pending_context;
@@ -412,7 +425,7 @@ void ReadPlanners(const IniFile& ini, OmplAppProblem* p) {
     }
     // The longest OMPL.app name that `key` is or starts with followed by a '.'.
     std::string name, ours;
-    for (const auto& [ompl_app, mapped] : PlannerNameTable()) {
+    for (const auto& [ompl_app, mapped] : planner_names) {
       if ((entry.key == ompl_app || StartsWith(entry.key, ompl_app + ".")) &&
           ompl_app.size() > name.size()) {
         name = ompl_app;
@@ -421,7 +434,7 @@ void ReadPlanners(const IniFile& ini, OmplAppProblem* p) {
     }
     if (name.empty()) {
       std::vector<std::string> known;
-      for (const auto& [ompl_app, mapped] : PlannerNameTable()) known.push_back(ompl_app);
+      for (const auto& [ompl_app, mapped] : planner_names) known.push_back(ompl_app);
       const std::string planner = entry.key.substr(0, entry.key.find('.'));
       fail(entry, UnknownName("planner", planner, known));
     }
@@ -482,8 +495,16 @@ OmplAppProblem ReadOmplAppProblem(const std::string& path) {
   }
   const KeyTable problem(ini, "problem");
   if (const Entry* control = problem.Find("control")) {
-    problem.Fail(*control, "control-space robots are not supported yet (" + control->value +
-                               "); acdplan plans for geometric rigid bodies (SE(2), SE(3))");
+    std::string name = control->value;
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) {
+      return c == ' ' ? '_' : static_cast<char>(std::tolower(c));
+    });
+    if (name != "kinematic_car" && name != "dynamic_car") {
+      problem.Fail(*control, "'" + control->value +
+                                 "' is not supported (acdplan plans kinematic_car and "
+                                 "dynamic_car; OMPL.app's blimp and quadrotor are 3D)");
+    }
+    p.control = name;
   }
   static const std::set<std::string> kKnown = {"name",         "robot",
                                                "world",        "start.x",
@@ -498,7 +519,8 @@ OmplAppProblem ReadOmplAppProblem(const std::string& path) {
                                                "volume.max.x", "volume.max.y",
                                                "volume.max.z", "sampler",
                                                "objective",    "objective.threshold",
-                                               "threshold",    "solution_length"};
+                                               "threshold",    "solution_length",
+                                               "control"};
   for (const auto& [key, entry] : problem.entries()) {
     if (!kKnown.count(key)) {
       p.warnings.push_back(path + ":" + std::to_string(entry.line) + ": " + key +
@@ -508,6 +530,10 @@ OmplAppProblem ReadOmplAppProblem(const std::string& path) {
   p.name = problem.Has("name") ? problem.Find("name")->value
                                : std::filesystem::path(path).stem().string();
   p.dimension = Dimension(problem);
+  if (!p.control.empty() && p.dimension != 2) {
+    problem.Fail(*problem.Find("control"),
+                 "a car needs a 2D problem (start and goal x, y, theta), not a 3D one");
+  }
   p.start = ReadPose(problem, "start", p.dimension);
   p.goal = ReadPose(problem, "goal", p.dimension);
   if (const Entry* sampler = problem.Find("sampler")) p.sampler = SamplerName(problem, *sampler);

@@ -42,6 +42,10 @@ struct OmplAppProblem {
   /// The valid-state sampler in acdplan's spelling (planning/registry.h SamplerNames()):
   /// OMPL.app's `bridge_test` is "bridge"; "" when the file names none.
   std::string sampler;
+  /// [problem] control: "kinematic_car" or "dynamic_car" (OMPL.app's KinematicCarPlanning and
+  /// DynamicCarPlanning; "kinematic car" is read the same), 2D only; "" for a geometric problem.
+  /// Its planners are then control planners (`planner` in acdplan's spelling: SyclopRRT, ...).
+  std::string control;
   std::string objective;                 ///< [problem] objective ("length"); "" when absent.
   double objective_threshold = -1;       ///< [problem] objective.threshold; < 0 when absent.
   double goal_threshold = -1;            ///< [problem] threshold (goal tolerance); < 0 when absent.
@@ -76,7 +80,8 @@ struct OmplAppProblem {
 /// @throws InputError "<file>:<line>: <key>: <rule>" (line 0 when the file cannot be read;
 ///         the [problem] header's line for a missing key), e.g.
 ///         "bugtrap.cfg:31: planner 'spars2' is not available in acdplan (available: prm, ...)",
-///         "car.cfg:4: control: control-space robots are not supported yet (kinematic_car)",
+///         "car.cfg:4: control: 'blimp' is not supported (acdplan plans kinematic_car and
+///         dynamic_car)",
 ///         "x.cfg:7: start.x: expected a number, got 'abc'", for syntax errors, keys given
 ///         twice, missing or mixed pose keys, bad numbers, empty bounds, unknown samplers or
 ///         planners, and mesh files that ReadMesh() cannot read.

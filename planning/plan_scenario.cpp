@@ -24,6 +24,7 @@
 #include "envs/free_space2d.h"
 #include "envs/world_svg.h"
 #include "planning/acd_lead_sampler.h"
+#include "planning/control/plan_car_scenario.h"
 #include "planning/counting_validity_checker.h"
 #include "planning/decomposition_cache.h"
 #include "planning/internal/run_on_time_limit.h"
@@ -63,6 +64,7 @@ acd::Decompose2dOptions ScenarioAcdOptions(const Scenario& scenario) {
 PlanResult PlanScenario(const Scenario& scenario) {
   CheckScenario(scenario);
   if (scenario.dimension == 3) return PlanScenario3d(scenario);
+  if (scenario.car) return control::PlanCarScenario(scenario);
   const Stopwatch stopwatch;
   const std::string where = scenario.path.empty() ? "scenario" : scenario.path;
   PlanResult result;
@@ -177,8 +179,21 @@ std::string PlanResultToJson(const Scenario& scenario, const PlanResult& result)
   j["format"] = "acdplan.plan/1";
   j["scenario"] = scenario.path;
   j["solved"] = result.solved;
-  j["sampler"] = ToString(result.sampler);
-  j["planner"] = ToString(result.planner);
+  if (result.car) {
+    // A car: its model, control planner and Syclop's regions instead of a sampler.
+    const CarPlan& car = *result.car;
+    j["robot"] = control::ToString(scenario.car->model);
+    j["planner"] = control::ToString(car.planner);
+    j["decomposition"] =
+        car.decomposition ? nlohmann::json(control::ToString(*car.decomposition)) : nullptr;
+    if (car.decomposition == control::DecompositionKind::kGrid) j["grid_cells"] = car.grid_cells;
+    j["regions"] = car.regions;
+    j["visited_regions"] = car.visited_regions;
+    j["duration_s"] = car.duration_s;
+  } else {
+    j["sampler"] = ToString(result.sampler);
+    j["planner"] = ToString(result.planner);
+  }
   j["budget"] = result.budget;
   j["seed"] = scenario.seed;
   j["time_s"] = result.time_s;
@@ -206,6 +221,7 @@ std::string PlanResultToSvg(const Scenario& scenario, const PlanResult& result) 
              " openings in orange; start green, goal purple, path red)"},
         /*z_up=*/true);
   }
+  if (result.car) return control::CarPlanToSvg(scenario, result);
   envs::WorldSvg f(scenario.workspace.bounds);
   f.AddComponents(result.decomposition, /*distinct=*/false);
   f.AddObstacles(scenario.workspace.obstacles);

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,6 +14,24 @@
 #include "planning/scenario.h"
 
 namespace acdplan::planning {
+
+/// What a car scenario's control planner did (Scenario::car; planning/control/plan_car.h).
+struct CarPlan {
+  control::ControlPlanner planner = control::ControlPlanner::kSyclopRrt;
+  /// Syclop's regions: the ACD's components (kAcd) or grid cells (kGrid); nullopt for the
+  /// planners without a decomposition.
+  std::optional<control::DecompositionKind> decomposition;
+  int grid_cells = 0;  ///< kGrid: cells per side.
+  int regions = 0;     ///< Regions of Syclop's decomposition (0 without one).
+  /// The regions the final trajectory passes through (consecutive repeats merged): the lead
+  /// the tree followed; ACD region i = decomposition.components[i], a grid's as OMPL numbers
+  /// its cells.
+  std::vector<int> visited_regions;
+  /// The solution at every propagation step (x, y, yaw[, v, phi]); OMPL's approximate
+  /// solution when not solved (pictures only).
+  std::vector<std::vector<double>> trajectory;
+  double duration_s = 0.0;  ///< The solution's duration (the sum of its controls') [s].
+};
 
 /// What PlanScenario() did and found.
 struct PlanResult {
@@ -41,6 +60,10 @@ struct PlanResult {
   /// then x, y, z (point) or x, y, z, qx, qy, qz, qw (mesh robot, OMPL's SE3 reals).
   std::shared_ptr<const envs::FreeSpaceDecomposition3d> decomposition3d;
   std::vector<std::string> notes;  ///< What the planner should tell the user (3D free space).
+  /// Car scenarios: the control planner's part. Then `samples` are the tree's states,
+  /// `path_length` the solution's duration [s], `path` the states at the controls' ends,
+  /// `components` Syclop's regions and `decomposition` the ACD only with `decomposition: acd`.
+  std::optional<CarPlan> car;
 };
 
 /// The ACD options of `scenario`: tau = tau_diag x the bounds' diagonal, its measure.
@@ -53,7 +76,8 @@ acd::Decompose2dOptions ScenarioAcdOptions(const Scenario& scenario);
 /// seed, then either the Figure-4 protocol (scenario.samples > 0:
 /// BuildSampleBudgetRoadmap()) or the planner on the time limit. The path is reported raw,
 /// not simplified, so lengths compare planners rather than the simplifier.
-/// A 3D scenario (dimension 3) runs PlanScenario3d() (planning/plan_scenario3d.h) instead.
+/// A 3D scenario (dimension 3) runs PlanScenario3d() (planning/plan_scenario3d.h) instead, a
+/// car scenario PlanCarScenario() (planning/control/plan_car_scenario.h).
 /// Expected failures (no solution) are results; only bad input throws.
 /// @throws InputError if the start or the goal is in collision or out of bounds.
 PlanResult PlanScenario(const Scenario& scenario);
@@ -68,8 +92,8 @@ void ConfigureOmpl(std::uint64_t seed, bool quiet);
 std::string PlanResultToJson(const Scenario& scenario, const PlanResult& result);
 
 /// An SVG picture (2D): obstacles, ACD components and openings, roadmap vertices and edges,
-/// the path, start and goal. 3D: PlanScene3d() (plan_picture3d.h) in an oblique orthographic
-/// view, +z up.
+/// the path, start and goal (a car: CarPlanToSvg()). 3D: PlanScene3d() (plan_picture3d.h) in an
+/// oblique orthographic view, +z up.
 std::string PlanResultToSvg(const Scenario& scenario, const PlanResult& result);
 
 }  // namespace acdplan::planning

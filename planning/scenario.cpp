@@ -14,6 +14,28 @@ void CheckScenario(const Scenario& s) {
   auto fail = [&file](const std::string& key, const std::string& rule) {
     throw InputError(file + ": " + key + ": " + rule);
   };
+  if (s.car) {
+    if (s.dimension != 2) fail("robot.type", "a car needs a 2D world");
+    if (s.samples > 0) {
+      fail("planner.samples", "a car's control planner takes a time_limit, not a sample budget");
+    }
+    if (!(s.time_limit > 0)) fail("planner.time_limit", "expected a positive number");
+    if (!(s.tau_diag >= 0)) fail("acd.tau_diag", "expected a number >= 0");
+    if (s.car->grid_cells < 1) fail("decomposition.cells", "expected an integer >= 1");
+    if (!(s.car->goal_radius > 0)) fail("goal_radius", "expected a positive number");
+    if (s.robot.shape == envs::RobotShape::kMesh) {
+      fail("robot.shape", "a car's body is 2D: point, disc or polygon");
+    }
+    try {
+      control::CheckCarOptions(s.car->options);
+    } catch (const InputError& error) {
+      fail("robot", error.what());
+    }
+    const std::string form = "[x, y, yaw] (a car plans in SE(2), yaw in rad)";
+    if (s.start.size() != 3) fail("start", "expected " + form);
+    if (s.goal.size() != 3) fail("goal", "expected " + form);
+    return;
+  }
   if (s.samples > 0 && !HonoursSampleBudget(s.planner)) {
     fail("planner.samples",
          "a sample budget (the Figure-4 protocol) needs PRM, PRM_ACD or PRMstar, not " +
@@ -44,12 +66,54 @@ void CheckScenario(const Scenario& s) {
   }
 }
 
+namespace {
+
+/// planner.name: a control planner for a car, a geometric one otherwise; the message says
+/// which kind the name is when it is the wrong one.
+void ReadPlannerName(const YamlFile& file, const YAML::Node& node, Scenario* s) {
+  const std::string name = file.String(node, "planner.name");
+  auto is_control = [&name] {
+    try {
+      control::ParseControlPlanner(name);
+      return true;
+    } catch (const InputError&) {
+      return false;
+    }
+  };
+  auto is_geometric = [&name] {
+    try {
+      ParsePlannerType(name);
+      return true;
+    } catch (const InputError&) {
+      return false;
+    }
+  };
+  if (s->car) {
+    if (!is_control() && is_geometric()) {
+      file.Fail("planner.name",
+                name + " is a geometric planner; a car (robot.type " +
+                    control::ToString(s->car->model) +
+                    ") needs a control planner: " + JoinNames(control::ControlPlannerNames()));
+    }
+    s->car->planner = file.Parsed(node, "planner.name", control::ParseControlPlanner);
+  } else {
+    if (!is_geometric() && is_control()) {
+      file.Fail("planner.name", name +
+                                    " is a control planner: it needs a car robot (robot.type: "
+                                    "kinematic_car | dynamic_car)");
+    }
+    s->planner = file.Parsed(node, "planner.name", ParsePlannerType);
+  }
+}
+
+}  // namespace
+
 Scenario LoadScenario(const std::string& path) {
   const YamlFile file = YamlFile::Load(path);
   const YAML::Node& root = file.root();
   file.CheckKeys(root, "",
                  {"description", "workspace", "repair", "robot", "start", "goal", "acd", "planner",
-                  "sampler", "collision", "seed"});
+                  "sampler", "collision", "seed", "decomposition", "goal_radius"});
   Scenario s;
   s.path = path;
   if (root["description"]) s.description = file.String(root["description"], "description");
@@ -79,7 +143,30 @@ Scenario LoadScenario(const std::string& path) {
               "expected a file name or {generator: ...}, got " + YamlFile::Shown(workspace));
   }
 
-  s.robot = root["robot"] ? ReadRobot(file, root["robot"], "robot") : envs::Robot::Point();
+  if (root["robot"] && NamesCarRobot(root["robot"])) {
+    CarRobot car = ReadCarRobot(file, root["robot"], "robot");
+    s.robot = car.body;
+    s.car.emplace();
+    s.car->model = car.model;
+    s.car->options = car.options;
+    if (s.dimension != 2) file.Fail("robot.type", "a car needs a 2D world");
+  } else {
+    s.robot = root["robot"] ? ReadRobot(file, root["robot"], "robot") : envs::Robot::Point();
+  }
+  for (const char* key : {"decomposition", "goal_radius"}) {
+    if (root[key] && !s.car) {
+      file.Fail(key, "only for a car (robot.type: kinematic_car | dynamic_car)");
+    }
+  }
+  if (s.car && root["sampler"]) {
+    file.Fail("sampler",
+              "a car is planned by a control planner, which takes no sampler (Syclop's guide "
+              "is `decomposition`)");
+  }
+  if (s.car && root["goal_radius"]) {
+    s.car->goal_radius =
+        file.Number(root["goal_radius"], "goal_radius", "a positive number", Positive);
+  }
   if (!root["start"]) file.Fail("start", "required");
   if (!root["goal"]) file.Fail("goal", "required");
   s.start = file.Numbers(root["start"], "start", "[x, y], [x, y, yaw] or [x, y, z, ...]");
@@ -94,7 +181,7 @@ Scenario LoadScenario(const std::string& path) {
   }
   if (const YAML::Node& planner = root["planner"]) {
     file.CheckKeys(planner, "planner", {"name", "time_limit", "samples"});
-    if (planner["name"]) s.planner = file.Parsed(planner["name"], "planner.name", ParsePlannerType);
+    if (planner["name"]) ReadPlannerName(file, planner["name"], &s);
     if (planner["time_limit"] && planner["samples"]) {
       file.Fail("planner", "give time_limit or samples, not both");
     }
@@ -105,6 +192,29 @@ Scenario LoadScenario(const std::string& path) {
     if (planner["samples"]) {
       s.samples = static_cast<int>(
           file.Integer(planner["samples"], "planner.samples", "an integer >= 1", 1));
+    }
+  }
+  if (const YAML::Node& decomposition = root["decomposition"]) {
+    file.CheckKeys(decomposition, "decomposition", {"name", "cells"});
+    if (decomposition["name"]) {
+      s.car->decomposition =
+          file.Parsed(decomposition["name"], "decomposition.name", control::ParseDecompositionKind);
+    }
+    if (decomposition["cells"]) {
+      if (s.car->decomposition != control::DecompositionKind::kGrid) {
+        file.Fail("decomposition.cells", "only for name: grid (the ACD's regions are its own)");
+      }
+      const long long cells = file.Integer(decomposition["cells"], "decomposition.cells",
+                                           "an integer >= 1 (cells per side)", 1);
+      // OMPL's grid allocates its cells: a bound keeps a typo from exhausting memory.
+      if (cells > 1000) file.Fail("decomposition.cells", "expected at most 1000 cells per side");
+      s.car->grid_cells = static_cast<int>(cells);
+    }
+    if (s.car->planner != control::ControlPlanner::kSyclopRrt &&
+        s.car->planner != control::ControlPlanner::kSyclopEst) {
+      s.warnings.push_back(file.path() + ": decomposition: unused by " +
+                           control::ToString(s.car->planner) +
+                           " (only SyclopRRT and SyclopEST follow a decomposition)");
     }
   }
   if (const YAML::Node& sampler = root["sampler"]) {

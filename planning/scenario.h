@@ -2,6 +2,7 @@
 // Planning scenarios: a YAML file naming the world, the robot, the query and how to plan.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,9 +12,25 @@
 #include "envs/workspace2d.h"
 #include "envs/workspace3d.h"
 #include "planning/acd_sampler_options.h"
+#include "planning/control/plan_car.h"
 #include "planning/registry.h"
 
 namespace acdplan::planning {
+
+/// A control-space robot of a scenario (`robot: {type: kinematic_car | dynamic_car}`) and how
+/// it is planned (planning/control/plan_car.h).
+struct CarScenario {
+  control::CarModel model = control::CarModel::kKinematic;
+  control::CarOptions options;  ///< Wheelbase, bounds, propagation step (OMPL.app's defaults).
+  control::ControlPlanner planner = control::ControlPlanner::kSyclopRrt;
+  control::DecompositionKind decomposition = control::DecompositionKind::kAcd;  ///< Syclop's.
+  int grid_cells = 10;       ///< kGrid: cells per side; >= 1.
+  double goal_radius = 0.5;  ///< Solved within this distance of the goal position [units]; > 0.
+  /// Not in the YAML: > 0 ends the planner after this many termination-condition checks
+  /// instead of the time limit (CarQuery::termination_checks; runs that depend on the seed
+  /// only, for tests).
+  unsigned termination_checks = 0;
+};
 
 /// A loaded, validated scenario. The file format (every key optional unless marked):
 ///
@@ -56,6 +73,28 @@ namespace acdplan::planning {
 ///                                    # normals, spread aligned_jitter [rad])
 ///   collision: {mode: hulls+exact}   # bvh | hulls | hulls+exact
 ///   seed: 1                          # integer >= 0: samplers (and the CLI's OMPL seed)
+///
+/// Control-space robots (2D worlds): a car as OMPL.app defines it, planned with OMPL's control
+/// planners (planning/control/plan_car.h); bounds in [units], [s] and [rad]:
+///
+///   robot: {type: kinematic_car,     # kinematic_car | dynamic_car (second order)
+///           length: 1, width: 0.5,   # wheelbase L, and the body: a length x width
+///                                    # rectangle centred on (x, y), unless shape (point,
+///                                    # disc, polygon) gives another body; width default L/2
+///           max_speed: 1, max_steer: 0.5236,        # |v|, |phi| (30 deg)
+///           max_accel: 0.5, max_steer_rate: 0.0349, # dynamic_car: |a|, |phi'| (2 deg/s)
+///           step: 0.05, min_control_steps: 1, max_control_steps: 20}  # propagation
+///   start: [x, y, yaw]               # required; at rest, wheels straight
+///   goal: [x, y, yaw]                # required; this pose must be free; solved when the
+///                                    # position is within goal_radius (heading free)
+///   goal_radius: 0.5                 # cars only
+///   planner: {name: SyclopRRT, time_limit: 5}  # SyclopRRT | SyclopEST | RRT | KPIECE1 |
+///                                    # EST | PDST; a time limit only; default SyclopRRT
+///   decomposition: {name: acd}       # Syclop's regions: acd (the free space's ACD, its
+///                                    # `acd:` options) | grid (OMPL's GridDecomposition,
+///                                    # `cells` per side, default 10); cars only
+/// A car takes no `sampler` (the decomposition guides Syclop); a car's planner with a rigid
+/// robot, or a geometric planner with a car, is an error.
 struct Scenario {
   std::string path;  ///< The file it was read from ("" if built in code).
   std::string description;
@@ -76,6 +115,9 @@ struct Scenario {
   AcdSamplerOptions sampler_options;  ///< Its seed is overwritten by `seed` when planning.
   collision::CollisionMode collision_mode = collision::CollisionMode::kHullsExact;
   std::uint64_t seed = 1;
+  /// Set for a car (robot.type): then `robot` is its body, start and goal are [x, y, yaw],
+  /// and `planner`, `sampler`, `samples` are unused.
+  std::optional<CarScenario> car;
   /// Things the file says that were accepted but deserve a word ("<file>: acd.tau_rel: ...");
   /// the command line prints them on stderr.
   std::vector<std::string> warnings;
@@ -88,7 +130,7 @@ struct Scenario {
 Scenario LoadScenario(const std::string& path);
 
 /// Checks the cross-field rules (planner/sampler names, budget, start/goal dimensions for the
-/// robot); called by LoadScenario() and again after command-line overrides.
+/// robot, a car's options); called by LoadScenario() and again after command-line overrides.
 /// @throws InputError naming the key ("<file>: planner.samples: ...").
 void CheckScenario(const Scenario& scenario);
 

@@ -65,9 +65,25 @@ Scenario ScenarioFromOmplApp(const envs::OmplAppProblem& problem) {
     }
   }
 
+  if (!problem.control.empty()) {
+    // A car (OMPL.app's KinematicCarPlanning / DynamicCarPlanning, their default bounds and
+    // wheelbase 1): the robot mesh's footprint as its body, Syclop on the ACD by default.
+    s.car.emplace();
+    s.car->model = control::ParseCarModel(problem.control);
+    if (problem.goal_threshold > 0) s.car->goal_radius = problem.goal_threshold;
+    if (!problem.sampler.empty()) {
+      s.warnings.push_back(problem.path +
+                           ": sampler: ignored for a car (a control planner takes "
+                           "no valid-state sampler)");
+    }
+  }
   if (!problem.planners.empty()) {
     const envs::OmplAppPlanner& first = problem.planners.front();
-    s.planner = ParsePlannerType(first.planner);
+    if (s.car) {
+      s.car->planner = control::ParseControlPlanner(first.planner);
+    } else {
+      s.planner = ParsePlannerType(first.planner);
+    }
     if (problem.planners.size() > 1) {
       s.warnings.push_back(problem.path + ":" + std::to_string(first.line) +
                            ": acdplan plan runs the first planner (" + first.ompl_app_name +
@@ -83,7 +99,7 @@ Scenario ScenarioFromOmplApp(const envs::OmplAppProblem& problem) {
     }
   }
   if (problem.time_limit > 0) s.time_limit = problem.time_limit;
-  if (!problem.sampler.empty()) s.sampler = ParseSamplerType(problem.sampler);
+  if (!problem.sampler.empty() && !s.car) s.sampler = ParseSamplerType(problem.sampler);
   CheckScenario(s);
   return s;
 }

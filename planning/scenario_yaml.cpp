@@ -1,6 +1,7 @@
 #include "planning/scenario_yaml.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "base/input_error.h"
 #include "envs/generators.h"
@@ -97,9 +98,11 @@ void ReadAcdSamplerOptions(const YamlFile& file, const YAML::Node& node, const s
   }
 }
 
-envs::Robot ReadRobot(const YamlFile& file, const YAML::Node& node, const std::string& key) {
+namespace {
+
+/// ReadRobot() without its check of the mapping's keys.
+envs::Robot ReadRobotBody(const YamlFile& file, const YAML::Node& node, const std::string& key) {
   auto child = [&key](const char* name) { return YamlFile::Child(key, name); };
-  file.CheckKeys(node, key, {"shape", "radius", "polygon", "mesh"});
   const envs::RobotShape shape =
       node["shape"] ? file.Parsed(node["shape"], child("shape"), envs::ParseRobotShape)
                     : envs::RobotShape::kPoint;
@@ -147,6 +150,81 @@ envs::Robot ReadRobot(const YamlFile& file, const YAML::Node& node, const std::s
     file.Fail(key, what);
   }
   file.Fail(child("shape"), "unknown robot shape");
+}
+
+}  // namespace
+
+envs::Robot ReadRobot(const YamlFile& file, const YAML::Node& node, const std::string& key) {
+  file.CheckKeys(node, key, {"shape", "radius", "polygon", "mesh"});
+  return ReadRobotBody(file, node, key);
+}
+
+bool NamesCarRobot(const YAML::Node& node) { return node.IsMap() && node["type"]; }
+
+CarRobot ReadCarRobot(const YamlFile& file, const YAML::Node& node, const std::string& key) {
+  auto child = [&key](const char* name) { return YamlFile::Child(key, name); };
+  file.CheckKeys(
+      node, key,
+      {"type", "length", "width", "max_speed", "max_steer", "max_accel", "max_steer_rate", "step",
+       "min_control_steps", "max_control_steps", "shape", "radius", "polygon"});
+  CarRobot car;
+  car.model = file.Parsed(node["type"], child("type"), control::ParseCarModel);
+  control::CarOptions& o = car.options;
+  auto positive = [&](const char* name, double* value) {
+    if (node[name]) *value = file.Number(node[name], child(name), "a positive number", Positive);
+  };
+  positive("length", &o.length);
+  positive("max_speed", &o.max_speed);
+  positive("step", &o.step);
+  if (node["max_steer"]) {
+    o.max_steer = file.Number(node["max_steer"], child("max_steer"), "a number in (0, pi/2) [rad]",
+                              [](double x) { return x > 0 && x < M_PI / 2; });
+  }
+  for (const char* name : {"max_accel", "max_steer_rate"}) {
+    if (node[name] && car.model != control::CarModel::kDynamic) {
+      file.Fail(child(name),
+                "only for type dynamic_car (the kinematic car's controls are its "
+                "speed and steering angle)");
+    }
+  }
+  positive("max_accel", &o.max_accel);
+  positive("max_steer_rate", &o.max_steer_rate);
+  if (node["min_control_steps"]) {
+    o.min_control_steps = static_cast<unsigned>(
+        file.Integer(node["min_control_steps"], child("min_control_steps"), "an integer >= 1", 1));
+  }
+  if (node["max_control_steps"]) {
+    o.max_control_steps = static_cast<unsigned>(
+        file.Integer(node["max_control_steps"], child("max_control_steps"), "an integer >= 1", 1));
+  }
+  if (o.max_control_steps < o.min_control_steps) {
+    file.Fail(child("max_control_steps"), "expected >= min_control_steps (" +
+                                              std::to_string(o.min_control_steps) + "), got " +
+                                              std::to_string(o.max_control_steps));
+  }
+  const bool own_shape = node["shape"] || node["radius"] || node["polygon"];
+  if (own_shape && node["width"]) {
+    file.Fail(child("width"), "not with shape (width is the default rectangle body's)");
+  }
+  if (own_shape) {
+    if (node["shape"] && node["shape"].IsScalar() && node["shape"].Scalar() == "mesh") {
+      file.Fail(child("shape"), "a car's body is 2D: point, disc or polygon");
+    }
+    car.body = ReadRobotBody(file, node, key);
+  } else {
+    const double half_length = o.length / 2;
+    const double half_width =
+        node["width"]
+            ? file.Number(node["width"], child("width"), "a positive number", Positive) / 2
+            : o.length / 4;
+    acd::Polygon2d rectangle;
+    rectangle.outer = {{-half_length, -half_width},
+                       {half_length, -half_width},
+                       {half_length, half_width},
+                       {-half_length, half_width}};
+    car.body = envs::Robot::Polygon(rectangle);
+  }
+  return car;
 }
 
 double ReadTauDiag(const YamlFile& file, const YAML::Node& acd, const std::string& key,

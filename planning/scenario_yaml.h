@@ -10,6 +10,7 @@
 #include "envs/workspace2d.h"
 #include "envs/workspace3d.h"
 #include "planning/acd_sampler_options.h"
+#include "planning/control/car.h"
 
 namespace acdplan::planning {
 
@@ -41,6 +42,24 @@ void ReadAcdSamplerOptions(const YamlFile& file, const YAML::Node& node, const s
 /// FILE, relative to the YAML file, any envs::ReadMesh() format)}` at `key`.
 /// @throws InputError "<file>: <key>...: <rule>".
 envs::Robot ReadRobot(const YamlFile& file, const YAML::Node& node, const std::string& key);
+
+/// A car read from a robot mapping (ReadCarRobot()).
+struct CarRobot {
+  envs::Robot body;  ///< The length x width rectangle, or the mapping's `shape`.
+  control::CarModel model = control::CarModel::kKinematic;
+  control::CarOptions options;
+};
+
+/// Whether the robot mapping `node` has a `type` (a control-space robot: a car).
+bool NamesCarRobot(const YAML::Node& node);
+
+/// A car from `{type: kinematic_car | dynamic_car, length, width, max_speed, max_steer,
+/// max_accel, max_steer_rate, step, min_control_steps, max_control_steps}` at `key`, its body
+/// the length x width rectangle centred on the car's (x, y) (width default length / 2) unless
+/// the mapping gives `shape` (point, disc, polygon; as ReadRobot()). The dynamic car's keys
+/// (max_accel, max_steer_rate) are errors for the kinematic car.
+/// @throws InputError "<file>: <key>.<field>: <rule>".
+CarRobot ReadCarRobot(const YamlFile& file, const YAML::Node& node, const std::string& key);
 
 /// The ACD tolerance relative to the bounds' diagonal: key `tau_diag` of mapping `acd` (at
 /// key path `key`), or its older spelling `tau_rel`, accepted with a line in `*warnings`

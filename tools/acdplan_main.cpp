@@ -260,8 +260,30 @@ int RunPlan(const PlanArguments& args) {
   for (const std::string& warning : scenario.warnings) {
     std::fprintf(stderr, "acdplan: warning: %s\n", warning.c_str());
   }
-  if (!args.sampler.empty()) scenario.sampler = planning::ParseSamplerType(args.sampler);
-  if (!args.planner.empty()) scenario.planner = planning::ParsePlannerType(args.planner);
+  if (scenario.car) {
+    // A car: a control planner, and no sampler (Syclop follows its decomposition).
+    if (!args.sampler.empty()) {
+      throw acdplan::InputError("--sampler: " + args.scenario +
+                                " plans a car with a control planner, which takes no sampler");
+    }
+    if (!args.planner.empty()) {
+      try {
+        scenario.car->planner = planning::control::ParseControlPlanner(args.planner);
+      } catch (const acdplan::InputError& error) {
+        throw acdplan::InputError("--planner: " + args.scenario + " plans a car: " + error.what());
+      }
+    }
+  } else {
+    if (!args.sampler.empty()) scenario.sampler = planning::ParseSamplerType(args.sampler);
+    if (!args.planner.empty()) {
+      try {
+        scenario.planner = planning::ParsePlannerType(args.planner);
+      } catch (const acdplan::InputError& error) {
+        throw acdplan::InputError("--planner: " + std::string(error.what()) +
+                                  "; the control planners need a car scenario");
+      }
+    }
+  }
   if (args.seed >= 0) scenario.seed = static_cast<std::uint64_t>(args.seed);
   if (args.time > 0) scenario.time_limit = args.time, scenario.samples = 0;
   if (args.samples > 0) scenario.samples = args.samples;
@@ -310,16 +332,36 @@ int RunPlan(const PlanArguments& args) {
   if (!scenario.description.empty())
     std::printf("description       %s\n", scenario.description.c_str());
   std::printf("workspace         %s\n", scenario.workspace_label.c_str());
-  std::printf("robot             %s\n", acdplan::envs::ToString(scenario.robot.shape).c_str());
-  std::printf("sampler           %s\n", planning::ToString(result.sampler).c_str());
-  std::printf("planner           %s (%s, seed %llu)\n", planning::ToString(result.planner).c_str(),
-              result.budget.c_str(), static_cast<unsigned long long>(scenario.seed));
-  std::printf("acd               %d components, %d openings, %.3f ms\n", result.components,
-              result.openings, result.decomposition_ms);
-  std::printf("samples           %llu\n", static_cast<unsigned long long>(result.samples));
+  if (result.car) {
+    const planning::CarPlan& car = *result.car;
+    std::printf("robot             %s (body: %s)\n",
+                planning::control::ToString(scenario.car->model).c_str(),
+                acdplan::envs::ToString(scenario.robot.shape).c_str());
+    std::printf("planner           %s (%s, seed %llu)\n",
+                planning::control::ToString(car.planner).c_str(), result.budget.c_str(),
+                static_cast<unsigned long long>(scenario.seed));
+    if (car.decomposition) {
+      std::printf("decomposition     %s, %d regions, %zu passed through\n",
+                  planning::control::ToString(*car.decomposition).c_str(), car.regions,
+                  car.visited_regions.size());
+    }
+    std::printf("tree states       %llu\n", static_cast<unsigned long long>(result.samples));
+  } else {
+    std::printf("robot             %s\n", acdplan::envs::ToString(scenario.robot.shape).c_str());
+    std::printf("sampler           %s\n", planning::ToString(result.sampler).c_str());
+    std::printf("planner           %s (%s, seed %llu)\n",
+                planning::ToString(result.planner).c_str(), result.budget.c_str(),
+                static_cast<unsigned long long>(scenario.seed));
+    std::printf("acd               %d components, %d openings, %.3f ms\n", result.components,
+                result.openings, result.decomposition_ms);
+    std::printf("samples           %llu\n", static_cast<unsigned long long>(result.samples));
+  }
   std::printf("collision checks  %llu\n", static_cast<unsigned long long>(result.collision_checks));
   std::printf("solved            %s\n", result.solved ? "yes" : "no");
-  if (result.solved) {
+  if (result.solved && result.car) {
+    std::printf("trajectory        %zu controls, duration %.6g s\n",
+                result.path.empty() ? 0 : result.path.size() - 1, result.car->duration_s);
+  } else if (result.solved) {
     std::printf("path              %zu states, length %.6g\n", result.path.size(),
                 result.path_length);
   }
@@ -586,8 +628,9 @@ int main(int argc, char** argv) {
                    "One of: " + acdplan::JoinNames(acdplan::planning::SamplerNames()))
       ->check(ParsedBy(acdplan::planning::ParseSamplerType));
   plan->add_option("--planner", plan_args.planner,
-                   "One of: " + acdplan::JoinNames(acdplan::planning::PlannerNames()))
-      ->check(ParsedBy(acdplan::planning::ParsePlannerType));
+                   "One of: " + acdplan::JoinNames(acdplan::planning::PlannerNames()) +
+                       "; a car scenario: " +
+                       acdplan::JoinNames(acdplan::planning::control::ControlPlannerNames()));
   plan->add_option("--seed", plan_args.seed, "Seed (samplers and OMPL)")
       ->check(CLI::NonNegativeNumber);
   CLI::Option* plan_time =

@@ -1,5 +1,7 @@
-// car_bench: a first measurement of control-space cars (issue 12, step 3): Syclop with the
-// ACD decomposition vs OMPL's grid, and RRT / KPIECE1 without a decomposition.
+// car_bench: a quick look at control-space cars: Syclop with the ACD decomposition vs OMPL's
+// grid, and RRT / KPIECE1 without a decomposition. The measurement of record is
+// `acdplan bench configs/bench/kinodynamic.yaml` (one process per run, seeded;
+// docs/bench/kinodynamic).
 //
 //   car_bench WORLD.yaml CAR RUNS TIME_LIMIT [LENGTH]
 //

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "base/format.h"
 #include "base/input_error.h"
 
 namespace acdplan::planning::control {
@@ -16,8 +17,6 @@ namespace ob = ompl::base;
 namespace oc = ompl::control;
 
 namespace {
-
-constexpr double kDegree = M_PI / 180.0;
 
 const ob::SE2StateSpace::StateType* Se2(CarModel model, const ob::State* state) {
   return model == CarModel::kKinematic
@@ -65,16 +64,30 @@ Eigen::Isometry2d CarPose(CarModel model, const ob::State* state) {
   return pose;
 }
 
+void CheckCarOptions(const CarOptions& o) {
+  auto fail = [](const std::string& field, const std::string& rule, double value) {
+    throw InputError("MakeCarSpaceInformation(): " + field + ": " + rule + ", got " +
+                     FormatSignificant(value, 6));
+  };
+  if (!(o.length > 0)) fail("length", "expected > 0", o.length);
+  if (!(o.max_speed > 0)) fail("max_speed", "expected > 0", o.max_speed);
+  if (!(o.max_steer > 0 && o.max_steer < M_PI / 2)) {
+    fail("max_steer", "expected in (0, pi/2) [rad]", o.max_steer);
+  }
+  if (!(o.max_accel > 0)) fail("max_accel", "expected > 0", o.max_accel);
+  if (!(o.max_steer_rate > 0)) fail("max_steer_rate", "expected > 0", o.max_steer_rate);
+  if (!(o.step > 0)) fail("step", "expected > 0", o.step);
+  if (o.min_control_steps < 1) fail("min_control_steps", "expected >= 1", o.min_control_steps);
+  if (o.max_control_steps < o.min_control_steps) {
+    fail("max_control_steps", "expected >= min_control_steps", o.max_control_steps);
+  }
+}
+
 oc::SpaceInformationPtr MakeCarSpaceInformation(CarModel model,
                                                 const Eigen::AlignedBox2d& xy_bounds,
                                                 std::function<bool(const Eigen::Isometry2d&)> valid,
                                                 const CarOptions& options) {
-  if (!(options.length > 0) || !(options.step > 0) || options.min_control_steps < 1 ||
-      options.max_control_steps < options.min_control_steps) {
-    throw InputError(
-        "MakeCarSpaceInformation(): length and step must be > 0, and 1 <= "
-        "min_control_steps <= max_control_steps");
-  }
+  CheckCarOptions(options);
   ob::RealVectorBounds xy(2);
   for (int i = 0; i < 2; ++i) {
     xy.setLow(i, xy_bounds.min()[i]);
@@ -85,21 +98,21 @@ oc::SpaceInformationPtr MakeCarSpaceInformation(CarModel model,
   ob::StateSpacePtr space = se2;
   ob::RealVectorBounds controls(2);
   if (model == CarModel::kKinematic) {
-    controls.setLow(0, -1.0), controls.setHigh(0, 1.0);
-    controls.setLow(1, -30 * kDegree), controls.setHigh(1, 30 * kDegree);
+    controls.setLow(0, -options.max_speed), controls.setHigh(0, options.max_speed);
+    controls.setLow(1, -options.max_steer), controls.setHigh(1, options.max_steer);
   } else {
     auto velocity = std::make_shared<ob::RealVectorStateSpace>(2);
     ob::RealVectorBounds vphi(2);
-    vphi.setLow(0, -1.0), vphi.setHigh(0, 1.0);
-    vphi.setLow(1, -30 * kDegree), vphi.setHigh(1, 30 * kDegree);
+    vphi.setLow(0, -options.max_speed), vphi.setHigh(0, options.max_speed);
+    vphi.setLow(1, -options.max_steer), vphi.setHigh(1, options.max_steer);
     velocity->setBounds(vphi);
     auto compound = std::make_shared<ob::CompoundStateSpace>();
     compound->addSubspace(se2, 1.0);
     compound->addSubspace(velocity, 0.3);
     compound->lock();
     space = compound;
-    controls.setLow(0, -0.5), controls.setHigh(0, 0.5);
-    controls.setLow(1, -2 * kDegree), controls.setHigh(1, 2 * kDegree);
+    controls.setLow(0, -options.max_accel), controls.setHigh(0, options.max_accel);
+    controls.setLow(1, -options.max_steer_rate), controls.setHigh(1, options.max_steer_rate);
   }
   auto control_space = std::make_shared<oc::RealVectorControlSpace>(space, 2);
   control_space->setBounds(controls);

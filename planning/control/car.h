@@ -5,6 +5,7 @@
 #include <ompl/control/SpaceInformation.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <functional>
 #include <string>
 
@@ -23,16 +24,24 @@ enum class CarModel {
 };
 
 /// "kinematic_car" / "dynamic_car". @throws InputError for an unknown name.
+/// (The bounds below are CarOptions' defaults, OMPL.app's.)
 CarModel ParseCarModel(const std::string& name);
 std::string ToString(CarModel model);
 
-/// Options of MakeCarSpaceInformation(); `{}` is valid.
+/// Options of MakeCarSpaceInformation(); `{}` is valid (OMPL.app's cars).
 struct CarOptions {
-  double length = 1.0;              ///< Car length L [units] (OMPL.app: 1 / lengthInv_ = 1); > 0.
+  double length = 1.0;     ///< Car length L [units] (OMPL.app: 1 / lengthInv_ = 1); > 0.
+  double max_speed = 1.0;  ///< |v| bound [units/s] (kinematic: control; dynamic: state); > 0.
+  double max_steer = 30 * M_PI / 180;      ///< |phi| bound [rad] (OMPL.app: 30 deg); in (0, pi/2).
+  double max_accel = 0.5;                  ///< kDynamic: |a| bound [units/s^2]; > 0.
+  double max_steer_rate = 2 * M_PI / 180;  ///< kDynamic: |omega| bound [rad/s] (2 deg/s); > 0.
   double step = 0.05;               ///< Propagation step size [s] (ODE integration step); > 0.
   unsigned min_control_steps = 1;   ///< Shortest control duration [steps]; >= 1.
   unsigned max_control_steps = 20;  ///< Longest control duration [steps]; >= min.
 };
+
+/// Checks `options`. @throws InputError "MakeCarSpaceInformation(): <field>: <rule>, got <v>".
+void CheckCarOptions(const CarOptions& options);
 
 /// The control SpaceInformation of `model` over `xy_bounds`, its propagator OMPL's
 /// ODEBasicSolver (RK4) on the car's ODE (theta wrapped to [-pi, pi] after each step), and

@@ -1,7 +1,9 @@
 #include "planning/control/plan_car.h"
 
+#include <ompl/base/PlannerData.h>
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/control/PathControl.h>
 #include <ompl/control/planners/est/EST.h>
 #include <ompl/control/planners/kpiece/KPIECE1.h>
@@ -10,6 +12,8 @@
 #include <ompl/control/planners/syclop/GridDecomposition.h>
 #include <ompl/control/planners/syclop/SyclopEST.h>
 #include <ompl/control/planners/syclop/SyclopRRT.h>
+
+#include <atomic>
 
 #include "base/input_error.h"
 #include "base/stopwatch.h"
@@ -71,7 +75,7 @@ ControlPlanner ParseControlPlanner(const std::string& name) {
     if (ToString(p) == name) return p;
   }
   throw InputError("unknown control planner '" + name +
-                   "' (expected one of: SyclopRRT, SyclopEST, RRT, KPIECE1, EST, PDST)");
+                   "' (expected one of: " + JoinNames(ControlPlannerNames()) + ")");
 }
 
 std::string ToString(ControlPlanner planner) {
@@ -92,18 +96,43 @@ std::string ToString(ControlPlanner planner) {
   return "?";
 }
 
+std::vector<std::string> ControlPlannerNames() {
+  std::vector<std::string> names;
+  for (ControlPlanner p :
+       {ControlPlanner::kSyclopRrt, ControlPlanner::kSyclopEst, ControlPlanner::kRrt,
+        ControlPlanner::kKpiece1, ControlPlanner::kEst, ControlPlanner::kPdst}) {
+    names.push_back(ToString(p));
+  }
+  return names;
+}
+
+DecompositionKind ParseDecompositionKind(const std::string& name) {
+  if (name == "acd") return DecompositionKind::kAcd;
+  if (name == "grid") return DecompositionKind::kGrid;
+  throw InputError("unknown decomposition '" + name + "' (expected one of: acd, grid)");
+}
+
+std::string ToString(DecompositionKind kind) {
+  return kind == DecompositionKind::kAcd ? "acd" : "grid";
+}
+
 CarResult PlanCar(const CarQuery& query) {
   const Stopwatch stopwatch;
   CarResult result;
   auto obstacles =
       std::make_shared<const collision::ObstacleSet>(collision::BuildObstacleSet(query.workspace));
-  auto world = std::make_shared<const collision::CollisionWorld>(
-      obstacles, query.robot, collision::CollisionWorldOptions{});
+  collision::CollisionWorldOptions world_options;
+  world_options.mode = query.collision_mode;
+  auto world =
+      std::make_shared<const collision::CollisionWorld>(obstacles, query.robot, world_options);
   const envs::Robot robot = query.robot;
   const Eigen::AlignedBox2d box = query.workspace.bounds;
+  // Counted atomically: OMPL may check states from several threads in principle.
+  auto checks = std::make_shared<std::atomic<std::uint64_t>>(0);
   oc::SpaceInformationPtr si = MakeCarSpaceInformation(
       query.model, box,
-      [world, robot, box](const Eigen::Isometry2d& pose) {
+      [world, robot, box, checks](const Eigen::Isometry2d& pose) {
+        checks->fetch_add(1, std::memory_order_relaxed);
         return envs::InsideBounds(robot, box, pose) && world->IsValid(pose);
       },
       query.car);
@@ -115,9 +144,14 @@ CarResult PlanCar(const CarQuery& query) {
   Se2(query.model, start.get())->setXY(query.start.x(), query.start.y());
   Se2(query.model, start.get())->setYaw(query.start.z());
   Se2(query.model, goal.get())->setXY(query.goal.x(), query.goal.y());
+  Se2(query.model, goal.get())->setYaw(query.goal.z());
   if (!si->isValid(start.get())) {
     throw InputError("PlanCar(): start: the robot is in collision or out of bounds there");
   }
+  if (!si->isValid(goal.get())) {
+    throw InputError("PlanCar(): goal: the robot is in collision or out of bounds there");
+  }
+  checks->store(0);
   auto pdef = std::make_shared<ob::ProblemDefinition>(si);
   pdef->addStartState(start);
   auto goal_region = std::make_shared<XyGoal>(si, query.model);
@@ -137,8 +171,10 @@ CarResult PlanCar(const CarQuery& query) {
     if (query.decomposition == DecompositionKind::kAcd) {
       acd::Decompose2dOptions options;
       options.tau = query.tau_diag * box.sizes().norm();
+      options.measure = query.measure;
       const CachedDecomposition cached = DecomposeFreeSpaceCached(query.workspace, options);
       result.decomposition_ms = cached.compute_ms;
+      result.decomposition = *cached.decomposition;
       decomposition =
           std::make_shared<AcdDecomposition>(*cached.decomposition, xy, si->getStateSpace().get());
     } else {
@@ -171,20 +207,41 @@ CarResult PlanCar(const CarQuery& query) {
   planner->setProblemDefinition(pdef);
   planner->setup();
   const double remaining = std::max(1e-3, query.time_limit - stopwatch.Seconds());
-  const ob::PlannerStatus status = planner->solve(remaining);
+  const ob::PlannerStatus status =
+      query.termination_checks > 0
+          ? planner->solve(ob::IterationTerminationCondition(query.termination_checks))
+          : planner->solve(remaining);
   // Syclop (OMPL 1.5) returns EXACT_SOLUTION with an approximate path when time runs out: ask
   // the problem definition whether the solution is exact.
   result.solved = status == ob::PlannerStatus::EXACT_SOLUTION && pdef->hasExactSolution();
-  if (result.solved) {
-    auto* path = pdef->getSolutionPath()->as<oc::PathControl>();
-    result.path_duration = path->length();
-    for (const ob::State* state : path->getStates()) {
-      std::vector<double> reals;
-      si->getStateSpace()->copyToReals(reals, state);
-      result.path.push_back(reals);
+  result.time_s = stopwatch.Seconds();
+  result.collision_checks = checks->load();
+  ob::PlannerData data(si);
+  planner->getPlannerData(data);
+  result.tree_states = data.numVertices();
+  auto reals = [&si](const ob::State* state) {
+    std::vector<double> q;
+    si->getStateSpace()->copyToReals(q, state);
+    return q;
+  };
+  if (const ob::PathPtr solution = pdef->getSolutionPath()) {
+    auto* path = solution->as<oc::PathControl>();
+    if (result.solved) {
+      result.path_duration = path->length();
+      for (const ob::State* state : path->getStates()) result.path.push_back(reals(state));
+    }
+    oc::PathControl fine(*path);
+    fine.interpolate();
+    for (const ob::State* state : fine.getStates()) {
+      result.trajectory.push_back(reals(state));
+      if (!decomposition) continue;
+      const int region = decomposition->locateRegion(state);
+      if (region >= 0 &&
+          (result.visited_regions.empty() || result.visited_regions.back() != region)) {
+        result.visited_regions.push_back(region);
+      }
     }
   }
-  result.time_s = stopwatch.Seconds();
   return result;
 }
 

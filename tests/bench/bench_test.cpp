@@ -162,6 +162,85 @@ TEST(BenchSpec, ExpandsCasesSweepsAndShards) {
   EXPECT_EQ(BenchRunSeed(7, "x/y", 3), BenchRunSeed(7, "x/y", 3));
 }
 
+const std::string kCarWorld =
+    "name: cars\nworlds:\n  - {name: trap, scenario: " + kConfigs + "/car_bug_trap.yaml}\n";
+const std::string kCars =
+    "robots:\n  - {name: kcar, type: kinematic_car, length: 0.3, width: 0.15}\n"
+    "  - {name: dcar, type: dynamic_car, length: 0.3, width: 0.15, max_steer_rate: 0.5}\n";
+
+TEST(BenchSpec, CarCasesExpandDecompositionsAndCheckTheirKeys) {
+  const BenchSpec spec = LoadBenchSpec(WriteBench(
+      "cars", kCarWorld + kCars +
+                  "cases:\n  - {planners: [SyclopRRT, SyclopEST], decompositions: [acd, "
+                  "grid10, grid40], budgets: [{time_limit: 2}]}\n"
+                  "  - {robots: [kcar], planners: [RRT, KPIECE1], budgets: [{time_limit: 2}]}\n"));
+  ASSERT_EQ(spec.cases.size(), 2u * 2u * 3u + 2u);
+  EXPECT_EQ(spec.cases[0].Key(spec), "trap/kcar/acd/SyclopRRT/2 s");
+  EXPECT_EQ(spec.cases[2].Key(spec), "trap/kcar/grid40/SyclopRRT/2 s");
+  EXPECT_EQ(spec.cases[12].Key(spec), "trap/kcar/none/RRT/2 s");
+  EXPECT_TRUE(spec.cases[12].control);
+  EXPECT_FALSE(spec.cases[12].decomposition.has_value());
+  ASSERT_TRUE(spec.robots[1].car.has_value());
+  EXPECT_EQ(spec.robots[1].car->model, planning::control::CarModel::kDynamic);
+  EXPECT_DOUBLE_EQ(spec.robots[1].car->options.max_steer_rate, 0.5);
+
+  const std::string syclop = "cases:\n  - {planners: [SyclopRRT], budgets: [{time_limit: 1}]}\n";
+  EXPECT_EQ(ErrorOf(kCarWorld + kCars + syclop), "");
+  EXPECT_HAS(ErrorOf(kCarWorld + kCars + "  - {name: p}\n" + syclop),
+             "bad.yaml: cases[0].robots: mixes cars (control planners) and rigid robots");
+  EXPECT_HAS(ErrorOf(kCarWorld + kCars +
+                     "cases:\n  - {samplers: [acd], planners: [RRT], budgets: [{time_limit: "
+                     "1}]}\n"),
+             "bad.yaml: cases[0].samplers: a car is planned by control planners");
+  EXPECT_HAS(
+      ErrorOf(kCarWorld + kCars + "cases:\n  - {planners: [PRM], budgets: [{time_limit: 1}]}\n"),
+      "bad.yaml: cases[0].planners[0]: unknown control planner 'PRM'");
+  EXPECT_HAS(ErrorOf(kCarWorld + kCars +
+                     "cases:\n  - {planners: [SyclopEST], decompositions: [grid0], budgets: "
+                     "[{time_limit: 1}]}\n"),
+             "bad.yaml: cases[0].decompositions[0]: unknown decomposition 'grid0' (expected acd "
+             "or grid<cells per side, 1-1000>, e.g. grid20)");
+  EXPECT_HAS(ErrorOf(kCarWorld + kCars +
+                     "cases:\n  - {planners: [SyclopEST], budgets: [{samples: 100}]}\n"),
+             "bad.yaml: cases[0].budgets[0]: a car's control planner takes a time_limit");
+  EXPECT_HAS(
+      ErrorOf(kCarWorld + "cases:\n  - {samplers: [acd], planners: [PRM], decompositions: [acd], "
+                          "budgets: [{samples: 10}]}\n"),
+      "bad.yaml: cases[0].decompositions: only for car robots");
+  EXPECT_HAS(
+      ErrorOf(kCarWorld + "robots:\n  - {name: c, type: kinematic_car, max_accel: 1}\n" + syclop),
+      "bad.yaml: robots[0].max_accel: only for type dynamic_car");
+}
+
+TEST(BenchRunner, RunsCarCasesWithTheirDecompositionInTheSamplerColumn) {
+  // Short time budgets; only what does not depend on the clock is checked.
+  const BenchSpec spec = LoadBenchSpec(WriteBench(
+      "car_run", kCarWorld + kCars +
+                     "cases:\n  - {robots: [kcar], planners: [SyclopRRT], decompositions: [acd, "
+                     "grid10], budgets: [{time_limit: 0.2}]}\n"
+                     "  - {robots: [dcar], planners: [KPIECE1], budgets: [{time_limit: 0.2}]}\n"));
+  const BenchRunOutcome outcome = RunBench(spec, {1});
+  ASSERT_EQ(outcome.records.size(), 3u);
+  const BenchRecord& acd = outcome.records[0];
+  EXPECT_EQ(acd.what.sampler, "acd");
+  EXPECT_EQ(acd.what.planner, "SyclopRRT");
+  EXPECT_GT(acd.decomposition_s, 0.0);  // The map's one-off ACD cost.
+  EXPECT_EQ(acd.components, 8);         // Syclop's regions: the bug trap's ACD components.
+  const BenchRecord& grid = outcome.records[1];
+  EXPECT_EQ(grid.what.sampler, "grid10");
+  EXPECT_EQ(grid.decomposition_s, 0.0);
+  EXPECT_EQ(grid.components, 100);
+  const BenchRecord& kpiece = outcome.records[2];
+  EXPECT_EQ(kpiece.what.sampler, "none");
+  EXPECT_EQ(kpiece.what.robot, "dcar");
+  for (const BenchRecord& r : outcome.records) {
+    EXPECT_TRUE(r.status == RunStatus::kSolved || r.status == RunStatus::kUnsolved)
+        << ToString(r.status);
+    EXPECT_GT(r.collision_checks, 0u);
+    EXPECT_GT(r.samples, 0u);  // Tree states.
+  }
+}
+
 TEST(BenchSpec, ShardSyntax) {
   EXPECT_EQ(ParseBenchShard("2/8").index, 2);
   EXPECT_EQ(ParseBenchShard("2/8").count, 8);

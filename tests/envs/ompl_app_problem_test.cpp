@@ -187,8 +187,16 @@ TEST(ReadOmplAppProblem, ErrorsNameTheFileTheLineAndTheKey) {
       {"robot=tetra.obj\n", "bad.cfg:1: robot: outside any section"},
       {"[benchmark]\nrun_count=1\n", "bad.cfg:0: [problem]: missing"},
       {Planar("start.x=2\n"), "bad.cfg:5: start.x: given twice (first on line 2)"},
-      {Planar("control=kinematic_car\n"),
-       "bad.cfg:2: control: control-space robots are not supported yet (kinematic_car)"},
+      {Planar("control=blimp\n"),
+       "bad.cfg:2: control: 'blimp' is not supported (acdplan plans kinematic_car and "
+       "dynamic_car"},
+      {Planar("control=kinematic_car\nstart.z=0\n"), "bad.cfg:"},
+      {Planar("control=dynamic car\n") + "[planner]\nprm=\n",
+       "bad.cfg:12: unknown planner 'prm' (expected one of: rrt, kpiece, est, pdst, sycloprrt, "
+       "syclopest, sst)"},
+      {Planar("control=kinematic_car\n") + "[planner]\nsst=\n",
+       "bad.cfg:12: planner 'sst' is not available in acdplan (available: rrt, kpiece, est, "
+       "pdst, sycloprrt, syclopest)"},
       {Planar("start.z=1\n"),
        "bad.cfg:2: start.axis.x: missing; a 3D problem (start.z is given here)"},
       {"[problem]\nrobot=tetra.obj\nstart.x=0\nstart.y=0\nstart.theta=0\ngoal.x=0\ngoal.y=0\n",

@@ -105,6 +105,35 @@ TEST(ScenarioFromOmplApp, Plans2dProblemEndToEnd) {
   }
 }
 
+TEST(ScenarioFromOmplApp, ControlProblemsBecomeCarScenarios) {
+  const Scenario s = LoadScenarioFile(kData + "car.cfg");
+  ASSERT_TRUE(s.car.has_value());
+  EXPECT_EQ(s.car->model, control::CarModel::kKinematic);
+  EXPECT_EQ(s.car->planner, control::ControlPlanner::kSyclopRrt);  // the first [planner] entry
+  EXPECT_EQ(s.car->decomposition, control::DecompositionKind::kAcd);
+  EXPECT_DOUBLE_EQ(s.car->goal_radius, 1.0);     // [problem] threshold
+  EXPECT_DOUBLE_EQ(s.car->options.length, 1.0);  // OMPL.app's car
+  EXPECT_EQ(s.time_limit, 5.0);
+  ASSERT_EQ(s.robot.shape, envs::RobotShape::kPolygon);  // the plate's footprint
+  EXPECT_NEAR(acd::Area(s.robot.polygon), 8.0, 1e-12);
+  EXPECT_EQ(s.start, (std::vector<double>{0, 6, 0}));
+  // It plans as a car (the planner stops after a number of checks, not on the clock).
+  Scenario budgeted = s;
+  budgeted.car->termination_checks = 5000;
+  ConfigureOmpl(3, true);
+  const PlanResult result = PlanScenario(budgeted);
+  ASSERT_TRUE(result.car.has_value());
+  EXPECT_EQ(result.car->planner, control::ControlPlanner::kSyclopRrt);
+  EXPECT_EQ(result.car->regions, static_cast<int>(result.decomposition.components.size()));
+  EXPECT_GT(result.samples, 0u);
+  // Control problems read control planners; a geometric-only name or an unsupported system is
+  // an error naming the line.
+  const envs::OmplAppProblem problem = envs::ReadOmplAppProblem(kData + "car.cfg");
+  EXPECT_EQ(problem.control, "kinematic_car");
+  ASSERT_EQ(problem.planners.size(), 2u);
+  EXPECT_EQ(problem.planners[1].planner, "KPIECE1");
+}
+
 TEST(LoadScenarioFile, ReadsYamlScenariosAsBefore) {
   const Scenario s = LoadScenarioFile(std::string(ACDPLAN_SOURCE_DIR) + "/configs/demo.yaml");
   EXPECT_FALSE(s.workspace.obstacles.empty());

@@ -620,6 +620,29 @@ TEST_F(CliTest, DecomposesACorpusMesh) {
               1e-9 * j.at("stats").at("volume").get<double>());
 }
 
+TEST_F(CliTest, PlansACarScenarioAndRejectsGeometricOptions) {
+  const std::string car = Quote(kSource + "configs/car_bug_trap.yaml");
+  ExpectUsageError(Acdplan("plan " + car + " --sampler acd"));
+  RunResult run = Acdplan("plan " + car + " --planner PRM");
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find("unknown control planner 'PRM'"), std::string::npos) << run.err;
+  run = Acdplan("plan " + Quote(kSource + "configs/bug_trap.yaml") + " --planner SyclopRRT");
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find("the control planners need a car scenario"), std::string::npos) << run.err;
+  ExpectUsageError(Acdplan("plan " + car + " --samples 100"));
+  // A short time budget: solved or not (exit 0 or 3) depends on the clock; the outputs do not.
+  const fs::path json = dir_ / "car.json", svg = dir_ / "car.svg";
+  run = Acdplan("plan " + car + " --planner SyclopEST --time 0.5 --json " + Quote(json.string()) +
+                " --svg " + Quote(svg.string()));
+  EXPECT_TRUE(run.status == 0 || run.status == 3) << run.status << run.err;
+  EXPECT_NE(run.out.find("SyclopEST"), std::string::npos) << run.out;
+  const nlohmann::json j = nlohmann::json::parse(Read(json));
+  EXPECT_EQ(j["planner"], "SyclopEST");
+  EXPECT_EQ(j["decomposition"], "acd");
+  EXPECT_EQ(j["regions"], 8);
+  EXPECT_NE(Read(svg).find("<g id=\"lead\">"), std::string::npos);
+}
+
 TEST_F(CliTest, PlansA2dOmplAppProblemFile) {
   const std::string cfg = kSource + "tests/data/ompl_app/planar.cfg";
   const RunResult run =
@@ -644,9 +667,10 @@ TEST_F(CliTest, PlansA2dOmplAppProblemFile) {
             std::string::npos)
       << spatial.err;
   const RunResult car =
-      Acdplan("plan " + Quote(Write("car.cfg", "[problem]\ncontrol=dynamic_car\n").string()));
+      Acdplan("plan " + Quote(Write("car.cfg", "[problem]\ncontrol=blimp\n").string()));
   ExpectUsageError(car);
-  EXPECT_NE(car.err.find("car.cfg:2: control: control-space robots are not supported yet"),
+  EXPECT_NE(car.err.find("car.cfg:2: control: 'blimp' is not supported (acdplan plans "
+                         "kinematic_car and dynamic_car"),
             std::string::npos)
       << car.err;
 }
