@@ -107,28 +107,7 @@ void AcdLeadStateSampler::sampleGaussian(ompl::base::State* state, const ompl::b
 AcdLeadValidStateSampler::AcdLeadValidStateSampler(
     const ompl::base::SpaceInformation* si, std::shared_ptr<const internal::LeadDistribution> lead,
     std::uint64_t seed, int max_attempts)
-    : ompl::base::ValidStateSampler(si),
-      sampler_(si->getStateSpace().get(), std::move(lead), seed) {
-  name_ = "acd_lead";
-  setNrAttempts(static_cast<unsigned int>(max_attempts));
-}
-
-bool AcdLeadValidStateSampler::sample(ompl::base::State* state) {
-  for (unsigned int attempt = 0; attempt < attempts_; ++attempt) {
-    sampler_.sampleUniform(state);
-    if (si_->isValid(state)) return true;
-  }
-  return false;
-}
-
-bool AcdLeadValidStateSampler::sampleNear(ompl::base::State* state, const ompl::base::State* near,
-                                          double distance) {
-  for (unsigned int attempt = 0; attempt < attempts_; ++attempt) {
-    sampler_.sampleUniformNear(state, near, distance);
-    if (si_->isValid(state)) return true;
-  }
-  return false;
-}
+    : RejectionValidStateSampler(si, "acd_lead", max_attempts, std::move(lead), seed) {}
 
 void InstallAcdLeadSamplers(const std::shared_ptr<ompl::base::SpaceInformation>& si,
                             const acd::Decomposition2d& decomposition, const AcdLeadQuery& query,

@@ -6,7 +6,6 @@
 // not been enough.
 
 #include <ompl/base/StateSampler.h>
-#include <ompl/base/ValidStateSampler.h>
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -16,6 +15,7 @@
 #include "base/random.h"
 #include "envs/robot.h"
 #include "planning/acd_sampler_options.h"
+#include "planning/rejection_valid_state_sampler.h"
 
 namespace acdplan::planning {
 
@@ -92,20 +92,11 @@ class AcdLeadStateSampler : public ompl::base::StateSampler {
 };
 
 /// AcdLeadStateSampler's draws, the first valid one of at most `max_attempts` per sample().
-class AcdLeadValidStateSampler : public ompl::base::ValidStateSampler {
+class AcdLeadValidStateSampler : public RejectionValidStateSampler<AcdLeadStateSampler> {
  public:
   AcdLeadValidStateSampler(const ompl::base::SpaceInformation* si,
                            std::shared_ptr<const internal::LeadDistribution> lead,
                            std::uint64_t seed, int max_attempts);
-
-  bool sample(ompl::base::State* state) override;
-  bool sampleNear(ompl::base::State* state, const ompl::base::State* near,
-                  double distance) override;
-
-  const AcdLeadStateSampler& state_sampler() const { return sampler_; }
-
- private:
-  AcdLeadStateSampler sampler_;
 };
 
 /// Installs the lead samplers on `si` (valid-state sampler for PRM and co., state sampler for

@@ -4,7 +4,6 @@
 // lead (acd_lead_sampler.h), with 3D components and planar openings.
 
 #include <ompl/base/StateSampler.h>
-#include <ompl/base/ValidStateSampler.h>
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -15,6 +14,7 @@
 #include "envs/free_space_decomposition3d.h"
 #include "planning/acd_lead_sampler.h"
 #include "planning/acd_sampler_options.h"
+#include "planning/rejection_valid_state_sampler.h"
 
 namespace acdplan::planning {
 
@@ -67,18 +67,11 @@ class AcdLeadStateSampler3d : public ompl::base::StateSampler {
 };
 
 /// AcdLeadStateSampler3d's draws, the first valid one of at most `max_attempts` per sample().
-class AcdLeadValidStateSampler3d : public ompl::base::ValidStateSampler {
+class AcdLeadValidStateSampler3d : public RejectionValidStateSampler<AcdLeadStateSampler3d> {
  public:
   AcdLeadValidStateSampler3d(const ompl::base::SpaceInformation* si,
                              std::shared_ptr<const internal::LeadDistribution3d> lead,
                              std::uint64_t seed, int max_attempts);
-  bool sample(ompl::base::State* state) override;
-  bool sampleNear(ompl::base::State* state, const ompl::base::State* near,
-                  double distance) override;
-  const AcdLeadStateSampler3d& state_sampler() const { return sampler_; }
-
- private:
-  AcdLeadStateSampler3d sampler_;
 };
 
 /// Installs the 3D lead samplers on `si` as InstallAcdSamplers3d() installs the 3D ACD

@@ -57,28 +57,7 @@ void AcdStateSampler3d::sampleGaussian(ompl::base::State* state, const ompl::bas
 AcdValidStateSampler3d::AcdValidStateSampler3d(
     const ompl::base::SpaceInformation* si, std::shared_ptr<const internal::AcdTargets3d> targets,
     std::uint64_t seed, int max_attempts)
-    : ompl::base::ValidStateSampler(si),
-      sampler_(si->getStateSpace().get(), std::move(targets), seed) {
-  name_ = "acd";
-  setNrAttempts(static_cast<unsigned int>(max_attempts));
-}
-
-bool AcdValidStateSampler3d::sample(ompl::base::State* state) {
-  for (unsigned int attempt = 0; attempt < attempts_; ++attempt) {
-    sampler_.sampleUniform(state);
-    if (si_->isValid(state)) return true;
-  }
-  return false;
-}
-
-bool AcdValidStateSampler3d::sampleNear(ompl::base::State* state, const ompl::base::State* near,
-                                        double distance) {
-  for (unsigned int attempt = 0; attempt < attempts_; ++attempt) {
-    sampler_.sampleUniformNear(state, near, distance);
-    if (si_->isValid(state)) return true;
-  }
-  return false;
-}
+    : RejectionValidStateSampler(si, "acd", max_attempts, std::move(targets), seed) {}
 
 void InstallAcdSamplers3d(const std::shared_ptr<ompl::base::SpaceInformation>& si,
                           const envs::FreeSpaceDecomposition3d& decomposition,

@@ -4,7 +4,6 @@
 // call that installs them.
 
 #include <ompl/base/StateSampler.h>
-#include <ompl/base/ValidStateSampler.h>
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -14,10 +13,7 @@
 #include "base/random.h"
 #include "envs/free_space_decomposition3d.h"
 #include "planning/acd_sampler_options.h"
-
-namespace ompl::base {
-class SpaceInformation;
-}
+#include "planning/rejection_valid_state_sampler.h"
 
 namespace acdplan::planning {
 
@@ -54,17 +50,11 @@ class AcdStateSampler3d : public ompl::base::StateSampler {
 };
 
 /// AcdStateSampler3d's draws kept when valid (up to `max_attempts` per call).
-class AcdValidStateSampler3d : public ompl::base::ValidStateSampler {
+class AcdValidStateSampler3d : public RejectionValidStateSampler<AcdStateSampler3d> {
  public:
   AcdValidStateSampler3d(const ompl::base::SpaceInformation* si,
                          std::shared_ptr<const internal::AcdTargets3d> targets, std::uint64_t seed,
                          int max_attempts);
-  bool sample(ompl::base::State* state) override;
-  bool sampleNear(ompl::base::State* state, const ompl::base::State* near,
-                  double distance) override;
-
- private:
-  AcdStateSampler3d sampler_;
 };
 
 /// Installs the 3D ACD samplers on `si` as InstallAcdSamplers() does in 2D (valid-state sampler

@@ -3,14 +3,13 @@
 // valid-state sampler -- the robot placed around ACD component centroids and openings, kept
 // if collision free.
 
-#include <ompl/base/ValidStateSampler.h>
-
 #include <cstdint>
 #include <memory>
 
 #include "acd/decomposition2d.h"
 #include "planning/acd_sampler_options.h"
 #include "planning/acd_state_sampler.h"
+#include "planning/rejection_valid_state_sampler.h"
 
 namespace acdplan::planning {
 
@@ -23,7 +22,7 @@ namespace acdplan::planning {
 /// the uniform share keeps it probabilistically complete.
 ///
 /// Thread safety and spaces: as AcdStateSampler (own seeded engine, no global random state).
-class AcdValidStateSampler : public ompl::base::ValidStateSampler {
+class AcdValidStateSampler : public RejectionValidStateSampler<AcdStateSampler> {
  public:
   /// @throws InputError if `options` are out of range; std::invalid_argument if the
   ///         space of `si` is not supported.
@@ -34,19 +33,6 @@ class AcdValidStateSampler : public ompl::base::ValidStateSampler {
   AcdValidStateSampler(const ompl::base::SpaceInformation* si,
                        std::shared_ptr<const internal::AcdTargets> targets, std::uint64_t seed,
                        int max_attempts);
-
-  /// A valid state from the ACD distribution; false if none was found in the attempts.
-  bool sample(ompl::base::State* state) override;
-  /// A valid state within `distance` of `near` (see AcdStateSampler::sampleUniformNear()).
-  bool sampleNear(ompl::base::State* state, const ompl::base::State* near,
-                  double distance) override;
-
-  /// Candidates drawn so far (valid or not).
-  std::uint64_t candidates() const { return candidates_; }
-
- private:
-  AcdStateSampler sampler_;
-  std::uint64_t candidates_ = 0;
 };
 
 }  // namespace acdplan::planning

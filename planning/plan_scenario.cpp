@@ -15,7 +15,6 @@
 #include <sstream>
 
 #include "acd/decompose2d.h"
-#include "base/format.h"
 #include "base/input_error.h"
 #include "base/stopwatch.h"
 #include "collision/collision_mode.h"
@@ -28,6 +27,7 @@
 #include "planning/counting_validity_checker.h"
 #include "planning/decomposition_cache.h"
 #include "planning/internal/run_on_time_limit.h"
+#include "planning/internal/scenario_setup.h"
 #include "planning/plan_picture3d.h"
 #include "planning/plan_scenario3d.h"
 #include "planning/registry.h"
@@ -70,8 +70,7 @@ PlanResult PlanScenario(const Scenario& scenario) {
   PlanResult result;
   result.sampler = scenario.sampler;
   result.planner = scenario.planner;
-  result.budget = scenario.samples > 0 ? std::to_string(scenario.samples) + " samples"
-                                       : FormatSignificant(scenario.time_limit, 6) + " s";
+  result.budget = internal::BudgetLabel(scenario);
 
   // Free space and its ACD (the sampler's targets; decomposed for every sampler, so time_s
   // compares like with like).
@@ -86,54 +85,26 @@ PlanResult PlanScenario(const Scenario& scenario) {
   result.openings = static_cast<int>(result.decomposition.openings.size());
 
   // Collision world and the state space.
-  auto obstacles =
-      std::make_shared<const collision::ObstacleSet>(collision::BuildObstacleSet(workspace));
-  collision::CollisionWorldOptions world_options;
-  world_options.mode = scenario.collision_mode;
-  auto world =
-      std::make_shared<const collision::CollisionWorld>(obstacles, scenario.robot, world_options);
+  const auto world = internal::MakeCollisionWorld(workspace, scenario);
   const bool se2 = scenario.robot.shape == envs::RobotShape::kPolygon;
-  ob::RealVectorBounds bounds(2);
-  for (int i = 0; i < 2; ++i) {
-    bounds.setLow(i, workspace.bounds.min()[i]);
-    bounds.setHigh(i, workspace.bounds.max()[i]);
-  }
-  ob::StateSpacePtr space;
-  if (se2) {
-    auto s = std::make_shared<ob::SE2StateSpace>();
-    s->setBounds(bounds);
-    space = s;
-  } else {
-    auto s = std::make_shared<ob::RealVectorStateSpace>(2);
-    s->setBounds(bounds);
-    space = s;
-  }
-  auto si = std::make_shared<ob::SpaceInformation>(space);
   const envs::Robot robot = scenario.robot;
   const Eigen::AlignedBox2d box = workspace.bounds;
-  auto checker = std::make_shared<CountingValidityChecker>(
-      si.get(), [world, robot, box, se2](const ob::State* state) {
+  const internal::CheckedSpace checked = internal::MakeCheckedSpace(
+      box.min(), box.max(), se2, [world, robot, box, se2](const ob::State* state) {
         const Eigen::Isometry2d pose = Pose(se2, state);
         return envs::InsideBounds(robot, box, pose) && world->IsValid(pose);
       });
-  si->setStateValidityChecker(checker);
-  // Motions are checked every 0.2% of the space's extent (OMPL's default is 1%): fine enough
-  // for the thinnest walls of the built-in worlds (0.25 in a 10-unit maze).
-  si->setStateValidityCheckingResolution(0.002);
-  si->setup();
+  const std::shared_ptr<ob::SpaceInformation>& si = checked.si;
+  const std::shared_ptr<CountingValidityChecker>& checker = checked.checker;
 
   ob::ScopedState<> start(si), goal(si);
   for (size_t i = 0; i < scenario.start.size(); ++i) {
-    start[i] = scenario.start[i];
-    goal[i] = scenario.goal[i];
+    // OMPL's SO(2) holds angles in [-pi, pi]; a scenario may give any yaw.
+    const bool yaw = se2 && i == 2;
+    start[i] = yaw ? std::remainder(scenario.start[i], 2 * M_PI) : scenario.start[i];
+    goal[i] = yaw ? std::remainder(scenario.goal[i], 2 * M_PI) : scenario.goal[i];
   }
-  if (!si->isValid(start.get())) {
-    throw InputError(where + ": start: the robot is in collision or out of bounds there");
-  }
-  if (!si->isValid(goal.get())) {
-    throw InputError(where + ": goal: the robot is in collision or out of bounds there");
-  }
-  checker->ResetChecks();
+  internal::CheckEndpoints(checked, start.get(), goal.get(), where);
 
   AcdSamplerOptions sampler_options = scenario.sampler_options;
   sampler_options.seed = scenario.seed;

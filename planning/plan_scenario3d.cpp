@@ -6,7 +6,6 @@
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
 
-#include "base/format.h"
 #include "base/input_error.h"
 #include "base/stopwatch.h"
 #include "collision/collision_world.h"
@@ -17,6 +16,7 @@
 #include "planning/acd_samplers3d.h"
 #include "planning/counting_validity_checker.h"
 #include "planning/internal/run_on_time_limit.h"
+#include "planning/internal/scenario_setup.h"
 #include "planning/internal/space_access.h"
 #include "planning/internal/space_access3d.h"
 #include "planning/registry.h"
@@ -73,8 +73,7 @@ PlanResult PlanScenario3d(const Scenario& scenario) {
   PlanResult result;
   result.sampler = scenario.sampler;
   result.planner = scenario.planner;
-  result.budget = scenario.samples > 0 ? std::to_string(scenario.samples) + " samples"
-                                       : FormatSignificant(scenario.time_limit, 6) + " s";
+  result.budget = internal::BudgetLabel(scenario);
   const envs::Workspace3d& workspace = scenario.workspace3d;
 
   // The free space's 3D ACD (cached on disk; decomposed for every sampler, as in 2D, so that
@@ -91,49 +90,21 @@ PlanResult PlanScenario3d(const Scenario& scenario) {
   result.openings = static_cast<int>(decomposition->openings.size());
 
   // Collision world and the state space.
-  auto obstacles =
-      std::make_shared<const collision::ObstacleSet>(collision::BuildObstacleSet(workspace));
-  collision::CollisionWorldOptions world_options;
-  world_options.mode = scenario.collision_mode;
-  auto world =
-      std::make_shared<const collision::CollisionWorld>(obstacles, scenario.robot, world_options);
+  const auto world = internal::MakeCollisionWorld(workspace, scenario);
   const bool se3 = scenario.robot.shape == envs::RobotShape::kMesh;
-  ob::RealVectorBounds bounds(3);
-  for (int i = 0; i < 3; ++i) {
-    bounds.setLow(i, workspace.bounds.min()[i]);
-    bounds.setHigh(i, workspace.bounds.max()[i]);
-  }
-  ob::StateSpacePtr space;
-  if (se3) {
-    auto s = std::make_shared<ob::SE3StateSpace>();
-    s->setBounds(bounds);
-    space = s;
-  } else {
-    auto s = std::make_shared<ob::RealVectorStateSpace>(3);
-    s->setBounds(bounds);
-    space = s;
-  }
-  auto si = std::make_shared<ob::SpaceInformation>(space);
-  const internal::SpaceKind kind = internal::Classify(space.get());
-  auto checker =
-      std::make_shared<CountingValidityChecker>(si.get(), [world, kind](const ob::State* state) {
+  const internal::SpaceKind kind =
+      se3 ? internal::SpaceKind::kSE3 : internal::SpaceKind::kRealVector3;
+  const internal::CheckedSpace checked = internal::MakeCheckedSpace(
+      workspace.bounds.min(), workspace.bounds.max(), se3, [world, kind](const ob::State* state) {
         return world->IsValid(internal::Pose3d(kind, state));
       });
-  si->setStateValidityChecker(checker);
-  // As in 2D: motions checked every 0.2% of the space's extent.
-  si->setStateValidityCheckingResolution(0.002);
-  si->setup();
+  const std::shared_ptr<ob::SpaceInformation>& si = checked.si;
+  const std::shared_ptr<CountingValidityChecker>& checker = checked.checker;
 
   ob::ScopedState<> start(si), goal(si);
   SetState(se3, scenario.start, start.get());
   SetState(se3, scenario.goal, goal.get());
-  if (!si->satisfiesBounds(start.get()) || !si->isValid(start.get())) {
-    throw InputError(where + ": start: the robot is in collision or out of bounds there");
-  }
-  if (!si->satisfiesBounds(goal.get()) || !si->isValid(goal.get())) {
-    throw InputError(where + ": goal: the robot is in collision or out of bounds there");
-  }
-  checker->ResetChecks();
+  internal::CheckEndpoints(checked, start.get(), goal.get(), where);
 
   AcdSamplerOptions sampler_options = scenario.sampler_options;
   sampler_options.seed = scenario.seed;

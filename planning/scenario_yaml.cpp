@@ -10,15 +10,21 @@
 
 namespace acdplan::planning {
 
-envs::Workspace2d ReadGeneratedWorkspace(const YamlFile& file, const YAML::Node& node,
-                                         const std::string& key, std::string* label) {
+namespace {
+
+// The keys a generated workspace has in 2D and 3D: `generator`, `seed` (default 1) and the
+// passage and wall sizes; then `generate(name, seed, parameters)` builds it, its InputError
+// reported at `key`.
+template <typename Parameters, typename Generate>
+auto ReadGenerated(const YamlFile& file, const YAML::Node& node, const std::string& key,
+                   std::string* label, const Generate& generate) {
   auto child = [&key](const char* name) { return YamlFile::Child(key, name); };
   file.CheckKeys(node, key, {"generator", "seed", "passage_width", "wall_thickness"});
   if (!node["generator"]) file.Fail(child("generator"), "required (or give a file name)");
   const std::string name = file.String(node["generator"], child("generator"));
   const std::uint64_t seed =
       node["seed"] ? file.Integer(node["seed"], child("seed"), "an integer >= 0", 0) : 1;
-  envs::GeneratorParameters parameters;
+  Parameters parameters;
   if (node["passage_width"]) {
     parameters.passage_width =
         file.Number(node["passage_width"], child("passage_width"), "a positive number", Positive);
@@ -29,10 +35,18 @@ envs::Workspace2d ReadGeneratedWorkspace(const YamlFile& file, const YAML::Node&
   }
   *label = "generator " + name + " (seed " + std::to_string(seed) + ")";
   try {
-    return envs::GenerateWorkspace2d(name, seed, parameters);
+    return generate(name, seed, parameters);
   } catch (const InputError& error) {
     file.Fail(key, error.what());
   }
+}
+
+}  // namespace
+
+envs::Workspace2d ReadGeneratedWorkspace(const YamlFile& file, const YAML::Node& node,
+                                         const std::string& key, std::string* label) {
+  return ReadGenerated<envs::GeneratorParameters>(file, node, key, label,
+                                                  envs::GenerateWorkspace2d);
 }
 
 bool NamesGenerator3d(const YAML::Node& node) {
@@ -43,26 +57,11 @@ bool NamesGenerator3d(const YAML::Node& node) {
 
 envs::Workspace3d ReadGeneratedWorkspace3d(const YamlFile& file, const YAML::Node& node,
                                            const std::string& key, std::string* label) {
-  auto child = [&key](const char* name) { return YamlFile::Child(key, name); };
-  file.CheckKeys(node, key, {"generator", "seed", "passage_width", "wall_thickness"});
-  const std::string name = file.String(node["generator"], child("generator"));
-  const std::uint64_t seed =
-      node["seed"] ? file.Integer(node["seed"], child("seed"), "an integer >= 0", 0) : 1;
-  envs::Generator3dParameters parameters;
-  if (node["passage_width"]) {
-    parameters.passage_width =
-        file.Number(node["passage_width"], child("passage_width"), "a positive number", Positive);
-  }
-  if (node["wall_thickness"]) {
-    parameters.wall_thickness =
-        file.Number(node["wall_thickness"], child("wall_thickness"), "a positive number", Positive);
-  }
-  *label = "generator " + name + " (seed " + std::to_string(seed) + ")";
-  try {
-    return envs::GenerateWorkspace3d(name, seed, parameters);
-  } catch (const InputError& error) {
-    file.Fail(key, error.what());
-  }
+  return ReadGenerated<envs::Generator3dParameters>(
+      file, node, key, label,
+      [](const std::string& name, std::uint64_t seed, const envs::Generator3dParameters& p) {
+        return envs::GenerateWorkspace3d(name, seed, p);
+      });
 }
 
 void ReadAcdSamplerOptions(const YamlFile& file, const YAML::Node& node, const std::string& key,

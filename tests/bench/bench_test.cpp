@@ -219,7 +219,9 @@ TEST(BenchRunner, RunsCarCasesWithTheirDecompositionInTheSamplerColumn) {
                      "cases:\n  - {robots: [kcar], planners: [SyclopRRT], decompositions: [acd, "
                      "grid10], budgets: [{time_limit: 0.2}]}\n"
                      "  - {robots: [dcar], planners: [KPIECE1], budgets: [{time_limit: 0.2}]}\n"));
-  const BenchRunOutcome outcome = RunBench(spec, {1});
+  BenchRunOptions one_run;
+  one_run.runs = 1;
+  const BenchRunOutcome outcome = RunBench(spec, one_run);
   ASSERT_EQ(outcome.records.size(), 3u);
   const BenchRecord& acd = outcome.records[0];
   EXPECT_EQ(acd.what.sampler, "acd");
