@@ -443,9 +443,7 @@ TEST(BenchRunner, RunsAnOmplAppProblemWithItsOwnRobot) {
 // A 3D world runs (its ACD decomposed in the parent into the disk cache; the in-process 2D
 // cache once tried to decompose its empty 2D workspace and stopped every run), acd_lead too.
 TEST(BenchRunner, RunsA3dWorldWithTheLead) {
-  const std::filesystem::path cache =
-      std::filesystem::temp_directory_path() / "acdplan_bench_test_3d_cache";
-  std::filesystem::remove_all(cache);
+  const fs::path cache = Scratch("3d_cache");
   setenv("ACDPLAN_CACHE_DIR", cache.c_str(), 1);
   const std::string scenario = std::string(ACDPLAN_SOURCE_DIR) + "/configs/window_wall_3d.yaml";
   const BenchSpec spec = LoadBenchSpec(

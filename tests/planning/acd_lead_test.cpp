@@ -21,6 +21,7 @@
 #include "planning/plan_scenario.h"
 #include "planning/registry.h"
 #include "planning/scenario.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::planning {
 namespace {
@@ -255,7 +256,8 @@ TEST(DecompositionCache, SameMapHitsOtherOptionsMiss) {
 TEST(AcdLeadScenario, LeadKeyAndRegisteredName) {
   EXPECT_EQ(ParseSamplerType("acd_lead"), SamplerType::kAcdLead);
   EXPECT_EQ(ToString(SamplerType::kAcdLead), "acd_lead");
-  const std::string path = ::testing::TempDir() + "acd_lead_scenario.yaml";
+  const test::ScratchDir dir("acdplan_acd_lead_test");
+  const std::string path = dir.Path("acd_lead_scenario.yaml");
   auto write = [&path](const std::string& sampler) {
     std::ofstream(path) << "workspace: {generator: zigzag, passage_width: 0.5}\n"
                            "robot: {shape: disc, radius: 0.1}\n"

@@ -16,22 +16,17 @@
 #include "collision/obstacle_set.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::planning {
 namespace {
 
 const std::string kConfigs = std::string(ACDPLAN_SOURCE_DIR) + "/configs";
 
-/// Writes `text` to a scenario file in configs/ 's sibling scratch folder and returns its path.
+/// Writes `text` to a scenario file in the process's scratch folder and returns its path.
 std::string Write(const std::string& name, const std::string& text) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() /
-      ("acdplan_car_scenario_test_" +
-       std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / name).string();
-  std::ofstream(path) << text;
-  return path;
+  static const test::ScratchDir dir("acdplan_car_scenario_test");  // Removed at exit.
+  return dir.Write(name, text);
 }
 
 const std::string kWorld = "workspace: {generator: bug_trap, seed: 1}\n";
