@@ -62,6 +62,7 @@
 #include <vector>
 
 #include "acd/convex_hull3d.h"
+#include "acd/internal/exact_rounding.h"
 #include "acd/internal/problem_list.h"
 #include "acd/mesh_measures.h"
 #include "base/format.h"
@@ -225,7 +226,7 @@ double ExactHullExcess(const TriangleMesh& hull, const Eigen::Vector3d& p) {
                                Exact::Point_3(b.x(), b.y(), b.z()),
                                Exact::Point_3(c.x(), c.y(), c.z()));
     const double d2 =
-        CGAL::to_double(CGAL::squared_distance(plane, Exact::Point_3(p.x(), p.y(), p.z())));
+        internal::RoundToDouble(CGAL::squared_distance(plane, Exact::Point_3(p.x(), p.y(), p.z())));
     excess = std::max(excess, std::sqrt(d2));
   }
   return excess;

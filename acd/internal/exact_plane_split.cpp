@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "acd/internal/disjoint_sets.h"
+#include "acd/internal/exact_rounding.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -132,9 +133,8 @@ void SplitPinchedVertices(ExactPiece* piece) {
   }
 }
 
-Eigen::Vector3d Approx(const Point3& p) {
-  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-}
+// Reproducible rounding (not CGAL::to_double, which depends on the evaluation history).
+Eigen::Vector3d Approx(const Point3& p) { return RoundToDouble(p); }
 
 FT Coordinate(const Point3& p, int axis) { return axis == 0 ? p.x() : (axis == 1 ? p.y() : p.z()); }
 
@@ -164,7 +164,7 @@ std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Pl
   int drop = 0;
   double best = -1;
   for (int k = 0; k < 3; ++k) {
-    const double c = std::abs(CGAL::to_double(coef[static_cast<size_t>(k)]));
+    const double c = std::abs(RoundToDouble(coef[static_cast<size_t>(k)]));
     if (c > best) best = c, drop = k;
   }
   const int u_axis = (drop + 1) % 3, v_axis = (drop + 2) % 3;
@@ -308,10 +308,10 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
   constexpr double kSnap = 1e-12;
   Eigen::AlignedBox3d box;
   for (const auto& r : rounded) box.extend(r);
-  const Eigen::Vector3d n(CGAL::to_double(plane.a()), CGAL::to_double(plane.b()),
-                          CGAL::to_double(plane.c()));
+  const Eigen::Vector3d n(RoundToDouble(plane.a()), RoundToDouble(plane.b()),
+                          RoundToDouble(plane.c()));
   const double snap = kSnap * box.diagonal().norm() * n.norm();
-  const double offset = CGAL::to_double(plane.d());
+  const double offset = RoundToDouble(plane.d());
   for (size_t i = 0; i < points.size(); ++i) {
     side[i] = std::abs(n.dot(rounded[i]) + offset) <= snap
                   ? 0

@@ -10,6 +10,7 @@
 #include <map>
 
 #include "acd/internal/cgal_surface_mesh.h"
+#include "acd/internal/exact_rounding.h"
 #include "acd/internal/mesh_edges.h"
 
 namespace acdplan::acd::internal {
@@ -83,12 +84,19 @@ TriangleMesh Unite(const TriangleMesh& mesh, const std::vector<std::vector<int>>
     united = std::move(result);
   }
   united.collect_garbage();
+  // CGAL numbers the union's vertices and faces in the order it meets the intersections, which
+  // follows heap addresses (its box intersection breaks ties by box address): renumber them
+  // canonically, vertices in exact lexicographic (x, y, z) order, triangles sorted after
+  // rotating their lowest vertex first, so that the result depends on the geometry alone.
+  std::vector<Mesh::Vertex_index> order(united.vertices().begin(), united.vertices().end());
+  std::sort(order.begin(), order.end(), [&united](Mesh::Vertex_index a, Mesh::Vertex_index b) {
+    return CGAL::compare_xyz(united.point(a), united.point(b)) == CGAL::SMALLER;
+  });
   std::vector<Eigen::Vector3d> vertices;
   std::map<Mesh::Vertex_index, int> index;
-  for (const Mesh::Vertex_index v : united.vertices()) {
-    const Epeck::Point_3& p = united.point(v);
+  for (const Mesh::Vertex_index v : order) {
     index[v] = static_cast<int>(vertices.size());
-    vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    vertices.push_back(RoundToDouble(united.point(v)));  // See RoundToDouble() on why.
   }
   std::vector<Eigen::Vector3i> triangles;
   for (const Mesh::Face_index f : united.faces()) {
@@ -98,8 +106,15 @@ TriangleMesh Unite(const TriangleMesh& mesh, const std::vector<std::vector<int>>
       if (k < 3) t(k) = index[v];
       ++k;
     }
-    if (k == 3) triangles.push_back(t);
+    if (k != 3) continue;
+    int lowest = 0;
+    for (int i = 1; i < 3; ++i) lowest = t(i) < t(lowest) ? i : lowest;
+    triangles.emplace_back(t(lowest), t((lowest + 1) % 3), t((lowest + 2) % 3));
   }
+  std::sort(triangles.begin(), triangles.end(),
+            [](const Eigen::Vector3i& a, const Eigen::Vector3i& b) {
+              return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+            });
   return MakeTriangleMesh(vertices, triangles);
 }
 

@@ -28,8 +28,10 @@ HoleFilling FillHoles(const TriangleMesh& mesh);
 
 /// The union of the closed shells `shells` (triangle lists of `mesh`), each outward-oriented and
 /// free of self-intersections, which may cross each other: PMP::corefine_and_compute_union on
-/// exact (Epeck) copies, taken in the given order, rounded to doubles at the end. Empty when
-/// CGAL cannot form the union (it would not be manifold).
+/// exact (Epeck) copies, taken in the given order, rounded to doubles at the end. The result
+/// depends on the input alone: its vertices in exact lexicographic (x, y, z) order, its
+/// triangles (lowest vertex first) sorted. Empty when CGAL cannot form the union (it would not
+/// be manifold).
 std::optional<TriangleMesh> UniteClosedShells(const TriangleMesh& mesh,
                                               const std::vector<std::vector<int>>& shells);
 
