@@ -74,13 +74,7 @@ int AcdLeadStateSampler::level() const { return lead_->LevelAfter(draws_); }
 
 void AcdLeadStateSampler::sampleUniform(ompl::base::State* state) {
   const int level = lead_->LevelAfter(draws_);
-  // Stratified picks (a golden-ratio sequence from a random phase): every part gets its share
-  // of the draws with little variance, as Algorithm 10 gives each target its k samples, where
-  // independent picks would leave some stretch of a long lead with too few.
-  const double golden = 0.6180339887498949;
-  double pick = phase_ + static_cast<double>(draws_) * golden;
-  pick -= std::floor(pick);
-  ++draws_;
+  const double pick = internal::StratifiedPick(phase_, draws_++);
   for (int attempt = 0; attempt < 16; ++attempt) {
     int part = kUniformPart;
     const internal::AcdDraw draw = lead_->Draw(rng_engine_, level, pick, &part);

@@ -42,12 +42,7 @@ int AcdLeadStateSampler3d::level() const { return lead_->LevelAfter(draws_); }
 
 void AcdLeadStateSampler3d::sampleUniform(ompl::base::State* state) {
   const int level = lead_->LevelAfter(draws_);
-  // The stratified golden-ratio picks of AcdLeadStateSampler: each part its share of a small
-  // budget.
-  const double golden = 0.6180339887498949;
-  double pick = phase_ + static_cast<double>(draws_) * golden;
-  pick -= std::floor(pick);
-  ++draws_;
+  const double pick = internal::StratifiedPick(phase_, draws_++);
   for (int attempt = 0; attempt < 16; ++attempt) {
     int part = AcdLeadStateSampler::kUniformPart;
     const internal::AcdDraw3d draw = lead_->Draw(rng_engine_, level, pick, &part);

@@ -17,13 +17,7 @@ int LocateComponent(const acd::Decomposition2d& decomposition, const Eigen::Vect
   const acd::ComponentLocator2d locator(decomposition);
   const int located = locator.Locate(p);
   if (located >= 0) return located;
-  int best = 0;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < decomposition.components.size(); ++i) {
-    const double d = (decomposition.components[i].centroid - p).squaredNorm();
-    if (d < best_distance) best_distance = d, best = static_cast<int>(i);
-  }
-  return best;
+  return NearestCentroid(decomposition.components, p);
 }
 
 Lead ShortestLead(int n, const std::vector<LeadEdge>& openings, int from, int to) {

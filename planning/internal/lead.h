@@ -4,7 +4,9 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "acd/decomposition2d.h"
@@ -41,6 +43,28 @@ Lead ShortestLead(int components, const std::vector<LeadEdge>& openings, int fro
 /// The component holding `p` (exact point location, acd::ComponentLocator2d), or, if none
 /// does (a point on the free space's boundary), the one whose centroid is nearest; -1 only
 /// for an empty decomposition.
+/// The index of the component whose centroid is nearest `p` (the fallback of LocateComponent
+/// and LocateComponent3d for a point in no component); -1 if there is none. 2D or 3D.
+template <typename Components, typename Point>
+int NearestCentroid(const Components& components, const Point& p) {
+  int best = components.empty() ? -1 : 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < components.size(); ++i) {
+    const double d = (components[i].centroid - p).squaredNorm();
+    if (d < best_distance) best_distance = d, best = static_cast<int>(i);
+  }
+  return best;
+}
+
+/// The draw-th pick of a stratified sequence in [0, 1) (golden-ratio steps from `phase`): every
+/// part of a lead gets its share of the draws with little variance, as Algorithm 10 gives each
+/// target its k samples, where independent picks would leave some stretch of a long lead with
+/// too few.
+inline double StratifiedPick(double phase, std::uint64_t draw) {
+  const double pick = phase + static_cast<double>(draw) * 0.6180339887498949;
+  return pick - std::floor(pick);
+}
+
 int LocateComponent(const acd::Decomposition2d& decomposition, const Eigen::Vector2d& p);
 
 /// ShortestLead() in the component adjacency graph. An opening joining a and b costs

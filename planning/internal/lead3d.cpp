@@ -26,13 +26,7 @@ int LocateComponent3d(const envs::FreeSpaceDecomposition3d& decomposition,
   if (decomposition.components.empty()) return -1;
   const int located = decomposition.Locate(p);
   if (located >= 0) return located;
-  int best = 0;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < decomposition.components.size(); ++i) {
-    const double d = (decomposition.components[i].centroid - p).squaredNorm();
-    if (d < best_distance) best_distance = d, best = static_cast<int>(i);
-  }
-  return best;
+  return NearestCentroid(decomposition.components, p);
 }
 
 Lead FindLead3d(const envs::FreeSpaceDecomposition3d& decomposition, int from, int to,
