@@ -215,6 +215,49 @@ auto ParsedList(const YamlFile& file, const YAML::Node& node, const std::string&
 }
 
 /// "acd" or "grid<cells>" (cells >= 1). @throws InputError otherwise.
+/// The group's `budgets`: a non-empty list of {time_limit} or {samples}; `on_samples(key)` vets
+/// a sample budget (and fails where the group's planners cannot honour one).
+template <typename OnSamples>
+std::vector<BenchBudget> ReadBudgets(const YamlFile& file, const YAML::Node& group,
+                                     const std::string& key, OnSamples on_samples) {
+  const YAML::Node& budgets = group["budgets"];
+  if (!budgets) file.Fail(key + ".budgets", "required");
+  if (!budgets.IsSequence() || budgets.size() == 0) {
+    file.Fail(key + ".budgets", "expected a non-empty list, got " + YamlFile::Shown(budgets));
+  }
+  std::vector<BenchBudget> list;
+  for (size_t b = 0; b < budgets.size(); ++b) {
+    const std::string bkey = YamlFile::Item(key + ".budgets", b);
+    const YAML::Node& node = budgets[b];
+    file.CheckKeys(node, bkey, {"time_limit", "samples"});
+    if (node["samples"]) on_samples(bkey);
+    if (node["time_limit"] && node["samples"]) {
+      file.Fail(bkey, "give time_limit or samples, not both");
+    }
+    BenchBudget budget;
+    if (node["time_limit"]) {
+      budget.time_limit =
+          file.Number(node["time_limit"], bkey + ".time_limit", "a positive number", Positive);
+    } else if (node["samples"]) {
+      budget.samples =
+          static_cast<int>(file.Integer(node["samples"], bkey + ".samples", "an integer >= 1", 1));
+    } else {
+      file.Fail(bkey, "expected time_limit or samples");
+    }
+    list.push_back(budget);
+  }
+  return list;
+}
+
+/// Appends `c` to `spec`, refusing a case that is already there.
+void AddCase(const YamlFile& file, const std::string& key, const BenchCase& c, BenchSpec* spec) {
+  const std::string k = c.Key(*spec);
+  for (const BenchCase& other : spec->cases) {
+    if (other.Key(*spec) == k) file.Fail(key, "case " + k + " appears twice");
+  }
+  spec->cases.push_back(c);
+}
+
 BenchDecomposition ParseBenchDecomposition(const std::string& name) {
   BenchDecomposition d;
   if (name == "acd") return d;
@@ -248,23 +291,10 @@ void ReadCarCases(const YamlFile& file, const YAML::Node& group, const std::stri
     decompositions =
         ParsedList(file, group["decompositions"], key + ".decompositions", ParseBenchDecomposition);
   }
-  const YAML::Node& budgets = group["budgets"];
-  if (!budgets) file.Fail(key + ".budgets", "required");
-  if (!budgets.IsSequence() || budgets.size() == 0) {
-    file.Fail(key + ".budgets", "expected a non-empty list, got " + YamlFile::Shown(budgets));
-  }
-  std::vector<BenchBudget> budget_list;
-  for (size_t b = 0; b < budgets.size(); ++b) {
-    const std::string bkey = YamlFile::Item(key + ".budgets", b);
-    file.CheckKeys(budgets[b], bkey, {"time_limit", "samples"});
-    if (budgets[b]["samples"] || !budgets[b]["time_limit"]) {
-      file.Fail(bkey, "a car's control planner takes a time_limit, not a sample budget");
-    }
-    BenchBudget budget;
-    budget.time_limit =
-        file.Number(budgets[b]["time_limit"], bkey + ".time_limit", "a positive number", Positive);
-    budget_list.push_back(budget);
-  }
+  const std::vector<BenchBudget> budget_list =
+      ReadBudgets(file, group, key, [&file](const std::string& bkey) {
+        file.Fail(bkey, "a car's control planner takes a time_limit, not a sample budget");
+      });
   for (int w : world_ids) {
     for (int rb : robot_ids) {
       for (ControlPlanner planner : planners) {
@@ -286,11 +316,7 @@ void ReadCarCases(const YamlFile& file, const YAML::Node& group, const std::stri
             c.control_planner = planner;
             c.decomposition = guide;
             c.budget = budget;
-            const std::string k = c.Key(*spec);
-            for (const BenchCase& other : spec->cases) {
-              if (other.Key(*spec) == k) file.Fail(key, "case " + k + " appears twice");
-            }
-            spec->cases.push_back(c);
+            AddCase(file, key, c, spec);
           }
         }
       }
@@ -468,38 +494,17 @@ BenchSpec LoadBenchSpec(const std::string& path) {
         ParsedList(file, group["samplers"], key + ".samplers", planning::ParseSamplerType);
     const std::vector<PlannerType> planners =
         ParsedList(file, group["planners"], key + ".planners", planning::ParsePlannerType);
-    const YAML::Node& budgets = group["budgets"];
-    if (!budgets) file.Fail(key + ".budgets", "required");
-    if (!budgets.IsSequence() || budgets.size() == 0) {
-      file.Fail(key + ".budgets", "expected a non-empty list, got " + YamlFile::Shown(budgets));
-    }
-    std::vector<BenchBudget> budget_list;
-    for (size_t b = 0; b < budgets.size(); ++b) {
-      const std::string bkey = YamlFile::Item(key + ".budgets", b);
-      file.CheckKeys(budgets[b], bkey, {"time_limit", "samples"});
-      BenchBudget budget;
-      if (budgets[b]["time_limit"] && budgets[b]["samples"]) {
-        file.Fail(bkey, "give time_limit or samples, not both");
-      }
-      if (budgets[b]["time_limit"]) {
-        budget.time_limit = file.Number(budgets[b]["time_limit"], bkey + ".time_limit",
-                                        "a positive number", Positive);
-      } else if (budgets[b]["samples"]) {
-        budget.samples = static_cast<int>(
-            file.Integer(budgets[b]["samples"], bkey + ".samples", "an integer >= 1", 1));
-        for (PlannerType planner : planners) {
-          if (!planning::HonoursSampleBudget(planner)) {
-            file.Fail(bkey + ".samples",
-                      "a sample budget (the Figure-4 protocol) needs PRM, PRM_ACD or PRMstar, "
-                      "not " +
-                          planning::ToString(planner) + "; use time_limit");
+    const std::vector<BenchBudget> budget_list =
+        ReadBudgets(file, group, key, [&file, &planners](const std::string& bkey) {
+          for (PlannerType planner : planners) {
+            if (!planning::HonoursSampleBudget(planner)) {
+              file.Fail(bkey + ".samples",
+                        "a sample budget (the Figure-4 protocol) needs PRM, PRM_ACD or PRMstar, "
+                        "not " +
+                            planning::ToString(planner) + "; use time_limit");
+            }
           }
-        }
-      } else {
-        file.Fail(bkey, "expected time_limit or samples");
-      }
-      budget_list.push_back(budget);
-    }
+        });
     for (int w : world_ids) {
       for (int rb : robot_ids) {
         for (SamplerType sampler : samplers) {
@@ -512,11 +517,7 @@ BenchSpec LoadBenchSpec(const std::string& path) {
               c.sampler = sampler;
               c.planner = planner;
               c.budget = budget;
-              const std::string k = c.Key(spec);
-              for (const BenchCase& other : spec.cases) {
-                if (other.Key(spec) == k) file.Fail(key, "case " + k + " appears twice");
-              }
-              spec.cases.push_back(c);
+              AddCase(file, key, c, &spec);
             }
           }
         }

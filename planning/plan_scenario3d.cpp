@@ -134,13 +134,7 @@ PlanResult PlanScenario3d(const Scenario& scenario) {
       options.acd_connections_3d = decomposition;
       options.seed = scenario.seed;
     }
-    SampleBudgetRoadmap roadmap = BuildSampleBudgetRoadmap(si, start.get(), goal.get(), options);
-    result.solved = roadmap.solved;
-    result.samples = static_cast<std::uint64_t>(roadmap.samples);
-    result.path = std::move(roadmap.path);
-    result.path_length = roadmap.path_length;
-    result.vertices = std::move(roadmap.vertices);
-    result.edges = std::move(roadmap.edges);
+    internal::RunSampleBudget(si, start.get(), goal.get(), options, &result);
   } else {
     ob::PlannerPtr planner =
         scenario.planner == PlannerType::kPrmAcd

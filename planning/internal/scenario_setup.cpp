@@ -63,4 +63,16 @@ void CheckEndpoints(const CheckedSpace& space, const ob::State* start, const ob:
   space.checker->ResetChecks();
 }
 
+void RunSampleBudget(const std::shared_ptr<ompl::base::SpaceInformation>& si,
+                     const ompl::base::State* start, const ompl::base::State* goal,
+                     const SampleBudgetOptions& options, PlanResult* result) {
+  SampleBudgetRoadmap roadmap = BuildSampleBudgetRoadmap(si, start, goal, options);
+  result->solved = roadmap.solved;
+  result->samples = static_cast<std::uint64_t>(roadmap.samples);
+  result->path = std::move(roadmap.path);
+  result->path_length = roadmap.path_length;
+  result->vertices = std::move(roadmap.vertices);
+  result->edges = std::move(roadmap.edges);
+}
+
 }  // namespace acdplan::planning::internal

@@ -11,6 +11,8 @@
 #include "collision/collision_world.h"
 #include "collision/obstacle_set.h"
 #include "planning/counting_validity_checker.h"
+#include "planning/plan_scenario.h"
+#include "planning/sample_budget_roadmap.h"
 #include "planning/scenario.h"
 
 namespace acdplan::planning::internal {
@@ -48,5 +50,11 @@ CheckedSpace MakeCheckedSpace(const Eigen::VectorXd& low, const Eigen::VectorXd&
 ///         checker's count, so that the run counts only the planner's checks.
 void CheckEndpoints(const CheckedSpace& space, const ompl::base::State* start,
                     const ompl::base::State* goal, const std::string& where);
+
+/// Builds the sample-budget roadmap (BuildSampleBudgetRoadmap()) from `start` to `goal` and
+/// moves what it found (solved, samples, path and its length, the roadmap) into `result`.
+void RunSampleBudget(const std::shared_ptr<ompl::base::SpaceInformation>& si,
+                     const ompl::base::State* start, const ompl::base::State* goal,
+                     const SampleBudgetOptions& options, PlanResult* result);
 
 }  // namespace acdplan::planning::internal

@@ -26,6 +26,7 @@
 #include "acd/prepare_polygon.h"
 #include "acd/read_polygons.h"
 #include "base/input_error.h"
+#include "tests/input_error_of.h"
 
 namespace acdplan::acd {
 namespace {
@@ -140,12 +141,7 @@ TEST(Decompose2dCorpusTest, CorpusIsComplete) {
 }
 
 std::string ErrorOf(const std::string& path) {
-  try {
-    ReadPolygons(path);
-  } catch (const acdplan::InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf([&] { ReadPolygons(path); });
 }
 
 TEST(Decompose2dCorpusTest, BirdIsRejectedAtLine47) {

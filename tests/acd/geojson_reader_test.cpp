@@ -7,6 +7,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "tests/input_error_of.h"
 
 namespace acdplan::acd {
 namespace {
@@ -20,12 +21,7 @@ std::vector<Polygon2d> Read(const std::string& text) {
 }
 
 std::string ErrorOf(const std::string& text) {
-  try {
-    Read(text);
-  } catch (const acdplan::InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf([&] { Read(text); });
 }
 
 const char* const kSquareWithHole =

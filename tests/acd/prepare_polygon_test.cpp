@@ -9,35 +9,29 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "tests/input_error_of.h"
+#include "tests/polygon_fixtures.h"
 
 namespace acdplan::acd {
 namespace {
 
+using test::SquareRing;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-Ring2d Square(double x0, double y0, double size) {
-  return {{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}};
-}
-
 // The message of the acdplan::InputError PreparePolygon() throws, or "" if it does not throw.
 std::string ErrorOf(const Polygon2d& raw) {
-  try {
-    PreparePolygon(raw, "test.poly: polygon 0");
-  } catch (const acdplan::InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf([&] { PreparePolygon(raw, "test.poly: polygon 0"); });
 }
 
 TEST(PreparePolygonTest, KeepsCleanCounterClockwiseSquare) {
-  const Polygon2d clean = PreparePolygon({Square(0, 0, 1), {}}, "w");
-  EXPECT_EQ(clean.outer, Square(0, 0, 1));
+  const Polygon2d clean = PreparePolygon({SquareRing(0, 0, 1), {}}, "w");
+  EXPECT_EQ(clean.outer, SquareRing(0, 0, 1));
   EXPECT_DOUBLE_EQ(Area(clean), 1.0);
 }
 
 TEST(PreparePolygonTest, ReorientsClockwiseOuterAndCounterClockwiseHole) {
-  const Polygon2d raw{Reversed(Square(0, 0, 4)), {Square(1, 1, 1)}};
+  const Polygon2d raw{Reversed(SquareRing(0, 0, 4)), {SquareRing(1, 1, 1)}};
   const Polygon2d clean = PreparePolygon(raw, "w");
   EXPECT_GT(SignedArea(clean.outer), 0.0);
   ASSERT_EQ(clean.holes.size(), 1u);
@@ -69,11 +63,11 @@ TEST(PreparePolygonTest, AcceptsLargeAndSmallScales) {
     EXPECT_NEAR(Area(clean), (10.0 - 0.125) * scale * scale, 1e-9 * scale * scale) << scale;
   }
   // Far from the origin as well: the same square offset by 1e6.
-  EXPECT_NO_THROW(PreparePolygon({Square(1e6, 1e6, 1e-3), {}}, "w"));
+  EXPECT_NO_THROW(PreparePolygon({SquareRing(1e6, 1e6, 1e-3), {}}, "w"));
 }
 
 TEST(PreparePolygonTest, RejectsNonFiniteCoordinate) {
-  Polygon2d raw{Square(0, 0, 1), {Square(0.2, 0.2, 0.1)}};
+  Polygon2d raw{SquareRing(0, 0, 1), {SquareRing(0.2, 0.2, 0.1)}};
   raw.holes[0][2].y() = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THAT(ErrorOf(raw),
               AllOf(HasSubstr("test.poly: polygon 0: hole 0: vertex 2"), HasSubstr("not finite")));
@@ -102,7 +96,7 @@ TEST(PreparePolygonTest, RejectsTooFewVertices) {
   // Collinear points clean down to a segment.
   EXPECT_THAT(ErrorOf({{{0, 0}, {1, 1}, {2, 2}, {3, 3}}, {}}),
               AllOf(HasSubstr("outer ring"), HasSubstr("fewer than 3")));
-  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {{{1, 1}, {1, 1}, {2, 2}}}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {{{1, 1}, {1, 1}, {2, 2}}}}),
               AllOf(HasSubstr("hole 0"), HasSubstr("fewer than 3")));
 }
 
@@ -142,27 +136,27 @@ TEST(PreparePolygonTest, VertexIndicesAreThoseOfTheInput) {
 }
 
 TEST(PreparePolygonTest, RejectsSelfIntersectingHole) {
-  EXPECT_THAT(ErrorOf({Square(0, 0, 10), {{{1, 1}, {3, 3}, {4, 1}, {1, 4}}}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 10), {{{1, 1}, {3, 3}, {4, 1}, {1, 4}}}}),
               AllOf(HasSubstr("hole 0 is not simple"), HasSubstr("intersect at (2.5, 2.5)")));
 }
 
 TEST(PreparePolygonTest, RejectsHoleCrossingOuterRing) {
-  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {Square(3, 1, 2)}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {SquareRing(3, 1, 2)}}),
               AllOf(HasSubstr("hole 0 touches or crosses the outer ring"),
                     HasSubstr("strictly inside"), HasSubstr("intersect at (4, 3)")));
 }
 
 TEST(PreparePolygonTest, RejectsHoleOutsideOuterRing) {
-  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {Square(1, 1, 1), Square(10, 10, 1)}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {SquareRing(1, 1, 1), SquareRing(10, 10, 1)}}),
               AllOf(HasSubstr("hole 1 is not inside the outer ring"), HasSubstr("is outside")));
   // A hole around the outer ring is not inside it either.
-  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {Square(-1, -1, 6)}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {SquareRing(-1, -1, 6)}}),
               HasSubstr("hole 0 is not inside the outer ring"));
 }
 
 TEST(PreparePolygonTest, RejectsOverlappingHoles) {
   EXPECT_THAT(
-      ErrorOf({Square(0, 0, 10), {Square(1, 1, 3), Square(2, 2, 3)}}),
+      ErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 3), SquareRing(2, 2, 3)}}),
       AllOf(HasSubstr("hole 0 and hole 1 touch or overlap"), HasSubstr("holes must be disjoint")));
 }
 
@@ -171,22 +165,22 @@ TEST(PreparePolygonTest, RejectsOverlappingHoles) {
 // PreparePolygon(), which must return one polygon, says so.
 TEST(PreparePolygonTest, RejectsOverlappingHoleEdgesAndNamesTouchingAsSeveralPolygons) {
   // Sharing the edge x = 4 partly.
-  EXPECT_THAT(ErrorOf({Square(0, 0, 10), {Square(1, 1, 3), Square(4, 2, 3)}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 3), SquareRing(4, 2, 3)}}),
               HasSubstr("hole 0 and hole 1 touch or overlap"));
-  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {{{2, 0}, {3, 1}, {1, 1}}}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {{{2, 0}, {3, 1}, {1, 1}}}}),
               HasSubstr("test.poly: polygon 0: rings touch at points, which makes the polygon 2 "
                         "polygons where one is required"));
 }
 
 TEST(PreparePolygonTest, RejectsNestedHoles) {
-  EXPECT_THAT(ErrorOf({Square(0, 0, 10), {Square(1, 1, 6), Square(2, 2, 1)}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 6), SquareRing(2, 2, 1)}}),
               AllOf(HasSubstr("hole 1 lies inside hole 0"), HasSubstr("nested")));
 }
 
 TEST(PreparePolygonTest, AcceptsManyDisjointHoles) {
-  Polygon2d raw{Square(0, 0, 100), {}};
+  Polygon2d raw{SquareRing(0, 0, 100), {}};
   for (int i = 0; i < 10; ++i) {
-    for (int j = 0; j < 10; ++j) raw.holes.push_back(Square(1 + 10 * i, 1 + 10 * j, 5));
+    for (int j = 0; j < 10; ++j) raw.holes.push_back(SquareRing(1 + 10 * i, 1 + 10 * j, 5));
   }
   const Polygon2d clean = PreparePolygon(raw, "w");
   EXPECT_EQ(clean.holes.size(), 100u);

@@ -15,30 +15,19 @@
 #include "base/input_error.h"
 #include "base/random.h"
 #include "base/stopwatch.h"
+#include "tests/input_error_of.h"
+#include "tests/polygon_fixtures.h"
 
 namespace acdplan::acd {
 namespace {
 
+using test::SquareRing;
+using test::TotalArea;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-Ring2d Square(double x0, double y0, double size) {
-  return {{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}};
-}
-
-double TotalArea(const std::vector<Polygon2d>& polygons) {
-  double area = 0.0;
-  for (const Polygon2d& p : polygons) area += Area(p);
-  return area;
-}
-
 std::string ErrorOf(const Polygon2d& raw) {
-  try {
-    PreparePolygons(raw, "test.poly: polygon 0");
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf([&] { PreparePolygons(raw, "test.poly: polygon 0"); });
 }
 
 // Prepares `raw`, checks that every piece is strictly valid (PreparePolygon() keeps it as it
@@ -61,7 +50,7 @@ std::vector<Polygon2d> PrepareAndDecompose(const Polygon2d& raw, double expected
 }
 
 TEST(PreparePolygonsTest, StrictlyValidPolygonStaysOne) {
-  const Polygon2d raw{Square(0, 0, 10), {Square(1, 1, 2), Square(5, 5, 2)}};
+  const Polygon2d raw{SquareRing(0, 0, 10), {SquareRing(1, 1, 2), SquareRing(5, 5, 2)}};
   const std::vector<Polygon2d> pieces = PreparePolygons(raw, "w");
   ASSERT_EQ(pieces.size(), 1u);
   EXPECT_EQ(pieces[0].holes.size(), 2u);
@@ -69,12 +58,12 @@ TEST(PreparePolygonsTest, StrictlyValidPolygonStaysOne) {
 
 TEST(PreparePolygonsTest, AcceptsHoleTouchingOuterRingAtAPoint) {
   // The hole's vertex (2, 0) lies inside the outer ring's bottom edge.
-  PrepareAndDecompose({Square(0, 0, 4), {{{2, 0}, {3, 1}, {1, 1}}}}, 16.0 - 1.0);
+  PrepareAndDecompose({SquareRing(0, 0, 4), {{{2, 0}, {3, 1}, {1, 1}}}}, 16.0 - 1.0);
   // A hole sharing a vertex with the outer ring.
-  PrepareAndDecompose({Square(0, 0, 4), {{{0, 0}, {2, 1}, {1, 2}}}}, 16.0 - 1.5);
+  PrepareAndDecompose({SquareRing(0, 0, 4), {{{0, 0}, {2, 1}, {1, 2}}}}, 16.0 - 1.5);
   // The old single-polygon entry point says why it cannot return one polygon.
   try {
-    PreparePolygon({Square(0, 0, 4), {{{2, 0}, {3, 1}, {1, 1}}}}, "w");
+    PreparePolygon({SquareRing(0, 0, 4), {{{2, 0}, {3, 1}, {1, 1}}}}, "w");
     ADD_FAILURE() << "no error";
   } catch (const InputError& error) {
     EXPECT_THAT(error.what(), HasSubstr("w: rings touch at points"));
@@ -82,8 +71,8 @@ TEST(PreparePolygonsTest, AcceptsHoleTouchingOuterRingAtAPoint) {
 }
 
 TEST(PreparePolygonsTest, AcceptsTwoHolesTouchingAtAPoint) {
-  const std::vector<Polygon2d> pieces =
-      PrepareAndDecompose({Square(0, 0, 10), {Square(1, 1, 3), Square(4, 4, 3)}}, 100.0 - 18.0);
+  const std::vector<Polygon2d> pieces = PrepareAndDecompose(
+      {SquareRing(0, 0, 10), {SquareRing(1, 1, 3), SquareRing(4, 4, 3)}}, 100.0 - 18.0);
   EXPECT_GE(pieces.size(), 1u);
 }
 
@@ -104,8 +93,8 @@ TEST(PreparePolygonsTest, AcceptsSelfTangentOuterRing) {
 
 TEST(PreparePolygonsTest, AcceptsHoleTouchingAtTwoPointsThatSplitNothing) {
   // Hole 0 touches the outer ring at (0, 5) and hole 1 at (3, 5); hole 1 touches nothing else.
-  const Polygon2d raw{Square(0, 0, 10),
-                      {{{0, 5}, {3, 5}, {1, 6}}, {{3, 5}, {5, 4}, {5, 6}}, Square(7, 7, 1)}};
+  const Polygon2d raw{SquareRing(0, 0, 10),
+                      {{{0, 5}, {3, 5}, {1, 6}}, {{3, 5}, {5, 4}, {5, 6}}, SquareRing(7, 7, 1)}};
   PrepareAndDecompose(raw, 100.0 - 1.5 - 2.0 - 1.0, 0.01);
 }
 
@@ -114,22 +103,22 @@ TEST(PreparePolygonsTest, RejectsWhatStaysInvalid) {
   EXPECT_THAT(ErrorOf({{{0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}),
               AllOf(HasSubstr("test.poly: polygon 0: outer ring is not simple"),
                     HasSubstr("edges (0,1) and (2,3) intersect at (1.5, 1.5)")));
-  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {Square(3, 1, 2)}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {SquareRing(3, 1, 2)}}),
               AllOf(HasSubstr("hole 0 touches or crosses the outer ring"),
                     HasSubstr("intersect at (4, 3)")));
   // Overlapping collinear edges (holes sharing part of the edge x = 4).
-  EXPECT_THAT(ErrorOf({Square(0, 0, 10), {Square(1, 1, 3), Square(4, 2, 3)}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 3), SquareRing(4, 2, 3)}}),
               AllOf(HasSubstr("hole 0 and hole 1 touch or overlap"), HasSubstr("overlap from")));
   // A hole outside, touching the outer ring at a vertex.
-  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {Square(4, 4, 1)}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {SquareRing(4, 4, 1)}}),
               HasSubstr("test.poly: polygon 0: hole 0 is not inside the outer ring: its vertex 3 "
                         "(4, 5) is outside"));
   // A hole inside another, touching it.
-  EXPECT_THAT(ErrorOf({Square(0, 0, 10), {Square(1, 1, 6), {{1, 1}, {2, 3}, {3, 2}}}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 6), {{1, 1}, {2, 3}, {3, 2}}}}),
               HasSubstr("test.poly: polygon 0: hole 1 lies inside hole 0 (holes must not be "
                         "nested)"));
   // A hole touching the outer ring at two points cuts the interior in two.
-  EXPECT_THAT(ErrorOf({Square(0, 0, 4), {{{0, 2}, {2, 1}, {4, 2}, {2, 3}}}}),
+  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {{{0, 2}, {2, 1}, {4, 2}, {2, 3}}}}),
               HasSubstr("test.poly: polygon 0: hole 0 disconnects the interior"));
   // Two lobes that cross at their shared vertex (a bow tie through a vertex).
   EXPECT_THAT(ErrorOf({{{2, 2}, {4, 0}, {4, 4}, {2, 2}, {0, 0}, {0, 5}}, {}}),
@@ -141,8 +130,8 @@ TEST(PreparePolygonsTest, RejectsWhatStaysInvalid) {
 // by quarter turns keeps it valid and its area (which diagonals split the pinches, and so the
 // counts, follow the triangulation of the cocircular squares, which rotation changes).
 TEST(PreparePolygonsTest, MetamorphicRotateAndScale) {
-  const Polygon2d base{Square(0, 0, 10),
-                       {{{0, 5}, {3, 5}, {1, 6}}, {{3, 5}, {5, 4}, {5, 6}}, Square(7, 7, 1)}};
+  const Polygon2d base{SquareRing(0, 0, 10),
+                       {{{0, 5}, {3, 5}, {1, 6}}, {{3, 5}, {5, 4}, {5, 6}}, SquareRing(7, 7, 1)}};
   auto count = [](const Polygon2d& raw) {
     const std::vector<Polygon2d> pieces = PreparePolygons(raw, "w");
     const Decomposition2d d = Decompose2d(pieces, {});

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "tests/input_error_of.h"
 #include "tests/scratch_dir.h"
 
 namespace acdplan::acd {
@@ -19,12 +20,7 @@ using ::testing::HasSubstr;
 const fs::path kAcd2d = fs::path(ACDPLAN_DATA_DIR) / "polygons" / "acd2d";
 
 std::string ErrorOf(const std::string& path) {
-  try {
-    ReadPolygons(path);
-  } catch (const acdplan::InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf([&] { ReadPolygons(path); });
 }
 
 // A file in the process's scratch folder.

@@ -11,22 +11,15 @@
 #include "acd/decompose2d.h"
 #include "acd/prepare_polygon.h"
 #include "base/input_error.h"
+#include "tests/polygon_fixtures.h"
 
 namespace acdplan::acd {
 namespace {
 
+using test::SquareRing;
+using test::TotalArea;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
-
-Ring2d Square(double x0, double y0, double size) {
-  return {{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}};
-}
-
-double TotalArea(const std::vector<Polygon2d>& polygons) {
-  double area = 0.0;
-  for (const Polygon2d& p : polygons) area += Area(p);
-  return area;
-}
 
 void ExpectDecomposes(const std::vector<Polygon2d>& polygons) {
   const Decomposition2d d = Decompose2d(polygons, {});
@@ -35,7 +28,7 @@ void ExpectDecomposes(const std::vector<Polygon2d>& polygons) {
 }
 
 TEST(RepairPolygonTest, ValidPolygonIsUnchanged) {
-  const RepairedPolygon r = RepairPolygon({Square(0, 0, 4), {Square(1, 1, 1)}}, "w");
+  const RepairedPolygon r = RepairPolygon({SquareRing(0, 0, 4), {SquareRing(1, 1, 1)}}, "w");
   EXPECT_TRUE(r.changes.empty());
   ASSERT_EQ(r.polygons.size(), 1u);
   EXPECT_DOUBLE_EQ(Area(r.polygons[0]), 15.0);
@@ -57,8 +50,8 @@ TEST(RepairPolygonTest, BowTieBecomesTwoTriangles) {
 }
 
 TEST(RepairPolygonTest, TwoVertexHoleIsDropped) {
-  const RepairedPolygon r =
-      RepairPolygon({Square(0, 0, 4), {{{1, 1}, {2, 2}}, Square(1, 2, 1)}}, "t.wkt: polygon 3");
+  const RepairedPolygon r = RepairPolygon(
+      {SquareRing(0, 0, 4), {{{1, 1}, {2, 2}}, SquareRing(1, 2, 1)}}, "t.wkt: polygon 3");
   EXPECT_THAT(r.changes,
               ElementsAre("t.wkt: polygon 3: repaired: hole 0 has 2 distinct vertices: dropped"));
   ASSERT_EQ(r.polygons.size(), 1u);
@@ -68,7 +61,7 @@ TEST(RepairPolygonTest, TwoVertexHoleIsDropped) {
 
 TEST(RepairPolygonTest, HoleCrossingOuterRingGivesTheEvenOddResult) {
   // Inside both: excluded; inside the hole only: included (the symmetric difference).
-  const RepairedPolygon r = RepairPolygon({Square(0, 0, 4), {Square(3, 1, 2)}}, "w");
+  const RepairedPolygon r = RepairPolygon({SquareRing(0, 0, 4), {SquareRing(3, 1, 2)}}, "w");
   ASSERT_EQ(r.changes.size(), 1u);
   EXPECT_THAT(r.changes[0], HasSubstr("w: repaired: hole 0 touches or crosses the outer ring"));
   EXPECT_THAT(r.changes[0], HasSubstr("rebuilt by the even-odd rule into 2 polygon(s) with 0 "
@@ -88,7 +81,7 @@ TEST(RepairPolygonTest, DegenerateOuterRingLeavesNothing) {
 }
 
 TEST(RepairPolygonTest, NonFiniteCoordinateIsStillAnError) {
-  Polygon2d raw{Square(0, 0, 1), {}};
+  Polygon2d raw{SquareRing(0, 0, 1), {}};
   raw.outer[1].x() = std::numeric_limits<double>::infinity();
   EXPECT_THROW(RepairPolygon(raw, "w"), InputError);
 }

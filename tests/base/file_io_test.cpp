@@ -10,6 +10,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan {
 namespace {
@@ -18,17 +19,6 @@ namespace fs = std::filesystem;
 
 class FileIoTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("acdplan_file_io_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add, ignored);
-    fs::remove_all(dir_, ignored);
-  }
   static std::string Read(const fs::path& path) {
     std::ifstream in(path);
     std::stringstream text;
@@ -53,7 +43,8 @@ class FileIoTest : public ::testing::Test {
     }
     return "";
   }
-  fs::path dir_;
+  test::ScratchDir scratch_{"acdplan_file_io_test"};
+  fs::path dir_ = scratch_.path();
 };
 
 TEST_F(FileIoTest, WriteCreatesFoldersAndLeavesNoTemporaryFile) {

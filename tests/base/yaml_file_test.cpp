@@ -5,6 +5,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "tests/input_error_of.h"
 
 namespace acdplan {
 namespace {
@@ -12,12 +13,7 @@ namespace {
 /// The message of the InputError `read` throws, "" if none.
 template <typename Read>
 std::string MessageOf(Read read) {
-  try {
-    read();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf(read);
 }
 
 TEST(YamlFile, SyntaxErrorsNameTheLine) {

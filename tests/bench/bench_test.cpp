@@ -22,6 +22,7 @@
 #include "bench/runner.h"
 #include "bench/spec.h"
 #include "bench/stats.h"
+#include "tests/input_error_of.h"
 #include "tests/scratch_dir.h"
 
 namespace acdplan::bench {
@@ -56,12 +57,7 @@ std::string ReadText(const fs::path& path) {
 
 /// The message LoadBenchSpec() throws for `text`; "" if it does not throw.
 std::string ErrorOf(const std::string& text) {
-  try {
-    LoadBenchSpec(WriteBench("bad", text));
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf([&] { LoadBenchSpec(WriteBench("bad", text)); });
 }
 
 const std::string kWorlds =

@@ -14,6 +14,7 @@
 #include "bench/acd3d_bench.h"
 #include "bench/collision_bench.h"
 #include "bench/summary.h"
+#include "tests/input_error_of.h"
 #include "tests/scratch_dir.h"
 
 namespace acdplan::bench {
@@ -31,12 +32,8 @@ std::string WriteFile(const std::string& name, const std::string& text) {
 
 /// The message LoadTargetsFile() throws for `text` with the planning vocabulary; "" if none.
 std::string ErrorOf(const std::string& text) {
-  try {
-    LoadTargetsFile(WriteFile("t.yaml", text), PlanningTargetVocabulary());
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf(
+      [&] { LoadTargetsFile(WriteFile("t.yaml", text), PlanningTargetVocabulary()); });
 }
 
 TEST(Targets, ReadsTheFormat) {

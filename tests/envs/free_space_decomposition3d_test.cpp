@@ -7,20 +7,14 @@
 
 #include "base/input_error.h"
 #include "tests/envs/test_worlds3d.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::envs {
 namespace {
 
-// A fresh cache folder per test, removed at the end.
+// A cache folder (not yet created) inside a fresh scratch folder of the test.
 class CacheDir {
  public:
-  CacheDir() {
-    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ =
-        std::filesystem::temp_directory_path() / ("acdplan_free3d_" + std::string(info->name()));
-    std::filesystem::remove_all(path_);
-  }
-  ~CacheDir() { std::filesystem::remove_all(path_); }
   std::string path() const { return path_.string(); }
   std::vector<std::filesystem::path> Files() const {
     std::vector<std::filesystem::path> files;
@@ -30,7 +24,8 @@ class CacheDir {
   }
 
  private:
-  std::filesystem::path path_;
+  test::ScratchDir scratch_{"acdplan_free3d"};
+  std::filesystem::path path_ = scratch_.path() / "cache";
 };
 
 FreeSpaceDecomposition3dOptions Options(const CacheDir& cache, bool use_cache = true) {

@@ -9,6 +9,7 @@
 #include "base/input_error.h"
 #include "envs/mesh_footprint.h"
 #include "tests/envs/test_util.h"
+#include "tests/input_error_of.h"
 
 namespace acdplan::envs {
 namespace {
@@ -20,12 +21,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 /// The message of the InputError that ReadOmplAppProblem(path) throws ("" if none).
 std::string ErrorOf(const std::string& path) {
-  try {
-    ReadOmplAppProblem(path);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf([&] { ReadOmplAppProblem(path); });
 }
 
 /// A small closed tetrahedron, for inline fixtures.

@@ -13,6 +13,8 @@
 #include "acd/polygon2d.h"
 #include "acd/prepare_polygon.h"
 #include "base/input_error.h"
+#include "tests/input_error_of.h"
+#include "tests/polygon_fixtures.h"
 #include "tests/scratch_dir.h"
 
 namespace acdplan::envs::testing {
@@ -23,19 +25,10 @@ using TempDir = acdplan::test::ScratchDir;
 /// The acdplan::InputError message `f()` throws, or "" when it throws nothing.
 template <typename F>
 std::string ErrorOf(F f) {
-  try {
-    f();
-  } catch (const acdplan::InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf(f);
 }
 
-inline double TotalArea(const std::vector<acd::Polygon2d>& polygons) {
-  double area = 0.0;
-  for (const acd::Polygon2d& p : polygons) area += acd::Area(p);
-  return area;
-}
+using test::TotalArea;
 
 /// Every polygon is already clean and valid (PreparePolygon changes nothing), and the set
 /// decomposes into convex pieces that CheckDecomposition() accepts.

@@ -18,6 +18,7 @@
 #include "envs/free_space2d.h"
 #include "envs/generators.h"
 #include "planning/internal/component_sampler.h"
+#include "tests/planning/square_component.h"
 
 namespace acdplan::planning {
 namespace {
@@ -25,13 +26,7 @@ namespace {
 namespace ob = ompl::base;
 namespace oc = ompl::control;
 
-acd::Component2d Square(double x, double y, double size) {
-  acd::Component2d c;
-  c.polygon.outer = {{x, y}, {x + size, y}, {x + size, y + size}, {x, y + size}};
-  c.hull = c.polygon.outer;
-  c.centroid = Eigen::Vector2d(x + size / 2, y + size / 2);
-  return c;
-}
+using testing::Square;
 
 /// Region 0: an L (the unit square [0,2]^2 minus [1,2]x[1,2]), area 3, hull area 3.5.
 /// Region 1: the square [2,3]x[0,1] right of it. Region 2: the square [0,1]x[2,3] above it.

@@ -24,6 +24,7 @@
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
 #include "tests/envs/test_worlds3d.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::planning {
 namespace {
@@ -34,17 +35,10 @@ namespace ob = ompl::base;
 // Every test decomposes into its own scratch cache, never the user's.
 class Lead3d : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("acdplan_lead3d_" + std::string(info->name()));
-    fs::remove_all(dir_);
-    setenv("ACDPLAN_CACHE_DIR", (dir_ / "cache").c_str(), 1);
-  }
-  void TearDown() override {
-    unsetenv("ACDPLAN_CACHE_DIR");
-    fs::remove_all(dir_);
-  }
-  fs::path dir_;
+  void SetUp() override { setenv("ACDPLAN_CACHE_DIR", (dir_ / "cache").c_str(), 1); }
+  void TearDown() override { unsetenv("ACDPLAN_CACHE_DIR"); }
+  test::ScratchDir scratch_{"acdplan_lead3d"};
+  fs::path dir_ = scratch_.path();
 };
 
 // The cubicles of configs/cubicles_3d.yaml: three rooms stacked, hatches of side 1.

@@ -21,6 +21,7 @@
 #include "planning/plan_scenario.h"
 #include "planning/registry.h"
 #include "planning/scenario.h"
+#include "tests/planning/square_component.h"
 #include "tests/scratch_dir.h"
 
 namespace acdplan::planning {
@@ -34,13 +35,7 @@ acd::Decomposition2d Decompose(const envs::Workspace2d& workspace) {
   return acd::Decompose2d(envs::FreeSpace2d(workspace), options);
 }
 
-acd::Component2d Square(double x, double y, double size) {
-  acd::Component2d c;
-  c.polygon.outer = {{x, y}, {x + size, y}, {x + size, y + size}, {x, y + size}};
-  c.hull = c.polygon.outer;
-  c.centroid = Eigen::Vector2d(x + size / 2, y + size / 2);
-  return c;
-}
+using testing::Square;
 
 /// Four unit squares in a 2 x 2 block: 0 (0,0), 1 (1,0), 2 (0,1), 3 (1,1). Openings: 0-1 full,
 /// 0-2 full, 1-3 full, 2-3 only 0.05 long (a slit).

@@ -14,6 +14,7 @@
 #include "collision/obstacle_set.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
+#include "tests/input_error_of.h"
 #include "tests/scratch_dir.h"
 
 namespace acdplan::planning {
@@ -33,12 +34,7 @@ const std::string kPoses = "start: [5, 5, 0]\ngoal: [9, 5, 0]\n";
 
 /// The message LoadScenario() throws for `text`; "" if it does not throw.
 std::string ErrorOf(const std::string& text) {
-  try {
-    LoadScenario(Write("bad.yaml", text));
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf([&] { LoadScenario(Write("bad.yaml", text)); });
 }
 
 void ExpectError(const std::string& text, const std::string& expected) {

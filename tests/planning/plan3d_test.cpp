@@ -20,6 +20,7 @@
 #include "planning/plan_scenario3d.h"
 #include "planning/scenario.h"
 #include "tests/envs/test_worlds3d.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::planning {
 namespace {
@@ -31,22 +32,14 @@ using envs::testing::WindowWall;
 // Every test decomposes into its own scratch cache, never the user's.
 class Plan3d : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("acdplan_plan3d_" + std::string(info->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    setenv("ACDPLAN_CACHE_DIR", (dir_ / "cache").c_str(), 1);
-  }
-  void TearDown() override {
-    unsetenv("ACDPLAN_CACHE_DIR");
-    fs::remove_all(dir_);
-  }
+  void SetUp() override { setenv("ACDPLAN_CACHE_DIR", (dir_ / "cache").c_str(), 1); }
+  void TearDown() override { unsetenv("ACDPLAN_CACHE_DIR"); }
   std::string Write(const std::string& name, const std::string& text) const {
     std::ofstream(dir_ / name) << text;
     return (dir_ / name).string();
   }
-  fs::path dir_;
+  test::ScratchDir scratch_{"acdplan_plan3d"};
+  fs::path dir_ = scratch_.path();
 };
 
 // A rod 2 long and 0.2 thick along its body x axis: the window of side 0.4 is twice its width.

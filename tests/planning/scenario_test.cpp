@@ -11,6 +11,7 @@
 
 #include "base/input_error.h"
 #include "planning/plan_scenario.h"
+#include "tests/input_error_of.h"
 #include "tests/scratch_dir.h"
 
 namespace acdplan::planning {
@@ -29,12 +30,7 @@ const std::string kQuery = "start: [2.5, 5]\ngoal: [7.5, 5]\n";
 
 /// The message LoadScenario() throws for `text`; "" if it does not throw.
 std::string ErrorOf(const std::string& text) {
-  try {
-    LoadScenario(Write("bad.yaml", text));
-  } catch (const acdplan::InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::InputErrorOf([&] { LoadScenario(Write("bad.yaml", text)); });
 }
 
 TEST(Scenario, ErrorsNameTheKeyPath) {

@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "tests/scratch_dir.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -43,18 +45,6 @@ std::string Quote(const std::string& s) {
 
 class CliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("acdplan_cli_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-
   RunResult Acdplan(const std::string& arguments) const {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
     const std::string command = Quote(ACDPLAN_BINARY) + " " + arguments + " >" +
@@ -81,7 +71,8 @@ class CliTest : public ::testing::Test {
     return path;
   }
 
-  fs::path dir_;
+  acdplan::test::ScratchDir scratch_{"acdplan_cli_test"};
+  fs::path dir_ = scratch_.path();
 };
 
 /// Exactly one line on stderr, "acdplan: error: ...".
