@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <numeric>
 
 #include "acd/internal/exact_predicates.h"
@@ -366,7 +367,8 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int sta
   while (k < n && turn(at(0), second, at(k)) == 0) second = at(k++);
   if (k == n) return {std::min(at(0), second), std::max(at(0), second)};
   // A deque in a flat array: [bottom, top] with room to grow both ways.
-  std::vector<int> deque(2 * n + 3);
+  // Not zeroed (a memset of 8n bytes per hull): every slot is written before it is read.
+  const std::unique_ptr<int[]> deque(new int[2 * n + 3]);
   int bottom = n, top = n - 1;
   auto push_top = [&](int v) { deque[++top] = v; };
   auto push_bottom = [&](int v) { deque[--bottom] = v; };
@@ -393,7 +395,7 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int sta
     while (top - bottom >= 2 && turn(v, deque[bottom], deque[bottom + 1]) <= 0) ++bottom;
     push_bottom(v);
   }
-  std::vector<int> hull(deque.begin() + bottom, deque.begin() + top);  // Drop the repeated end.
+  std::vector<int> hull(deque.get() + bottom, deque.get() + top);  // Drop the repeated end.
   std::sort(hull.begin(), hull.end());
   return hull;
 }
@@ -568,7 +570,8 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const std::vector<int>
   constexpr double kInheritedGap = -1.0;
   Concavity2d result;
   result.outer.assign(n, 0.0);
-  std::vector<int> kept(n);  // kept[0, kept_size), a stack without capacity checks.
+  // kept[0, kept_size), a stack without capacity checks; not zeroed, as it is written first.
+  const std::unique_ptr<int[]> kept(new int[n]);
   int kept_size = 0;
   int last_hull = -1;  // Where in `kept` the run's last parent hull vertex is, or -1.
   // Where in `kept` the first parent hull vertex is, or -1: a strict hull vertex of the piece
