@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <numeric>
 
 #include "acd/internal/exact_predicates.h"
@@ -169,10 +170,12 @@ class VertexSearch {
   }
 
   // The closest vertex to `p` on a hole other than `skip`, ordered by distance, then ring, then
-  // squared distance, then index: the scan's choice among the holes. Ring -1 if there is none.
-  HoleLinkCandidate ClosestOnHoles(const Point2d& p, int skip) const {
+  // squared distance, then index: the scan's choice among the holes, if it lies within `limit`
+  // (any vertex or none otherwise). The limit prunes the search from the start, which matters
+  // because the vertices of hole `skip` lie nearest and are all passed over.
+  HoleLinkCandidate ClosestOnHoles(const Point2d& p, int skip, double limit) const {
     HoleLinkCandidate best;
-    double radius = best.distance;
+    double radius = limit;
     holes_.Search(p, &radius, [&](int id, double d2) {
       const int ring = ring_[id];
       if (ring == skip) return;
@@ -182,7 +185,7 @@ class VertexSearch {
            (ring < best.ring || (ring == best.ring &&
                                  (d2 < best.d2 || (d2 == best.d2 && index_[id] < best.vertex)))))) {
         best = {ring, index_[id], d2, d};
-        radius = d;
+        radius = std::min(radius, d);
       }
     });
     return best;
@@ -248,7 +251,7 @@ std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
       const auto [x, d2] = search.ClosestOuter(a);
       const double d = std::sqrt(d2);
       // The outer ring comes first: a hole replaces it only when strictly closer.
-      const HoleLinkCandidate on_hole = search.ClosestOnHoles(a, i);
+      const HoleLinkCandidate on_hole = search.ClosestOnHoles(a, i, d);
       const HoleLink link = on_hole.distance < d
                                 ? HoleLink{on_hole.ring, on_hole.vertex, end, on_hole.distance}
                                 : HoleLink{-1, x, end, d};
@@ -337,22 +340,24 @@ int CountNotches(const Polygon2d& polygon) {
 namespace {
 
 // Melkman's linear-time hull of a simple polygonal chain: the points ring[index(k)],
-// k = 0..count-1, in ring order (increasing indices), started at the lexicographically smallest
-// one (always a strict hull vertex), with exact orientation; strict turns only. Returns ring
-// indices in increasing order.
+// k = 0..count-1, in ring order (increasing indices), started at `start` if it is known to be a
+// strict hull vertex, else at the lexicographically smallest point (always one), with exact
+// orientation; strict turns only. Returns ring indices in increasing order.
 template <typename Index>
-std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index) {
+std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int start = -1) {
   const int n = count;
   if (n < 3) {
     std::vector<int> all(n);
     for (int k = 0; k < n; ++k) all[k] = index(k);
     return all;
   }
-  int start = 0;
-  for (int k = 1; k < n; ++k) {
-    const Point2d& p = ring[index(k)];
-    const Point2d& q = ring[index(start)];
-    if (p.x() < q.x() || (p.x() == q.x() && p.y() < q.y())) start = k;
+  if (start < 0) {
+    start = 0;
+    for (int k = 1; k < n; ++k) {
+      const Point2d& p = ring[index(k)];
+      const Point2d& q = ring[index(start)];
+      if (p.x() < q.x() || (p.x() == q.x() && p.y() < q.y())) start = k;
+    }
   }
   auto at = [&](int k) { return index(start + k < n ? start + k : start + k - n); };
   auto turn = [&](int a, int b, int c) { return Orientation(ring[a], ring[b], ring[c]); };
@@ -362,7 +367,8 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index) {
   while (k < n && turn(at(0), second, at(k)) == 0) second = at(k++);
   if (k == n) return {std::min(at(0), second), std::max(at(0), second)};
   // A deque in a flat array: [bottom, top] with room to grow both ways.
-  std::vector<int> deque(2 * n + 3);
+  // Not zeroed (a memset of 8n bytes per hull): every slot is written before it is read.
+  const std::unique_ptr<int[]> deque(new int[2 * n + 3]);
   int bottom = n, top = n - 1;
   auto push_top = [&](int v) { deque[++top] = v; };
   auto push_bottom = [&](int v) { deque[--bottom] = v; };
@@ -389,7 +395,7 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index) {
     while (top - bottom >= 2 && turn(v, deque[bottom], deque[bottom + 1]) <= 0) ++bottom;
     push_bottom(v);
   }
-  std::vector<int> hull(deque.begin() + bottom, deque.begin() + top);  // Drop the repeated end.
+  std::vector<int> hull(deque.get() + bottom, deque.get() + top);  // Drop the repeated end.
   std::sort(hull.begin(), hull.end());
   return hull;
 }
@@ -564,12 +570,18 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const std::vector<int>
   constexpr double kInheritedGap = -1.0;
   Concavity2d result;
   result.outer.assign(n, 0.0);
-  std::vector<int> kept(n);  // kept[0, kept_size), a stack without capacity checks.
+  // kept[0, kept_size), a stack without capacity checks; not zeroed, as it is written first.
+  const std::unique_ptr<int[]> kept(new int[n]);
   int kept_size = 0;
   int last_hull = -1;  // Where in `kept` the run's last parent hull vertex is, or -1.
+  // Where in `kept` the first parent hull vertex is, or -1: a strict hull vertex of the piece
+  // too (the piece lies in the parent), so the hull can start there. No cut of `kept` below
+  // reaches it: they keep the position of a later parent hull vertex.
+  int first_hull = -1;
   for (int k = 0, i = run_start; k < n; ++k, i = i + 1 == n ? 0 : i + 1) {
     const int from = origin[i];
     if (from >= 0 && parent_on_hull[from]) {
+      if (first_hull < 0) first_hull = kept_size;
       if (last_hull >= 0) {
         const int begin = kept[last_hull];
         for (int j = begin + 1 == n ? 0 : begin + 1; j != i; j = j + 1 == n ? 0 : j + 1) {
@@ -583,7 +595,8 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const std::vector<int>
     kept[kept_size++] = i;
     if (!inherited_edge(i)) last_hull = -1;
   }
-  result.hull = MelkmanHull(ring, kept_size, [&](int k) { return kept[k]; });
+  result.hull = MelkmanHull(
+      ring, kept_size, [&](int k) { return kept[k]; }, first_hull);
   const int h = static_cast<int>(result.hull.size());
   std::vector<Pocket> pockets;
   for (int k = 0; k < h; ++k) {

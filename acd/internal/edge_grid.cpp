@@ -7,6 +7,9 @@ namespace acdplan::acd::internal {
 
 EdgeGrid::EdgeGrid(const Polygon2d& polygon) {
   Point2d lower = polygon.outer.front(), upper = polygon.outer.front();
+  size_t total = polygon.outer.size();
+  for (const Ring2d& hole : polygon.holes) total += hole.size();
+  edges_.reserve(total);
   for (int ring = -1; ring < static_cast<int>(polygon.holes.size()); ++ring) {
     const Ring2d& points = ring < 0 ? polygon.outer : polygon.holes[ring];
     for (int i = 0; i < static_cast<int>(points.size()); ++i) {

@@ -387,8 +387,10 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
   // Pass 1: the guess.
   const Point2d in = r - scorer.Before(), out = scorer.After() - r;
   int guess = -1;
-  double guess_value = 0.0;  // (s_d score)^2 without the bonus.
+  double guess_value = 0.0;    // (s_d score)^2 without the bonus.
+  double max_concavity = 0.0;  // Over all vertices, for the bound on points on edges below.
   for (int i = 0; i < m; ++i) {
+    max_concavity = std::max(max_concavity, concavity.outer[i]);
     const Point2d to = outer[i] - r;
     if (cross(in, to) < 0.0 || cross(out, to) < 0.0 || scorer.Skips(i)) continue;
     const double d2 = to.squaredNorm();
@@ -401,8 +403,6 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
   // Pass 2: every candidate that may reach the floor, the best candidate known so far.
   constexpr double kSlack = 1.0 + 1e-9;  // Against rounding in the bounds.
   const double bonus = std::max(1.0, options.double_resolve_bonus);
-  double max_concavity = 0.0;
-  for (const double c : concavity.outer) max_concavity = std::max(max_concavity, c);
   const double edge_bound = relative(max_concavity) * bonus * kSlack / options.score_distance;
   Candidate floor;
   floor.score = -std::numeric_limits<double>::infinity();
@@ -559,16 +559,18 @@ void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b,
   origin->push_back(b.on_edge ? -1 : b.index);
 }
 
-// Gives each hole of `polygon` other than `skip` to the piece that contains it: piece 0 if the
-// hole's first vertex lies strictly inside piece 0's ring, else piece 1. Parity by a slab
-// locator (exact); a point within rounding noise of the ring (never the case for a valid cut,
-// which keeps clear of other holes) is decided by CGAL's exact test, as before.
+// Gives each hole of `polygon` other than `skip` to the piece that contains it: the hole's
+// first vertex lies strictly inside one piece's ring, as a valid cut keeps clear of other
+// holes, so it is located in the smaller ring only (a hole split often cuts off a small piece).
+// Parity by a slab locator (exact); a point within rounding noise of the ring (never the case
+// for a valid cut) is decided by CGAL's exact test, as before.
 void DistributeHoles(const Polygon2d& polygon, int skip, std::array<Polygon2d, 2>* pieces) {
   if (polygon.holes.size() <= (skip >= 0 ? 1u : 0u)) return;
-  const Ring2d& first = (*pieces)[0].outer;
-  const RingLocator locator(Polygon2d{first, {}});
+  const int tested = (*pieces)[0].outer.size() <= (*pieces)[1].outer.size() ? 0 : 1;
+  const Ring2d& ring = (*pieces)[tested].outer;
+  const RingLocator locator(Polygon2d{ring, {}});
   double scale = 0.0;
-  for (const Point2d& p : first) scale = std::max(scale, MaxAbs(p));
+  for (const Point2d& p : ring) scale = std::max(scale, MaxAbs(p));
   const double noise = kRoundingNoise * std::max(1.0, scale);
   for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
     if (k == skip) continue;
@@ -577,14 +579,14 @@ void DistributeHoles(const Polygon2d& polygon, int skip, std::array<Polygon2d, 2
     bool inside;
     if (locator.NearBoundary(p, noise)) {
       std::vector<Kernel::Point_2> boundary;
-      boundary.reserve(first.size());
-      for (const Point2d& q : first) boundary.push_back(ToCgal(q));
+      boundary.reserve(ring.size());
+      for (const Point2d& q : ring) boundary.push_back(ToCgal(q));
       inside = CGAL::bounded_side_2(boundary.begin(), boundary.end(), ToCgal(p), Kernel()) ==
                CGAL::ON_BOUNDED_SIDE;
     } else {
       inside = locator.InsideParity(p);
     }
-    (*pieces)[inside ? 0 : 1].holes.push_back(hole);
+    (*pieces)[inside ? tested : 1 - tested].holes.push_back(hole);
   }
 }
 

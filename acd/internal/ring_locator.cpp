@@ -21,6 +21,9 @@ RingLocator::RingLocator(const Polygon2d& polygon) {
     const size_t n = ring.size();
     for (size_t i = 0; i < n; ++i) edges_.push_back({ring[i], ring[(i + 1) % n]});
   };
+  size_t total = polygon.outer.size();
+  for (const Ring2d& hole : polygon.holes) total += hole.size();
+  edges_.reserve(total);
   add_ring(polygon.outer);
   for (const Ring2d& hole : polygon.holes) add_ring(hole);
   if (edges_.empty()) return;
