@@ -18,18 +18,65 @@ double MaxOver(const Eigen::Vector3d& n, const Eigen::Vector3d& lo, const Eigen:
   return s;
 }
 
+using Planes = std::vector<Eigen::Vector4d, Eigen::aligned_allocator<Eigen::Vector4d>>;
+
+/// One hull being sorted into the cells.
+struct HullSorter {
+  const Planes& planes;  // the hull's planes, d + slack
+  Eigen::AlignedBox3d box;
+  double slack;
+  Eigen::Vector3d origin, cell_size;
+  Eigen::Vector3i cells;
+  // Per cell: the planes (indices into `planes`) that cross it, for the cells the hull reaches.
+  std::vector<std::pair<int, std::vector<int>>>* reached;
+
+  // Sorts the block of cells [lo, hi] (inclusive), given the planes that may cross it. Cell
+  // boxes are grown by the slack, so that a point rounded into a neighbouring cell still lies in
+  // the box its cell was sorted by. A plane with the whole block beyond it by another slack
+  // excludes the block (the plain test says "outside" for all of it, even after rounding); one
+  // with the whole block inside it by a slack holds for every point of it and is dropped; the
+  // others cross the block, which is halved until it is one cell.
+  void Sort(const Eigen::Vector3i& lo, const Eigen::Vector3i& hi,
+            const std::vector<int>& crossing) {
+    const Eigen::Vector3d bmin =
+        origin + lo.cast<double>().cwiseProduct(cell_size) - Eigen::Vector3d::Constant(slack);
+    const Eigen::Vector3d bmax =
+        origin + (hi + Eigen::Vector3i::Ones()).cast<double>().cwiseProduct(cell_size) +
+        Eigen::Vector3d::Constant(slack);
+    if (!Eigen::AlignedBox3d(bmin, bmax).intersects(box)) return;
+    std::vector<int> still;
+    for (const int k : crossing) {
+      const Eigen::Vector3d n = planes[static_cast<size_t>(k)].head<3>();
+      const double d = planes[static_cast<size_t>(k)](3);
+      if (MinOver(n, bmin, bmax) > d + slack) return;
+      if (MaxOver(n, bmin, bmax) > d - slack) still.push_back(k);
+    }
+    int axis = 0;
+    (hi - lo).maxCoeff(&axis);
+    if (still.empty() || lo == hi) {
+      for (int z = lo.z(); z <= hi.z(); ++z) {
+        for (int y = lo.y(); y <= hi.y(); ++y) {
+          for (int x = lo.x(); x <= hi.x(); ++x) {
+            reached->emplace_back((z * cells.y() + y) * cells.x() + x, still);
+          }
+        }
+      }
+      return;
+    }
+    const int mid = (lo[axis] + hi[axis]) / 2;
+    Eigen::Vector3i left_hi = hi, right_lo = lo;
+    left_hi[axis] = mid;
+    right_lo[axis] = mid + 1;
+    Sort(lo, left_hi, still);
+    Sort(right_lo, hi, still);
+  }
+};
+
 }  // namespace
 
 HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& planes,
-                   const std::vector<Eigen::AlignedBox3d>& boxes, double slack) {
-  for (const auto& hull : planes) {
-    for (Eigen::Index r = 0; r < hull.rows(); ++r) {
-      Eigen::Vector4d plane = hull.row(r).transpose();
-      plane(3) += slack;
-      planes_.push_back(plane);
-    }
-    hull_plane_begin_.push_back(static_cast<int>(planes_.size()));
-  }
+                   const std::vector<Eigen::AlignedBox3d>& boxes, double slack)
+    : hull_count_(static_cast<int>(planes.size())) {
   std::vector<Eigen::AlignedBox3d> loose = boxes;
   for (auto& box : loose) {
     box.min().array() -= slack;
@@ -45,58 +92,45 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
   for (int k = 0; k < 3; ++k) {
     cells_[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / h)), 1, kTargetCells);
     cell_size_[k] = extent[k] / cells_[k];
+    inverse_cell_size_[k] = 1 / cell_size_[k];
   }
   const size_t cell_count = static_cast<size_t>(cells_.prod());
   covered_.assign(cell_count, 0);
-  std::vector<std::vector<int>> lists(cell_count);
+  std::vector<std::vector<Entry>> lists(cell_count);
+  std::vector<Planes> list_planes(cell_count);
 
-  // Cell boxes are grown by the slack, so that a point rounded into a neighbouring cell still
-  // lies in the box its cell was classified by. A cell is left out of a hull's list only if a
-  // plane of the hull has the whole (grown) cell beyond it by another slack: the plain test
-  // would then say "outside" for every point of it, even after rounding.
   for (size_t i = 0; i < loose.size(); ++i) {
-    const int begin = hull_plane_begin_[i], end = hull_plane_begin_[i + 1];
-    Eigen::Vector3i lo, hi;
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::clamp(
-          static_cast<int>(std::floor((loose[i].min()[k] - bounds_.min()[k]) / cell_size_[k])) - 1,
-          0, cells_[k] - 1);
-      hi[k] = std::clamp(
-          static_cast<int>(std::floor((loose[i].max()[k] - bounds_.min()[k]) / cell_size_[k])) + 1,
-          0, cells_[k] - 1);
+    Planes hull;
+    for (Eigen::Index r = 0; r < planes[i].rows(); ++r) {
+      Eigen::Vector4d plane = planes[i].row(r).transpose();
+      plane(3) += slack;
+      hull.push_back(plane);
     }
-    for (int z = lo.z(); z <= hi.z(); ++z) {
-      for (int y = lo.y(); y <= hi.y(); ++y) {
-        for (int x = lo.x(); x <= hi.x(); ++x) {
-          const Eigen::Vector3d cmin = bounds_.min() +
-                                       Eigen::Vector3d(x, y, z).cwiseProduct(cell_size_) -
-                                       Eigen::Vector3d::Constant(slack);
-          const Eigen::Vector3d cmax = cmin + cell_size_ + Eigen::Vector3d::Constant(2 * slack);
-          if (!Eigen::AlignedBox3d(cmin, cmax).intersects(loose[i])) continue;
-          bool separated = false, inside = true;
-          for (int k = begin; k < end && !separated; ++k) {
-            const Eigen::Vector3d n = planes_[static_cast<size_t>(k)].head<3>();
-            const double d = planes_[static_cast<size_t>(k)](3);
-            separated = MinOver(n, cmin, cmax) > d + slack;
-            // Covered only with a slack to spare, so that the plain test agrees on every point.
-            inside = inside && MaxOver(n, cmin, cmax) <= d - slack;
-          }
-          if (separated) continue;
-          const size_t c =
-              (static_cast<size_t>(z) * static_cast<size_t>(cells_.y()) + static_cast<size_t>(y)) *
-                  static_cast<size_t>(cells_.x()) +
-              static_cast<size_t>(x);
-          lists[c].push_back(static_cast<int>(i));
-          if (inside && begin < end) covered_[c] = 1;
-        }
-      }
+    std::vector<std::pair<int, std::vector<int>>> reached;
+    HullSorter sorter{hull, loose[i], slack, bounds_.min(), cell_size_, cells_, &reached};
+    std::vector<int> all(hull.size());
+    for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+    sorter.Sort(Eigen::Vector3i::Zero(), cells_ - Eigen::Vector3i::Ones(), all);
+    for (const auto& [c, crossing] : reached) {
+      Planes& to = list_planes[static_cast<size_t>(c)];
+      Entry entry{static_cast<int>(i), static_cast<int>(to.size()), 0};
+      for (const int k : crossing) to.push_back(hull[static_cast<size_t>(k)]);
+      entry.plane_end = static_cast<int>(to.size());
+      lists[static_cast<size_t>(c)].push_back(entry);
+      if (crossing.empty() && !hull.empty()) covered_[static_cast<size_t>(c)] = 1;
     }
   }
   cell_begin_.reserve(cell_count + 1);
   cell_begin_.push_back(0);
-  for (const auto& list : lists) {
-    cell_hulls_.insert(cell_hulls_.end(), list.begin(), list.end());
-    cell_begin_.push_back(static_cast<int>(cell_hulls_.size()));
+  for (size_t c = 0; c < cell_count; ++c) {
+    const int offset = static_cast<int>(cell_planes_.size());
+    for (Entry entry : lists[c]) {
+      entry.plane_begin += offset;
+      entry.plane_end += offset;
+      entries_.push_back(entry);
+    }
+    cell_planes_.insert(cell_planes_.end(), list_planes[c].begin(), list_planes[c].end());
+    cell_begin_.push_back(static_cast<int>(entries_.size()));
   }
 }
 
@@ -104,17 +138,16 @@ int HullGrid::CellOf(const Eigen::Vector3d& p) const {
   if (cell_begin_.empty() || !bounds_.contains(p)) return -1;
   int index[3];
   for (int k = 0; k < 3; ++k) {
-    index[k] =
-        std::clamp(static_cast<int>((p[k] - bounds_.min()[k]) / cell_size_[k]), 0, cells_[k] - 1);
+    index[k] = std::clamp(static_cast<int>((p[k] - bounds_.min()[k]) * inverse_cell_size_[k]), 0,
+                          cells_[k] - 1);
   }
   return (index[2] * cells_.y() + index[1]) * cells_.x() + index[0];
 }
 
-bool HullGrid::HullContains(int hull, const Eigen::Vector3d& p) const {
+bool HullGrid::EntryContains(const Entry& entry, const Eigen::Vector3d& p) const {
   const Eigen::Vector4d q(p.x(), p.y(), p.z(), -1.0);
-  for (int k = hull_plane_begin_[static_cast<size_t>(hull)];
-       k < hull_plane_begin_[static_cast<size_t>(hull) + 1]; ++k) {
-    if (planes_[static_cast<size_t>(k)].dot(q) > 0) return false;
+  for (int k = entry.plane_begin; k < entry.plane_end; ++k) {
+    if (cell_planes_[static_cast<size_t>(k)].dot(q) > 0) return false;
   }
   return true;
 }
@@ -125,7 +158,7 @@ bool HullGrid::AnyContains(const Eigen::Vector3d& p) const {
   if (covered_[static_cast<size_t>(c)]) return true;
   for (int k = cell_begin_[static_cast<size_t>(c)]; k < cell_begin_[static_cast<size_t>(c) + 1];
        ++k) {
-    if (HullContains(cell_hulls_[static_cast<size_t>(k)], p)) return true;
+    if (EntryContains(entries_[static_cast<size_t>(k)], p)) return true;
   }
   return false;
 }
@@ -135,8 +168,8 @@ void HullGrid::Candidates(const Eigen::Vector3d& p, std::vector<int>* out) const
   if (c < 0) return;
   for (int k = cell_begin_[static_cast<size_t>(c)]; k < cell_begin_[static_cast<size_t>(c) + 1];
        ++k) {
-    const int hull = cell_hulls_[static_cast<size_t>(k)];
-    if (HullContains(hull, p)) out->push_back(hull);
+    const Entry& entry = entries_[static_cast<size_t>(k)];
+    if (EntryContains(entry, p)) out->push_back(entry.hull);
   }
 }
 

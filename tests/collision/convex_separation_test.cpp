@@ -41,7 +41,8 @@ TEST(ConvexSeparation, NeverSeparatesOverlappingCubes) {
     for (int a = 0; a <= 8 && !overlap; ++a) {
       for (int b = 0; b <= 8 && !overlap; ++b) {
         for (int c = 0; c <= 8 && !overlap; ++c) {
-          const Eigen::Vector3d p = pose * (Eigen::Vector3d(a, b, c) / 8.0 - Eigen::Vector3d::Constant(0.5));
+          const Eigen::Vector3d p =
+              pose * (Eigen::Vector3d(a, b, c) / 8.0 - Eigen::Vector3d::Constant(0.5));
           overlap = (p.array().abs() <= 0.5).all();
         }
       }
