@@ -19,7 +19,8 @@
 #include "acd/decompose2d.h"
 #include "acd/prepare_mesh.h"
 #include "base/input_error.h"
-#include "collision/internal/hull_tree.h"
+#include "collision/internal/convex_separation.h"
+#include "collision/internal/hull_grid.h"
 #include "collision/internal/mesh_building.h"
 #include "collision/internal/solid_locator.h"
 
@@ -115,6 +116,21 @@ double Distance(const fcl::CollisionGeometryd* a, const fcl::Transform3d& ta,
   return std::max(result.min_distance, 0.0);
 }
 
+/// `hull` (a closed convex mesh) as vertices and supporting face planes.
+internal::ConvexPolytope Polytope(const acd::TriangleMesh& hull) {
+  internal::ConvexPolytope polytope;
+  for (Eigen::Index i = 0; i < hull.vertices.rows(); ++i) {
+    polytope.vertices.push_back(hull.vertices.row(i).transpose());
+  }
+  const Eigen::Matrix<double, Eigen::Dynamic, 4> planes = acd::HullPlanes(hull);
+  for (Eigen::Index r = 0; r < planes.rows(); ++r) polytope.planes.push_back(planes.row(r));
+  return polytope;
+}
+
+/// The sides of the regular polygon that stands in for a disc robot in the face-plane pre-test:
+/// circumscribed, so it contains the disc and a separation it finds is one of the disc.
+constexpr int kDiscPolygonSides = 16;
+
 void TogglePresence(std::vector<int>* set, int k) {
   auto it = std::find(set->begin(), set->end(), k);
   if (it == set->end()) {
@@ -134,6 +150,11 @@ struct CollisionWorld::Impl {
   Eigen::Vector3d witness = Eigen::Vector3d::Zero();     // a point of the robot (containment)
   std::optional<internal::MeshLocator3d> robot_locator;  // closed 3D robot: obstacle inside it
   Geometry point_probe;  // point robot: a zero-radius sphere for distances
+  // The robot's hull for the face-plane pre-test of every hull test (a disc: its circumscribed
+  // polygon's prism); no vertices for a point robot. When `polytope_on_robot`, its vertices are
+  // points of the robot, so one inside a hull is a contact with that hull.
+  internal::ConvexPolytope robot_polytope;
+  bool polytope_on_robot = false;
   // Broadphase query objects of robot_hull / point_probe at the identity, built once. A query
   // copies one (RobotAt()) instead of constructing fcl::CollisionObject from the shared
   // geometry: that constructor recomputes the geometry's local AABB, i.e. writes to geometry
@@ -144,14 +165,16 @@ struct CollisionWorld::Impl {
   // Obstacles (world frame).
   Geometry all_bvh;  // kBvh
   std::optional<internal::ExactObstacleLocator> exact_locator;
-  std::vector<Geometry> piece_hulls;  // fcl::Convexd
+  std::vector<Geometry> piece_hulls;                      // fcl::Convexd
+  std::vector<internal::ConvexPolytope> piece_polytopes;  // the same hulls, for the pre-test
+  double margin = 0;  // the pre-test's tolerance for rounding [units]
   std::vector<std::unique_ptr<fcl::CollisionObjectd>> hull_objects;
   fcl::DynamicAABBTreeCollisionManagerd manager;
   std::vector<Geometry> piece_bvhs;  // kHullsExact confirmation (3D: the component's triangles
                                      // that may meet the piece's hull, input coordinates)
   std::vector<std::optional<internal::PolygonLocator2d>> piece_polygons;  // 2D containment
   std::vector<std::optional<internal::MeshLocator3d>> component_meshes;   // 3D containment
-  internal::HullTree hull_tree;  // point robot, kHulls / kHullsExact
+  internal::HullGrid hull_grid;  // point robot, kHulls / kHullsExact
   int dimension = 2;
 
   // True if the part (ObstacleComponent) of piece `i` lies inside the robot at `pose` (closed 3D
@@ -243,12 +266,24 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
       m.robot_exact = std::make_shared<fcl::Cylinderd>(robot.radius, h / 2);
       m.robot_exact->computeLocalAABB();
       m.robot_hull = m.robot_exact;
+      {
+        const double r = robot.radius / std::cos(M_PI / kDiscPolygonSides);
+        acd::Ring2d ring;
+        for (int k = 0; k < kDiscPolygonSides; ++k) {
+          const double a = 2 * M_PI * k / kDiscPolygonSides;
+          ring.emplace_back(r * std::cos(a), r * std::sin(a));
+        }
+        m.robot_polytope = Polytope(internal::ExtrudeConvexRing(ring, -h / 4, h / 4));
+      }
       break;
     case envs::RobotShape::kPolygon: {
       const acd::TriangleMesh prism = internal::ExtrudePolygon(robot.polygon, -h / 4, h / 4);
       m.robot_exact = MakeBvh({&prism});
-      m.robot_hull = MakeConvex(
-          internal::ExtrudeConvexRing(acd::ConvexHull(robot.polygon.outer), -h / 4, h / 4));
+      const acd::TriangleMesh hull =
+          internal::ExtrudeConvexRing(acd::ConvexHull(robot.polygon.outer), -h / 4, h / 4);
+      m.robot_hull = MakeConvex(hull);
+      m.robot_polytope = Polytope(hull);
+      m.polytope_on_robot = true;  // corners of the outline at the prism's ends
       const acd::Decomposition2d pieces = acd::Decompose2d(robot.polygon, {});
       if (pieces.components.size() > 1 || !robot.polygon.holes.empty()) {
         for (const acd::Component2d& c : pieces.components) {
@@ -265,7 +300,15 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
       for (Eigen::Index i = 0; i < robot.mesh.vertices.rows(); ++i) {
         points.push_back(robot.mesh.vertices.row(i).transpose());
       }
-      m.robot_hull = MakeConvex(acd::ConvexHull3(points, 1e-9));
+      const acd::TriangleMesh hull = acd::ConvexHull3(points, 1e-9);
+      m.robot_hull = MakeConvex(hull);
+      m.robot_polytope = Polytope(hull);
+      // A flat robot's hull is thickened: its corners are then not all the robot's.
+      m.polytope_on_robot =
+          std::all_of(m.robot_polytope.vertices.begin(), m.robot_polytope.vertices.end(),
+                      [&points](const Eigen::Vector3d& v) {
+                        return std::find(points.begin(), points.end(), v) != points.end();
+                      });
       m.witness = robot.mesh.vertices.row(robot.mesh.triangles(0, 0)).transpose();
       const acd::PreparedMesh prepared =
           acd::PrepareMesh(robot.mesh, {}, "CollisionWorld(): robot mesh");
@@ -288,6 +331,7 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
   for (size_t i = 0; i < set.pieces.size(); ++i) {
     const ObstaclePiece& piece = set.pieces[i];
     m.piece_hulls.push_back(MakeConvex(piece.hull));
+    m.piece_polytopes.push_back(Polytope(piece.hull));
     m.hull_objects.push_back(std::make_unique<fcl::CollisionObjectd>(m.piece_hulls.back()));
     // User data = piece index + 1; the robot's object has none.
     m.hull_objects.back()->setUserData(reinterpret_cast<void*>(i + 1));
@@ -318,7 +362,8 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
   const double slack =
       1e-12 * (1 + set.bounds.sizes().norm() + set.bounds.max().cwiseAbs().maxCoeff() +
                set.bounds.min().cwiseAbs().maxCoeff());
-  m.hull_tree = internal::HullTree(planes, boxes, slack);
+  m.hull_grid = internal::HullGrid(planes, boxes, slack);
+  m.margin = slack;
 }
 
 CollisionWorld::~CollisionWorld() = default;
@@ -334,10 +379,10 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
     if (mode == CollisionMode::kBvh) {
       collides = m.exact_locator->Inside(witness);
     } else if (mode == CollisionMode::kHulls) {
-      collides = m.hull_tree.AnyContains(witness);
+      collides = m.hull_grid.AnyContains(witness);
     } else {
       std::vector<int> candidates;
-      m.hull_tree.Candidates(witness, &candidates);
+      m.hull_grid.Candidates(witness, &candidates);
       std::vector<int> components;
       for (int i : candidates) {
         const ObstaclePiece& piece = set.pieces[static_cast<size_t>(i)];
@@ -379,12 +424,14 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
       const Impl* m;
       const ObstacleSet* set;
       Eigen::Isometry3d pose;
-      Eigen::Vector3d witness;  // world frame
-      bool exact;               // kHullsExact
+      Eigen::Vector3d witness;         // world frame
+      bool exact;                      // kHullsExact
+      internal::ConvexPolytope robot;  // m.robot_polytope at `pose`
       bool hit = false;
       std::vector<int> components;  // 3D: components whose containment of witness decides
       std::uint64_t hull_tests = 0, confirmations = 0;
-    } q{&m, &set, pose, witness, mode == CollisionMode::kHullsExact, false, {}, 0, 0};
+    } q{&m, &set, pose, witness, mode == CollisionMode::kHullsExact, {}, false, {}, 0, 0};
+    m.robot_polytope.Transformed(pose, &q.robot);
     fcl::CollisionObjectd robot = RobotAt(*m.robot_hull_object, pose);
     m.manager.collide(
         &robot, &q, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data) {
@@ -393,6 +440,16 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
           const size_t i = PieceOf(o1, o2);
           const fcl::Transform3d identity = fcl::Transform3d::Identity();
           ++q.hull_tests;
+          // The face-plane pre-test: most boxes that overlap belong to hulls a face plane of
+          // either side separates; and a corner of the robot inside a hull is a contact, which
+          // on a convex piece is a collision. GJK only decides what remains.
+          const internal::ConvexPolytope& hull = m.piece_polytopes[i];
+          if (internal::SeparatedByAFacePlane(q.robot, hull, m.margin)) return false;
+          if (m.polytope_on_robot && (!q.exact || q.set->pieces[i].convex) &&
+              internal::AVertexInside(q.robot, hull, m.margin)) {
+            q.hit = true;
+            return true;
+          }
           const ConvexContact contact =
               CollideConvex(m.robot_hull.get(), q.pose, m.piece_hulls[i].get(), identity);
           if (contact == ConvexContact::kNone) return false;

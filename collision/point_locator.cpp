@@ -3,7 +3,7 @@
 #include <optional>
 
 #include "base/enum_names.h"
-#include "collision/internal/hull_tree.h"
+#include "collision/internal/hull_grid.h"
 #include "collision/internal/solid_locator.h"
 
 namespace acdplan::collision {
@@ -25,7 +25,7 @@ LocateMethod ParseLocateMethod(const std::string& name) {
 
 struct PointLocator::Impl {
   std::optional<internal::ExactObstacleLocator> exact;
-  internal::HullTree hulls;
+  internal::HullGrid hulls;
 };
 
 PointLocator::PointLocator(std::shared_ptr<const ObstacleSet> obstacles, LocateMethod method)
@@ -44,7 +44,7 @@ PointLocator::PointLocator(std::shared_ptr<const ObstacleSet> obstacles, LocateM
     const double slack = 1e-12 * (1 + obstacles_->bounds.sizes().norm() +
                                   obstacles_->bounds.max().cwiseAbs().maxCoeff() +
                                   obstacles_->bounds.min().cwiseAbs().maxCoeff());
-    impl_->hulls = internal::HullTree(planes, boxes, slack);
+    impl_->hulls = internal::HullGrid(planes, boxes, slack);
   }
 }
 

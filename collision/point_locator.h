@@ -1,6 +1,6 @@
 #pragma once
 // Point location: is a point inside an obstacle? Exact, or on the ACD hulls (dissertation
-// Algorithm 8, Ch. VI.A) with a bounding-volume hierarchy over the hulls.
+// Algorithm 8, Ch. VI.A) with a uniform grid over the hulls.
 
 #include <Eigen/Core>
 #include <memory>
@@ -16,8 +16,10 @@ enum class LocateMethod {
   /// exact orientation predicates. 3D: CGAL Side_of_triangle_mesh on each closed connected
   /// component (parity per obstacle).
   kExact,
-  /// Algorithm 8 on the hulls of the obstacle pieces, through an AABB tree over the hulls
-  /// instead of a loop over all of them. Never says outside where kExact says inside; may say
+  /// Algorithm 8 on the hulls of the obstacle pieces, through a uniform grid over the hulls
+  /// instead of a loop over all of them (a cell inside one hull answers at once; otherwise only
+  /// the hulls that reach the cell are tested). Never says outside where kExact says inside; may
+  /// say
   /// inside for a point near a concave feature (inside a hull, outside its component).
   kHulls,
 };

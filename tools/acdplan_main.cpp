@@ -611,6 +611,11 @@ int main(int argc, char** argv) {
                    "Folder of .obj meshes used as 3D obstacles (relative to the working "
                    "directory); '' to skip 3D")
       ->capture_default_str();
+  bench_collision
+      ->add_option("--meshes", bench_options.meshes,
+                   "File names in --mesh-dir to run, comma-separated (e.g. torus1.obj,cup.obj); "
+                   "default: every .obj there")
+      ->delimiter(',');
 
   PlanArguments plan_args;
   CLI::App* plan = app.add_subcommand(

@@ -603,6 +603,19 @@ TEST(BenchCli, BenchCollisionNamesTheFlagOfABadPath) {
              "collision_targets.yaml: targets[0].metric: unknown metric 'hulls_speed'");
 }
 
+TEST(BenchCli, BenchCollisionRunsOnlyTheMeshesOfMeshes) {
+  const fs::path dir = Scratch("cli_collision_meshes");
+  const std::string meshes = std::string(ACDPLAN_SOURCE_DIR) + "/data/meshes/vhacd";
+  EXPECT_EQ(Acdplan("bench-collision --poses 2 --points 2 --mesh-dir '" + meshes +
+                        "' --meshes cube.obj,cube-notch.obj",
+                    dir / "o.txt"),
+            0);
+  const std::string out = ReadText(dir / "o.txt");
+  EXPECT_HAS(out, "| cube/mesh |");
+  EXPECT_HAS(out, "| cube-notch/mesh |");
+  EXPECT_EQ(out.find("torus1/mesh"), std::string::npos);
+}
+
 TEST(BenchCli, CtrlCWritesTheFinishedRunsAndExits130) {
   // Time budgets on a world where uniform rarely solves: each run lasts about its budget, so the
   // bench is still running when the signal comes (the outcome checks hold either way).

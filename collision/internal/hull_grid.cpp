@@ -1,0 +1,176 @@
+#include "collision/internal/hull_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace acdplan::collision::internal {
+namespace {
+
+// The smallest and largest of n . x over the box [lo, hi].
+double MinOver(const Eigen::Vector3d& n, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  double s = 0;
+  for (int k = 0; k < 3; ++k) s += n[k] * (n[k] >= 0 ? lo[k] : hi[k]);
+  return s;
+}
+double MaxOver(const Eigen::Vector3d& n, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  double s = 0;
+  for (int k = 0; k < 3; ++k) s += n[k] * (n[k] >= 0 ? hi[k] : lo[k]);
+  return s;
+}
+
+using Planes = std::vector<Eigen::Vector4d, Eigen::aligned_allocator<Eigen::Vector4d>>;
+
+/// One hull being sorted into the cells.
+struct HullSorter {
+  const Planes& planes;  // the hull's planes, d + slack
+  Eigen::AlignedBox3d box;
+  double slack;
+  Eigen::Vector3d origin, cell_size;
+  Eigen::Vector3i cells;
+  // Per cell: the planes (indices into `planes`) that cross it, for the cells the hull reaches.
+  std::vector<std::pair<int, std::vector<int>>>* reached;
+
+  // Sorts the block of cells [lo, hi] (inclusive), given the planes that may cross it. Cell
+  // boxes are grown by the slack, so that a point rounded into a neighbouring cell still lies in
+  // the box its cell was sorted by. A plane with the whole block beyond it by another slack
+  // excludes the block (the plain test says "outside" for all of it, even after rounding); one
+  // with the whole block inside it by a slack holds for every point of it and is dropped; the
+  // others cross the block, which is halved until it is one cell.
+  void Sort(const Eigen::Vector3i& lo, const Eigen::Vector3i& hi,
+            const std::vector<int>& crossing) {
+    const Eigen::Vector3d bmin =
+        origin + lo.cast<double>().cwiseProduct(cell_size) - Eigen::Vector3d::Constant(slack);
+    const Eigen::Vector3d bmax =
+        origin + (hi + Eigen::Vector3i::Ones()).cast<double>().cwiseProduct(cell_size) +
+        Eigen::Vector3d::Constant(slack);
+    if (!Eigen::AlignedBox3d(bmin, bmax).intersects(box)) return;
+    std::vector<int> still;
+    for (const int k : crossing) {
+      const Eigen::Vector3d n = planes[static_cast<size_t>(k)].head<3>();
+      const double d = planes[static_cast<size_t>(k)](3);
+      if (MinOver(n, bmin, bmax) > d + slack) return;
+      if (MaxOver(n, bmin, bmax) > d - slack) still.push_back(k);
+    }
+    int axis = 0;
+    (hi - lo).maxCoeff(&axis);
+    if (still.empty() || lo == hi) {
+      for (int z = lo.z(); z <= hi.z(); ++z) {
+        for (int y = lo.y(); y <= hi.y(); ++y) {
+          for (int x = lo.x(); x <= hi.x(); ++x) {
+            reached->emplace_back((z * cells.y() + y) * cells.x() + x, still);
+          }
+        }
+      }
+      return;
+    }
+    const int mid = (lo[axis] + hi[axis]) / 2;
+    Eigen::Vector3i left_hi = hi, right_lo = lo;
+    left_hi[axis] = mid;
+    right_lo[axis] = mid + 1;
+    Sort(lo, left_hi, still);
+    Sort(right_lo, hi, still);
+  }
+};
+
+}  // namespace
+
+HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& planes,
+                   const std::vector<Eigen::AlignedBox3d>& boxes, double slack)
+    : hull_count_(static_cast<int>(planes.size())) {
+  std::vector<Eigen::AlignedBox3d> loose = boxes;
+  for (auto& box : loose) {
+    box.min().array() -= slack;
+    box.max().array() += slack;
+    bounds_.extend(box);
+  }
+  if (loose.empty()) return;
+
+  // Cells about cubic: edge h with (extent / h) cells per axis, about kTargetCells in all; an
+  // extent of zero (a flat set of hulls) gets one cell on that axis.
+  const Eigen::Vector3d extent = bounds_.sizes().cwiseMax(1e-300);
+  const double h = std::cbrt(extent.prod() / kTargetCells);
+  for (int k = 0; k < 3; ++k) {
+    cells_[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / h)), 1, kTargetCells);
+    cell_size_[k] = extent[k] / cells_[k];
+    inverse_cell_size_[k] = 1 / cell_size_[k];
+  }
+  const size_t cell_count = static_cast<size_t>(cells_.prod());
+  covered_.assign(cell_count, 0);
+  std::vector<std::vector<Entry>> lists(cell_count);
+  std::vector<Planes> list_planes(cell_count);
+
+  for (size_t i = 0; i < loose.size(); ++i) {
+    Planes hull;
+    for (Eigen::Index r = 0; r < planes[i].rows(); ++r) {
+      Eigen::Vector4d plane = planes[i].row(r).transpose();
+      plane(3) += slack;
+      hull.push_back(plane);
+    }
+    std::vector<std::pair<int, std::vector<int>>> reached;
+    HullSorter sorter{hull, loose[i], slack, bounds_.min(), cell_size_, cells_, &reached};
+    std::vector<int> all(hull.size());
+    for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+    sorter.Sort(Eigen::Vector3i::Zero(), cells_ - Eigen::Vector3i::Ones(), all);
+    for (const auto& [c, crossing] : reached) {
+      Planes& to = list_planes[static_cast<size_t>(c)];
+      Entry entry{static_cast<int>(i), static_cast<int>(to.size()), 0};
+      for (const int k : crossing) to.push_back(hull[static_cast<size_t>(k)]);
+      entry.plane_end = static_cast<int>(to.size());
+      lists[static_cast<size_t>(c)].push_back(entry);
+      if (crossing.empty() && !hull.empty()) covered_[static_cast<size_t>(c)] = 1;
+    }
+  }
+  cell_begin_.reserve(cell_count + 1);
+  cell_begin_.push_back(0);
+  for (size_t c = 0; c < cell_count; ++c) {
+    const int offset = static_cast<int>(cell_planes_.size());
+    for (Entry entry : lists[c]) {
+      entry.plane_begin += offset;
+      entry.plane_end += offset;
+      entries_.push_back(entry);
+    }
+    cell_planes_.insert(cell_planes_.end(), list_planes[c].begin(), list_planes[c].end());
+    cell_begin_.push_back(static_cast<int>(entries_.size()));
+  }
+}
+
+int HullGrid::CellOf(const Eigen::Vector3d& p) const {
+  if (cell_begin_.empty() || !bounds_.contains(p)) return -1;
+  int index[3];
+  for (int k = 0; k < 3; ++k) {
+    index[k] = std::clamp(static_cast<int>((p[k] - bounds_.min()[k]) * inverse_cell_size_[k]), 0,
+                          cells_[k] - 1);
+  }
+  return (index[2] * cells_.y() + index[1]) * cells_.x() + index[0];
+}
+
+bool HullGrid::EntryContains(const Entry& entry, const Eigen::Vector3d& p) const {
+  const Eigen::Vector4d q(p.x(), p.y(), p.z(), -1.0);
+  for (int k = entry.plane_begin; k < entry.plane_end; ++k) {
+    if (cell_planes_[static_cast<size_t>(k)].dot(q) > 0) return false;
+  }
+  return true;
+}
+
+bool HullGrid::AnyContains(const Eigen::Vector3d& p) const {
+  const int c = CellOf(p);
+  if (c < 0) return false;
+  if (covered_[static_cast<size_t>(c)]) return true;
+  for (int k = cell_begin_[static_cast<size_t>(c)]; k < cell_begin_[static_cast<size_t>(c) + 1];
+       ++k) {
+    if (EntryContains(entries_[static_cast<size_t>(k)], p)) return true;
+  }
+  return false;
+}
+
+void HullGrid::Candidates(const Eigen::Vector3d& p, std::vector<int>* out) const {
+  const int c = CellOf(p);
+  if (c < 0) return;
+  for (int k = cell_begin_[static_cast<size_t>(c)]; k < cell_begin_[static_cast<size_t>(c) + 1];
+       ++k) {
+    const Entry& entry = entries_[static_cast<size_t>(k)];
+    if (EntryContains(entry, p)) out->push_back(entry.hull);
+  }
+}
+
+}  // namespace acdplan::collision::internal

@@ -1,0 +1,104 @@
+#include "collision/internal/hull_grid.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "acd/convex_hull3d.h"
+#include "base/random.h"
+
+namespace acdplan::collision::internal {
+namespace {
+
+using Planes = Eigen::Matrix<double, Eigen::Dynamic, 4>;
+
+// Seeded random convex hulls (of 4-12 points in a cube of half-side 0.05-0.5, 1-2 for a single
+// hull) in [0, 4]^3, the second one flat, with their planes and boxes.
+struct RandomHulls {
+  std::vector<Planes> planes;
+  std::vector<Eigen::AlignedBox3d> boxes;
+};
+
+RandomHulls MakeHulls(int count, std::uint64_t seed) {
+  RandomEngine rng(seed);
+  RandomHulls out;
+  for (int h = 0; h < count; ++h) {
+    Eigen::Vector3d centre;
+    for (int k = 0; k < 3; ++k) centre[k] = UniformReal(rng, 0.0, 4.0);
+    const double radius = count == 1 ? UniformReal(rng, 1.0, 2.0) : UniformReal(rng, 0.05, 0.5);
+    const int n = 4 + static_cast<int>(UniformReal(rng, 0.0, 8.99));
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < n; ++i) {
+      Eigen::Vector3d p;
+      for (int k = 0; k < 3; ++k) p[k] = centre[k] + UniformReal(rng, -radius, radius);
+      if (h == 1) p.z() = 1.0;  // flat: thickened by ConvexHull3
+      points.push_back(p);
+    }
+    const acd::TriangleMesh hull = acd::ConvexHull3(points, 1e-3);
+    out.planes.push_back(acd::HullPlanes(hull));
+    Eigen::AlignedBox3d box;
+    for (Eigen::Index i = 0; i < hull.vertices.rows(); ++i) {
+      box.extend(Eigen::Vector3d(hull.vertices.row(i).transpose()));
+    }
+    out.boxes.push_back(box);
+  }
+  return out;
+}
+
+bool PlainContains(const Planes& planes, const Eigen::Vector3d& p, double slack) {
+  for (Eigen::Index r = 0; r < planes.rows(); ++r) {
+    if (planes.row(r).head<3>().dot(p) > planes(r, 3) + slack) return false;
+  }
+  return true;
+}
+
+TEST(HullGrid, AnswersAsThePlainTestOnEveryHull) {
+  const double slack = 1e-12;
+  for (int count : {1, 7, 120}) {
+    SCOPED_TRACE(count);
+    const RandomHulls hulls = MakeHulls(count, 31 + static_cast<std::uint64_t>(count));
+    const HullGrid grid(hulls.planes, hulls.boxes, slack);
+    EXPECT_EQ(grid.size(), count);
+    RandomEngine rng(5);
+    int inside = 0;
+    for (int i = 0; i < 200000; ++i) {
+      Eigen::Vector3d p;
+      for (int k = 0; k < 3; ++k) p[k] = UniformReal(rng, -0.5, 4.5);
+      std::vector<int> expected;
+      for (int h = 0; h < count; ++h) {
+        if (PlainContains(hulls.planes[static_cast<size_t>(h)], p, slack)) expected.push_back(h);
+      }
+      std::vector<int> found;
+      grid.Candidates(p, &found);
+      ASSERT_EQ(found, expected) << p.transpose();
+      ASSERT_EQ(grid.AnyContains(p), !expected.empty()) << p.transpose();
+      inside += !expected.empty();
+    }
+    EXPECT_GT(inside, 100);  // the test sees points inside as well as outside
+  }
+}
+
+TEST(HullGrid, PointsOnAHullsBoundaryAndCornersAreInside) {
+  // The unit cube's hull: its corners and face centres are inside (the slack keeps them).
+  std::vector<Eigen::Vector3d> corners;
+  for (int i = 0; i < 8; ++i) corners.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  const acd::TriangleMesh cube = acd::ConvexHull3(corners, 0);
+  Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const HullGrid grid({acd::HullPlanes(cube)}, {box}, 1e-12);
+  for (const Eigen::Vector3d& c : corners) EXPECT_TRUE(grid.AnyContains(c)) << c.transpose();
+  EXPECT_TRUE(grid.AnyContains(Eigen::Vector3d(0.5, 0.5, 1)));
+  EXPECT_TRUE(grid.AnyContains(Eigen::Vector3d(0.5, 0.5, 0.5)));
+  EXPECT_FALSE(grid.AnyContains(Eigen::Vector3d(0.5, 0.5, 1 + 1e-9)));
+  EXPECT_FALSE(grid.AnyContains(Eigen::Vector3d(-1e-9, 0.5, 0.5)));
+}
+
+TEST(HullGrid, EmptyGridContainsNothing) {
+  const HullGrid grid({}, {}, 0);
+  EXPECT_FALSE(grid.AnyContains(Eigen::Vector3d::Zero()));
+  std::vector<int> found;
+  grid.Candidates(Eigen::Vector3d::Zero(), &found);
+  EXPECT_TRUE(found.empty());
+}
+
+}  // namespace
+}  // namespace acdplan::collision::internal
