@@ -98,8 +98,8 @@ def main(argv):
                     labels.append(l)
     fig.legend(handles, labels, loc="upper right", bbox_to_anchor=(0.99, 0.93), ncol=len(labels),
                fontsize="small")
-    title = ("hull volume / mesh volume vs parts (ours: one point per tau_rel, labelled; "
-             "dotted: 1.10)")
+    title = ("hull volume / mesh volume vs parts (ours: one point per tau_rel, labelled; open "
+             "diamond: merged down to max_hulls; dotted: 1.10)")
     if without_volume:
         title += "\nno volume (not plotted): " + ", ".join(without_volume)
     fig.suptitle(title, fontsize="small", x=0.02, y=0.99, ha="left")
