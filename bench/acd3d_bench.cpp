@@ -144,7 +144,7 @@ BenchMesh Probe(const std::string& path, const Acd3dBenchOptions& options) {
 
 /// One of our cells, in a child: prepare (repairing for a repairable mesh when `solid`), then
 /// time Decompose3d. Returns the row's measured fields as JSON.
-std::string OursWork(const BenchMesh& mesh, bool solid, double tau,
+std::string OursWork(const BenchMesh& mesh, bool solid, double tau, int max_hulls,
                      const Acd3dBenchOptions& options) {
   const acd::TriangleMesh input = envs::ReadMesh(mesh.path);
   const Stopwatch stopwatch;
@@ -157,6 +157,7 @@ std::string OursWork(const BenchMesh& mesh, bool solid, double tau,
   decompose.tau = tau;
   decompose.surface = !solid;
   decompose.feature_grouping = options.feature_grouping;
+  decompose.max_hulls = max_hulls;
   auto timed = TimeRuns([&] { return acd::Decompose3d(prepared, decompose); }, options.repeats,
                         options.cell_budget_ms, 1);
   const acd::Decomposition3d& result = timed.result;
@@ -213,7 +214,8 @@ void RunCell(const std::function<std::string()>& work, const Acd3dBenchOptions& 
   row->peak_rss_mib = outcome.peak_rss_mib;
   const std::string where =
       row->mesh + ", " + row->method +
-      (row->tau_rel ? ", tau_rel " + FormatSignificant(*row->tau_rel, 6) : "");
+      (row->tau_rel ? ", tau_rel " + FormatSignificant(*row->tau_rel, 6) : "") +
+      (row->max_hulls > 0 ? ", max_hulls " + std::to_string(row->max_hulls) : "");
   if (outcome.status != CellStatus::kOk) {
     row->note = "failed: " + outcome.reason;
     problems->push_back(where + ": " + outcome.reason);
@@ -274,6 +276,14 @@ void CheckOptions(const Acd3dBenchOptions& options) {
   }
   if (options.repeats < 1) throw InputError("--repeats must be >= 1");
   if (!(options.cell_timeout_s > 0)) throw InputError("--cell-timeout-s must be > 0");
+  if (options.max_hulls < 0) {
+    throw InputError("--max-hulls " + std::to_string(options.max_hulls) +
+                     ": must be >= 0 (0: no capped cell)");
+  }
+  if (!(options.capped_tau_rel > 0) || !std::isfinite(options.capped_tau_rel)) {
+    throw InputError("--capped-tau-rel " + FormatShortest(options.capped_tau_rel) +
+                     ": must be finite and > 0");
+  }
   for (const std::string& file : options.files) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) throw InputError(file + ": no such file");
@@ -288,11 +298,10 @@ std::string FormatMs(double ms) {
 
 std::string MarkdownTable(const std::vector<Acd3dBenchRow>& rows, bool with_check) {
   std::ostringstream out;
-  out << "| mesh | V | F | input | method | tau_rel | mode | parts | hull vol / vol | max "
-         "concavity "
-         "| prepare ms | median ms | runs | peak MiB |"
+  out << "| mesh | V | F | input | method | tau_rel | max hulls | mode | parts | hull vol / vol "
+         "| max concavity | prepare ms | median ms | runs | peak MiB |"
       << (with_check ? " check |" : "") << "\n";
-  out << "|---|---:|---:|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|"
+  out << "|---|---:|---:|---|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|"
       << (with_check ? "---|" : "") << "\n";
   std::string previous;
   for (const Acd3dBenchRow& row : rows) {
@@ -301,7 +310,8 @@ std::string MarkdownTable(const std::vector<Acd3dBenchRow>& rows, bool with_chec
     out << "| " << (first ? row.mesh : "") << " | " << (first ? std::to_string(row.vertices) : "")
         << " | " << (first ? std::to_string(row.triangles) : "") << " | "
         << (first ? row.input : "") << " | " << row.method << " | "
-        << (row.tau_rel ? FormatSignificant(*row.tau_rel, 6) : "—") << " | ";
+        << (row.tau_rel ? FormatSignificant(*row.tau_rel, 6) : "—") << " | "
+        << (row.max_hulls > 0 ? std::to_string(row.max_hulls) : "—") << " | ";
     if (row.parts) {
       const std::optional<double> ratio = row.VolumeRatio();
       out << row.mode << " | " << *row.parts << " | " << (ratio ? FormatFixed(*ratio, 3) : "n/a")
@@ -346,6 +356,7 @@ Acd3dBenchResult RunAcd3dBench(const Acd3dBenchOptions& options, std::ostream* p
     if (!progress) return;
     *progress << "acd3d_bench: " << row.mesh << " " << row.method;
     if (row.tau_rel) *progress << " tau_rel " << FormatSignificant(*row.tau_rel, 6);
+    if (row.max_hulls > 0) *progress << " max_hulls " << row.max_hulls;
     if (row.parts) {
       *progress << ": " << *row.parts << " parts, " << FormatMs(row.median_ms) << " ms, "
                 << FormatFixed(row.peak_rss_mib, 0) << " MiB";
@@ -377,15 +388,24 @@ Acd3dBenchResult RunAcd3dBench(const Acd3dBenchOptions& options, std::ostream* p
     for (const char* method : {kAcdSolid, kAcdSurface}) {
       const bool is_solid = method == std::string(kAcdSolid);
       if (!Wanted(options, method) || !(is_solid ? solid : surface)) continue;
-      for (double tau_rel : tau_rels) {
+      // (tau_rel, max_hulls): the settings, then on a closed mesh the capped one.
+      std::vector<std::pair<double, int>> settings;
+      for (double tau_rel : tau_rels) settings.emplace_back(tau_rel, 0);
+      const bool closed = mesh.input == kSolid || mesh.input == kSolidParts;
+      if (is_solid && closed && options.max_hulls > 0) {
+        settings.emplace_back(options.capped_tau_rel, options.max_hulls);
+      }
+      for (const auto& [tau_rel, max_hulls] : settings) {
         Acd3dBenchRow row = RowFor(mesh, method);
         // What should run, so that a failed cell still groups with its mesh's other settings
         // (targets' any_of); the cell reports what did run.
         row.mode = !is_solid ? "surface" : mesh.input == kRepairable ? "solid (repaired)" : "solid";
         row.tau_rel = tau_rel;
         row.tau = tau_rel * mesh.radius;
+        row.max_hulls = max_hulls;
         const double tau = *row.tau;
-        RunCell([&] { return OursWork(mesh, is_solid, tau, options); }, options, &row,
+        const int cap = max_hulls;  // C++17 lambdas cannot capture a structured binding.
+        RunCell([&] { return OursWork(mesh, is_solid, tau, cap, options); }, options, &row,
                 &result.problems);
         if (row.failed() || row.check.rfind("FAIL", 0) == 0) result.ok = false;
         report(row);
@@ -413,6 +433,11 @@ std::string Acd3dBenchMarkdown(const Acd3dBenchResult& result, const Acd3dBenchO
          "others"
       << (options.surface_on_solids ? " and on the solids too" : ", and on repairable ones too")
       << (options.feature_grouping ? "; solid ACD with feature grouping" : "") << ")";
+  if (options.max_hulls > 0) {
+    out << ", and on closed meshes once more at tau_rel "
+        << FormatSignificant(options.capped_tau_rel, 6) << " merged down to at most "
+        << options.max_hulls << " parts (max hulls: Decompose3dOptions::max_hulls)";
+  }
   if (result.vhacd) {
     out << " and V-HACD v4.1 (defaults: <= 64 hulls, 400,000 voxels; synchronous, one thread) on "
            "the mesh as read";
@@ -444,7 +469,7 @@ std::string Acd3dBenchMarkdown(const Acd3dBenchResult& result, const Acd3dBenchO
     const std::vector<TargetRow> target_rows = Acd3dBenchTargetRows(result.rows);
     out << "## Targets\n\n"
         << TargetChecksMarkdown(CheckTargets(targets, target_rows),
-                                {"mesh", "input", "method", "tau_rel"})
+                                {"mesh", "input", "method", "tau_rel", "max_hulls"})
         << "\n";
   }
   out << "Machine: " << std::thread::hardware_concurrency()
@@ -464,6 +489,7 @@ std::string Acd3dBenchJson(const Acd3dBenchResult& result, const Acd3dBenchOptio
                  {"method", row.method},
                  {"tau_rel", OrNull(row.tau_rel)},
                  {"tau", OrNull(row.tau)},
+                 {"max_hulls", row.method == kVhacd ? Json(nullptr) : Json(row.max_hulls)},
                  {"mode", row.mode},
                  {"parts", OrNull(row.parts)},
                  {"mesh_volume", OrNull(row.mesh_volume)},
@@ -504,8 +530,8 @@ std::string CheckMetric(const std::string& metric) {
 }  // namespace
 
 const TargetVocabulary& Acd3dBenchTargetVocabulary() {
-  static const TargetVocabulary vocabulary{{"mesh", "file", "input", "method", "mode", "tau_rel"},
-                                           &CheckMetric};
+  static const TargetVocabulary vocabulary{
+      {"mesh", "file", "input", "method", "mode", "tau_rel", "max_hulls"}, &CheckMetric};
   return vocabulary;
 }
 
@@ -520,6 +546,7 @@ std::vector<TargetRow> Acd3dBenchTargetRows(const std::vector<Acd3dBenchRow>& ro
     t.labels["method"] = row.method;
     t.labels["mode"] = row.mode;
     if (row.tau_rel) t.labels["tau_rel"] = FormatSignificant(*row.tau_rel, 6);
+    if (row.method != kVhacd) t.labels["max_hulls"] = std::to_string(row.max_hulls);
     const bool measured = row.parts.has_value();
     t.metrics["failed"] = row.failed() ? 1.0 : 0.0;
     t.metrics["parts"] = measured ? *row.parts : nan;

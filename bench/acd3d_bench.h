@@ -35,6 +35,11 @@ struct Acd3dBenchOptions {
   /// Decompose3dOptions::feature_grouping for the solid ACD (the global cut's plane among the
   /// candidates), for before / after comparisons.
   bool feature_grouping = false;
+  /// > 0: one more solid ACD cell on every closed mesh (input solid or solid-parts), at
+  /// `capped_tau_rel` with Decompose3dOptions::max_hulls = this: a fine tau whose components
+  /// are then merged down to V-HACD's cap, so that one setting can be tight and small. 0: none.
+  int max_hulls = 64;
+  double capped_tau_rel = 0.05;  ///< tau_rel of the capped cell; > 0.
 };
 
 /// One line of the table (and one object of the JSON list).
@@ -47,6 +52,7 @@ struct Acd3dBenchRow {
   std::string input;
   std::string method;                   ///< kAcdSolid, kAcdSurface or kVhacd.
   std::optional<double> tau_rel, tau;   ///< Ours only.
+  int max_hulls = 0;                    ///< Ours: Decompose3dOptions::max_hulls; 0: no cap.
   std::string mode;                     ///< What ran: "solid", "solid (repaired)", "surface",
                                         ///< "voxels" (V-HACD).
   std::optional<int> parts;             ///< Empty when the cell failed or did not apply.
@@ -89,10 +95,10 @@ std::string Acd3dBenchMarkdown(const Acd3dBenchResult& result, const Acd3dBenchO
 std::string Acd3dBenchJson(const Acd3dBenchResult& result, const Acd3dBenchOptions& options);
 
 /// What acd3d_bench targets can use. Labels: mesh, file (its file name), input, method, mode,
-/// tau_rel (ours only). Metrics: parts, volume_ratio, max_concavity (ours), median_ms,
-/// prepare_ms, total_s (prepare + one decomposition), peak_rss_mib, failed (0 or 1; the others
-/// are NaN on a failed cell), runs, and on our rows vhacd.parts, vhacd.volume_ratio,
-/// vhacd.median_ms of the same mesh where V-HACD ran.
+/// tau_rel and max_hulls (ours only; "0" without a cap). Metrics: parts, volume_ratio,
+/// max_concavity (ours), median_ms, prepare_ms, total_s (prepare + one decomposition),
+/// peak_rss_mib, failed (0 or 1; the others are NaN on a failed cell), runs, and on our rows
+/// vhacd.parts, vhacd.volume_ratio, vhacd.median_ms of the same mesh where V-HACD ran.
 const TargetVocabulary& Acd3dBenchTargetVocabulary();
 
 /// The rows as target rows (labels and metrics above).

@@ -135,7 +135,9 @@ std::string Target::Label() const {
   if (!name.empty()) return name;
   std::string text = test.Text();
   for (const MetricTest& t : also) text += " and " + t.Text();
-  if (!any_of.empty()) text += " for one " + any_of;
+  for (size_t i = 0; i < any_of.size(); ++i) {
+    text += (i == 0 ? " for one " : i + 1 == any_of.size() ? " and " : ", ") + any_of[i];
+  }
   for (size_t i = 0; i < conditions.size(); ++i) {
     text += (i == 0 ? " where " : " and ") + conditions[i].Text();
   }
@@ -202,10 +204,15 @@ std::vector<Target> ReadTargets(const YamlFile& file, const YAML::Node& node,
     }
     if (t["any_of"]) {
       const std::string key_any = YamlFile::Child(item, "any_of");
-      target.any_of = file.String(t["any_of"], key_any);
-      if (std::find(vocabulary.labels.begin(), vocabulary.labels.end(), target.any_of) ==
-          vocabulary.labels.end()) {
-        file.Fail(key_any, UnknownName("label", target.any_of, vocabulary.labels));
+      target.any_of = t["any_of"].IsSequence()
+                          ? file.Strings(t["any_of"], key_any)
+                          : std::vector<std::string>{file.String(t["any_of"], key_any)};
+      if (target.any_of.empty()) file.Fail(key_any, "expected at least one label");
+      for (const std::string& label : target.any_of) {
+        if (std::find(vocabulary.labels.begin(), vocabulary.labels.end(), label) ==
+            vocabulary.labels.end()) {
+          file.Fail(key_any, UnknownName("label", label, vocabulary.labels));
+        }
       }
     }
     target.test = ReadTest(file, t, item, vocabulary);
@@ -245,7 +252,9 @@ std::string TargetsToJson(const std::vector<Target>& targets) {
       j["and"] = nlohmann::ordered_json::array();
       for (const MetricTest& a : t.also) j["and"].push_back(test_json(a));
     }
-    if (!t.any_of.empty()) j["any_of"] = t.any_of;
+    // One label as a string, as it is usually written.
+    if (t.any_of.size() == 1) j["any_of"] = t.any_of[0];
+    if (t.any_of.size() > 1) j["any_of"] = t.any_of;
     list.push_back(j);
   }
   return list.dump();
@@ -283,12 +292,12 @@ std::vector<TargetCheck> CheckTargets(const std::vector<Target>& targets,
       checks.insert(checks.end(), row_checks.begin(), row_checks.end());
       continue;
     }
-    // Groups: the rows' labels without `any_of`, in the order of their first rows.
+    // Groups: the rows' labels without the `any_of` ones, in the order of their first rows.
     std::vector<std::map<std::string, std::string>> keys;
     std::vector<TargetCheck> groups;
     for (const TargetCheck& check : row_checks) {
       std::map<std::string, std::string> key = check.row->labels;
-      key.erase(target.any_of);
+      for (const std::string& label : target.any_of) key.erase(label);
       const auto it = std::find(keys.begin(), keys.end(), key);
       if (it == keys.end()) {
         keys.push_back(key);

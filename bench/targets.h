@@ -18,7 +18,8 @@
 //       and:                               # optional further tests that must hold on the
 //         - {metric: parts, over: vhacd.parts, compare: "<=", value: 1}   # same row
 //       any_of: tau_rel                    # optional: rows that differ only in this label
-//                                          # make one check, which holds if one of them does
+//                                          # (or these labels: [tau_rel, max_hulls]) make one
+//                                          # check, which holds if one of them does
 //
 // Each row the target applies to gives one check: "holds" or "missed". A metric the row does
 // not have makes the target not apply to it; a metric the row has but could not measure
@@ -61,9 +62,10 @@ struct Target {
   std::vector<MetricTest> conditions;                     ///< `if:`, all must hold.
   MetricTest test;
   std::vector<MetricTest> also;  ///< `and:`, must hold on the same row as `test`.
-  /// `any_of:` a label: the rows that differ only in it form one check, which holds if the
-  /// tests hold on one of them ("one setting meets all"); "" : one check per row.
-  std::string any_of;
+  /// `any_of:` a label, or a list of labels: the rows that differ only in them form one
+  /// check, which holds if the tests hold on one of them ("one setting meets all"); empty: one
+  /// check per row.
+  std::vector<std::string> any_of;
   /// `name`, or the test's text when it has none.
   std::string Label() const;
 };

@@ -75,6 +75,14 @@ int main(int argc, char** argv) {
                "Also run the surface ACD on meshes that are solid");
   app.add_flag("--feature-grouping", options.feature_grouping,
                "Solid ACD: also try the global cut's plane (feature grouping, Sec. V.B.2)");
+  app.add_option("--max-hulls", options.max_hulls,
+                 "Closed meshes: one more solid ACD cell, at --capped-tau-rel, merged down to at "
+                 "most N parts (Decompose3dOptions::max_hulls); 0: none")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--capped-tau-rel", options.capped_tau_rel, "tau_rel of the --max-hulls cell")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-12, 1e6));
   app.add_option("--repeats", options.repeats, "Timed runs per cell (median)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));

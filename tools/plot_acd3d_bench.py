@@ -3,8 +3,8 @@
 
 One small panel per mesh that has a volume (a solid as read or after repair): hull volume /
 mesh volume against the number of parts (log scale), our decompositions as lines through their
-tau_rel settings (solid ACD, surface ACD), V-HACD as one star. Lower left is better; the dashed
-line is the 1.10 target. Meshes without a volume (open, not repairable) are listed in the title.
+tau_rel settings (solid ACD, surface ACD), the solid ACD capped by max_hulls as a diamond,
+V-HACD as one star. Lower left is better; the dotted line is the 1.10 target. Meshes without a volume (open, not repairable) are listed in the title.
 
 Usage: plot_acd3d_bench.py acd3d_bench.json acd3d_bench.png
 """
@@ -28,6 +28,13 @@ STYLES = {
     "acd-surface": dict(color="#1f77b4", marker="s", linestyle="--"),
     "vhacd": dict(color="#2ca02c", marker="*", linestyle="none", markersize=12),
 }
+CAPPED_STYLE = dict(color="#d62728", marker="D", linestyle="none", fillstyle="none")
+
+
+def capped(row):
+    """Whether the row is one of ours merged down by a max_hulls cap (its own point, not on the
+    line through the tau_rel settings)."""
+    return bool(row.get("max_hulls"))
 
 
 def main(argv):
@@ -57,7 +64,7 @@ def main(argv):
             points = sorted(
                 (row["parts"], row["volume_ratio"], row["tau_rel"]) for row in rows
                 if row["mesh"] == mesh and row["method"] == method
-                and row["volume_ratio"] is not None)
+                and row["volume_ratio"] is not None and not capped(row))
             if not points:
                 continue
             ax.plot([p[0] for p in points], [p[1] for p in points], label=method, **style)
@@ -65,6 +72,12 @@ def main(argv):
                 if tau_rel is not None:
                     ax.annotate(f"{tau_rel:g}", (parts, ratio), fontsize="x-small",
                                 textcoords="offset points", xytext=(3, 3))
+        for row in rows:
+            if row["mesh"] == mesh and capped(row) and row["volume_ratio"] is not None:
+                ax.plot([row["parts"]], [row["volume_ratio"]],
+                        label=f"{row['method']}, max_hulls {row['max_hulls']}", **CAPPED_STYLE)
+                ax.annotate(f"{row['tau_rel']:g}", (row["parts"], row["volume_ratio"]),
+                            fontsize="x-small", textcoords="offset points", xytext=(3, -9))
         ax.axhline(1.10, color="black", linewidth=0.7, linestyle=":")
         ax.set_xscale("log")
         ax.set_title(mesh, fontsize="small")
@@ -85,8 +98,8 @@ def main(argv):
                     labels.append(l)
     fig.legend(handles, labels, loc="upper right", bbox_to_anchor=(0.99, 0.93), ncol=len(labels),
                fontsize="small")
-    title = ("hull volume / mesh volume vs parts (ours: one point per tau_rel, labelled; "
-             "dotted: 1.10)")
+    title = ("hull volume / mesh volume vs parts (ours: one point per tau_rel, labelled; open "
+             "diamond: merged down to max_hulls; dotted: 1.10)")
     if without_volume:
         title += "\nno volume (not plotted): " + ", ".join(without_volume)
     fig.suptitle(title, fontsize="small", x=0.02, y=0.99, ha="left")

@@ -29,9 +29,14 @@ TEST(Acd3dBench, ACubeIsOneConvexPartPerTau) {
   options.repeats = 1;
   options.check = true;
   options.data_dir = std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd";
+  options.max_hulls = 3;  // A closed mesh: one more cell, capped, at capped_tau_rel.
+  options.capped_tau_rel = 0.1;
   const Acd3dBenchResult result = RunAcd3dBench(options);
   EXPECT_TRUE(result.ok);
-  ASSERT_EQ(result.rows.size(), 2u);
+  ASSERT_EQ(result.rows.size(), 3u);
+  EXPECT_EQ(result.rows[0].max_hulls, 0);
+  EXPECT_EQ(result.rows[2].max_hulls, 3);
+  EXPECT_DOUBLE_EQ(*result.rows[2].tau_rel, 0.1);
   for (const Acd3dBenchRow& row : result.rows) {
     EXPECT_EQ(row.mesh, "cube.obj");  // Shown relative to the data folder.
     EXPECT_EQ(row.input, "solid");
@@ -45,17 +50,23 @@ TEST(Acd3dBench, ACubeIsOneConvexPartPerTau) {
     EXPECT_EQ(row.check, "ok");
   }
   const nlohmann::json json = nlohmann::json::parse(Acd3dBenchJson(result, options));
-  ASSERT_EQ(json.size(), 2u);
+  ASSERT_EQ(json.size(), 3u);
   EXPECT_EQ(json[0]["method"], "acd-solid");
   EXPECT_DOUBLE_EQ(json[1]["tau_rel"].get<double>(), 0.02);
   EXPECT_EQ(json[0]["parts"], 1);
+  EXPECT_EQ(json[0]["max_hulls"], 0);
+  EXPECT_EQ(json[2]["max_hulls"], 3);
   const std::string md = Acd3dBenchMarkdown(result, options);
-  EXPECT_HAS(md, "| cube.obj | 26 | 48 | solid | acd-solid | 0.2 | solid | 1 | 1.000 |");
+  EXPECT_HAS(md, "| cube.obj | 26 | 48 | solid | acd-solid | 0.2 | — | solid | 1 | 1.000 |");
+  EXPECT_HAS(md, "|  |  |  |  | acd-solid | 0.1 | 3 | solid | 1 | 1.000 |");
+  EXPECT_HAS(md, "at tau_rel 0.1 merged down to at most 3 parts");
   EXPECT_HAS(md, "Problems (failed cells, CheckDecomposition3d failures, failed repairs): none");
   // Targets see the rows, and the V-HACD figures only where V-HACD ran.
   const std::vector<TargetRow> rows = Acd3dBenchTargetRows(result.rows);
-  ASSERT_EQ(rows.size(), 2u);
+  ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0].labels.at("input"), "solid");
+  EXPECT_EQ(rows[0].labels.at("max_hulls"), "0");
+  EXPECT_EQ(rows[2].labels.at("max_hulls"), "3");
   EXPECT_EQ(rows[0].metrics.at("failed"), 0.0);
   EXPECT_EQ(rows[0].metrics.count("vhacd.median_ms"), 0u);
 }
@@ -99,6 +110,10 @@ TEST(Acd3dBench, BadOptionsFailBeforeAnyCell) {
   zero.files = {Mesh("cube.obj")};
   zero.tau_rels = {0};
   EXPECT_EQ(error_of(zero), "--tau-rel 0: must be finite and > 0");
+  Acd3dBenchOptions negative_cap;
+  negative_cap.files = {Mesh("cube.obj")};
+  negative_cap.max_hulls = -1;
+  EXPECT_EQ(error_of(negative_cap), "--max-hulls -1: must be >= 0 (0: no capped cell)");
   Acd3dBenchOptions no_data;
   no_data.data_dir = "/nowhere";
   EXPECT_HAS(error_of(no_data), "--data /nowhere: not a folder");

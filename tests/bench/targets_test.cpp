@@ -178,7 +178,7 @@ TEST(Targets, AndTestsAndAnyOfMakeOneCheckPerGroup) {
                 "    any_of: tau_rel\n"),
       Acd3dBenchTargetVocabulary());
   ASSERT_EQ(targets.size(), 1u);
-  EXPECT_EQ(targets[0].any_of, "tau_rel");
+  EXPECT_EQ(targets[0].any_of, std::vector<std::string>{"tau_rel"});
   ASSERT_EQ(targets[0].also.size(), 1u);
   EXPECT_EQ(targets[0].Label(), "volume_ratio <= 1.1 and parts / vhacd.parts <= 1 for one tau_rel");
   // JSON round trip keeps both keys.
@@ -217,6 +217,28 @@ TEST(Targets, AndTestsAndAnyOfMakeOneCheckPerGroup) {
   Target plain = targets[0];
   plain.any_of.clear();
   EXPECT_EQ(CheckTargets({plain}, rows).size(), 5u);
+
+  // A list: rows that differ in either label form one group ("one setting": a tau_rel, with
+  // or without a cap).
+  const std::vector<Target> two = LoadTargetsFile(
+      WriteFile("any_two.yaml",
+                "targets: [{metric: volume_ratio, compare: '<=', value: 1.1, and: [{metric: "
+                "parts, compare: '<=', value: 64}], any_of: [tau_rel, max_hulls]}]\n"),
+      Acd3dBenchTargetVocabulary());
+  ASSERT_EQ(two.size(), 1u);
+  EXPECT_EQ(two[0].Label(), "volume_ratio <= 1.1 and parts <= 64 for one tau_rel and max_hulls");
+  EXPECT_HAS(TargetsToJson(two), "\"any_of\":[\"tau_rel\",\"max_hulls\"]");
+  std::vector<TargetRow> capped = rows;
+  for (TargetRow& r : capped) r.labels["max_hulls"] = "0";
+  capped.push_back(row("b", "0.05", 1.08, 64));
+  capped.back().labels["max_hulls"] = "64";
+  const std::vector<TargetCheck> by_setting = CheckTargets(two, capped);
+  ASSERT_EQ(by_setting.size(), 3u);  // a, b (three settings), c
+  EXPECT_TRUE(by_setting[1].holds);  // b: only the capped row meets both
+  EXPECT_EQ(by_setting[1].row->labels.at("max_hulls"), "64");
+  EXPECT_FALSE(by_setting[2].holds);
+  // With only tau_rel, the capped row is a group of its own.
+  EXPECT_EQ(CheckTargets(targets, capped).size(), 4u);
 
   try {
     LoadTargetsFile(WriteFile("bad_any.yaml",
