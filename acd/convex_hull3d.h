@@ -11,7 +11,12 @@ namespace acdplan::acd {
 /// Convex hull of `points` (CGAL convex_hull_3) as a closed triangle mesh, faces CCW seen from
 /// outside. A flat or degenerate point set is thickened by `thickness` [units] along its missing
 /// principal directions first, so that the hull bounds a volume when thickness > 0; with
-/// thickness 0 the hull of a flat set stays flat (volume 0). Requires >= 1 point.
+/// thickness 0 the hull of a flat set stays flat (one side, volume 0) and that of a segment or a
+/// point has no triangle. Requires >= 1 point. The mesh depends on the set of points alone (not
+/// their order, not memory addresses), byte for byte: its vertices are the hull's extreme points
+/// sorted by (x, y, z), and each facet (all its exactly coplanar triangles) is fanned from its
+/// smallest vertex, so no triangle has collinear corners (internal::ConvexHullFacets).
+/// O(n log n) for n points.
 TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thickness);
 
 /// Outward half-spaces (n, d), |n| = 1, of the closed convex mesh `hull`: one row per face

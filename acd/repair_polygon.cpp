@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "acd/internal/exact_rounding.h"
 #include "acd/internal/text_parsing.h"
 #include "acd/prepare_polygon.h"
 #include "base/format.h"
@@ -51,9 +52,7 @@ std::string Rule(const InputError& error, const std::string& where) {
   return message;
 }
 
-Point2d ToDouble(const Exact::Point_2& p) {
-  return Point2d(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
-}
+Point2d ToDouble(const Exact::Point_2& p) { return internal::RoundToDouble(p); }
 
 }  // namespace
 

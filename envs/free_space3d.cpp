@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "acd/internal/cgal_surface_mesh.h"
+#include "acd/internal/exact_rounding.h"
 #include "acd/mesh_measures.h"
 #include "acd/prepare_mesh.h"
 #include "base/input_error.h"
@@ -46,7 +47,7 @@ acd::TriangleMesh ToDoubles(Mesh& exact) {
   for (const Mesh::Vertex_index v : exact.vertices()) {
     const Epeck::Point_3& p = exact.point(v);
     index[v] = static_cast<int>(vertices.size());
-    vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    vertices.push_back(acd::internal::RoundToDouble(p));  // See RoundToDouble() on why.
   }
   std::vector<Eigen::Vector3i> triangles;
   for (const Mesh::Face_index f : exact.faces()) {

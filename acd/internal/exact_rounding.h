@@ -1,6 +1,6 @@
 #pragma once
 // Rounding exact (Epeck) numbers to doubles reproducibly. Internal: include only from .cpp files
-// of the acd library, so CGAL stays out of the public headers.
+// (of acd, or of a library above it such as envs), so CGAL stays out of the public headers.
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
@@ -27,6 +27,11 @@ inline double RoundToDouble(const CGAL::Epeck::FT& x) {
 /// RoundToDouble() of each coordinate.
 inline Eigen::Vector3d RoundToDouble(const CGAL::Epeck::Point_3& p) {
   return {RoundToDouble(p.x()), RoundToDouble(p.y()), RoundToDouble(p.z())};
+}
+
+/// RoundToDouble() of each coordinate.
+inline Eigen::Vector2d RoundToDouble(const CGAL::Epeck::Point_2& p) {
+  return {RoundToDouble(p.x()), RoundToDouble(p.y())};
 }
 
 }  // namespace acdplan::acd::internal

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 
+#include "acd/internal/exact_rounding.h"
+
 namespace acdplan::acd::internal {
 namespace {
 
@@ -87,9 +89,7 @@ Eigen::Vector3d FaceIntersectionPoint(const TriangleMesh& mesh, int f, int g) {
                              PointOf<Epeck>(mesh, mesh.triangles(t, 1)),
                              PointOf<Epeck>(mesh, mesh.triangles(t, 2)));
   };
-  auto to_eigen = [](const Epeck::Point_3& p) {
-    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  };
+  auto to_eigen = [](const Epeck::Point_3& p) { return RoundToDouble(p); };
   const auto result = CGAL::intersection(triangle(f), triangle(g));
   if (!result) {  // Not expected for an intersecting pair; the centroid of f still locates it.
     Eigen::Vector3d c = Eigen::Vector3d::Zero();

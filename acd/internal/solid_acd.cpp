@@ -9,7 +9,7 @@
 #include <tuple>
 #include <utility>
 
-#include "acd/internal/canonical_hull.h"
+#include "acd/convex_hull3d.h"
 #include "acd/internal/cut_plane.h"
 #include "acd/internal/exact_plane_split.h"
 #include "acd/internal/solid_concavity.h"
@@ -61,7 +61,7 @@ Component3d MakeComponent(const Piece& piece, int source) {
     std::vector<Eigen::Vector3d> points;
     for (Eigen::Index i = 0; i < c.mesh.vertices.rows(); ++i)
       points.emplace_back(c.mesh.vertices.row(i));
-    c.hull = MakeCanonicalHull(points).closed;
+    c.hull = ConvexHull3(points, 0.0);
   }
   c.centroid = MeshCentroid(c.mesh, true);
   c.volume = MeshVolume(c.mesh);

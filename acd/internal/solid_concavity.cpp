@@ -41,7 +41,7 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
   std::vector<Eigen::Vector3d> points(static_cast<size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i) points[static_cast<size_t>(i)] = mesh.vertices.row(i);
   CanonicalHull hull = MakeCanonicalHull(points);
-  out.hull = std::move(hull.closed);  // the component's hull must be closed
+  out.hull = std::move(hull.mesh);
   out.hull_volume = MeshVolume(out.hull);
   const double scale = BoundingBox(mesh).diagonal().norm();
   const double tol = 1e-9 * scale;

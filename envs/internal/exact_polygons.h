@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "acd/internal/exact_rounding.h"
 #include "acd/polygon2d.h"
 
 namespace acdplan::envs::internal {
@@ -17,13 +18,14 @@ using ExactPolygon = CGAL::Polygon_2<ExactKernel>;
 using ExactPolygonWithHoles = CGAL::Polygon_with_holes_2<ExactKernel>;
 using ExactPolygonSet = CGAL::Polygon_set_2<ExactKernel>;
 
-/// The ring of `points` (any sequence of ExactPoint) rounded to the nearest doubles.
+/// The ring of `points` (any sequence of ExactPoint) rounded to the nearest doubles, reproducibly
+/// (acd::internal::RoundToDouble(): CGAL::to_double's result depends on evaluation history).
 template <typename Points>
 acd::Ring2d ToDouble(const Points& points) {
   acd::Ring2d ring;
   ring.reserve(points.size());
   for (const ExactPoint& p : points) {
-    ring.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+    ring.push_back(acd::internal::RoundToDouble(p));
   }
   return ring;
 }

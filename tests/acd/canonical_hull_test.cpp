@@ -44,7 +44,7 @@ TEST(CanonicalHullTest, EveryPlaneSupportsTheHullOfNearlyCollinearPoints) {
     }
     EXPECT_GE(in_plane, 3) << "plane " << r;
   }
-  EXPECT_GT(MeshVolume(hull.closed), 0);
+  EXPECT_GT(MeshVolume(hull.mesh), 0);
 }
 
 // The same points in another order give the same planes, byte for byte.
