@@ -103,7 +103,6 @@ struct Projection {
 };
 
 Projection ProjectionOf(const Point3& a, const Point3& b, const Point3& c) {
-  Projection out;
   for (int u = 0; u < 3; ++u) {
     const int v = (u + 1) % 3;
     const CGAL::Orientation o =
