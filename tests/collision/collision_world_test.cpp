@@ -207,9 +207,9 @@ TEST(BuiltInWorlds, ClearanceOfHullsExactMatchesBvh) {
 }
 
 // 3D: meshes of data/meshes/vhacd as obstacles, a small cube robot.
-class VhacdMeshes : public ::testing::TestWithParam<std::string> {};
+class CollisionWorldVhacdMesh : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(VhacdMeshes, HullsExactEqualsBvhAndHullsAreConservative) {
+TEST_P(CollisionWorldVhacdMesh, HullsExactEqualsBvhAndHullsAreConservative) {
   envs::Workspace3d workspace;
   workspace.obstacles.push_back(
       envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + GetParam() + ".obj"));
@@ -236,11 +236,12 @@ TEST_P(VhacdMeshes, HullsExactEqualsBvhAndHullsAreConservative) {
 const std::vector<std::string> kMeshes =
     testing::kSanitizerBuild ? std::vector<std::string>{"cube-notch"}
                              : std::vector<std::string>{"torus1", "cube-notch", "bunny"};
-INSTANTIATE_TEST_SUITE_P(Meshes, VhacdMeshes, ::testing::ValuesIn(kMeshes), [](const auto& info) {
-  std::string name = info.param;
-  for (char& c : name) c = std::isalnum(c) ? c : '_';
-  return name;
-});
+INSTANTIATE_TEST_SUITE_P(Meshes, CollisionWorldVhacdMesh, ::testing::ValuesIn(kMeshes),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           for (char& c : name) c = std::isalnum(c) ? c : '_';
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace acdplan::collision

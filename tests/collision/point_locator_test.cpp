@@ -148,9 +148,9 @@ TEST(PointLocator3d, NestedShellsBoundACavity) {
   EXPECT_GT(set->pieces.size(), 1u);
 }
 
-class VhacdMeshes : public ::testing::TestWithParam<std::string> {};
+class PointLocatorVhacdMesh : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(VhacdMeshes, HullsNeverSayOutsideWhereExactSaysInside) {
+TEST_P(PointLocatorVhacdMesh, HullsNeverSayOutsideWhereExactSaysInside) {
   const envs::Workspace3d workspace = MeshWorld(
       envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + GetParam() + ".obj"));
   auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));
@@ -171,7 +171,7 @@ TEST_P(VhacdMeshes, HullsNeverSayOutsideWhereExactSaysInside) {
 const std::vector<std::string> kClosedMeshes = testing::kSanitizerBuild
                                                    ? std::vector<std::string>{"teddy"}
                                                    : std::vector<std::string>{"torus1", "teddy"};
-INSTANTIATE_TEST_SUITE_P(Meshes, VhacdMeshes, ::testing::ValuesIn(kClosedMeshes));
+INSTANTIATE_TEST_SUITE_P(Meshes, PointLocatorVhacdMesh, ::testing::ValuesIn(kClosedMeshes));
 
 }  // namespace
 }  // namespace acdplan::collision
