@@ -16,6 +16,7 @@
 
 #include "acd/mesh_measures.h"
 #include "base/random.h"
+#include "solid_test_meshes.h"
 
 namespace acdplan::acd {
 namespace {
@@ -62,15 +63,6 @@ TEST(HullPlanes, ContainEveryPointDespiteSliverFacets) {
     worst = std::max(worst, WorstViolation(HullPlanes(hull), points));
   }
   EXPECT_LE(worst, 1e-14);
-}
-
-// Every byte of the mesh: vertex coordinates, then triangle corners.
-std::string Bytes(const TriangleMesh& mesh) {
-  std::string bytes(reinterpret_cast<const char*>(mesh.vertices.data()),
-                    sizeof(double) * static_cast<size_t>(mesh.vertices.size()));
-  bytes.append(reinterpret_cast<const char*>(mesh.triangles.data()),
-               sizeof(int) * static_cast<size_t>(mesh.triangles.size()));
-  return bytes;
 }
 
 // Heap blocks of varied sizes kept alive across a run, so that the run's allocations (CGAL's
@@ -173,12 +165,13 @@ TEST(ConvexHull3, TrianglesDependOnThePointSetAlone) {
   shapes.push_back(cloud);
   for (size_t s = 0; s < shapes.size(); ++s) {
     std::vector<Eigen::Vector3d> points = shapes[s];
-    const std::string expected = Bytes(ConvexHull3(points, 0.0));
+    const std::string expected = test::Bytes(ConvexHull3(points, 0.0));
     for (int run = 1; run <= 6; ++run) {
       for (size_t i = points.size(); i > 1; --i)
         std::swap(points[i - 1], points[UniformIndex(rng, i)]);
       const auto garbage = Garbage(rng);
-      EXPECT_TRUE(Bytes(ConvexHull3(points, 0.0)) == expected) << "shape " << s << " run " << run;
+      EXPECT_TRUE(test::Bytes(ConvexHull3(points, 0.0)) == expected)
+          << "shape " << s << " run " << run;
     }
   }
 }

@@ -22,14 +22,7 @@
 namespace acdplan::acd {
 namespace {
 
-// Every byte of the mesh: vertex coordinates, then triangle corners.
-std::string Bytes(const TriangleMesh& mesh) {
-  std::string bytes(reinterpret_cast<const char*>(mesh.vertices.data()),
-                    sizeof(double) * static_cast<size_t>(mesh.vertices.size()));
-  bytes.append(reinterpret_cast<const char*>(mesh.triangles.data()),
-               sizeof(int) * static_cast<size_t>(mesh.triangles.size()));
-  return bytes;
-}
+using test::Bytes;
 
 std::string Bytes(const PreparedMesh& prepared) {
   std::string bytes = Bytes(prepared.mesh);

@@ -112,6 +112,16 @@ inline bool IsClosed(const TriangleMesh& mesh) {
   return true;
 }
 
+/// Every byte of the mesh: vertex coordinates, then triangle corners (for byte-for-byte
+/// reproducibility checks).
+inline std::string Bytes(const TriangleMesh& mesh) {
+  std::string bytes(reinterpret_cast<const char*>(mesh.vertices.data()),
+                    sizeof(double) * static_cast<size_t>(mesh.vertices.size()));
+  bytes.append(reinterpret_cast<const char*>(mesh.triangles.data()),
+               sizeof(int) * static_cast<size_t>(mesh.triangles.size()));
+  return bytes;
+}
+
 }  // namespace acdplan::acd::test
 
 namespace acdplan::acd::test {
