@@ -185,11 +185,9 @@ ExactObstacleLocator::ExactObstacleLocator(const ObstacleSet& obstacles, bool sk
       if (!SurfacesMeet(mesh_i, obstacles.components[piece_component[j]].mesh)) ++depth[i];
     }
   }
-  weights_.assign(obstacles.components.size(), 0);
   has_cavities_.assign(static_cast<size_t>(obstacle_count_), 0);
   for (size_t i = 0; i < pieces_.size(); ++i) {
     piece_weight_.push_back(depth[i] % 2 == 0 ? 1 : -1);
-    weights_[piece_component[i]] = piece_weight_.back();
     if (piece_weight_.back() < 0) has_cavities_[static_cast<size_t>(piece_obstacle_[i])] = 1;
   }
 }

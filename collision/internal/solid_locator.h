@@ -75,8 +75,8 @@ class MeshLocator3d {
 ///    inside = inside a part, as ray parity on the whole mesh says;
 ///  - disjoint nested shells: even-odd, whatever their orientations;
 ///  - crossing or touching shells: their union.
-/// Limit: a shell that lies inside the overlap of n crossing shells and meets none is weighted
-/// (-1)^n, so it never cuts a cavity out of that overlap (the winding there stays >= n - 1).
+/// Limit: a shell that lies inside the overlap of n >= 2 crossing shells and meets none is
+/// weighted (-1)^n, so it cuts no cavity out of that overlap (the winding there is >= n - 1 > 0).
 class ExactObstacleLocator {
  public:
   /// `skip_open`: 3D parts that are not closed are left out (the collision world's containment
@@ -90,9 +90,6 @@ class ExactObstacleLocator {
   /// ObstacleSet::components; repeats count once) instead of all of them: the same
   /// answer whenever the list holds every part that contains p.
   bool InsideAmong(const std::vector<int>& components, const Eigen::Vector3d& p) const;
-  /// 3D: the winding weight of part `component`: +1, -1 (nested at an odd depth: a cavity), or
-  /// 0 for a skipped open part.
-  int weight(int component) const { return weights_[static_cast<size_t>(component)]; }
   /// 3D: obstacle `obstacle` has a part of weight -1, so being inside one of its parts is not
   /// enough to be inside it.
   bool has_cavities(int obstacle) const {
@@ -111,7 +108,6 @@ class ExactObstacleLocator {
   std::vector<int> piece_weight_;
   std::vector<int> all_pieces_;          // 0, 1, ..., pieces_.size() - 1
   std::vector<int> piece_of_component_;  // -1 for a skipped part
-  std::vector<int> weights_;             // per component
   std::vector<char> has_cavities_;       // per obstacle
   int obstacle_count_ = 0;
   int skipped_open_ = 0;
