@@ -131,15 +131,6 @@ internal::ConvexPolytope Polytope(const acd::TriangleMesh& hull) {
 /// circumscribed, so it contains the disc and a separation it finds is one of the disc.
 constexpr int kDiscPolygonSides = 16;
 
-void TogglePresence(std::vector<int>* set, int k) {
-  auto it = std::find(set->begin(), set->end(), k);
-  if (it == set->end()) {
-    set->push_back(k);
-  } else {
-    set->erase(it);
-  }
-}
-
 }  // namespace
 
 struct CollisionWorld::Impl {
@@ -173,7 +164,6 @@ struct CollisionWorld::Impl {
   std::vector<Geometry> piece_bvhs;  // kHullsExact confirmation (3D: the component's triangles
                                      // that may meet the piece's hull, input coordinates)
   std::vector<std::optional<internal::PolygonLocator2d>> piece_polygons;  // 2D containment
-  std::vector<std::optional<internal::MeshLocator3d>> component_meshes;   // 3D containment
   internal::HullGrid hull_grid;  // point robot, kHulls / kHullsExact
   int dimension = 2;
 
@@ -190,20 +180,19 @@ struct CollisionWorld::Impl {
     return robot_locator->Contains(pose.inverse() * v);
   }
 
-  // 3D: toggles the obstacle of every distinct component in `components` whose closed surface
-  // contains `p` (ray parity per obstacle, as the exact locator), and returns whether an
-  // obstacle ends up odd. Several pieces of one component count once.
-  bool OddContainment(const ObstacleSet& set, std::vector<int>* components,
-                      const Eigen::Vector3d& p) const {
-    std::sort(components->begin(), components->end());
-    components->erase(std::unique(components->begin(), components->end()), components->end());
-    std::vector<int> odd;
-    for (int c : *components) {
-      const auto& mesh = component_meshes[static_cast<size_t>(c)];
-      if (mesh && mesh->Contains(p))
-        TogglePresence(&odd, set.components[static_cast<size_t>(c)].obstacle);
-    }
-    return !odd.empty();
+  // 3D: whether `p` is inside an obstacle by the parts in `components` (the exact locator's
+  // winding rule). The callers list every part one of whose piece hulls contains p; the hulls
+  // cover their part, so that is every part that contains p.
+  bool PartsContain(const std::vector<int>& components, const Eigen::Vector3d& p) const {
+    return !components.empty() && exact_locator->InsideAmong(components, p);
+  }
+
+  // A hit on piece `i`'s hull is a hit on the obstacle, with no confirmation: the piece is
+  // convex (it is its hull) and, in 3D, no part of its obstacle is a cavity (inside a part of an
+  // obstacle with cavities may still be outside the obstacle).
+  bool HullIsExact(const ObstacleSet& set, size_t i) const {
+    const ObstaclePiece& piece = set.pieces[i];
+    return piece.convex && (piece.component < 0 || !exact_locator->has_cavities(piece.obstacle));
   }
 };
 
@@ -349,10 +338,6 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
     planes.push_back(piece.planes);
     boxes.push_back(piece.box);
   }
-  for (const ObstacleComponent& component : set.components) {
-    m.component_meshes.emplace_back();
-    if (component.closed) m.component_meshes.back().emplace(component.mesh);
-  }
   if (m.robot_hull) m.robot_hull_object = std::make_unique<fcl::CollisionObjectd>(m.robot_hull);
   if (m.point_probe) {
     m.point_probe_object = std::make_unique<fcl::CollisionObjectd>(m.point_probe);
@@ -386,7 +371,7 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
       std::vector<int> components;
       for (int i : candidates) {
         const ObstaclePiece& piece = set.pieces[static_cast<size_t>(i)];
-        if (piece.convex) {  // Inside its hull is inside the piece.
+        if (m.HullIsExact(set, static_cast<size_t>(i))) {  // Inside its hull is inside it.
           collides = true;
           break;
         }
@@ -400,7 +385,7 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
           components.push_back(piece.component);
         }
       }
-      collides = collides || (!components.empty() && m.OddContainment(set, &components, witness));
+      collides = collides || m.PartsContain(components, witness);
     }
   } else if (mode == CollisionMode::kBvh) {
     collides = Collide(m.robot_exact.get(), pose, m.all_bvh.get(), fcl::Transform3d::Identity()) ||
@@ -445,7 +430,7 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
           // on a convex piece is a collision. GJK only decides what remains.
           const internal::ConvexPolytope& hull = m.piece_polytopes[i];
           if (internal::SeparatedByAFacePlane(q.robot, hull, m.margin)) return false;
-          if (m.polytope_on_robot && (!q.exact || q.set->pieces[i].convex) &&
+          if (m.polytope_on_robot && (!q.exact || m.HullIsExact(*q.set, i)) &&
               internal::AVertexInside(q.robot, hull, m.margin)) {
             q.hit = true;
             return true;
@@ -455,7 +440,7 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
           if (contact == ConvexContact::kNone) return false;
           // A convex piece is its own hull, so the hull tests below are exact for it: only a
           // concave piece needs its own triangles to confirm a hull hit.
-          if (!q.exact || (q.set->pieces[i].convex && contact == ConvexContact::kFound)) {
+          if (!q.exact || (m.HullIsExact(*q.set, i) && contact == ConvexContact::kFound)) {
             if (m.robot_pieces.empty()) {
               q.hit = true;
               return true;
@@ -487,7 +472,7 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
           q.components.push_back(q.set->pieces[i].component);
           return false;
         });
-    collides = q.hit || (!q.components.empty() && m.OddContainment(set, &q.components, witness));
+    collides = q.hit || m.PartsContain(q.components, witness);
     hull_tests_.fetch_add(q.hull_tests, std::memory_order_relaxed);
     exact_confirmations_.fetch_add(q.confirmations, std::memory_order_relaxed);
   }

@@ -37,8 +37,9 @@ struct ObstacleSetOptions {
 struct ObstacleComponent {
   int obstacle = 0;        ///< Index of the obstacle it belongs to.
   acd::TriangleMesh mesh;  ///< Its triangles, exact input coordinates.
-  /// Every edge has two triangles, so inside/outside is defined by ray parity
-  /// (acd::PreparedMesh::closed_parts).
+  /// Every edge has two triangles, so the part's own inside is defined by ray parity
+  /// (acd::PreparedMesh::closed_parts); an obstacle's inside combines its closed parts by
+  /// nonzero winding (PointLocator, LocateMethod::kExact).
   bool closed = true;
 };
 

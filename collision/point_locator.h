@@ -13,8 +13,12 @@ namespace acdplan::collision {
 /// How PointLocator answers.
 enum class LocateMethod {
   /// Exact inside/outside. 2D: ray crossing on the obstacle polygons (holes included) with
-  /// exact orientation predicates. 3D: CGAL Side_of_triangle_mesh on each closed connected
-  /// component (parity per obstacle).
+  /// exact orientation predicates. 3D: CGAL Side_of_triangle_mesh on each closed part of an
+  /// obstacle and the nonzero winding rule over its parts: a part counts +1, or -1 when it is
+  /// nested
+  /// in an odd number of other parts that it does not meet (a cavity), whatever way its faces
+  /// point; so overlapping closed shells mean their union, nested ones alternate
+  /// (internal/solid_locator.h, ExactObstacleLocator).
   kExact,
   /// Algorithm 8 on the hulls of the obstacle pieces, through a uniform grid over the hulls
   /// instead of a loop over all of them (a cell inside one hull answers at once; otherwise only

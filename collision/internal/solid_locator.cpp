@@ -8,13 +8,31 @@
 #include <cmath>
 #include <string>
 
+#include "acd/internal/face_intersections.h"
 #include "acd/prepare_mesh.h"
 #include "base/input_error.h"
 
 namespace acdplan::collision::internal {
 namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+// Whether the surfaces of the closed parts `a` and `b` share a point: a pair of their triangles
+// that touch or cross (exact predicates). The two are indexed apart, so a shared position counts
+// as a common point.
+bool SurfacesMeet(const acd::TriangleMesh& a, const acd::TriangleMesh& b) {
+  acd::TriangleMesh both;
+  const Eigen::Index va = a.vertices.rows(), fa = a.triangles.rows();
+  both.vertices.resize(va + b.vertices.rows(), 3);
+  both.vertices << a.vertices, b.vertices;
+  both.triangles.resize(fa + b.triangles.rows(), 3);
+  both.triangles << a.triangles, (b.triangles.array() + static_cast<int>(va)).matrix();
+  for (const auto& [f, g] : acd::internal::IntersectingFacePairs(both)) {
+    if (f < fa && g >= fa) return true;  // pairs are (f, g) with f < g
+  }
+  return false;
 }
+
+}  // namespace
 
 PolygonLocator2d::PolygonLocator2d(const acd::Polygon2d& polygon) {
   auto add_ring = [&](const acd::Ring2d& ring) {
@@ -120,14 +138,21 @@ bool MeshLocator3d::Contains(const Eigen::Vector3d& p) const {
   return (*impl_->side)(Kernel::Point_3(p.x(), p.y(), p.z())) != CGAL::ON_UNBOUNDED_SIDE;
 }
 
+bool MeshLocator3d::ContainsInInterior(const Eigen::Vector3d& p) const {
+  if (!box_.contains(p)) return false;
+  return (*impl_->side)(Kernel::Point_3(p.x(), p.y(), p.z())) == CGAL::ON_BOUNDED_SIDE;
+}
+
 ExactObstacleLocator::ExactObstacleLocator(const ObstacleSet& obstacles, bool skip_open)
     : dimension_(obstacles.dimension), obstacle_count_(static_cast<int>(obstacles.meshes.size())) {
   if (dimension_ == 2) {
     for (const acd::Polygon2d& polygon : obstacles.polygons) polygons_.emplace_back(polygon);
     return;
   }
+  std::vector<size_t> piece_component;
   for (size_t i = 0; i < obstacles.components.size(); ++i) {
     const ObstacleComponent& component = obstacles.components[i];
+    piece_of_component_.push_back(-1);
     if (!component.closed) {
       if (skip_open) {
         ++skipped_open_;
@@ -138,8 +163,32 @@ ExactObstacleLocator::ExactObstacleLocator(const ObstacleSet& obstacles, bool sk
           std::to_string(component.obstacle) + " (part " + std::to_string(i) +
           ") is open: " + acd::PrepareMesh(component.mesh).defects.first);
     }
+    piece_of_component_.back() = static_cast<int>(pieces_.size());
     pieces_.emplace_back(component.mesh);
     piece_obstacle_.push_back(component.obstacle);
+    piece_component.push_back(i);
+    all_pieces_.push_back(static_cast<int>(all_pieces_.size()));
+  }
+  // Nesting depth of each closed part among its obstacle's closed parts. Part i nests in part j
+  // only if j's box holds i's (cheap, and necessary), a vertex of i is strictly inside j, and
+  // their surfaces do not meet: then all of i is inside j. A vertex on j's surface means they
+  // meet.
+  std::vector<int> depth(pieces_.size(), 0);
+  for (size_t i = 0; i < pieces_.size(); ++i) {
+    const acd::TriangleMesh& mesh_i = obstacles.components[piece_component[i]].mesh;
+    const Eigen::Vector3d probe = mesh_i.vertices.row(mesh_i.triangles(0, 0)).transpose();
+    for (size_t j = 0; j < pieces_.size(); ++j) {
+      if (j == i || piece_obstacle_[j] != piece_obstacle_[i] ||
+          !pieces_[j].box().contains(pieces_[i].box()) || !pieces_[j].ContainsInInterior(probe)) {
+        continue;
+      }
+      if (!SurfacesMeet(mesh_i, obstacles.components[piece_component[j]].mesh)) ++depth[i];
+    }
+  }
+  has_cavities_.assign(static_cast<size_t>(obstacle_count_), 0);
+  for (size_t i = 0; i < pieces_.size(); ++i) {
+    piece_weight_.push_back(depth[i] % 2 == 0 ? 1 : -1);
+    if (piece_weight_.back() < 0) has_cavities_[static_cast<size_t>(piece_obstacle_[i])] = 1;
   }
 }
 
@@ -151,18 +200,43 @@ bool ExactObstacleLocator::Inside(const Eigen::Vector3d& p) const {
     }
     return false;
   }
-  // Pieces of one obstacle are consecutive; flip a parity per obstacle.
-  bool parity = false;
+  return WindingPositive(all_pieces_, p);
+}
+
+bool ExactObstacleLocator::InsideAmong(const std::vector<int>& components,
+                                       const Eigen::Vector3d& p) const {
+  std::vector<int> pieces;
+  for (const int c : components) {
+    const int i = piece_of_component_[static_cast<size_t>(c)];
+    if (i >= 0) pieces.push_back(i);
+  }
+  // Pieces follow the components' order, which groups them by obstacle.
+  std::sort(pieces.begin(), pieces.end());
+  pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
+  return WindingPositive(pieces, p);
+}
+
+bool ExactObstacleLocator::WindingPositive(const std::vector<int>& pieces,
+                                           const Eigen::Vector3d& p) const {
+  // Sum the winding per obstacle (its pieces are consecutive); without cavities the first
+  // piece that contains p decides.
+  int winding = 0;
   int current = -1;
-  for (size_t i = 0; i < pieces_.size(); ++i) {
+  for (const int k : pieces) {
+    const size_t i = static_cast<size_t>(k);
     if (piece_obstacle_[i] != current) {
-      if (parity) return true;
-      parity = false;
+      if (winding > 0) return true;
+      winding = 0;
       current = piece_obstacle_[i];
     }
-    if (pieces_[i].Contains(p)) parity = !parity;
+    // A cavity's surface belongs to the solid: a part of weight -1 counts only its interior.
+    if (piece_weight_[i] > 0 ? !pieces_[i].Contains(p) : !pieces_[i].ContainsInInterior(p)) {
+      continue;
+    }
+    if (!has_cavities_[static_cast<size_t>(current)]) return true;
+    winding += piece_weight_[i];
   }
-  return parity;
+  return winding > 0;
 }
 
 }  // namespace acdplan::collision::internal

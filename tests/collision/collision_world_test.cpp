@@ -206,6 +206,45 @@ TEST(BuiltInWorlds, ClearanceOfHullsExactMatchesBvh) {
   }
 }
 
+// A mesh that is no solid (a crossing pair of cubes beside the rest), with a cavity shell in an
+// outer cube: the parts are single shells, and the outer cube's convex piece covers the cavity,
+// so a hit on it must be confirmed like a concave piece's.
+TEST(CollisionWorld, ACavityShellIsFreeSpaceInEveryExactMode) {
+  const acd::TriangleMesh c = testing::CubeMesh(2);
+  envs::Workspace3d w;
+  w.obstacles.push_back(testing::Combined({testing::CubeMesh(4), testing::InsideOut(c),
+                                           testing::Translated(c, {10, 0, 0}),
+                                           testing::Translated(c, {11, 0.5, 0.5})}));
+  w.bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-3, -3, -3), Eigen::Vector3d(13, 3, 3));
+  auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(w));
+  ASSERT_EQ(set->components.size(), 4u);
+  auto at = [](double x, double y, double z) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation() << x, y, z;
+    return pose;
+  };
+  const CollisionWorld point(set, envs::Robot::Point());
+  const CollisionWorld cube(set, envs::Robot::Mesh(testing::CubeMesh(0.2)));
+  for (const CollisionMode mode : {CollisionMode::kBvh, CollisionMode::kHullsExact}) {
+    SCOPED_TRACE(ToString(mode));
+    EXPECT_TRUE(point.IsValid(at(0.5, 0, 0), mode));        // in the cavity
+    EXPECT_FALSE(point.IsValid(at(1.5, 0, 0), mode));       // in the wall
+    EXPECT_FALSE(point.IsValid(at(1, 0.5, 0), mode));       // on the cavity's surface
+    EXPECT_FALSE(point.IsValid(at(10.5, 0.2, 0.2), mode));  // where the pair overlaps
+    EXPECT_TRUE(cube.IsValid(at(0.5, 0, 0), mode));
+    EXPECT_FALSE(cube.IsValid(at(0.95, 0, 0), mode));  // through the cavity's wall
+    EXPECT_FALSE(cube.IsValid(at(1.5, 0, 0), mode));   // inside the wall
+    EXPECT_FALSE(cube.IsValid(at(10.5, 0.2, 0.2), mode));
+  }
+  EXPECT_FALSE(point.IsValid(at(0.5, 0, 0), CollisionMode::kHulls));  // conservative
+  for (const auto& pose : testing::RandomPoses3d(w.bounds, 2000, 5)) {
+    EXPECT_EQ(point.IsValid(pose, CollisionMode::kHullsExact),
+              point.IsValid(pose, CollisionMode::kBvh));
+    EXPECT_EQ(cube.IsValid(pose, CollisionMode::kHullsExact),
+              cube.IsValid(pose, CollisionMode::kBvh));
+  }
+}
+
 // 3D: meshes of data/meshes/vhacd as obstacles, a small cube robot.
 class CollisionWorldVhacdMesh : public ::testing::TestWithParam<std::string> {};
 

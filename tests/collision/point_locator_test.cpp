@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <random>
 #include <string>
@@ -146,6 +147,122 @@ TEST(PointLocator3d, NestedShellsBoundACavity) {
   EXPECT_TRUE(hulls.Inside(Eigen::Vector3d(1.5, 0, 0)));  // conservative
   // The solid ACD's pieces surround the cavity, so their hulls leave (most of) it free.
   EXPECT_GT(set->pieces.size(), 1u);
+}
+
+// Several closed shells in one mesh: nonzero winding, each shell +1 unless it sits inside
+// another one it does not meet (a cavity, -1), whatever way its faces point in the file.
+
+TEST(PointLocator3d, OverlappingShellsMeanTheirUnion) {
+  // The second cube crosses the first; each offset puts a different corner of it inside the
+  // first, so the nesting test sees a vertex inside as well as outside.
+  for (const Eigen::Vector3d& offset :
+       {Eigen::Vector3d(1, 0.5, 0.25), Eigen::Vector3d(-1, -0.5, -0.25)}) {
+    SCOPED_TRACE(offset.transpose());
+    const acd::TriangleMesh a = testing::CubeMesh(2), b = testing::Translated(a, offset);
+    auto set =
+        std::make_shared<const ObstacleSet>(BuildObstacleSet(MeshWorld(testing::Combined({a, b}))));
+    ASSERT_EQ(set->components.size(), 2u);  // not a solid: two closed patches
+    const PointLocator exact(set, LocateMethod::kExact), hulls(set, LocateMethod::kHulls);
+    const Eigen::Vector3d in_both = 0.5 * offset;
+    EXPECT_TRUE(exact.Inside(in_both));                          // even-odd said outside
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(-0.9 * offset)));   // a only
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1.9 * offset)));    // b only
+    EXPECT_FALSE(exact.Inside(Eigen::Vector3d(-1.1 * offset)));  // beyond a
+    EXPECT_FALSE(exact.Inside(Eigen::Vector3d(2.1 * offset)));   // beyond b
+    // Boundary points: a's face inside b and b's face inside a; the union's own boundary.
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(offset.x() / 2 + 0.5 * std::copysign(1.0, offset.x()),
+                                             offset.y() / 2, offset.z() / 2)));
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(offset.x() / 2 - 0.5 * std::copysign(1.0, offset.x()),
+                                             offset.y() / 2, offset.z() / 2)));
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(2 * offset.x(), offset.y(), offset.z())));
+    EXPECT_TRUE(hulls.Inside(in_both));
+  }
+}
+
+TEST(PointLocator3d, ACubePokingOutOfAnotherIsNoCavity) {
+  // Most of the small cube is inside the big one, but its surface crosses the big one's.
+  for (const double x : {0.9, -0.9}) {
+    SCOPED_TRACE(x);
+    const acd::TriangleMesh big = testing::CubeMesh(2);
+    const acd::TriangleMesh small = testing::Translated(testing::CubeMesh(1), {x, 0, 0});
+    auto set = std::make_shared<const ObstacleSet>(
+        BuildObstacleSet(MeshWorld(testing::Combined({big, small}))));
+    const PointLocator exact(set, LocateMethod::kExact);
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0.7 * x, 0, 0)));  // in both
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1.3 * x, 0, 0)));  // in the small one only
+    EXPECT_FALSE(exact.Inside(Eigen::Vector3d(1.3 * x, 0, 0.6)));
+  }
+}
+
+TEST(PointLocator3d, ACavityShellStaysOutsideInAMeshThatIsNotASolid) {
+  // An outer cube, a cavity cube inside it and an island inside the cavity, plus two crossing
+  // cubes further on so that the mesh is no solid (its parts are then the single shells). The
+  // cavity may face either way in the file: nesting decides.
+  const acd::TriangleMesh c = testing::CubeMesh(2);
+  for (const bool inward : {true, false}) {
+    SCOPED_TRACE(inward ? "inward cavity" : "outward cavity");
+    const acd::TriangleMesh cavity = inward ? testing::InsideOut(c) : c;
+    const acd::TriangleMesh mesh = testing::Combined(
+        {testing::CubeMesh(4), cavity, testing::CubeMesh(0.5), testing::Translated(c, {10, 0, 0}),
+         testing::Translated(c, {11, 0.5, 0.5})});
+    auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(MeshWorld(mesh)));
+    ASSERT_EQ(set->components.size(), 5u);
+    const PointLocator exact(set, LocateMethod::kExact), hulls(set, LocateMethod::kHulls);
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1.5, 0, 0)));   // the wall
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1, 0, 0)));     // on the cavity's surface
+    EXPECT_FALSE(exact.Inside(Eigen::Vector3d(0.6, 0, 0)));  // the cavity
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0, 0, 0)));     // the island
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0.25, 0, 0)));  // the island's surface
+    EXPECT_FALSE(exact.Inside(Eigen::Vector3d(2.5, 0, 0)));
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(10.5, 0.25, 0.25)));  // the crossing pair's overlap
+    EXPECT_TRUE(hulls.Inside(Eigen::Vector3d(1.5, 0, 0)));
+  }
+}
+
+TEST(PointLocator3d, NestedShellsBoundACavityWhicheverWayTheyFace) {
+  // A solid (no defect): PrepareMesh makes one part of the outer shell and its cavity.
+  const acd::TriangleMesh outer = testing::CubeMesh(4), inner = testing::CubeMesh(2);
+  for (const bool flip_outer : {false, true}) {
+    for (const bool flip_inner : {false, true}) {
+      SCOPED_TRACE(std::to_string(flip_outer) + std::to_string(flip_inner));
+      auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(
+          MeshWorld(testing::Combined({flip_outer ? testing::InsideOut(outer) : outer,
+                                       flip_inner ? testing::InsideOut(inner) : inner}))));
+      const PointLocator exact(set, LocateMethod::kExact);
+      EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1.5, 0, 0)));
+      EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0, 1, 0)));
+      EXPECT_FALSE(exact.Inside(Eigen::Vector3d(0, 0, 0)));
+      EXPECT_FALSE(exact.Inside(Eigen::Vector3d(0, 0, 2.01)));
+    }
+  }
+}
+
+TEST(PointLocator3d, AnInsideOutCubeStillHasAnInside) {
+  // Alone (a solid once PrepareMesh turns it), and beside a crossing pair (no solid).
+  const acd::TriangleMesh flipped = testing::InsideOut(testing::CubeMesh(2));
+  const acd::TriangleMesh c = testing::CubeMesh(2);
+  for (const acd::TriangleMesh& mesh :
+       {flipped, testing::Combined({flipped, testing::Translated(c, {10, 0, 0}),
+                                    testing::Translated(c, {11, 0.5, 0.5})})}) {
+    auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(MeshWorld(mesh)));
+    const PointLocator exact(set, LocateMethod::kExact);
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0, 0, 0)));
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0.2, -0.3, 0.9)));
+    EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1, 1, 1)));  // a corner
+    EXPECT_FALSE(exact.Inside(Eigen::Vector3d(0, 0, -1.01)));
+  }
+}
+
+TEST(PointLocator3d, TwoDisjointCubes) {
+  const acd::TriangleMesh c = testing::CubeMesh(2);
+  auto set = std::make_shared<const ObstacleSet>(
+      BuildObstacleSet(MeshWorld(testing::Combined({c, testing::Translated(c, {5, 0, 0})}))));
+  const PointLocator exact(set, LocateMethod::kExact);
+  EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0, 0, 0)));
+  EXPECT_TRUE(exact.Inside(Eigen::Vector3d(5, 0.5, 0)));
+  EXPECT_TRUE(exact.Inside(Eigen::Vector3d(4, 0, 0)));  // on the second cube's face
+  EXPECT_FALSE(exact.Inside(Eigen::Vector3d(2.5, 0, 0)));
+  EXPECT_FALSE(exact.Inside(Eigen::Vector3d(5, 0, 1.5)));
 }
 
 class PointLocatorVhacdMesh : public ::testing::TestWithParam<std::string> {};

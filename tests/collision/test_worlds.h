@@ -42,6 +42,39 @@ inline envs::Robot LRobot() {
 /// A cube mesh of side `side` centred on the body origin (acd::Cube).
 inline acd::TriangleMesh CubeMesh(double side) { return acd::Cube(side); }
 
+/// `mesh` moved by `offset`.
+inline acd::TriangleMesh Translated(acd::TriangleMesh mesh, const Eigen::Vector3d& offset) {
+  mesh.vertices.rowwise() += offset.transpose();
+  return mesh;
+}
+
+/// `mesh` with every face turned over (a closed shell then faces inward).
+inline acd::TriangleMesh InsideOut(acd::TriangleMesh mesh) {
+  mesh.triangles.col(1).swap(mesh.triangles.col(2));
+  return mesh;
+}
+
+/// The shells `meshes` as one mesh, in order (several closed shells in one file).
+inline acd::TriangleMesh Combined(const std::vector<acd::TriangleMesh>& meshes) {
+  acd::TriangleMesh out;
+  Eigen::Index vertices = 0, triangles = 0;
+  for (const auto& m : meshes) {
+    vertices += m.vertices.rows();
+    triangles += m.triangles.rows();
+  }
+  out.vertices.resize(vertices, 3);
+  out.triangles.resize(triangles, 3);
+  vertices = triangles = 0;
+  for (const auto& m : meshes) {
+    out.vertices.middleRows(vertices, m.vertices.rows()) = m.vertices;
+    out.triangles.middleRows(triangles, m.triangles.rows()) =
+        (m.triangles.array() + static_cast<int>(vertices)).matrix();
+    vertices += m.vertices.rows();
+    triangles += m.triangles.rows();
+  }
+  return out;
+}
+
 /// Uniform SE(2) poses in `bounds`, seeded.
 inline std::vector<Eigen::Isometry2d> RandomPoses2d(const Eigen::AlignedBox2d& bounds, int count,
                                                     std::uint64_t seed) {
