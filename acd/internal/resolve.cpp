@@ -735,8 +735,10 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
   std::vector<char> crossed(k, 0);
   crossed[h] = 1;
   std::vector<std::pair<Point2d, Point2d>> cuts;  // Made so far, for the crossing test.
+  std::optional<Endpoint> outer_end;              // The first side's end.
   // Links `from` (a vertex of a crossed hole) to the closest visible point not on a crossed
-  // hole and crossing no cut made so far.
+  // hole and crossing no cut made so far; an outer end other than the first side's vertex or
+  // edge (AppendOuterChain() orders ends by vertex and edge).
   auto link = [&](const Endpoint& from) -> std::optional<Endpoint> {
     std::vector<Candidate> candidates = NearestCandidates(polygon, from.point);
     for (int j = 0; j < k; ++j) {
@@ -747,6 +749,10 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
       }
     }
     return FirstAccepted(std::move(candidates), [&](const Endpoint& e) {
+      if (e.ring < 0 && outer_end && e.index == outer_end->index &&
+          e.on_edge == outer_end->on_edge) {
+        return false;
+      }
       for (const auto& [u, w] : cuts) {
         if (SegmentsMeet(u, w, from.point, e.point)) return false;
       }
@@ -767,6 +773,7 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
       cuts.emplace_back(from.point, to->point);
       if (to->ring < 0) {
         side->end = *to;
+        outer_end = *to;
         return true;
       }
       const Ring2d& hole = polygon.holes[to->ring];
@@ -788,7 +795,6 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
   if (a.holes.empty() && b.holes.empty()) return false;  // ResolveHole()'s two cuts.
   const Endpoint& x = a.end;
   const Endpoint& y = b.end;
-  if (x.index == y.index && x.on_edge == y.on_edge) return false;
   // The path from x: side a's holes in reverse (entered where side a left them), h, side b's.
   HolePath path{x, y, {}};
   for (auto it = a.holes.rbegin(); it != a.holes.rend(); ++it) {
