@@ -7,6 +7,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <tuple>
 
 #include "acd/internal/edge_grid.h"
 #include "acd/internal/exact_predicates.h"
@@ -740,15 +741,32 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
   // hole and crossing no cut made so far; an outer end other than the first side's vertex or
   // edge (AppendOuterChain() orders ends by vertex and edge).
   auto link = [&](const Endpoint& from) -> std::optional<Endpoint> {
-    std::vector<Candidate> candidates = NearestCandidates(polygon, from.point);
+    struct Near {
+      double d2;
+      Endpoint end;
+    };
+    const Ring2d& outer = polygon.outer;
+    const int m = static_cast<int>(outer.size());
+    std::vector<Near> near;
+    near.reserve(2 * outer.size() + VertexCount(polygon));
+    for (int i = 0; i < m; ++i) {
+      const Point2d& u = outer[i];
+      near.push_back({(u - from.point).squaredNorm(), {-1, i, false, u}});
+      const Point2d e = outer[Next(i, m)] - u;
+      const double s = (from.point - u).dot(e) / std::max(e.squaredNorm(), 1e-300);
+      if (s > kMinEdgeFraction && s < 1.0 - kMinEdgeFraction) {
+        const Point2d foot = u + s * e;
+        near.push_back({(foot - from.point).squaredNorm(), {-1, i, true, foot}});
+      }
+    }
     for (int j = 0; j < k; ++j) {
       if (crossed[j]) continue;
       const Ring2d& hole = polygon.holes[j];
       for (int i = 0; i < static_cast<int>(hole.size()); ++i) {
-        candidates.push_back({{j, i, false, hole[i]}, -(hole[i] - from.point).norm()});
+        near.push_back({(hole[i] - from.point).squaredNorm(), {j, i, false, hole[i]}});
       }
     }
-    return FirstAccepted(std::move(candidates), [&](const Endpoint& e) {
+    auto accept = [&](const Endpoint& e) {
       if (e.ring < 0 && outer_end && e.index == outer_end->index &&
           e.on_edge == outer_end->on_edge) {
         return false;
@@ -757,7 +775,21 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
         if (SegmentsMeet(u, w, from.point, e.point)) return false;
       }
       return IsClearCut(polygon, grid, from, e);
-    });
+    };
+    // Nearest first, ties by ring, index and kind (an order every standard library agrees on).
+    // The closest few usually include a visible one, so they are sorted a batch at a time.
+    auto closer = [](const Near& u, const Near& v) {
+      return std::tie(u.d2, u.end.ring, u.end.index, u.end.on_edge) <
+             std::tie(v.d2, v.end.ring, v.end.index, v.end.on_edge);
+    };
+    for (size_t begin = 0, batch = 16; begin < near.size(); begin += batch, batch *= 4) {
+      const auto last = near.begin() + std::min(near.size(), begin + batch);
+      std::partial_sort(near.begin() + begin, last, near.end(), closer);
+      for (auto it = near.begin() + begin; it != last; ++it) {
+        if (accept(it->end)) return it->end;
+      }
+    }
+    return std::nullopt;
   };
   // One side of the path, from vertex `start` of hole h to the outer boundary: the holes
   // crossed (entered at the vertex reached, left at `leave`) and the outer end.
