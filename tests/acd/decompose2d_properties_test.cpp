@@ -292,7 +292,9 @@ TEST(Decompose2dTest, HolesCloserToTheBoundaryAreCutOneAtATime) {
   options.tau = 4.0;
   const Decomposition2d d = Decompose2d(polygon, options);
   for (const HierarchyNode2d& node : d.tree) {
-    if (node.children[0] >= 0) EXPECT_LE(node.cuts.size(), 2u);
+    if (node.children[0] >= 0) {
+      EXPECT_LE(node.cuts.size(), 2u);
+    }
   }
   EXPECT_EQ(d.components.size(), 3u);
   const DecompositionCheck check = CheckDecomposition({polygon}, d);
@@ -392,12 +394,17 @@ void ExpectConsistentTree(const std::vector<Polygon2d>& input, const Decompositi
       EXPECT_EQ(VertexCount(node.piece), VertexCount(d.components[node.component].polygon));
     } else {
       EXPECT_EQ(node.component, -1) << "internal node " << n;
-      EXPECT_TRUE(node.cuts.size() == 1 || node.cuts.size() == 2)
-          << "internal node " << n << " has " << node.cuts.size() << " cuts";
       for (int child : node.children) {
         ASSERT_LT(child, nodes);
         EXPECT_EQ(d.tree[child].parent, n);
       }
+      // One cut at a notch; or k + 1 cuts along a path through the k holes it resolves.
+      ASSERT_GE(node.cuts.size(), 1u) << "internal node " << n;
+      const size_t resolved = node.piece.holes.size() -
+                              d.tree[node.children[0]].piece.holes.size() -
+                              d.tree[node.children[1]].piece.holes.size();
+      EXPECT_EQ(node.cuts.size(), resolved + 1)
+          << "internal node " << n << " has " << node.cuts.size() << " cuts";
       // The children tile their parent.
       const double area = Area(node.piece);
       EXPECT_NEAR(Area(d.tree[node.children[0]].piece) + Area(d.tree[node.children[1]].piece), area,
