@@ -37,7 +37,9 @@ struct HierarchyNode2d {
   /// At a leaf, the piece's most concave point; at an internal node, the feature its cut(s)
   /// resolved (the most concave point unless no valid cut started there).
   Point2d witness = Point2d::Zero();
-  std::vector<Cut2d> cuts;     ///< One cut (an outer notch) or two (a hole split at p, cw(p)).
+  /// One cut (an outer notch), or k + 1 cuts along a path from the outer boundary through the
+  /// k >= 1 holes the split resolves and back (a hole: two, at p and cw(p)).
+  std::vector<Cut2d> cuts;
   int parent = -1;             ///< Index of the parent node; -1 at a root.
   int children[2] = {-1, -1};  ///< Indices of the two children; -1 at a leaf.
   int component = -1;          ///< Index into Decomposition2d::components at a leaf.

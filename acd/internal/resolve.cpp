@@ -7,6 +7,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <tuple>
 
 #include "acd/internal/edge_grid.h"
 #include "acd/internal/exact_predicates.h"
@@ -559,13 +560,14 @@ void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b,
   origin->push_back(b.on_edge ? -1 : b.index);
 }
 
-// Gives each hole of `polygon` other than `skip` to the piece that contains it: the hole's
+// Gives each hole of `polygon` not in `skip` to the piece that contains it: the hole's
 // first vertex lies strictly inside one piece's ring, as a valid cut keeps clear of other
 // holes, so it is located in the smaller ring only (a hole split often cuts off a small piece).
 // Parity by a slab locator (exact); a point within rounding noise of the ring (never the case
 // for a valid cut) is decided by CGAL's exact test, as before.
-void DistributeHoles(const Polygon2d& polygon, int skip, std::array<Polygon2d, 2>* pieces) {
-  if (polygon.holes.size() <= (skip >= 0 ? 1u : 0u)) return;
+void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
+                     std::array<Polygon2d, 2>* pieces) {
+  if (polygon.holes.size() <= skip.size()) return;
   const int tested = (*pieces)[0].outer.size() <= (*pieces)[1].outer.size() ? 0 : 1;
   const Ring2d& ring = (*pieces)[tested].outer;
   const RingLocator locator(Polygon2d{ring, {}});
@@ -573,7 +575,7 @@ void DistributeHoles(const Polygon2d& polygon, int skip, std::array<Polygon2d, 2
   for (const Point2d& p : ring) scale = std::max(scale, MaxAbs(p));
   const double noise = kRoundingNoise * std::max(1.0, scale);
   for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
-    if (k == skip) continue;
+    if (std::find(skip.begin(), skip.end(), k) != skip.end()) continue;
     const Ring2d& hole = polygon.holes[k];
     const Point2d& p = hole.front();
     bool inside;
@@ -604,7 +606,7 @@ bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeQuery& grid,
     AppendOuterChain(polygon.outer, side == 0 ? from : *to, side == 0 ? *to : from,
                      &resolution->pieces[side].outer, &resolution->origin[side]);
   }
-  DistributeHoles(polygon, -1, &resolution->pieces);
+  DistributeHoles(polygon, {}, &resolution->pieces);
   resolution->cuts = {{from.point, to->point}};
   resolution->witness = from.point;
   return true;
@@ -666,9 +668,174 @@ void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x,
   for (int side = 0; side < 2; ++side) {
     resolution->origin[side].resize(resolution->pieces[side].outer.size(), -1);  // Hole vertices.
   }
-  DistributeHoles(polygon, h, &resolution->pieces);
+  DistributeHoles(polygon, {h}, &resolution->pieces);
   resolution->cuts = {{hole[a], x.point}, {hole[b], y.point}};
   resolution->witness = hole[a];
+}
+
+// A path of cuts from the outer boundary through holes back to it: from outer end x, per hole
+// crossed the vertex `enter` it arrives at and the vertex `leave` it departs from, to outer
+// end y. Consecutive points are joined by cuts.
+struct HoleCrossing {
+  int hole;
+  int enter, leave;
+};
+struct HolePath {
+  Endpoint x, y;
+  std::vector<HoleCrossing> holes;  // From the x side to the y side.
+};
+
+// Splits `polygon` along `path` into two pieces (the path's cuts cross nothing and each other
+// nowhere). Piece 0 runs along the outer ring from x to y and back over the holes' arcs from
+// leave to enter; piece 1 from y to x and over the arcs from enter to leave (forward along a
+// hole keeps the interior on the left, so each piece stays on one side of every cut).
+void SplitAlongPath(const Polygon2d& polygon, const HolePath& path, const Point2d& witness,
+                    Resolution* resolution) {
+  resolution->pieces = {};
+  resolution->origin = {};
+  AppendOuterChain(polygon.outer, path.x, path.y, &resolution->pieces[0].outer,
+                   &resolution->origin[0]);
+  for (auto it = path.holes.rbegin(); it != path.holes.rend(); ++it) {
+    AppendChain(polygon.holes[it->hole], it->leave, it->enter, &resolution->pieces[0].outer);
+  }
+  AppendOuterChain(polygon.outer, path.y, path.x, &resolution->pieces[1].outer,
+                   &resolution->origin[1]);
+  for (const HoleCrossing& c : path.holes) {
+    AppendChain(polygon.holes[c.hole], c.enter, c.leave, &resolution->pieces[1].outer);
+  }
+  for (int side = 0; side < 2; ++side) {
+    resolution->origin[side].resize(resolution->pieces[side].outer.size(), -1);  // Hole vertices.
+  }
+  std::vector<int> crossed;
+  for (const HoleCrossing& c : path.holes) crossed.push_back(c.hole);
+  DistributeHoles(polygon, crossed, &resolution->pieces);
+  resolution->cuts.clear();
+  Point2d from = path.x.point;
+  for (const HoleCrossing& c : path.holes) {
+    resolution->cuts.push_back({from, polygon.holes[c.hole][c.enter]});
+    from = polygon.holes[c.hole][c.leave];
+  }
+  resolution->cuts.push_back({from, path.y.point});
+  resolution->witness = witness;
+}
+
+// Resolves hole `h` the way Eqn. 4.2 ranks it: a hole is linked to the closest ring, which may
+// be another hole (Fig. 23: holes behind holes), and once linked its deepest point is the
+// antipode of the link (Fig. 19), which the next iteration would link in turn. Here both links
+// are made at once: from p and from cw(p), each to the closest visible vertex (or outer edge
+// point) not on a hole already crossed; a hole reached is left from its vertex farthest from
+// where it was entered, again to the closest visible point, until the outer boundary is
+// reached. The piece splits in two along this path and every hole on it is resolved by the one
+// split: where holes lie closer to each other than to the outer boundary (cells separated by
+// thin walls), the path crosses walls instead of running around them. Returns false, leaving
+// the choice to ResolveHole(), when no hole is reached or the path cannot be completed.
+bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
+                          const Concavity2d& concavity, int h, Resolution* resolution) {
+  const int k = static_cast<int>(polygon.holes.size());
+  if (k < 2) return false;
+  std::vector<char> crossed(k, 0);
+  crossed[h] = 1;
+  std::vector<std::pair<Point2d, Point2d>> cuts;  // Made so far, for the crossing test.
+  std::optional<Endpoint> outer_end;              // The first side's end.
+  // Links `from` (a vertex of a crossed hole) to the closest visible point not on a crossed
+  // hole and crossing no cut made so far; an outer end other than the first side's vertex or
+  // edge (AppendOuterChain() orders ends by vertex and edge).
+  auto link = [&](const Endpoint& from) -> std::optional<Endpoint> {
+    struct Near {
+      double d2;
+      Endpoint end;
+    };
+    const Ring2d& outer = polygon.outer;
+    const int m = static_cast<int>(outer.size());
+    std::vector<Near> near;
+    near.reserve(2 * outer.size() + VertexCount(polygon));
+    for (int i = 0; i < m; ++i) {
+      const Point2d& u = outer[i];
+      near.push_back({(u - from.point).squaredNorm(), {-1, i, false, u}});
+      const Point2d e = outer[Next(i, m)] - u;
+      const double s = (from.point - u).dot(e) / std::max(e.squaredNorm(), 1e-300);
+      if (s > kMinEdgeFraction && s < 1.0 - kMinEdgeFraction) {
+        const Point2d foot = u + s * e;
+        near.push_back({(foot - from.point).squaredNorm(), {-1, i, true, foot}});
+      }
+    }
+    for (int j = 0; j < k; ++j) {
+      if (crossed[j]) continue;
+      const Ring2d& hole = polygon.holes[j];
+      for (int i = 0; i < static_cast<int>(hole.size()); ++i) {
+        near.push_back({(hole[i] - from.point).squaredNorm(), {j, i, false, hole[i]}});
+      }
+    }
+    auto accept = [&](const Endpoint& e) {
+      if (e.ring < 0 && outer_end && e.index == outer_end->index &&
+          e.on_edge == outer_end->on_edge) {
+        return false;
+      }
+      for (const auto& [u, w] : cuts) {
+        if (SegmentsMeet(u, w, from.point, e.point)) return false;
+      }
+      return IsClearCut(polygon, grid, from, e);
+    };
+    // Nearest first, ties by ring, index and kind (an order every standard library agrees on).
+    // The closest few usually include a visible one, so they are sorted a batch at a time.
+    auto closer = [](const Near& u, const Near& v) {
+      return std::tie(u.d2, u.end.ring, u.end.index, u.end.on_edge) <
+             std::tie(v.d2, v.end.ring, v.end.index, v.end.on_edge);
+    };
+    for (size_t begin = 0, batch = 16; begin < near.size(); begin += batch, batch *= 4) {
+      const auto last = near.begin() + std::min(near.size(), begin + batch);
+      std::partial_sort(near.begin() + begin, last, near.end(), closer);
+      for (auto it = near.begin() + begin; it != last; ++it) {
+        if (accept(it->end)) return it->end;
+      }
+    }
+    return std::nullopt;
+  };
+  // One side of the path, from vertex `start` of hole h to the outer boundary: the holes
+  // crossed (entered at the vertex reached, left at `leave`) and the outer end.
+  struct Side {
+    std::vector<HoleCrossing> holes;
+    Endpoint end;
+  };
+  auto walk = [&](int start, Side* side) {
+    Endpoint from{h, start, false, polygon.holes[h][start]};
+    for (;;) {
+      const std::optional<Endpoint> to = link(from);
+      if (!to) return false;
+      cuts.emplace_back(from.point, to->point);
+      if (to->ring < 0) {
+        side->end = *to;
+        outer_end = *to;
+        return true;
+      }
+      const Ring2d& hole = polygon.holes[to->ring];
+      int farthest = to->index == 0 ? 1 : 0;
+      for (int i = 0; i < static_cast<int>(hole.size()); ++i) {
+        if ((hole[i] - to->point).squaredNorm() > (hole[farthest] - to->point).squaredNorm()) {
+          farthest = i;
+        }
+      }
+      crossed[to->ring] = 1;
+      side->holes.push_back({to->ring, to->index, farthest});
+      from = {to->ring, farthest, false, hole[farthest]};
+    }
+  };
+  const HoleConcavity& antipodes = concavity.holes[h];
+  if (antipodes.p == antipodes.cw_p) return false;
+  Side a, b;
+  if (!walk(antipodes.p, &a) || !walk(antipodes.cw_p, &b)) return false;
+  if (a.holes.empty() && b.holes.empty()) return false;  // ResolveHole()'s two cuts.
+  const Endpoint& x = a.end;
+  const Endpoint& y = b.end;
+  // The path from x: side a's holes in reverse (entered where side a left them), h, side b's.
+  HolePath path{x, y, {}};
+  for (auto it = a.holes.rbegin(); it != a.holes.rend(); ++it) {
+    path.holes.push_back({it->hole, it->leave, it->enter});
+  }
+  path.holes.push_back({h, antipodes.p, antipodes.cw_p});
+  path.holes.insert(path.holes.end(), b.holes.begin(), b.holes.end());
+  SplitAlongPath(polygon, path, polygon.holes[h][antipodes.p], resolution);
+  return true;
 }
 
 // Resolves hole `h`: connects its antipode p to the outer boundary (Algorithm 5) and, so that
@@ -681,6 +848,7 @@ bool ResolveHole(const Polygon2d& polygon, const EdgeQuery& grid, const Concavit
   const Ring2d& hole = polygon.holes[h];
   const int m = static_cast<int>(hole.size());
   const HoleConcavity& antipodes = concavity.holes[h];
+  if (ResolveHoleAlongPath(polygon, grid, concavity, h, resolution)) return true;
   auto try_pair = [&](int a, int b, bool thorough, const Endpoint& x) {
     if (b == a) return false;
     const std::optional<Endpoint> y =

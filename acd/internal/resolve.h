@@ -47,9 +47,15 @@ struct Resolution {
 ///    the cut resolves x as well) among the boundary points x that
 ///    resolve r (x in the cone of the extensions of r's two edges) and see r; x is a vertex or,
 ///    if `steiner_cuts`, the point where r's angle bisector first meets an edge.
-///  - A hole is connected at p to the closest visible outer vertex x (Algorithm 5) and, so that
-///    the piece splits in two, at cw(p) by the best-scoring cut to the outer boundary (the cut
-///    the next iteration would make at cw(p), the pocket's deepest point, Fig. 19).
+///  - A hole whose antipodes p and cw(p) lie closer to another hole than to the outer boundary
+///    is cut along a path: p and cw(p) each link to the closest visible point of another ring
+///    (Eqn. 4.2's link), a hole reached is left at its vertex farthest from where it was entered
+///    (its cw, Fig. 19) and linked on, until both ends reach the outer boundary; every hole on
+///    the path is resolved by the one split.
+///  - Otherwise a hole is connected at p to the closest visible outer vertex x (Algorithm 5)
+///    and, so that the piece splits in two, at cw(p) by the best-scoring cut to the outer
+///    boundary (the cut the next iteration would make at cw(p), the pocket's deepest point,
+///    Fig. 19).
 /// Both pieces are simple, counter-clockwise, with the remaining holes distributed.
 /// Returns false only when no valid cut exists for any notch or hole (never for valid input).
 bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const ResolveOptions& options,

@@ -254,6 +254,70 @@ TEST(Decompose2dTest, LargeTauKeepsTheHoleInOneComponent) {
   EXPECT_TRUE(check.ok()) << Problems(check);
 }
 
+// Two long holes side by side, 1 apart, 2 from the outer boundary: a wall between two cells.
+Polygon2d TwoCells() {
+  return Prepared({{{0, 0}, {21, 0}, {21, 6}, {0, 6}},
+                   {{{2, 2}, {2, 4}, {10, 4}, {10, 2}}, {{11, 2}, {11, 4}, {19, 4}, {19, 2}}}});
+}
+
+TEST(Decompose2dTest, HolesCloserToEachOtherThanToTheBoundaryAreCutInOneSplit) {
+  // Each hole links to its closest ring (Eqn. 4.2), here the other hole: the first split runs
+  // from the outer boundary through both holes back to it (three cuts), so two pieces remain,
+  // each within tau; cutting the holes one at a time (two cuts each) leaves three (below).
+  const Polygon2d polygon = TwoCells();
+  for (const ConcavityMeasure measure :
+       {ConcavityMeasure::kStraightLine, ConcavityMeasure::kHybrid2,
+        ConcavityMeasure::kShortestPath}) {
+    Decompose2dOptions options;
+    options.measure = measure;
+    options.tau = 4.0;  // Below either hole's concavity (> its diameter, 8.2), above a pocket's.
+    const Decomposition2d d = Decompose2d(polygon, options);
+    const HierarchyNode2d& root = d.tree[d.roots[0]];
+    EXPECT_EQ(root.cuts.size(), 3u) << ToString(measure);
+    EXPECT_EQ(d.components.size(), 2u) << ToString(measure);
+    for (const Component2d& c : d.components) EXPECT_TRUE(c.polygon.holes.empty());
+    const DecompositionCheck check = CheckDecomposition({polygon}, d);
+    EXPECT_TRUE(check.ok()) << ToString(measure) << Problems(check);
+  }
+}
+
+TEST(Decompose2dTest, HolesCloserToTheBoundaryAreCutOneAtATime) {
+  // The same holes 5 apart: each is closer to the outer boundary than to the other, so each is
+  // linked to it (two cuts per split, as Fig. 19), never through the other hole.
+  const Polygon2d polygon =
+      Prepared({{{0, 0}, {25, 0}, {25, 6}, {0, 6}},
+                {{{2, 2}, {2, 4}, {10, 4}, {10, 2}}, {{15, 2}, {15, 4}, {23, 4}, {23, 2}}}});
+  Decompose2dOptions options;
+  options.measure = ConcavityMeasure::kStraightLine;
+  options.tau = 4.0;
+  const Decomposition2d d = Decompose2d(polygon, options);
+  for (const HierarchyNode2d& node : d.tree) {
+    if (node.children[0] >= 0) {
+      EXPECT_LE(node.cuts.size(), 2u);
+    }
+  }
+  EXPECT_EQ(d.components.size(), 3u);
+  const DecompositionCheck check = CheckDecomposition({polygon}, d);
+  EXPECT_TRUE(check.ok()) << Problems(check);
+}
+
+TEST(Decompose2dTest, NeuronAtTauRelOnePercentHasAtMost160Components) {
+  // The count of Lien's reference implementation on this polygon at tau_rel 0.01.
+  std::vector<double> radii;
+  const std::vector<Polygon2d> neuron =
+      ReadPolygons((kAcd2d / "neuron" / "neuron.poly").string(), &radii);
+  for (const ConcavityMeasure measure :
+       {ConcavityMeasure::kStraightLine, ConcavityMeasure::kHybrid2}) {
+    Decompose2dOptions options;
+    options.measure = measure;
+    options.tau = 0.01 * *std::max_element(radii.begin(), radii.end());
+    const Decomposition2d d = Decompose2d(neuron, options);
+    EXPECT_LE(d.components.size(), 160u) << ToString(measure);
+    const DecompositionCheck check = CheckDecomposition(neuron, d);
+    EXPECT_TRUE(check.ok()) << ToString(measure) << Problems(check);
+  }
+}
+
 TEST(Decompose2dTest, MinConvexityBoundsEveryComponentsAreaRatio) {
   const std::vector<Polygon2d> monkey =
       ReadPolygons((kAcd2d / "nazca" / "nazca_monkey.poly").string());
@@ -330,12 +394,17 @@ void ExpectConsistentTree(const std::vector<Polygon2d>& input, const Decompositi
       EXPECT_EQ(VertexCount(node.piece), VertexCount(d.components[node.component].polygon));
     } else {
       EXPECT_EQ(node.component, -1) << "internal node " << n;
-      EXPECT_TRUE(node.cuts.size() == 1 || node.cuts.size() == 2)
-          << "internal node " << n << " has " << node.cuts.size() << " cuts";
       for (int child : node.children) {
         ASSERT_LT(child, nodes);
         EXPECT_EQ(d.tree[child].parent, n);
       }
+      // One cut at a notch; or k + 1 cuts along a path through the k holes it resolves.
+      ASSERT_GE(node.cuts.size(), 1u) << "internal node " << n;
+      const size_t resolved = node.piece.holes.size() -
+                              d.tree[node.children[0]].piece.holes.size() -
+                              d.tree[node.children[1]].piece.holes.size();
+      EXPECT_EQ(node.cuts.size(), resolved + 1)
+          << "internal node " << n << " has " << node.cuts.size() << " cuts";
       // The children tile their parent.
       const double area = Area(node.piece);
       EXPECT_NEAR(Area(d.tree[node.children[0]].piece) + Area(d.tree[node.children[1]].piece), area,
