@@ -17,7 +17,6 @@ namespace {
 using testing::TempDir;
 
 const std::string kData = std::string(ACDPLAN_SOURCE_DIR) + "/tests/data/ompl_app/";
-constexpr double kPi = 3.14159265358979323846;
 
 /// The message of the InputError that ReadOmplAppProblem(path) throws ("" if none).
 std::string ErrorOf(const std::string& path) {
