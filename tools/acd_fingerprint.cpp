@@ -167,8 +167,7 @@ int Run(const std::vector<std::string>& paths, const std::vector<std::string>& m
         try {
           const acd::Decomposition2d d = Decompose2d(polygons, options);
           std::snprintf(line, sizeof line, "%s %s %g %016llx %zu", file.c_str(), name.c_str(),
-                        tau_rel, static_cast<unsigned long long>(HashOf(d)),
-                        d.components.size());
+                        tau_rel, static_cast<unsigned long long>(HashOf(d)), d.components.size());
         } catch (const std::exception& e) {
           std::snprintf(line, sizeof line, "%s %s %g failed: %s", file.c_str(), name.c_str(),
                         tau_rel, e.what());
