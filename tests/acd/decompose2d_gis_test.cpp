@@ -13,6 +13,7 @@
 #include "acd/prepare_polygon.h"
 #include "base/random.h"
 #include "base/stopwatch.h"
+#include "tests/asan_build.h"
 
 namespace acdplan::acd {
 namespace {
@@ -194,7 +195,7 @@ Polygon2d GisTile(int grid, int teeth, double jitter, std::uint64_t seed) {
 }
 
 TEST(Decompose2dGisTest, LargeTileDecomposesAndPassesCheckDecomposition) {
-#if defined(__SANITIZE_ADDRESS__)
+#if ACDPLAN_ASAN_BUILD
   const int grid = 10, teeth = 1000;  // 10^3 vertices, 10^2 holes.
 #else
   const int grid = 32, teeth = 9000;  // 1.3 x 10^4 vertices, 1,024 holes.

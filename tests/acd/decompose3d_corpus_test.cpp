@@ -26,11 +26,12 @@
 #include "acd/prepare_mesh.h"
 #include "base/stopwatch.h"
 #include "envs/mesh_loader.h"
+#include "tests/asan_build.h"
 
 namespace acdplan::acd {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if ACDPLAN_ASAN_BUILD
 constexpr bool kSanitizerBuild = true;
 #else
 constexpr bool kSanitizerBuild = false;

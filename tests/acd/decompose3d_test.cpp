@@ -13,6 +13,7 @@
 #include "acd/mesh_measures.h"
 #include "base/input_error.h"
 #include "solid_test_meshes.h"
+#include "tests/asan_build.h"
 
 namespace acdplan::acd {
 namespace {
@@ -155,7 +156,7 @@ TEST(Decompose3d, SameInputSameBytes) {
 }
 
 TEST(Decompose3d, MaxHullsMergesAlongTheTree) {
-#if defined(__SANITIZE_ADDRESS__)
+#if ACDPLAN_ASAN_BUILD
   const TriangleMesh torus = Torus(2.0, 1.0, 12, 6);  // the sanitizer build is ~10x slower
 #else
   const TriangleMesh torus = Torus(2.0, 1.0, 24, 12);

@@ -16,6 +16,7 @@
 #include "base/input_error.h"
 #include "envs/mesh_loader.h"
 #include "solid_test_meshes.h"
+#include "tests/asan_build.h"
 
 namespace acdplan::acd {
 namespace {
@@ -411,7 +412,7 @@ TEST(PrepareMeshCorpusTest, EveryVhacdMeshPreparesAndRepairsIntoPositiveParts) {
   }
   std::sort(files.begin(), files.end());
   ASSERT_EQ(files.size(), 31u);
-#if defined(__SANITIZE_ADDRESS__)
+#if ACDPLAN_ASAN_BUILD
   const size_t stride = 3;
 #else
   const size_t stride = 1;

@@ -10,20 +10,15 @@
 #include "base/random.h"
 #include "envs/generators.h"
 #include "envs/robot.h"
+#include "tests/asan_build.h"
 
 namespace acdplan::collision::testing {
 
 /// Poses per world and robot in the randomized tests. 10^5 in a normal build (a few seconds in
 /// Release); sanitizer builds run the same code ~20x slower, so they check 10^4 poses, still
 /// enough to cross every obstacle feature of the built-in worlds many times.
-#if defined(__SANITIZE_ADDRESS__)
+#if ACDPLAN_ASAN_BUILD
 constexpr int kPosesPerWorld = 10000;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr int kPosesPerWorld = 10000;
-#else
-constexpr int kPosesPerWorld = 100000;
-#endif
 #else
 constexpr int kPosesPerWorld = 100000;
 #endif
