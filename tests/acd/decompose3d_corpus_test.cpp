@@ -31,12 +31,6 @@
 namespace acdplan::acd {
 namespace {
 
-#if ACDPLAN_ASAN_BUILD
-constexpr bool kSanitizerBuild = true;
-#else
-constexpr bool kSanitizerBuild = false;
-#endif
-
 // One mesh of each kind of input (acd3d_bench's classes): solid (a box with a notch), solid of
 // genus 1, solid after repair (overlapping shells), and non-solid (open, self-intersecting).
 const std::set<std::string> kSanitizerSubset = {"cube-notch.obj", "torus1.obj", "ob_chair_wood.obj",
@@ -120,7 +114,7 @@ std::vector<std::filesystem::path> TestedFiles() {
   const std::vector<std::filesystem::path> files = CorpusFiles();
   std::vector<std::filesystem::path> tested;
   for (const std::filesystem::path& file : files) {
-    if (!kSanitizerBuild || kSanitizerSubset.count(file.filename().string())) {
+    if (!ACDPLAN_ASAN_BUILD || kSanitizerSubset.count(file.filename().string())) {
       tested.push_back(file);
     }
   }

@@ -25,7 +25,7 @@ constexpr int kPosesPerWorld = 100000;
 
 /// Whether this is a sanitizer build: the 3D ACD of the obstacles runs ~20x slower there, so
 /// the 3D tests decompose the small meshes only.
-constexpr bool kSanitizerBuild = kPosesPerWorld < 100000;
+constexpr bool kSanitizerBuild = ACDPLAN_ASAN_BUILD;
 
 /// A non-convex L-shaped robot, about 0.6 x 0.4 units, body origin inside it.
 inline envs::Robot LRobot() {
