@@ -3,10 +3,9 @@
 // compare), and a repeat mode that runs one decomposition many times for a profiler. Not a test.
 //
 //   acd_fingerprint [--tau-rel R ...] [--measure M ...] FILE_OR_FOLDER...
-//       One line per file x measure x tau_rel: the hash of the whole Decomposition2d (every
-//       component, hull, centroid, concavity, opening and tree node, bit for bit) and the
-//       component count; a last line with the hash of all lines. Unreadable files are listed
-//       and skipped.
+//       One line per file x measure x tau_rel: the hash of the whole Decomposition2d (its JSON,
+//       whose numbers read back bit for bit, and every tree node) and the component count; a last
+//       line with the hash of all lines. Unreadable files are listed and skipped.
 //   acd_fingerprint --repeat N --measure M --tau-rel R FILE
 //       Decomposes FILE N times (nothing else), for callgrind or perf.
 //
@@ -25,6 +24,7 @@
 #include <vector>
 
 #include "acd/decompose2d.h"
+#include "acd/decomposition_io.h"
 #include "acd/read_polygons.h"
 #include "base/input_error.h"
 
@@ -65,23 +65,12 @@ class Hasher {
   std::uint64_t hash_ = 1469598103934665603ull;
 };
 
-std::uint64_t HashOf(const acd::Decomposition2d& d) {
+// The decomposition JSON (full precision: nlohmann writes the shortest text that reads back to
+// the same double) without the time, then the hierarchy tree, which the JSON leaves out.
+std::uint64_t HashOf(acd::Decomposition2d d) {
+  d.stats.time_ms = 0;
   Hasher h;
-  h.Add(static_cast<int>(d.components.size()));
-  for (const acd::Component2d& c : d.components) {
-    h.Add(c.polygon);
-    h.Add(c.hull);
-    h.Add(c.centroid);
-    h.Add(c.concavity);
-    h.Add(c.source);
-  }
-  h.Add(static_cast<int>(d.openings.size()));
-  for (const acd::Opening2d& o : d.openings) {
-    h.Add(o.a);
-    h.Add(o.b);
-    h.Add(o.component_a);
-    h.Add(o.component_b);
-  }
+  for (const char c : acd::DecompositionToJson(d, {})) h.Add(static_cast<int>(c));
   h.Add(static_cast<int>(d.tree.size()));
   for (const acd::HierarchyNode2d& node : d.tree) {
     h.Add(node.piece);
@@ -99,10 +88,6 @@ std::uint64_t HashOf(const acd::Decomposition2d& d) {
     h.Add(node.depth);
   }
   for (const int root : d.roots) h.Add(root);
-  h.Add(d.stats.max_concavity);
-  h.Add(d.stats.convexity);
-  h.Add(d.stats.vertices);
-  h.Add(d.stats.notches);
   return h.value();
 }
 
