@@ -14,8 +14,8 @@
 #include "base/input_error.h"
 #include "base/json_number.h"
 #include "base/random.h"
-#include "base/stopwatch.h"
 #include "bench/cell_process.h"
+#include "bench/time_runs.h"
 #include "collision/collision_world.h"
 #include "collision/point_locator.h"
 #include "envs/generators.h"
@@ -85,14 +85,31 @@ BenchCollisionRow RowFromJson(const nlohmann::json& w) {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// Each rate is `count` queries over the median time of up to kPasses passes over all of them
+// (at least 3 once a pass set has used kPassBudgetMs): a single pass of a few milliseconds
+// varied by +-30% between runs on the shared machine.
+constexpr int kPasses = 7;
+constexpr double kPassBudgetMs = 1500;
+
+template <typename Pass>
+double PerSecond(size_t count, Pass&& pass) {
+  const auto timed = TimeRuns(
+      [&pass] {
+        pass();
+        return 0;
+      },
+      kPasses, kPassBudgetMs, 3);
+  return static_cast<double>(count) / (timed.median_ms / 1000);
+}
+
 template <class Pose>
 void TimeModes(const CollisionWorld& world, const std::vector<Pose>& poses,
                BenchCollisionRow* row) {
   std::vector<char> bvh(poses.size()), hulls(poses.size()), exact(poses.size());
   auto run = [&](CollisionMode mode, std::vector<char>* out) {
-    const Stopwatch stopwatch;
-    for (size_t i = 0; i < poses.size(); ++i) (*out)[i] = world.IsValid(poses[i], mode);
-    return static_cast<double>(poses.size()) / stopwatch.Seconds();
+    return PerSecond(poses.size(), [&] {
+      for (size_t i = 0; i < poses.size(); ++i) (*out)[i] = world.IsValid(poses[i], mode);
+    });
   };
   row->poses = static_cast<int>(poses.size());
   row->bvh_checks_per_s = run(CollisionMode::kBvh, &bvh);
@@ -115,9 +132,9 @@ void TimeLocation(const std::shared_ptr<const ObstacleSet>& set,
                   const std::vector<Eigen::Vector3d>& points, BenchCollisionRow* row) {
   const PointLocator hulls(set, LocateMethod::kHulls);
   std::vector<char> h(points.size()), e(points.size());
-  Stopwatch stopwatch;
-  for (size_t i = 0; i < points.size(); ++i) h[i] = hulls.Inside(points[i]);
-  row->locate_hulls_points_per_s = static_cast<double>(points.size()) / stopwatch.Seconds();
+  row->locate_hulls_points_per_s = PerSecond(points.size(), [&] {
+    for (size_t i = 0; i < points.size(); ++i) h[i] = hulls.Inside(points[i]);
+  });
   std::unique_ptr<PointLocator> exact;
   try {
     exact = std::make_unique<PointLocator>(set, LocateMethod::kExact);
@@ -127,9 +144,9 @@ void TimeLocation(const std::shared_ptr<const ObstacleSet>& set,
     row->note = error.what();
     return;
   }
-  stopwatch.Restart();
-  for (size_t i = 0; i < points.size(); ++i) e[i] = exact->Inside(points[i]);
-  row->locate_exact_points_per_s = static_cast<double>(points.size()) / stopwatch.Seconds();
+  row->locate_exact_points_per_s = PerSecond(points.size(), [&] {
+    for (size_t i = 0; i < points.size(); ++i) e[i] = exact->Inside(points[i]);
+  });
   int wrong = 0;
   for (size_t i = 0; i < points.size(); ++i) wrong += h[i] != e[i];
   row->locate_hulls_error_rate = static_cast<double>(wrong) / static_cast<double>(points.size());

@@ -1,6 +1,7 @@
 #pragma once
 // The collision benchmark behind `acdplan bench-collision`: bvh vs hulls vs hulls+exact and
-// exact vs hull point location, in one process, on the same random poses and points.
+// exact vs hull point location, in one process, on the same random poses and points. Every rate
+// is over the median time of up to 7 passes.
 
 #include <cstdint>
 #include <iosfwd>
@@ -51,8 +52,8 @@ struct BenchCollisionRow {
 /// with a disc (radius 0.2) and an L-shaped polygon robot (0.6 x 0.4), then every mesh of
 /// `options.mesh_dir` as the one obstacle of a 3D world (its box grown 10% per side) with a cube
 /// robot of side 5% of the mesh's box diagonal. Each mode is timed on one thread over the same
-/// poses; point location over the same random points in the bounds. Progress lines go to
-/// `progress` when not null.
+/// poses (after 100 ms of untimed warm-up passes, bench/time_runs.h); point location over the same
+/// random points in the bounds. Progress lines go to `progress` when not null.
 /// @throws InputError for out-of-range options or an unreadable mesh folder.
 std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& options,
                                               std::ostream* progress = nullptr);

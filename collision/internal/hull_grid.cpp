@@ -95,7 +95,7 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
     inverse_cell_size_[k] = 1 / cell_size_[k];
   }
   const size_t cell_count = static_cast<size_t>(cells_.prod());
-  covered_.assign(cell_count, 0);
+  std::vector<std::uint8_t> covered(cell_count, 0);
   std::vector<std::vector<Entry>> lists(cell_count);
   std::vector<Planes> list_planes(cell_count);
 
@@ -117,12 +117,15 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
       for (const int k : crossing) to.push_back(hull[static_cast<size_t>(k)]);
       entry.plane_end = static_cast<int>(to.size());
       lists[static_cast<size_t>(c)].push_back(entry);
-      if (crossing.empty() && !hull.empty()) covered_[static_cast<size_t>(c)] = 1;
+      if (crossing.empty() && !hull.empty()) covered[static_cast<size_t>(c)] = 1;
     }
   }
   cell_begin_.reserve(cell_count + 1);
   cell_begin_.push_back(0);
+  kinds_.assign((cell_count + 3) / 4, 0);
   for (size_t c = 0; c < cell_count; ++c) {
+    const Kind kind = covered[c] ? kCovered : lists[c].empty() ? kEmpty : kMixed;
+    kinds_[c >> 2] = static_cast<std::uint8_t>(kinds_[c >> 2] | kind << (2 * (c & 3)));
     const int offset = static_cast<int>(cell_planes_.size());
     for (Entry entry : lists[c]) {
       entry.plane_begin += offset;
@@ -155,7 +158,8 @@ bool HullGrid::EntryContains(const Entry& entry, const Eigen::Vector3d& p) const
 bool HullGrid::AnyContains(const Eigen::Vector3d& p) const {
   const int c = CellOf(p);
   if (c < 0) return false;
-  if (covered_[static_cast<size_t>(c)]) return true;
+  const Kind kind = KindOf(c);
+  if (kind != kMixed) return kind == kCovered;
   for (int k = cell_begin_[static_cast<size_t>(c)]; k < cell_begin_[static_cast<size_t>(c) + 1];
        ++k) {
     if (EntryContains(entries_[static_cast<size_t>(k)], p)) return true;
@@ -165,7 +169,7 @@ bool HullGrid::AnyContains(const Eigen::Vector3d& p) const {
 
 void HullGrid::Candidates(const Eigen::Vector3d& p, std::vector<int>* out) const {
   const int c = CellOf(p);
-  if (c < 0) return;
+  if (c < 0 || KindOf(c) == kEmpty) return;
   for (int k = cell_begin_[static_cast<size_t>(c)]; k < cell_begin_[static_cast<size_t>(c) + 1];
        ++k) {
     const Entry& entry = entries_[static_cast<size_t>(k)];
