@@ -16,7 +16,9 @@ enum class CollisionMode {
   /// more than the component); never misses one.
   kHulls,
   /// Exact: a hull hit is confirmed against that component's own triangles (and containment);
-  /// the answers equal kBvh's.
+  /// the answers equal kBvh's. No confirmation is needed when the piece is convex, or (3D) when a
+  /// corner of the robot lies in a convex polytope inside the piece (its hull with each face
+  /// moved in past the piece's pockets, internal/inner_polytope.h).
   kHullsExact,
 };
 

@@ -21,6 +21,7 @@
 #include "base/input_error.h"
 #include "collision/internal/convex_separation.h"
 #include "collision/internal/hull_grid.h"
+#include "collision/internal/inner_polytope.h"
 #include "collision/internal/mesh_building.h"
 #include "collision/internal/solid_locator.h"
 
@@ -127,6 +128,39 @@ internal::ConvexPolytope Polytope(const acd::TriangleMesh& hull) {
   return polytope;
 }
 
+/// The piece's internal::InnerPolytope(), kept when the mean of the piece's vertices is inside
+/// the obstacle. Without cavities every part of the obstacle counts +1 in its winding rule, so
+/// inside the piece's own part is inside the obstacle, and only that part's triangles bound K;
+/// with cavities, every closed part of the obstacle does.
+internal::ConvexPolytope InnerPolytopeOf(const ObstacleSet& set, const ObstaclePiece& piece,
+                                         const internal::ExactObstacleLocator& exact,
+                                         double margin) {
+  const Eigen::AlignedBox3d box(piece.box.min().array() - margin, piece.box.max().array() + margin);
+  const bool own_part_only = !exact.has_cavities(piece.obstacle);
+  std::vector<internal::Triangle3> near;
+  std::vector<int> parts;
+  for (size_t c = 0; c < set.components.size(); ++c) {
+    const ObstacleComponent& part = set.components[c];
+    if (part.obstacle != piece.obstacle || !part.closed) continue;
+    if (own_part_only && static_cast<int>(c) != piece.component) continue;
+    parts.push_back(static_cast<int>(c));
+    const acd::TriangleMesh& mesh = part.mesh;
+    for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+      internal::Triangle3 t;
+      Eigen::AlignedBox3d triangle_box;
+      for (int k = 0; k < 3; ++k) {
+        t[static_cast<size_t>(k)] = mesh.vertices.row(mesh.triangles(f, k)).transpose();
+        triangle_box.extend(t[static_cast<size_t>(k)]);
+      }
+      if (triangle_box.intersects(box)) near.push_back(t);
+    }
+  }
+  const Eigen::Vector3d center = piece.solid.vertices.colwise().mean().transpose();
+  return internal::InnerPolytope(near, piece.planes, center, margin, [&](const Eigen::Vector3d& p) {
+    return exact.InsideAmong(parts, p);
+  });
+}
+
 /// The sides of the regular polygon that stands in for a disc robot in the face-plane pre-test:
 /// circumscribed, so it contains the disc and a separation it finds is one of the disc.
 constexpr int kDiscPolygonSides = 16;
@@ -158,6 +192,10 @@ struct CollisionWorld::Impl {
   std::optional<internal::ExactObstacleLocator> exact_locator;
   std::vector<Geometry> piece_hulls;                      // fcl::Convexd
   std::vector<internal::ConvexPolytope> piece_polytopes;  // the same hulls, for the pre-test
+  // 3D kHullsExact: per piece, a polytope inside the obstacle (InnerPolytopeOf()), so that a
+  // robot vertex inside it is a hit with no confirmation; no planes where there is none (2D,
+  // pieces of open parts, pieces whose hull is exact, or none found).
+  std::vector<internal::ConvexPolytope> piece_inner;
   double margin = 0;  // the pre-test's tolerance for rounding [units]
   std::vector<std::unique_ptr<fcl::CollisionObjectd>> hull_objects;
   fcl::DynamicAABBTreeCollisionManagerd manager;
@@ -188,11 +226,13 @@ struct CollisionWorld::Impl {
   }
 
   // A hit on piece `i`'s hull is a hit on the obstacle, with no confirmation: the piece is
-  // convex (it is its hull) and, in 3D, no part of its obstacle is a cavity (inside a part of an
-  // obstacle with cavities may still be outside the obstacle).
+  // convex (it is its hull), not from a repaired part (ObstaclePiece::repaired) and, in 3D, no
+  // part of its obstacle is a cavity (inside a part of an obstacle with cavities may still be
+  // outside the obstacle).
   bool HullIsExact(const ObstacleSet& set, size_t i) const {
     const ObstaclePiece& piece = set.pieces[i];
-    return piece.convex && (piece.component < 0 || !exact_locator->has_cavities(piece.obstacle));
+    return piece.convex && !piece.repaired &&
+           (piece.component < 0 || !exact_locator->has_cavities(piece.obstacle));
   }
 };
 
@@ -317,10 +357,15 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
   std::vector<fcl::CollisionObjectd*> objects;
   std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>> planes;
   std::vector<Eigen::AlignedBox3d> boxes;
+  m.margin = 1e-12 * (1 + set.bounds.sizes().norm() + set.bounds.max().cwiseAbs().maxCoeff() +
+                      set.bounds.min().cwiseAbs().maxCoeff());
   for (size_t i = 0; i < set.pieces.size(); ++i) {
     const ObstaclePiece& piece = set.pieces[i];
     m.piece_hulls.push_back(MakeConvex(piece.hull));
     m.piece_polytopes.push_back(Polytope(piece.hull));
+    m.piece_inner.push_back(set.dimension == 3 && piece.closed && !m.HullIsExact(set, i)
+                                ? InnerPolytopeOf(set, piece, *m.exact_locator, m.margin)
+                                : internal::ConvexPolytope{});
     m.hull_objects.push_back(std::make_unique<fcl::CollisionObjectd>(m.piece_hulls.back()));
     // User data = piece index + 1; the robot's object has none.
     m.hull_objects.back()->setUserData(reinterpret_cast<void*>(i + 1));
@@ -344,11 +389,7 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
   }
   m.manager.registerObjects(objects);
   m.manager.setup();
-  const double slack =
-      1e-12 * (1 + set.bounds.sizes().norm() + set.bounds.max().cwiseAbs().maxCoeff() +
-               set.bounds.min().cwiseAbs().maxCoeff());
-  m.hull_grid = internal::HullGrid(planes, boxes, slack);
-  m.margin = slack;
+  m.hull_grid = internal::HullGrid(planes, boxes, m.margin);
 }
 
 CollisionWorld::~CollisionWorld() = default;
@@ -371,7 +412,8 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
       std::vector<int> components;
       for (int i : candidates) {
         const ObstaclePiece& piece = set.pieces[static_cast<size_t>(i)];
-        if (m.HullIsExact(set, static_cast<size_t>(i))) {  // Inside its hull is inside it.
+        if (m.HullIsExact(set, static_cast<size_t>(i)) ||  // Inside its hull is inside it.
+            internal::InsideBy(m.piece_inner[static_cast<size_t>(i)], witness, m.margin)) {
           collides = true;
           break;
         }
@@ -432,6 +474,12 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
           if (internal::SeparatedByAFacePlane(q.robot, hull, m.margin)) return false;
           if (m.polytope_on_robot && (!q.exact || m.HullIsExact(*q.set, i)) &&
               internal::AVertexInside(q.robot, hull, m.margin)) {
+            q.hit = true;
+            return true;
+          }
+          // A corner of the robot inside the piece's inner polytope is inside the obstacle.
+          if (q.exact && m.polytope_on_robot &&
+              internal::AVertexInside(q.robot, m.piece_inner[i], m.margin)) {
             q.hit = true;
             return true;
           }

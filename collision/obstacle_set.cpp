@@ -79,11 +79,12 @@ std::vector<Eigen::Vector3d> Points(const acd::TriangleMesh& mesh) {
 /// The piece of `component` (index `c` in the set) with surface `solid`: its hull (thickened when
 /// flat), planes, box and the component's triangles that may meet it.
 ObstaclePiece MakePiece(const ObstacleComponent& component, int c, acd::TriangleMesh solid,
-                        bool closed, double thickness) {
+                        bool closed, bool repaired, double thickness) {
   ObstaclePiece piece;
   piece.obstacle = component.obstacle;
   piece.component = c;
   piece.closed = closed;
+  piece.repaired = repaired;
   piece.hull = acd::ConvexHull3(Points(solid), thickness);
   piece.planes = acd::HullPlanes(piece.hull);
   for (Eigen::Index i = 0; i < piece.hull.vertices.rows(); ++i) {
@@ -136,14 +137,14 @@ void AddComponentPieces(ObstacleSet* set, int c, double tau_rel, double thicknes
     const bool surface = decomposition.stats.surface;
     (surface ? counts->surface : repaired ? counts->repaired : counts->solid)++;
     for (const acd::Component3d& piece : decomposition.components) {
-      set->pieces.push_back(MakePiece(component, c, piece.mesh, !surface, thickness));
+      set->pieces.push_back(MakePiece(component, c, piece.mesh, !surface, repaired, thickness));
     }
   } catch (const std::exception& error) {
     // Collision must not depend on the ACD succeeding: the component's hull covers it.
     ++counts->hull_only;
     set->notes.push_back(where + ": ACD did not run (" + error.what() +
                          "); its convex hull is its one piece");
-    set->pieces.push_back(MakePiece(component, c, component.mesh, false, thickness));
+    set->pieces.push_back(MakePiece(component, c, component.mesh, false, false, thickness));
   }
 }
 

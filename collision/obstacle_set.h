@@ -58,6 +58,10 @@ struct ObstaclePiece {
   /// hull, with the same orientation; both decided with exact predicates). A hull hit on a
   /// convex piece is a hit on the obstacle, with no exact confirmation.
   bool convex = false;
+  /// 3D: the piece is a solid ACD piece of a part that crossed itself and was repaired first
+  /// (into its union), so it may cover points the exact test (ray parity in each part) calls
+  /// outside: a point inside it is not taken as inside the obstacle without confirmation.
+  bool repaired = false;
   acd::TriangleMesh hull;  ///< Convex hull of `solid`, closed, faces counter-clockwise
                            ///< seen from outside.
   /// #H by 4 half-spaces (n, d) with unit outward n: the hull is { x : n . x <= d for all rows }.

@@ -36,16 +36,17 @@ bool SeparatedByAFacePlane(const ConvexPolytope& a, const ConvexPolytope& b, dou
   return OnePlaneSeparates(a, b, margin) || OnePlaneSeparates(b, a, margin);
 }
 
+bool InsideBy(const ConvexPolytope& polytope, const Eigen::Vector3d& p, double margin) {
+  if (polytope.planes.empty()) return false;
+  for (const Eigen::Vector4d& plane : polytope.planes) {
+    if (plane.head<3>().dot(p) >= plane(3) - margin) return false;
+  }
+  return true;
+}
+
 bool AVertexInside(const ConvexPolytope& a, const ConvexPolytope& b, double margin) {
   for (const Eigen::Vector3d& v : a.vertices) {
-    bool inside = true;
-    for (const Eigen::Vector4d& plane : b.planes) {
-      if (plane.head<3>().dot(v) >= plane(3) - margin) {
-        inside = false;
-        break;
-      }
-    }
-    if (inside) return true;
+    if (InsideBy(b, v, margin)) return true;
   }
   return false;
 }

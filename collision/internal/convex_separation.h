@@ -27,8 +27,12 @@ struct ConvexPolytope {
 /// stopping at the first separating plane.
 bool SeparatedByAFacePlane(const ConvexPolytope& a, const ConvexPolytope& b, double margin);
 
-/// True if some vertex of `a` lies inside `b` by more than `margin` (n . v < d - margin for
-/// every plane of `b`): the two then overlap.
+/// True if `p` is inside `polytope` by more than `margin` (n . p < d - margin for every plane);
+/// false for a polytope without planes.
+bool InsideBy(const ConvexPolytope& polytope, const Eigen::Vector3d& p, double margin);
+
+/// True if some vertex of `a` lies inside `b` by more than `margin` (InsideBy()): the two then
+/// overlap.
 bool AVertexInside(const ConvexPolytope& a, const ConvexPolytope& b, double margin);
 
 }  // namespace acdplan::collision::internal
