@@ -46,7 +46,8 @@ ConvexPolytope InnerPolytope(const std::vector<Triangle3>& surface,
     for (Eigen::Index i = 0; i < planes && best_depth > 0; ++i) {
       const Eigen::Vector3d n = hull_planes.row(i).head<3>().transpose();
       double depth = 0.0;
-      for (const Eigen::Vector3d& v : inside_hull) depth = std::max(depth, hull_planes(i, 3) - n.dot(v));
+      for (const Eigen::Vector3d& v : inside_hull)
+        depth = std::max(depth, hull_planes(i, 3) - n.dot(v));
       if (depth < best_depth) {
         best_depth = depth;
         best = i;

@@ -64,9 +64,10 @@ TEST(InnerPolytope, ACavityIsNotTakenForInside) {
   };
   std::vector<Triangle3> surface = Triangles(outer);
   const std::vector<Triangle3> inner = Triangles(cavity);
-  EXPECT_FALSE(InnerPolytope(surface, HullPlanesOf(outer), {0, 0, 0}, kMargin,
-                             [](const Eigen::Vector3d&) { return true; })
-                   .planes.empty());
+  EXPECT_FALSE(
+      InnerPolytope(surface, HullPlanesOf(outer), {0, 0, 0}, kMargin, [](const Eigen::Vector3d&) {
+        return true;
+      }).planes.empty());
   surface.insert(surface.end(), inner.begin(), inner.end());
   EXPECT_TRUE(
       InnerPolytope(surface, HullPlanesOf(outer), {0, 0, 0}, kMargin, inside).planes.empty());
@@ -93,7 +94,8 @@ TEST(InnerPolytope, NoTriangleMeetsItsInterior) {
     for (int t = 0; t < 3; ++t) {
       Triangle3 triangle;
       for (auto& v : triangle) {
-        v = Eigen::Vector3d(UniformReal(rng, -2, 2), UniformReal(rng, -2, 2), UniformReal(rng, -2, 2));
+        v = Eigen::Vector3d(UniformReal(rng, -2, 2), UniformReal(rng, -2, 2),
+                            UniformReal(rng, -2, 2));
       }
       surface.push_back(triangle);
     }
