@@ -22,7 +22,9 @@ if ! command -v clang-format >/dev/null 2>&1; then
   exit 1
 fi
 
-mapfile -t files < <(git ls-files '*.cpp' '*.h')
+# Tracked files and new ones not yet added (but not ignored ones), so a check before the first
+# commit of a file covers it.
+mapfile -t files < <(git ls-files --cached --others --exclude-standard '*.cpp' '*.h')
 if [[ $check -eq 0 ]]; then
   clang-format -i "${files[@]}"
   exit 0
