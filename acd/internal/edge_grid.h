@@ -1,6 +1,6 @@
 #pragma once
-// A uniform grid over the edges of a polygon with holes, for segment queries during Resolve.
-// Internal.
+// A uniform grid over the edges of a polygon with holes, for segment and nearest-point queries
+// during Resolve. Internal.
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,8 @@ namespace acdplan::acd::internal {
 /// may meet a segment's padded corridor at most once; it is conservative (cells are selected
 /// with one cell of slack against rounding), never exact: callers decide with exact predicates.
 /// Building is O(n + total cells covered); a query costs the cells the corridor crosses plus
-/// the edges listed there, instead of O(n) for a scan of all edges.
+/// the edges listed there, instead of O(n) for a scan of all edges. VisitRing() serves searches
+/// for the edges nearest to a point (NearestAccepted(), acd/internal/nearest_boundary.h).
 class EdgeGrid {
  public:
   /// An edge: `index` -> `index` + 1 of ring `ring` (-1: the outer ring; k >= 0: hole k).
