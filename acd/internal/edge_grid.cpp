@@ -18,6 +18,7 @@ EdgeGrid::EdgeGrid(const Polygon2d& polygon) {
       upper = upper.cwiseMax(points[i]);
     }
   }
+  magnitude_ = std::max(lower.cwiseAbs().maxCoeff(), upper.cwiseAbs().maxCoeff());
   const Point2d extent = upper - lower;
   const double edge_count = static_cast<double>(edges_.size());
   // About one cell per edge, square cells.

@@ -1,10 +1,11 @@
 #pragma once
-// A uniform grid over the edges of a polygon with holes, for segment queries during Resolve.
-// Internal.
+// A uniform grid over the edges of a polygon with holes, for segment and nearest-point queries
+// during Resolve. Internal.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "acd/polygon2d.h"
@@ -16,7 +17,8 @@ namespace acdplan::acd::internal {
 /// may meet a segment's padded corridor at most once; it is conservative (cells are selected
 /// with one cell of slack against rounding), never exact: callers decide with exact predicates.
 /// Building is O(n + total cells covered); a query costs the cells the corridor crosses plus
-/// the edges listed there, instead of O(n) for a scan of all edges.
+/// the edges listed there, instead of O(n) for a scan of all edges. VisitRing() serves searches
+/// for the edges nearest to a point (NearestAccepted(), acd/internal/nearest_boundary.h).
 class EdgeGrid {
  public:
   /// An edge: `index` -> `index` + 1 of ring `ring` (-1: the outer ring; k >= 0: hole k).
@@ -33,12 +35,24 @@ class EdgeGrid {
   template <typename Visit>
   bool AnyNear(const Point2d& a, const Point2d& b, double pad, Visit visit) const;
 
+  /// For searches that grow outward from `p` one ring of cells at a time: calls `visit(edge)`
+  /// for every edge listed in a cell at Chebyshev distance `ring` from the cell of p (ring 0:
+  /// that cell alone), once per such cell. Returns a lower bound on the distance from p to the
+  /// bounding box of every edge listed in no cell of rings 0..`ring` (the bound allows for the
+  /// rounding in assigning cells), or +infinity once those rings cover the grid. Thread-safe.
+  template <typename Visit>
+  double VisitRing(const Point2d& p, int ring, Visit visit) const;
+
+  /// The largest magnitude of a vertex coordinate: the scale of rounding noise.
+  double Magnitude() const { return magnitude_; }
+
  private:
   int Column(double x) const;
   int Row(double y) const;
 
   std::vector<Edge> edges_;
   double x0_ = 0.0, y0_ = 0.0, inverse_cell_ = 1.0;
+  double magnitude_ = 0.0;
   int columns_ = 1, rows_ = 1;
   std::vector<int> cell_begin_;  // CSR offsets into cell_edges_, columns_ * rows_ + 1 entries.
   std::vector<int> cell_edges_;
@@ -94,6 +108,38 @@ bool EdgeGrid::AnyNear(const Point2d& a, const Point2d& b, double pad, Visit vis
     }
   }
   return false;
+}
+
+template <typename Visit>
+double EdgeGrid::VisitRing(const Point2d& p, int ring, Visit visit) const {
+  const int c = Column(p.x()), r = Row(p.y());
+  const int c0 = c - ring, c1 = c + ring, r0 = r - ring, r1 = r + ring;
+  auto visit_cell = [&](int column, int row) {
+    if (column < 0 || column >= columns_ || row < 0 || row >= rows_) return;
+    const int cell = row * columns_ + column;
+    for (int k = cell_begin_[cell]; k < cell_begin_[cell + 1]; ++k) visit(edges_[cell_edges_[k]]);
+  };
+  for (int column = std::max(c0, 0); column <= std::min(c1, columns_ - 1); ++column) {
+    visit_cell(column, r0);
+    if (r1 != r0) visit_cell(column, r1);
+  }
+  for (int row = std::max(r0 + 1, 0); row <= std::min(r1 - 1, rows_ - 1); ++row) {
+    visit_cell(c0, row);
+    visit_cell(c1, row);
+  }
+  // An edge listed in no visited cell has its box in columns left of c0 (so t(x) < c0 for all
+  // its points, t(x) = (x - x0) / cell as Column() rounds it: monotone in x), right of c1, below
+  // r0 or above r1. The gap to p in cells, on each side the grid extends past the visited ones.
+  const double tx = (p.x() - x0_) * inverse_cell_, ty = (p.y() - y0_) * inverse_cell_;
+  double gap = std::numeric_limits<double>::infinity();
+  if (c0 > 0) gap = std::min(gap, tx - c0);
+  if (c1 < columns_ - 1) gap = std::min(gap, c1 + 1 - tx);
+  if (r0 > 0) gap = std::min(gap, ty - r0);
+  if (r1 < rows_ - 1) gap = std::min(gap, r1 + 1 - ty);
+  if (gap == std::numeric_limits<double>::infinity()) return gap;
+  // t is off by a few ulps of x - x0: allow a thousand times that.
+  const double slack = 1e-12 * (magnitude_ + p.cwiseAbs().maxCoeff());
+  return std::max(0.0, gap / inverse_cell_ * (1.0 - 1e-12) - slack);
 }
 
 }  // namespace acdplan::acd::internal

@@ -7,23 +7,18 @@
 #include <limits>
 #include <numeric>
 #include <optional>
-#include <tuple>
 
 #include "acd/internal/edge_grid.h"
 #include "acd/internal/exact_predicates.h"
 #include "acd/internal/is_notch.h"
+#include "acd/internal/nearest_boundary.h"
 #include "acd/internal/ring_locator.h"
 
 namespace acdplan::acd::internal {
 namespace {
 
 // A point of the boundary where a cut ends: a vertex of a ring, or a new point on an edge.
-struct Endpoint {
-  int ring = -1;  // -1: the outer ring; k >= 0: hole k.
-  int index = 0;  // The vertex, or the edge's first vertex when `on_edge`.
-  bool on_edge = false;
-  Point2d point = Point2d::Zero();
-};
+using Endpoint = BoundaryPoint;
 
 // A candidate end point of a cut with its score (higher is better).
 struct Candidate {
@@ -31,10 +26,6 @@ struct Candidate {
   double score;
   int rank = 0;  // Ranks before the score: 1 for a diagonal that must win (see ResolveOptions).
 };
-
-// Feet of perpendiculars (a hole's fallback cut ends) closer than this, relative to the edge
-// length, to an edge end are dropped: the end itself is a candidate too.
-constexpr double kMinEdgeFraction = 1e-6;
 
 const Ring2d& RingOf(const Polygon2d& polygon, int ring) {
   return ring < 0 ? polygon.outer : polygon.holes[ring];
@@ -67,8 +58,9 @@ bool IsIncident(const Endpoint& e, int ring, int edge, int n) {
 // The boundary edges a cut is tested against. Most notches are resolved by their first or
 // second candidate, so the first few queries scan the edges (one pass, a box test each), which
 // is cheaper than building the grid (several passes and allocations); the grid is built once
-// queries keep coming (a hole's fallbacks try many pairs). Both report every edge whose box
-// meets the padded box of the segment, so the cut tests that follow decide alike.
+// queries keep coming (a hole's fallbacks try many pairs), or when asked for (a hole path's
+// nearest-point searches). Both report every edge whose box meets the padded box of the
+// segment, so the cut tests that follow decide alike.
 class EdgeQuery {
  public:
   explicit EdgeQuery(const Polygon2d& polygon) : polygon_(polygon) {}
@@ -95,6 +87,11 @@ class EdgeQuery {
       }
     }
     return false;
+  }
+
+  const EdgeGrid& Grid() const {
+    if (!grid_) grid_.emplace(polygon_);
+    return *grid_;
   }
 
  private:
@@ -510,12 +507,8 @@ std::vector<Candidate> NearestCandidates(const Polygon2d& polygon, const Point2d
   const int m = static_cast<int>(outer.size());
   for (int i = 0; i < m; ++i) {
     candidates.push_back({{-1, i, false, outer[i]}, -(outer[i] - from).norm()});
-    const Point2d& p = outer[i];
-    const Point2d e = outer[Next(i, m)] - p;
-    const double s = (from - p).dot(e) / std::max(e.squaredNorm(), 1e-300);
-    if (s > kMinEdgeFraction && s < 1.0 - kMinEdgeFraction) {
-      const Point2d foot = p + s * e;
-      candidates.push_back({{-1, i, true, foot}, -(foot - from).norm()});
+    if (const std::optional<Point2d> foot = EdgeFoot(from, outer[i], outer[Next(i, m)])) {
+      candidates.push_back({{-1, i, true, *foot}, -(*foot - from).norm()});
     }
   }
   return candidates;
@@ -741,31 +734,6 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
   // hole and crossing no cut made so far; an outer end other than the first side's vertex or
   // edge (AppendOuterChain() orders ends by vertex and edge).
   auto link = [&](const Endpoint& from) -> std::optional<Endpoint> {
-    struct Near {
-      double d2;
-      Endpoint end;
-    };
-    const Ring2d& outer = polygon.outer;
-    const int m = static_cast<int>(outer.size());
-    std::vector<Near> near;
-    near.reserve(2 * outer.size() + VertexCount(polygon));
-    for (int i = 0; i < m; ++i) {
-      const Point2d& u = outer[i];
-      near.push_back({(u - from.point).squaredNorm(), {-1, i, false, u}});
-      const Point2d e = outer[Next(i, m)] - u;
-      const double s = (from.point - u).dot(e) / std::max(e.squaredNorm(), 1e-300);
-      if (s > kMinEdgeFraction && s < 1.0 - kMinEdgeFraction) {
-        const Point2d foot = u + s * e;
-        near.push_back({(foot - from.point).squaredNorm(), {-1, i, true, foot}});
-      }
-    }
-    for (int j = 0; j < k; ++j) {
-      if (crossed[j]) continue;
-      const Ring2d& hole = polygon.holes[j];
-      for (int i = 0; i < static_cast<int>(hole.size()); ++i) {
-        near.push_back({(hole[i] - from.point).squaredNorm(), {j, i, false, hole[i]}});
-      }
-    }
     auto accept = [&](const Endpoint& e) {
       if (e.ring < 0 && outer_end && e.index == outer_end->index &&
           e.on_edge == outer_end->on_edge) {
@@ -776,20 +744,9 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
       }
       return IsClearCut(polygon, grid, from, e);
     };
-    // Nearest first, ties by ring, index and kind (an order every standard library agrees on).
-    // The closest few usually include a visible one, so they are sorted a batch at a time.
-    auto closer = [](const Near& u, const Near& v) {
-      return std::tie(u.d2, u.end.ring, u.end.index, u.end.on_edge) <
-             std::tie(v.d2, v.end.ring, v.end.index, v.end.on_edge);
-    };
-    for (size_t begin = 0, batch = 16; begin < near.size(); begin += batch, batch *= 4) {
-      const auto last = near.begin() + std::min(near.size(), begin + batch);
-      std::partial_sort(near.begin() + begin, last, near.end(), closer);
-      for (auto it = near.begin() + begin; it != last; ++it) {
-        if (accept(it->end)) return it->end;
-      }
-    }
-    return std::nullopt;
+    // Nearest first, ties by ring, index and kind; outer vertices and feet on outer edges.
+    return NearestAccepted(
+        polygon, grid.Grid(), from.point, [&](int hole) { return crossed[hole] != 0; }, accept);
   };
   // One side of the path, from vertex `start` of hole h to the outer boundary: the holes
   // crossed (entered at the vertex reached, left at `leave`) and the outer end.

@@ -1,0 +1,99 @@
+#pragma once
+// The boundary points of a polygon nearest to a point, offered nearest first from an EdgeGrid
+// instead of a sort of all of them. Internal.
+
+#include <algorithm>
+#include <limits>
+#include <optional>
+#include <tuple>
+#include <vector>
+
+#include "acd/internal/edge_grid.h"
+#include "acd/polygon2d.h"
+
+namespace acdplan::acd::internal {
+
+/// A point of a polygon's boundary: vertex `index` of ring `ring` (-1: the outer ring; k >= 0:
+/// hole k), or, when `on_edge`, a new point on the edge from that vertex to the next.
+struct BoundaryPoint {
+  int ring = -1;
+  int index = 0;
+  bool on_edge = false;
+  Point2d point = Point2d::Zero();
+};
+
+/// Feet of perpendiculars closer than this, relative to the edge length, to an edge end are
+/// dropped: the end itself is a candidate too.
+inline constexpr double kMinEdgeFraction = 1e-6;
+
+/// The foot of the perpendicular from `p` on the edge u-w, if it lies inside the edge by more
+/// than kMinEdgeFraction of its length.
+inline std::optional<Point2d> EdgeFoot(const Point2d& p, const Point2d& u, const Point2d& w) {
+  const Point2d e = w - u;
+  const double s = (p - u).dot(e) / std::max(e.squaredNorm(), 1e-300);
+  if (s > kMinEdgeFraction && s < 1.0 - kMinEdgeFraction) return Point2d(u + s * e);
+  return std::nullopt;
+}
+
+/// Offers `accept(point)` the boundary points of `polygon` near `p` until it returns true, and
+/// returns the point it took (nothing if it took none). The points: every vertex of the outer
+/// ring and of each hole k with !skip_hole(k), and the EdgeFoot() of p on every outer edge. The
+/// order: that of a sort of all of them by (squared distance to p, ring, index, on_edge), a
+/// strict total order, so every standard library agrees on it. `grid` (built on `polygon`) is
+/// searched ring by ring of cells around p (EdgeGrid::VisitRing()), and a point is offered once
+/// no cell left can hold one that sorts before it: a search that ends near p costs the cells
+/// around p instead of a pass over the whole polygon; O(cells + n log n) at worst.
+template <typename SkipHole, typename Accept>
+std::optional<BoundaryPoint> NearestAccepted(const Polygon2d& polygon, const EdgeGrid& grid,
+                                             const Point2d& p, SkipHole skip_hole, Accept accept) {
+  struct Near {
+    double d2;
+    BoundaryPoint end;
+  };
+  auto key = [](const Near& a) { return std::tie(a.d2, a.end.ring, a.end.index, a.end.on_edge); };
+  auto later = [&](const Near& a, const Near& b) { return key(a) > key(b); };
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  // A foot is a few roundings off its edge's box; this allows for a thousand times that.
+  const double foot_noise = 1e-12 * std::max(grid.Magnitude(), p.cwiseAbs().maxCoeff());
+  double offered = -kInfinity;  // Every point with d2 <= offered has been offered.
+  std::vector<Near> found;      // A heap, nearest on top: points found and not offered yet.
+  auto push = [&](const Near& near) {
+    found.push_back(near);
+    std::push_heap(found.begin(), found.end(), later);
+  };
+  auto visit = [&](const EdgeGrid::Edge& edge) {
+    // Vertex `index` lies in the box of the edge leaving it, so it is found with that edge.
+    if (edge.ring >= 0 && skip_hole(edge.ring)) return;
+    const Ring2d& ring = edge.ring < 0 ? polygon.outer : polygon.holes[edge.ring];
+    const Point2d& u = ring[edge.index];
+    const double d2 = (u - p).squaredNorm();
+    if (d2 > offered) push({d2, {edge.ring, edge.index, false, u}});
+    if (edge.ring >= 0) return;
+    const int next = edge.index + 1 == static_cast<int>(ring.size()) ? 0 : edge.index + 1;
+    if (const std::optional<Point2d> foot = EdgeFoot(p, u, ring[next])) {
+      const double foot_d2 = (*foot - p).squaredNorm();
+      if (foot_d2 > offered) push({foot_d2, {-1, edge.index, true, *foot}});
+    }
+  };
+  std::optional<Near> last;  // The point offered last.
+  for (int cells = 0; offered < kInfinity; ++cells) {
+    const double reach = grid.VisitRing(p, cells, visit) - foot_noise;
+    // Points not found yet lie farther than `reach`; their rounded d2 by a few ulps less.
+    const double final_d2 = reach == kInfinity ? kInfinity
+                            : reach > 0.0      ? reach * reach * (1.0 - 1e-12)
+                                               : -1.0;
+    while (!found.empty() && found.front().d2 <= final_d2) {
+      std::pop_heap(found.begin(), found.end(), later);
+      const Near near = found.back();
+      found.pop_back();
+      // An edge listed in several cells is found as often; its copies pop one after another.
+      if (last && key(near) == key(*last)) continue;
+      if (accept(near.end)) return near.end;
+      last = near;
+    }
+    offered = std::max(offered, final_d2);
+  }
+  return std::nullopt;
+}
+
+}  // namespace acdplan::acd::internal

@@ -1,0 +1,171 @@
+// NearestAccepted: it offers exactly the points a sort of all of them would, in the same order
+// (ties by ring, index and kind), on point sets full of ties (small integer lattices), far from
+// the origin (rounding in the grid's cells), with long edges (coarse grids) and skipped holes.
+
+#include "acd/internal/nearest_boundary.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "acd/internal/edge_grid.h"
+#include "base/random.h"
+
+namespace acdplan::acd::internal {
+namespace {
+
+struct Listed {
+  double d2;
+  BoundaryPoint end;
+};
+
+auto Key(const Listed& a) { return std::tie(a.d2, a.end.ring, a.end.index, a.end.on_edge); }
+
+// Every point NearestAccepted() may offer, sorted: the definition it must match.
+std::vector<BoundaryPoint> SortedScan(const Polygon2d& polygon, const Point2d& p,
+                                      const std::vector<char>& skip) {
+  std::vector<Listed> all;
+  const int m = static_cast<int>(polygon.outer.size());
+  for (int i = 0; i < m; ++i) {
+    const Point2d& u = polygon.outer[i];
+    all.push_back({(u - p).squaredNorm(), {-1, i, false, u}});
+    if (const auto foot = EdgeFoot(p, u, polygon.outer[(i + 1) % m])) {
+      all.push_back({(*foot - p).squaredNorm(), {-1, i, true, *foot}});
+    }
+  }
+  for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
+    if (skip[k]) continue;
+    for (int i = 0; i < static_cast<int>(polygon.holes[k].size()); ++i) {
+      const Point2d& u = polygon.holes[k][i];
+      all.push_back({(u - p).squaredNorm(), {k, i, false, u}});
+    }
+  }
+  std::sort(all.begin(), all.end(),
+            [](const Listed& a, const Listed& b) { return Key(a) < Key(b); });
+  std::vector<BoundaryPoint> order;
+  for (const Listed& l : all) order.push_back(l.end);
+  return order;
+}
+
+bool Same(const BoundaryPoint& a, const BoundaryPoint& b) {
+  return a.ring == b.ring && a.index == b.index && a.on_edge == b.on_edge && a.point == b.point;
+}
+
+// Rings of random points (not simple: the grid and the search do not care): on a lattice of
+// `side` x `side` steps of `step` from `origin`, a few with far-flung vertices (long edges,
+// which coarsen the grid), or clustered in a corner (many points per cell).
+Polygon2d RandomRings(RandomEngine& rng, const Point2d& origin, double step) {
+  const int side = 2 + static_cast<int>(UniformIndex(rng, 30));
+  const int kind = static_cast<int>(UniformIndex(rng, 3));
+  auto point = [&]() {
+    Point2d q(static_cast<double>(UniformIndex(rng, side)),
+              static_cast<double>(UniformIndex(rng, side)));
+    if (kind == 1 && UniformIndex(rng, 10) == 0) q *= 40.0;  // Far out.
+    if (kind == 2 && UniformIndex(rng, 4) != 0) q *= 0.01;   // Clustered.
+    return Point2d(origin + step * q);
+  };
+  Polygon2d polygon;
+  const int n = 1 + static_cast<int>(UniformIndex(rng, 80));
+  for (int i = 0; i < n; ++i) polygon.outer.push_back(point());
+  const int holes = static_cast<int>(UniformIndex(rng, 6));
+  for (int k = 0; k < holes; ++k) {
+    polygon.holes.emplace_back();
+    const int m = 1 + static_cast<int>(UniformIndex(rng, 40));
+    for (int i = 0; i < m; ++i) polygon.holes.back().push_back(point());
+  }
+  return polygon;
+}
+
+TEST(NearestBoundaryTest, OffersEveryPointInTheOrderOfASort) {
+  RandomEngine rng(11);
+  const std::vector<std::pair<Point2d, double>> frames = {{Point2d(0.0, 0.0), 1.0},
+                                                          {Point2d(0.0, 0.0), 1e7},
+                                                          {Point2d(1e6, -3e6), 1.0},
+                                                          {Point2d(-1e9, 1e9), 0.5},
+                                                          {Point2d(0.25, 0.0), 1e-9}};
+  for (int trial = 0; trial < 300; ++trial) {
+    const auto& [origin, step] = frames[trial % frames.size()];
+    const Polygon2d polygon = RandomRings(rng, origin, step);
+    const EdgeGrid grid(polygon);
+    std::vector<char> skip(polygon.holes.size());
+    for (char& s : skip) s = UniformIndex(rng, 3) == 0 ? 1 : 0;
+    for (int q = 0; q < 10; ++q) {
+      // A vertex of some ring (as a hole path's links ask), or anywhere near the rings.
+      Point2d p;
+      if (q % 2 == 0 || polygon.holes.empty()) {
+        p = polygon.outer[UniformIndex(rng, polygon.outer.size())];
+      } else {
+        const Ring2d& hole = polygon.holes[UniformIndex(rng, polygon.holes.size())];
+        p = q % 4 == 1 ? hole[UniformIndex(rng, hole.size())]
+                       : Point2d(origin + step * Point2d(UniformReal(rng, -5.0, 40.0),
+                                                         UniformReal(rng, -5.0, 40.0)));
+      }
+      const std::vector<BoundaryPoint> expected = SortedScan(polygon, p, skip);
+      std::vector<BoundaryPoint> offered;
+      const auto none = NearestAccepted(
+          polygon, grid, p, [&](int k) { return skip[k] != 0; },
+          [&](const BoundaryPoint& b) {
+            offered.push_back(b);
+            return false;
+          });
+      EXPECT_FALSE(none.has_value());
+      ASSERT_EQ(offered.size(), expected.size()) << "trial " << trial << " query " << q;
+      for (size_t i = 0; i < expected.size(); ++i) {
+        ASSERT_TRUE(Same(offered[i], expected[i]))
+            << "trial " << trial << " query " << q << " position " << i << ": ring "
+            << offered[i].ring << " index " << offered[i].index << " instead of ring "
+            << expected[i].ring << " index " << expected[i].index;
+      }
+    }
+  }
+}
+
+TEST(NearestBoundaryTest, ReturnsTheFirstPointAccepted) {
+  RandomEngine rng(12);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Polygon2d polygon = RandomRings(rng, Point2d(3.0, -2.0), trial % 2 == 0 ? 1.0 : 1e4);
+    const EdgeGrid grid(polygon);
+    const std::vector<char> skip(polygon.holes.size(), 0);
+    const Point2d p = polygon.outer[UniformIndex(rng, polygon.outer.size())];
+    const std::vector<BoundaryPoint> expected = SortedScan(polygon, p, skip);
+    // Accept points by a rule unrelated to the distance: the first that passes it wins.
+    const std::uint64_t modulus = 1 + UniformIndex(rng, 7);
+    auto rule = [&](const BoundaryPoint& b) {
+      return static_cast<std::uint64_t>(3 * (b.ring + 1) + 5 * b.index + (b.on_edge ? 1 : 0)) %
+                 modulus ==
+             0;
+    };
+    int calls = 0;
+    const auto got = NearestAccepted(
+        polygon, grid, p, [](int) { return false; },
+        [&](const BoundaryPoint& b) {
+          ++calls;
+          return rule(b);
+        });
+    const auto first = std::find_if(expected.begin(), expected.end(), rule);
+    if (first == expected.end()) {
+      EXPECT_FALSE(got.has_value()) << "trial " << trial;
+      EXPECT_EQ(calls, static_cast<int>(expected.size()));
+    } else {
+      ASSERT_TRUE(got.has_value()) << "trial " << trial;
+      EXPECT_TRUE(Same(*got, *first)) << "trial " << trial;
+      EXPECT_EQ(calls, static_cast<int>(first - expected.begin()) + 1) << "trial " << trial;
+    }
+  }
+}
+
+TEST(NearestBoundaryTest, EdgeFootOnlyInsideTheEdge) {
+  const Point2d u(0.0, 0.0), w(4.0, 0.0);
+  ASSERT_TRUE(EdgeFoot(Point2d(1.0, 3.0), u, w).has_value());
+  EXPECT_EQ(*EdgeFoot(Point2d(1.0, 3.0), u, w), Point2d(1.0, 0.0));
+  EXPECT_FALSE(EdgeFoot(Point2d(-1.0, 3.0), u, w).has_value());  // Beyond u.
+  EXPECT_FALSE(EdgeFoot(Point2d(4.0, 1.0), u, w).has_value());   // At w.
+  EXPECT_FALSE(EdgeFoot(Point2d(1.0, 1.0), u, u).has_value());   // No edge.
+}
+
+}  // namespace
+}  // namespace acdplan::acd::internal
