@@ -84,6 +84,10 @@ if ! cmake --build "$build_dir" -j "$jobs" "${build_targets[@]}"; then
 fi
 
 log="$build_dir/ctest-summary.log"
+# Sanitizer builds run the gtest executables in shards that write gtest XML here
+# (tests/CMakeLists.txt); results of an earlier run must not be counted.
+xml_dir="$build_dir/gtest-xml"
+rm -rf "$xml_dir"
 set +e
 (cd "$build_dir" && ctest --output-on-failure --no-tests=error -j "$jobs" "${ctest_args[@]}") 2>&1 | tee "$log"
 ctest_status=${PIPESTATUS[0]}
@@ -98,6 +102,24 @@ fi
 failed=$(sed -E 's/^[0-9]+% tests passed, ([0-9]+) tests? failed.*/\1/' <<<"$summary")
 total=$(sed -E 's/.* out of ([0-9]+).*/\1/' <<<"$summary")
 passed=$((total - failed))
+if [[ -d $xml_dir ]]; then
+  # Count test cases, not shards: every shard's XML root is
+  # <testsuites tests="N" failures="F" disabled="D" errors="E" ...>; the other ctest entries
+  # (the find_package consumers) count one each. A shard that failed without writing its XML
+  # (a crash) counts as one failure.
+  read -r cases case_failed < <(cat "$xml_dir"/*.xml 2>/dev/null |
+    sed -nE 's/.*<testsuites tests="([0-9]+)" failures="([0-9]+)" disabled="[0-9]+" errors="([0-9]+)".*/\1 \2 \3/p' |
+    awk '{t += $1; f += $2 + $3} END {print t + 0, f + 0}')
+  results=$(grep -E '^ *[0-9]+/[0-9]+ Test +#[0-9]+: ' "$log" || true)
+  shards=$(grep -c '\.shard' <<<"$results" || true)
+  shards_failed=$(grep '\.shard' <<<"$results" | grep -vc ' Passed ' || true)
+  others_passed=$(grep -v '\.shard' <<<"$results" | grep -c ' Passed ' || true)
+  others_failed=$(grep -v '\.shard' <<<"$results" | grep -vc ' Passed ' || true)
+  [[ $case_failed -eq 0 ]] && case_failed=$shards_failed
+  passed=$((cases - case_failed + others_passed))
+  failed=$((case_failed + others_failed))
+  label="$label ($shards gtest shards)"
+fi
 echo "$label: $passed passed, $failed failed"
 if [[ $failed -ne 0 || $ctest_status -ne 0 ]]; then
   exit 1
