@@ -61,7 +61,9 @@ TEST(EdgeGridTest, AnyNearReportsEveryNearEdgeOnce) {
   const std::vector<std::pair<Point2d, double>> frames = {
       {Point2d(0.0, 0.0), 1.0}, {Point2d(1e6, -3e6), 1.0}, {Point2d(-1e9, 1e9), 0.5}};
   for (int trial = 0; trial < 300; ++trial) {
-    const auto& [origin, step] = frames[trial % frames.size()];
+    // Plain copies, not structured bindings: C++17 lambdas cannot capture those.
+    const Point2d origin = frames[trial % frames.size()].first;
+    const double step = frames[trial % frames.size()].second;
     const Polygon2d polygon = RandomRings(rng, origin, step);
     const EdgeGrid grid(polygon);
     for (int q = 0; q < 10; ++q) {
