@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace acdplan::acd::internal {
 
@@ -30,48 +31,61 @@ EdgeGrid::EdgeGrid(const Polygon2d& polygon) {
   x0_ = lower.x();
   y0_ = lower.y();
 
-  // Each edge's bounding box, as the cells' ranges are taken from it in every pass.
-  std::vector<Point2d> box_lower, box_upper;
-  box_lower.reserve(edges_.size());
-  box_upper.reserve(edges_.size());
-  for (const Edge& e : edges_) {
-    const Ring2d& points = e.ring < 0 ? polygon.outer : polygon.holes[e.ring];
-    const Point2d& u = points[e.index];
-    const Point2d& w = points[e.index + 1 == static_cast<int>(points.size()) ? 0 : e.index + 1];
-    box_lower.push_back(u.cwiseMin(w));
-    box_upper.push_back(u.cwiseMax(w));
-  }
+  // The cells of each edge's bounding box span the cells of its two ends: Column() and Row()
+  // are monotone, so the cell of a box corner is the least or greatest of the ends' cells. So
+  // each pass rounds every vertex once rather than every box corner.
   const int edge_total = static_cast<int>(edges_.size());
+  std::vector<int> vertex_cells(2 * edges_.size());  // Per vertex, in edge order: column, row.
+  std::vector<int> ranges(4 * edges_.size());        // Per edge: first and last column and row.
   // Long slanted edges cover many cells with their boxes: coarsen until the lists stay linear.
-  std::vector<int> ranges(4 * edges_.size());  // Per edge: first and last column and row.
   for (;; cell *= 2.0) {
     inverse_cell_ = 1.0 / cell;
     columns_ = std::clamp(static_cast<int>(extent.x() * inverse_cell_) + 1, 1, kMaxSide + 1);
     rows_ = std::clamp(static_cast<int>(extent.y() * inverse_cell_) + 1, 1, kMaxSide + 1);
+    int k = 0;
+    for (int ring = -1; ring < static_cast<int>(polygon.holes.size()); ++ring) {
+      for (const Point2d& p : ring < 0 ? polygon.outer : polygon.holes[ring]) {
+        vertex_cells[2 * k] = Column(p.x());
+        vertex_cells[2 * k + 1] = Row(p.y());
+        ++k;
+      }
+    }
     double covered = 0.0;
-    for (int k = 0; k < edge_total; ++k) {
-      int* range = &ranges[4 * k];
-      range[0] = Column(box_lower[k].x());
-      range[1] = Column(box_upper[k].x());
-      range[2] = Row(box_lower[k].y());
-      range[3] = Row(box_upper[k].y());
-      covered += (range[1] - range[0] + 1.0) * (range[3] - range[2] + 1.0);
+    for (int first = 0; first < edge_total;) {  // Ring by ring: its edges are edges_[first, last).
+      const int ring = edges_[first].ring;
+      const int last =
+          first + static_cast<int>(ring < 0 ? polygon.outer.size() : polygon.holes[ring].size());
+      for (int e = first; e < last; ++e) {
+        const int* u = &vertex_cells[2 * e];
+        const int* w = &vertex_cells[2 * (e + 1 == last ? first : e + 1)];
+        int* range = &ranges[4 * e];
+        std::tie(range[0], range[1]) = std::minmax(u[0], w[0]);
+        std::tie(range[2], range[3]) = std::minmax(u[1], w[1]);
+        covered += (range[1] - range[0] + 1.0) * (range[3] - range[2] + 1.0);
+      }
+      first = last;
     }
     if (covered <= 16.0 * edge_count || (columns_ == 1 && rows_ == 1)) break;
   }
-  auto for_each_cell = [&](int k, auto f) {
+  // Local copies: the compiler cannot keep members in registers across stores through int
+  // pointers (they may alias columns_).
+  const int columns = columns_;
+  auto for_each_cell = [&ranges, columns](int k, auto f) {
     const int* range = &ranges[4 * k];
     for (int r = range[2]; r <= range[3]; ++r) {
-      for (int c = range[0]; c <= range[1]; ++c) f(r * columns_ + c);
+      for (int c = range[0]; c <= range[1]; ++c) f(r * columns + c);
     }
   };
   cell_begin_.assign(static_cast<size_t>(columns_) * rows_ + 1, 0);
-  for (int k = 0; k < edge_total; ++k) for_each_cell(k, [&](int cell) { ++cell_begin_[cell + 1]; });
+  int* const count = cell_begin_.data() + 1;
+  for (int k = 0; k < edge_total; ++k) for_each_cell(k, [count](int cell) { ++count[cell]; });
   for (size_t i = 1; i < cell_begin_.size(); ++i) cell_begin_[i] += cell_begin_[i - 1];
   cell_edges_.resize(cell_begin_.back());
   std::vector<int> fill(cell_begin_.begin(), cell_begin_.end() - 1);
+  int* const next = fill.data();
+  int* const listed = cell_edges_.data();
   for (int k = 0; k < edge_total; ++k) {
-    for_each_cell(k, [&](int cell) { cell_edges_[fill[cell]++] = k; });
+    for_each_cell(k, [next, listed, k](int cell) { listed[next[cell]++] = k; });
   }
   stamp_.assign(edges_.size(), 0);
 }

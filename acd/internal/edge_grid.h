@@ -60,14 +60,16 @@ class EdgeGrid {
   mutable std::uint32_t query_ = 0;
 };
 
+// floor((x - x0) / cell) clamped to the grid: clamped first, the value is >= 0, where the
+// conversion's truncation is the floor (and far cheaper than std::floor without SSE4.1).
 inline int EdgeGrid::Column(double x) const {
-  const double c = std::floor((x - x0_) * inverse_cell_);
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(columns_ - 1)));
+  return static_cast<int>(
+      std::clamp((x - x0_) * inverse_cell_, 0.0, static_cast<double>(columns_ - 1)));
 }
 
 inline int EdgeGrid::Row(double y) const {
-  const double r = std::floor((y - y0_) * inverse_cell_);
-  return static_cast<int>(std::clamp(r, 0.0, static_cast<double>(rows_ - 1)));
+  return static_cast<int>(
+      std::clamp((y - y0_) * inverse_cell_, 0.0, static_cast<double>(rows_ - 1)));
 }
 
 template <typename Visit>
