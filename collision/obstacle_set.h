@@ -56,7 +56,8 @@ struct ObstaclePiece {
   /// `solid` is convex, so it equals `hull` (2D: every vertex of the component is a strict
   /// vertex of its hull; 3D: a closed piece every face of which lies in a facet plane of its
   /// hull, with the same orientation; both decided with exact predicates). A hull hit on a
-  /// convex piece is a hit on the obstacle, with no exact confirmation.
+  /// convex piece is a hit on the obstacle, with no exact confirmation (unless `repaired`, or its
+  /// obstacle has cavities).
   bool convex = false;
   /// 3D: the piece is a solid ACD piece of a part that crossed itself and was repaired first
   /// (into its union), so it may cover points the exact test (ray parity in each part) calls
