@@ -78,23 +78,28 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
                    const std::vector<Eigen::AlignedBox3d>& boxes, double slack)
     : hull_count_(static_cast<int>(planes.size())) {
   std::vector<Eigen::AlignedBox3d> loose = boxes;
+  Eigen::AlignedBox3d bounds;
   for (auto& box : loose) {
     box.min().array() -= slack;
     box.max().array() += slack;
-    bounds_.extend(box);
+    bounds.extend(box);
   }
   if (loose.empty()) return;
 
   // Cells about cubic: edge h with (extent / h) cells per axis, about kTargetCells in all; an
   // extent of zero (a flat set of hulls) gets one cell on that axis.
-  const Eigen::Vector3d extent = bounds_.sizes().cwiseMax(1e-300);
+  const Eigen::Vector3d extent = bounds.sizes().cwiseMax(1e-300);
   const double h = std::cbrt(extent.prod() / kTargetCells);
+  Eigen::Vector3i cells;  // per axis, inside the border
   for (int k = 0; k < 3; ++k) {
-    cells_[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / h)), 1, kTargetCells);
-    cell_size_[k] = extent[k] / cells_[k];
+    cells[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / h)), 1, kTargetCells);
+    cell_size_[k] = extent[k] / cells[k];
     inverse_cell_size_[k] = 1 / cell_size_[k];
   }
-  const size_t cell_count = static_cast<size_t>(cells_.prod());
+  origin_ = bounds.min() - cell_size_;
+  dims_ = cells + Eigen::Vector3i::Constant(2);
+  last_cell_ = (dims_ - Eigen::Vector3i::Ones()).cast<double>();
+  const size_t cell_count = static_cast<size_t>(cells.prod());
   std::vector<std::uint8_t> covered(cell_count, 0);
   std::vector<std::vector<Entry>> lists(cell_count);
   std::vector<Planes> list_planes(cell_count);
@@ -107,10 +112,10 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
       hull.push_back(plane);
     }
     std::vector<std::pair<int, std::vector<int>>> reached;
-    HullSorter sorter{hull, loose[i], slack, bounds_.min(), cell_size_, cells_, &reached};
+    HullSorter sorter{hull, loose[i], slack, bounds.min(), cell_size_, cells, &reached};
     std::vector<int> all(hull.size());
     for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-    sorter.Sort(Eigen::Vector3i::Zero(), cells_ - Eigen::Vector3i::Ones(), all);
+    sorter.Sort(Eigen::Vector3i::Zero(), cells - Eigen::Vector3i::Ones(), all);
     for (const auto& [c, crossing] : reached) {
       Planes& to = list_planes[static_cast<size_t>(c)];
       Entry entry{static_cast<int>(i), static_cast<int>(to.size()), 0};
@@ -120,31 +125,100 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
       if (crossing.empty() && !hull.empty()) covered[static_cast<size_t>(c)] = 1;
     }
   }
-  cell_begin_.reserve(cell_count + 1);
-  cell_begin_.push_back(0);
-  kinds_.assign((cell_count + 3) / 4, 0);
+
+  // The padded grid: cell (x, y, z) inside the border is (x + 1, y + 1, z + 1).
+  const size_t padded_count = static_cast<size_t>(dims_.prod());
+  std::vector<size_t> inner_of(padded_count, cell_count);  // cell_count: a border cell
   for (size_t c = 0; c < cell_count; ++c) {
-    const Kind kind = covered[c] ? kCovered : lists[c].empty() ? kEmpty : kMixed;
-    kinds_[c >> 2] = static_cast<std::uint8_t>(kinds_[c >> 2] | kind << (2 * (c & 3)));
-    const int offset = static_cast<int>(cell_planes_.size());
-    for (Entry entry : lists[c]) {
-      entry.plane_begin += offset;
-      entry.plane_end += offset;
-      entries_.push_back(entry);
+    const size_t x = c % static_cast<size_t>(cells.x());
+    const size_t y = c / static_cast<size_t>(cells.x()) % static_cast<size_t>(cells.y());
+    const size_t z = c / static_cast<size_t>(cells.x() * cells.y());
+    inner_of[((z + 1) * static_cast<size_t>(dims_.y()) + y + 1) * static_cast<size_t>(dims_.x()) +
+             x + 1] = c;
+  }
+  kinds_.assign((padded_count + 31) / 32, 0);
+  cell_begin_.reserve(padded_count + 1);
+  cell_begin_.push_back(0);
+  for (size_t padded = 0; padded < padded_count; ++padded) {
+    const size_t c = inner_of[padded];
+    if (c < cell_count) {
+      const Kind kind = covered[c] ? kCovered : lists[c].empty() ? kEmpty : kMixed;
+      kinds_[padded >> 5] |= static_cast<std::uint64_t>(kind) << (2 * (padded & 31));
+      const int offset = static_cast<int>(cell_planes_.size());
+      for (Entry entry : lists[c]) {
+        entry.plane_begin += offset;
+        entry.plane_end += offset;
+        entries_.push_back(entry);
+      }
+      cell_planes_.insert(cell_planes_.end(), list_planes[c].begin(), list_planes[c].end());
     }
-    cell_planes_.insert(cell_planes_.end(), list_planes[c].begin(), list_planes[c].end());
     cell_begin_.push_back(static_cast<int>(entries_.size()));
+  }
+  // The subcells of the mixed cells, their boxes grown by the slack as the cells' were in
+  // HullSorter::Sort.
+  mixed_before_.reserve(kinds_.size());
+  int mixed = 0;
+  for (const std::uint64_t word : kinds_) {
+    mixed_before_.push_back(mixed);
+    mixed += __builtin_popcountll(word & kMixedBits);
+  }
+  mixed_subcells_.reserve(static_cast<size_t>(mixed));
+  const Eigen::Vector3d sub_size = cell_size_ / kSubcells;
+  for (size_t padded = 0; padded < padded_count; ++padded) {
+    if (KindOf(static_cast<int>(padded)) != kMixed) continue;
+    SubcellKinds& sub_kinds = mixed_subcells_.emplace_back();
+    const Eigen::Vector3d corner =
+        origin_ +
+        Eigen::Vector3i(static_cast<int>(padded % static_cast<size_t>(dims_.x())),
+                        static_cast<int>(padded / static_cast<size_t>(dims_.x()) %
+                                         static_cast<size_t>(dims_.y())),
+                        static_cast<int>(padded / static_cast<size_t>(dims_.x() * dims_.y())))
+            .cast<double>()
+            .cwiseProduct(cell_size_);
+    for (int s = 0; s < kSubcells * kSubcells * kSubcells; ++s) {
+      const Eigen::Vector3d at =
+          Eigen::Vector3i(s % kSubcells, s / kSubcells % kSubcells, s / (kSubcells * kSubcells))
+              .cast<double>();
+      const Eigen::Vector3d lo =
+          corner + at.cwiseProduct(sub_size) - Eigen::Vector3d::Constant(slack);
+      const Eigen::Vector3d hi = corner + (at + Eigen::Vector3d::Ones()).cwiseProduct(sub_size) +
+                                 Eigen::Vector3d::Constant(slack);
+      const Kind sub_kind = ClassifyBox(static_cast<int>(padded), lo, hi, slack);
+      sub_kinds.words[s >> 5] |= static_cast<std::uint64_t>(sub_kind) << (2 * (s & 31));
+    }
   }
 }
 
-int HullGrid::CellOf(const Eigen::Vector3d& p) const {
-  if (cell_begin_.empty() || !bounds_.contains(p)) return -1;
-  int index[3];
-  for (int k = 0; k < 3; ++k) {
-    index[k] = std::clamp(static_cast<int>((p[k] - bounds_.min()[k]) * inverse_cell_size_[k]), 0,
-                          cells_[k] - 1);
+HullGrid::Kind HullGrid::ClassifyBox(int cell, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                                     double slack) const {
+  // As HullSorter::Sort: a plane (d + slack) with the whole box beyond it by another slack
+  // excludes its hull; one that holds on all of the box by a slack drops out.
+  bool reached = false;
+  for (int e = cell_begin_[static_cast<size_t>(cell)];
+       e < cell_begin_[static_cast<size_t>(cell) + 1]; ++e) {
+    const Entry& entry = entries_[static_cast<size_t>(e)];
+    bool excluded = false, holds = true;
+    for (int k = entry.plane_begin; k < entry.plane_end && !excluded; ++k) {
+      const Eigen::Vector3d n = cell_planes_[static_cast<size_t>(k)].head<3>();
+      const double d = cell_planes_[static_cast<size_t>(k)](3);
+      excluded = MinOver(n, lo, hi) > d + slack;
+      holds = holds && MaxOver(n, lo, hi) <= d - slack;
+    }
+    if (excluded) continue;
+    if (holds) return kCovered;
+    reached = true;
   }
-  return (index[2] * cells_.y() + index[1]) * cells_.x() + index[0];
+  return reached ? kMixed : kEmpty;
+}
+
+int HullGrid::SubcellOf(const Location& at) {
+  // Only asked of cells some hull reaches, which are inside the border: scaled >= 1.
+  int s = 0;
+  for (int k = 2; k >= 0; --k) {
+    const double fraction = at.scaled[k] - static_cast<int>(at.scaled[k]);
+    s = s * kSubcells + std::clamp(static_cast<int>(fraction * kSubcells), 0, kSubcells - 1);
+  }
+  return s;
 }
 
 bool HullGrid::EntryContains(const Entry& entry, const Eigen::Vector3d& p) const {
@@ -155,23 +229,22 @@ bool HullGrid::EntryContains(const Entry& entry, const Eigen::Vector3d& p) const
   return true;
 }
 
-bool HullGrid::AnyContains(const Eigen::Vector3d& p) const {
-  const int c = CellOf(p);
-  if (c < 0) return false;
-  const Kind kind = KindOf(c);
-  if (kind != kMixed) return kind == kCovered;
-  for (int k = cell_begin_[static_cast<size_t>(c)]; k < cell_begin_[static_cast<size_t>(c) + 1];
-       ++k) {
+bool HullGrid::MixedContains(const Location& at, const Eigen::Vector3d& p) const {
+  const Kind sub = SubcellKindOf(at);
+  if (sub != kMixed) return sub == kCovered;
+  const size_t c = static_cast<size_t>(at.cell);
+  for (int k = cell_begin_[c]; k < cell_begin_[c + 1]; ++k) {
     if (EntryContains(entries_[static_cast<size_t>(k)], p)) return true;
   }
   return false;
 }
 
 void HullGrid::Candidates(const Eigen::Vector3d& p, std::vector<int>* out) const {
-  const int c = CellOf(p);
-  if (c < 0 || KindOf(c) == kEmpty) return;
-  for (int k = cell_begin_[static_cast<size_t>(c)]; k < cell_begin_[static_cast<size_t>(c) + 1];
-       ++k) {
+  const Location at = Locate(p);
+  const Kind kind = KindOf(at.cell);
+  if (kind == kEmpty || (kind == kMixed && SubcellKindOf(at) == kEmpty)) return;
+  const size_t c = static_cast<size_t>(at.cell);
+  for (int k = cell_begin_[c]; k < cell_begin_[c + 1]; ++k) {
     const Entry& entry = entries_[static_cast<size_t>(k)];
     if (EntryContains(entry, p)) out->push_back(entry.hull);
   }

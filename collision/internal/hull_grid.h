@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -14,11 +15,13 @@ namespace acdplan::collision::internal {
 /// plane of theirs has the whole cell outside), each with only the planes that cross the cell
 /// (the others hold on all of it). A cell inside one hull is *covered* and a cell no hull reaches
 /// is *empty*: one lookup in a 2-bit-per-cell array (16 KiB, so it stays in the L1 cache under
-/// random queries) answers their points; elsewhere a query tests a few planes of a few hulls. The
-/// answers equal the plain test "n . p <= d + slack for every plane of some hull", up to rounding
-/// at that boundary. Build O(planes x cells met by each hull's surface), by halving blocks of cells
-/// that a plane crosses; a query O(listed planes of its cell). Immutable after construction;
-/// queries are thread-safe.
+/// random queries) answers their points. The other, *mixed* cells (where hull surfaces pass) are
+/// cut again into 4 x 4 x 4 subcells, each empty, covered or mixed in a 128-bit mask, so that
+/// most of their points are answered without a plane test too; only a point of a mixed subcell
+/// tests a few planes of a few hulls. The answers equal the plain test "n . p <= d + slack for
+/// every plane of some hull", up to rounding at that boundary. Build O(planes x cells met by each
+/// hull's surface), by halving blocks of cells that a plane crosses; a query O(listed planes of
+/// its cell). Immutable after construction; queries are thread-safe.
 class HullGrid {
  public:
   HullGrid() = default;
@@ -28,8 +31,12 @@ class HullGrid {
   HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& planes,
            const std::vector<Eigen::AlignedBox3d>& boxes, double slack);
 
-  /// True if some hull contains `p`.
-  bool AnyContains(const Eigen::Vector3d& p) const;
+  /// True if some hull contains `p`. Inline: most points are answered by one lookup.
+  bool AnyContains(const Eigen::Vector3d& p) const {
+    const Location at = Locate(p);
+    const Kind kind = KindOf(at.cell);
+    return kind == kMixed ? MixedContains(at, p) : kind == kCovered;
+  }
 
   /// Appends to `out` every hull that contains `p`, in increasing order.
   void Candidates(const Eigen::Vector3d& p, std::vector<int>* out) const;
@@ -45,21 +52,71 @@ class HullGrid {
     int hull = 0;
     int plane_begin = 0, plane_end = 0;  // into cell_planes_
   };
-  /// What a cell holds, 2 bits per cell in kinds_.
+  /// What a cell or a subcell holds, 2 bits each.
   enum Kind : std::uint8_t { kEmpty = 0, kCovered = 1, kMixed = 2 };
-  // The cell of `p`, or -1 outside the grid.
-  int CellOf(const Eigen::Vector3d& p) const;
-  Kind KindOf(int cell) const {
-    return static_cast<Kind>((kinds_[static_cast<size_t>(cell) >> 2] >> (2 * (cell & 3))) & 3);
+  /// Subcells per axis of a cell; 4^3 of them, 2 bits each, fill a SubcellKinds.
+  static constexpr int kSubcells = 4;
+  /// The kinds of a cell's subcells: subcell s at bits 2 (s mod 32) of word s / 32, with
+  /// s = (z kSubcells + y) kSubcells + x (all empty in an empty cell, all covered in a covered
+  /// one).
+  struct SubcellKinds {
+    std::uint64_t words[2] = {0, 0};
+  };
+  /// Where a point lies: its cell, and its coordinates in cell units (for its subcell, found
+  /// only when needed).
+  struct Location {
+    int cell = 0;
+    double scaled[3] = {0, 0, 0};
+  };
+  // Without a branch on where `p` is (the bench's points fall inside and outside the grid at
+  // random): a point outside the hulls' box clamps into the grid's border of empty cells, and
+  // so does NaN (std::min and std::max return their first argument then).
+  Location Locate(const Eigen::Vector3d& p) const {
+    Location at;
+    for (int k = 2; k >= 0; --k) {
+      at.scaled[k] = (p[k] - origin_[k]) * inverse_cell_size_[k];
+      const int i = static_cast<int>(std::max(0.0, std::min(at.scaled[k], last_cell_[k])));
+      at.cell = at.cell * dims_[k] + i;
+    }
+    return at;
   }
+  static int SubcellOf(const Location& at);
+  bool MixedContains(const Location& at, const Eigen::Vector3d& p) const;
+  Kind KindOf(int cell) const {
+    return static_cast<Kind>((kinds_[static_cast<size_t>(cell) >> 5] >> (2 * (cell & 31))) & 3);
+  }
+  // The subcell kind of `at`, in a mixed cell. Mixed cells are numbered in cell order: the
+  // mixed cells before `at.cell` are those of the earlier words of kinds_ plus the mixed bits
+  // (the high bit of a cell's two) below it in its own word.
+  Kind SubcellKindOf(const Location& at) const {
+    const size_t c = static_cast<size_t>(at.cell);
+    const std::uint64_t below = (std::uint64_t{1} << (2 * (c & 31))) - 1;
+    const size_t mixed_index =
+        mixed_before_[c >> 5] +
+        static_cast<size_t>(__builtin_popcountll(kinds_[c >> 5] & below & kMixedBits));
+    const int s = SubcellOf(at);
+    return static_cast<Kind>((mixed_subcells_[mixed_index].words[s >> 5] >> (2 * (s & 31))) & 3);
+  }
+  // The kind of the box [lo, hi] (already grown by `slack`) for the hulls of cell `cell`.
+  Kind ClassifyBox(int cell, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                   double slack) const;
   bool EntryContains(const Entry& entry, const Eigen::Vector3d& p) const;
 
   int hull_count_ = 0;
-  Eigen::AlignedBox3d bounds_;  // the grid: the hulls' boxes, loosened by the slack
+  // The grid: the hulls' boxes (loosened by the slack) cut into cells, plus one border layer of
+  // empty cells around them. With no hull it is one empty cell.
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  // the border's lowest corner
   Eigen::Vector3d cell_size_ = Eigen::Vector3d::Ones();
   Eigen::Vector3d inverse_cell_size_ = Eigen::Vector3d::Ones();
-  Eigen::Vector3i cells_ = Eigen::Vector3i::Zero();  // per axis
-  std::vector<std::uint8_t> kinds_;                  // a Kind per cell, four cells a byte
+  Eigen::Vector3i dims_ = Eigen::Vector3i::Ones();       // cells per axis, border included
+  Eigen::Vector3d last_cell_ = Eigen::Vector3d::Zero();  // dims_ - 1
+  // A Kind per cell, 32 cells a word: small enough for the L1 cache under random queries.
+  std::vector<std::uint64_t> kinds_ = std::vector<std::uint64_t>(1, 0);
+  static constexpr std::uint64_t kMixedBits = 0xAAAAAAAAAAAAAAAAu;  // the kMixed bit of each
+  std::vector<int> mixed_before_;  // per word of kinds_: the mixed cells in earlier words
+  // The subcells of the mixed cells only, in cell order (a few hundred KiB: a point of a mixed
+  // cell reads one entry, mostly from the L2 cache).
+  std::vector<SubcellKinds> mixed_subcells_;
   std::vector<int> cell_begin_;  // entries of cell c: entries_[begin[c], begin[c + 1])
   std::vector<Entry> entries_;
   std::vector<Eigen::Vector4d, Eigen::aligned_allocator<Eigen::Vector4d>>

@@ -17,6 +17,7 @@ using Planes = Eigen::Matrix<double, Eigen::Dynamic, 4>;
 struct RandomHulls {
   std::vector<Planes> planes;
   std::vector<Eigen::AlignedBox3d> boxes;
+  std::vector<acd::TriangleMesh> meshes;
 };
 
 RandomHulls MakeHulls(int count, std::uint64_t seed) {
@@ -41,6 +42,7 @@ RandomHulls MakeHulls(int count, std::uint64_t seed) {
       box.extend(Eigen::Vector3d(hull.vertices.row(i).transpose()));
     }
     out.boxes.push_back(box);
+    out.meshes.push_back(hull);
   }
   return out;
 }
@@ -75,6 +77,50 @@ TEST(HullGrid, AnswersAsThePlainTestOnEveryHull) {
       inside += !expected.empty();
     }
     EXPECT_GT(inside, 100);  // the test sees points inside as well as outside
+  }
+}
+
+TEST(HullGrid, AnswersAsThePlainTestNearHullSurfaces) {
+  // Points on the hulls' faces and just off them (along the face normal, both ways): where the
+  // cells and their subcells are mixed. A point on a face is inside (the slack keeps it).
+  const double slack = 1e-12;
+  for (int count : {1, 7, 120}) {
+    SCOPED_TRACE(count);
+    const RandomHulls hulls = MakeHulls(count, 71 + static_cast<std::uint64_t>(count));
+    const HullGrid grid(hulls.planes, hulls.boxes, slack);
+    RandomEngine rng(9);
+    int inside = 0, outside = 0;
+    for (int i = 0; i < 100000; ++i) {
+      const acd::TriangleMesh& mesh =
+          hulls.meshes[static_cast<size_t>(UniformReal(rng, 0.0, count - 1e-9))];
+      const Eigen::Index f =
+          static_cast<Eigen::Index>(UniformReal(rng, 0.0, mesh.triangles.rows() - 1e-9));
+      const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0)).transpose();
+      const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1)).transpose();
+      const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2)).transpose();
+      double u = UniformReal(rng, 0.0, 1.0), v = UniformReal(rng, 0.0, 1.0);
+      if (u + v > 1) {
+        u = 1 - u;
+        v = 1 - v;
+      }
+      Eigen::Vector3d p = a + u * (b - a) + v * (c - a);
+      const bool on_face = i % 4 == 0;
+      if (!on_face) p += UniformReal(rng, -0.02, 0.02) * (b - a).cross(c - a).normalized();
+      std::vector<int> expected;
+      for (int h = 0; h < count; ++h) {
+        if (PlainContains(hulls.planes[static_cast<size_t>(h)], p, slack)) expected.push_back(h);
+      }
+      std::vector<int> found;
+      grid.Candidates(p, &found);
+      ASSERT_EQ(found, expected) << p.transpose();
+      ASSERT_EQ(grid.AnyContains(p), !expected.empty()) << p.transpose();
+      if (on_face) {
+        ASSERT_TRUE(grid.AnyContains(p)) << p.transpose();
+      }
+      ++(expected.empty() ? outside : inside);
+    }
+    EXPECT_GT(inside, 10000);
+    EXPECT_GT(outside, 10000);
   }
 }
 
