@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/random.h"
+#include "tests/polygon_fixtures.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -33,29 +34,6 @@ bool ClearlyCross(const Point2d& a, const Point2d& b, const Point2d& c, const Po
   return t1 * t2 < 0 && t3 * t4 < 0;
 }
 
-// Rings of random points on a lattice of `side` steps from `origin`: plain, with far-flung
-// vertices (long edges), or clustered in a corner (many edges per cell).
-Polygon2d RandomRings(RandomEngine& rng, const Point2d& origin, double step) {
-  const int side = 2 + static_cast<int>(UniformIndex(rng, 30));
-  const int kind = static_cast<int>(UniformIndex(rng, 3));
-  auto point = [&]() {
-    Point2d q(UniformReal(rng, 0.0, side), UniformReal(rng, 0.0, side));
-    if (kind == 1 && UniformIndex(rng, 10) == 0) q *= 40.0;
-    if (kind == 2 && UniformIndex(rng, 4) != 0) q *= 0.01;
-    return Point2d(origin + step * q);
-  };
-  Polygon2d polygon;
-  const int n = 3 + static_cast<int>(UniformIndex(rng, 80));
-  for (int i = 0; i < n; ++i) polygon.outer.push_back(point());
-  const int holes = static_cast<int>(UniformIndex(rng, 5));
-  for (int k = 0; k < holes; ++k) {
-    polygon.holes.emplace_back();
-    const int m = 3 + static_cast<int>(UniformIndex(rng, 30));
-    for (int i = 0; i < m; ++i) polygon.holes.back().push_back(point());
-  }
-  return polygon;
-}
-
 TEST(EdgeGridTest, AnyNearReportsEveryNearEdgeOnce) {
   RandomEngine rng(21);
   const std::vector<std::pair<Point2d, double>> frames = {
@@ -64,7 +42,7 @@ TEST(EdgeGridTest, AnyNearReportsEveryNearEdgeOnce) {
     // Plain copies, not structured bindings: C++17 lambdas cannot capture those.
     const Point2d origin = frames[trial % frames.size()].first;
     const double step = frames[trial % frames.size()].second;
-    const Polygon2d polygon = RandomRings(rng, origin, step);
+    const Polygon2d polygon = test::RandomRings(rng, origin, step, false);
     const EdgeGrid grid(polygon);
     for (int q = 0; q < 10; ++q) {
       auto anywhere = [&]() {
@@ -110,7 +88,7 @@ TEST(EdgeGridTest, AnyNearReportsEveryNearEdgeOnce) {
 TEST(EdgeGridTest, AnyNearStopsAtTheFirstEdgeTaken) {
   RandomEngine rng(22);
   for (int trial = 0; trial < 100; ++trial) {
-    const Polygon2d polygon = RandomRings(rng, Point2d(2.0, 7.0), 3.0);
+    const Polygon2d polygon = test::RandomRings(rng, Point2d(2.0, 7.0), 3.0, false);
     const EdgeGrid grid(polygon);
     const Point2d a = polygon.outer.front();
     const Point2d b = polygon.outer[polygon.outer.size() / 2];

@@ -14,6 +14,7 @@
 
 #include "acd/internal/edge_grid.h"
 #include "base/random.h"
+#include "tests/polygon_fixtures.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -55,31 +56,6 @@ bool Same(const BoundaryPoint& a, const BoundaryPoint& b) {
   return a.ring == b.ring && a.index == b.index && a.on_edge == b.on_edge && a.point == b.point;
 }
 
-// Rings of random points (not simple: the grid and the search do not care): on a lattice of
-// `side` x `side` steps of `step` from `origin`, a few with far-flung vertices (long edges,
-// which coarsen the grid), or clustered in a corner (many points per cell).
-Polygon2d RandomRings(RandomEngine& rng, const Point2d& origin, double step) {
-  const int side = 2 + static_cast<int>(UniformIndex(rng, 30));
-  const int kind = static_cast<int>(UniformIndex(rng, 3));
-  auto point = [&]() {
-    Point2d q(static_cast<double>(UniformIndex(rng, side)),
-              static_cast<double>(UniformIndex(rng, side)));
-    if (kind == 1 && UniformIndex(rng, 10) == 0) q *= 40.0;  // Far out.
-    if (kind == 2 && UniformIndex(rng, 4) != 0) q *= 0.01;   // Clustered.
-    return Point2d(origin + step * q);
-  };
-  Polygon2d polygon;
-  const int n = 1 + static_cast<int>(UniformIndex(rng, 80));
-  for (int i = 0; i < n; ++i) polygon.outer.push_back(point());
-  const int holes = static_cast<int>(UniformIndex(rng, 6));
-  for (int k = 0; k < holes; ++k) {
-    polygon.holes.emplace_back();
-    const int m = 1 + static_cast<int>(UniformIndex(rng, 40));
-    for (int i = 0; i < m; ++i) polygon.holes.back().push_back(point());
-  }
-  return polygon;
-}
-
 TEST(NearestBoundaryTest, OffersEveryPointInTheOrderOfASort) {
   RandomEngine rng(11);
   const std::vector<std::pair<Point2d, double>> frames = {{Point2d(0.0, 0.0), 1.0},
@@ -89,7 +65,7 @@ TEST(NearestBoundaryTest, OffersEveryPointInTheOrderOfASort) {
                                                           {Point2d(0.25, 0.0), 1e-9}};
   for (int trial = 0; trial < 300; ++trial) {
     const auto& [origin, step] = frames[trial % frames.size()];
-    const Polygon2d polygon = RandomRings(rng, origin, step);
+    const Polygon2d polygon = test::RandomRings(rng, origin, step, true);
     const EdgeGrid grid(polygon);
     std::vector<char> skip(polygon.holes.size());
     for (char& s : skip) s = UniformIndex(rng, 3) == 0 ? 1 : 0;
@@ -127,7 +103,8 @@ TEST(NearestBoundaryTest, OffersEveryPointInTheOrderOfASort) {
 TEST(NearestBoundaryTest, ReturnsTheFirstPointAccepted) {
   RandomEngine rng(12);
   for (int trial = 0; trial < 200; ++trial) {
-    const Polygon2d polygon = RandomRings(rng, Point2d(3.0, -2.0), trial % 2 == 0 ? 1.0 : 1e4);
+    const Polygon2d polygon =
+        test::RandomRings(rng, Point2d(3.0, -2.0), trial % 2 == 0 ? 1.0 : 1e4, true);
     const EdgeGrid grid(polygon);
     const std::vector<char> skip(polygon.holes.size(), 0);
     const Point2d p = polygon.outer[UniformIndex(rng, polygon.outer.size())];
