@@ -194,22 +194,20 @@ class BisectorRay {
     v_ = ring[r];
     d_ = (v_ - ring[Prev(r, n)]).normalized() + (v_ - ring[Next(r, n)]).normalized();
     valid_ = d_.squaredNorm() >= 1e-24;
-    d_l1_ = std::abs(d_.x()) + std::abs(d_.y());
+    noise_per_l1_ = 1e-9 * (std::abs(d_.x()) + std::abs(d_.y()));
   }
 
   // Whether the ray has a direction (else it hits nothing).
   bool Valid() const { return valid_; }
   const Point2d& From() const { return v_; }
 
-  // Which side of the ray's line p lies on (the sign), and a bound far above (1e-9 relative)
-  // the rounding of that value and of RayEdgeHit()'s for an edge ending at p: an edge whose
-  // ends lie on one side by more than the sum of their bounds misses the line, and
-  // RayEdgeHit() would put the crossing outside it (s < 0 or s > 1).
-  double Side(const Point2d& p) const {
-    return d_.x() * (p.y() - v_.y()) - d_.y() * (p.x() - v_.x());
-  }
-  double SideNoise(const Point2d& p) const {
-    return 1e-9 * d_l1_ * (std::abs(p.x() - v_.x()) + std::abs(p.y() - v_.y()));
+  // Which side of the ray's line the point v + `to` lies on (the sign), and a bound far above
+  // (1e-9 relative) the rounding of that value and of RayEdgeHit()'s for an edge ending there:
+  // an edge whose ends lie on one side by more than the sum of their bounds misses the line,
+  // and RayEdgeHit() would put the crossing outside it (s < 0 or s > 1).
+  double Side(const Point2d& to) const { return d_.x() * to.y() - d_.y() * to.x(); }
+  double SideNoise(const Point2d& to) const {
+    return noise_per_l1_ * (std::abs(to.x()) + std::abs(to.y()));
   }
 
   // Offers edge i -> j of ring k (`other`).
@@ -242,7 +240,7 @@ class BisectorRay {
   int ring_id_, r_;
   Point2d v_, d_;
   bool valid_;
-  double d_l1_;
+  double noise_per_l1_;
   double best_t_ = std::numeric_limits<double>::infinity();
   bool found_ = false;
   Endpoint best_;
@@ -447,13 +445,13 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
   };
   for (int i = 0; i < m; ++i) {
     max_concavity = std::max(max_concavity, concavity.outer[i]);
+    const Point2d to = outer[i] - r;  // r is the ray's origin.
     if (ray_outer) {
-      const double side_i = ray.Side(outer[i]), noise_i = ray.SideNoise(outer[i]);
+      const double side_i = ray.Side(to), noise_i = ray.SideNoise(to);
       if (i > 0) offer_edge(i - 1, i, side_prev, noise_prev, side_i, noise_i);
       side_prev = side_i;
       noise_prev = noise_i;
     }
-    const Point2d to = outer[i] - r;
     if (cross(in, to) < 0.0 || cross(out, to) < 0.0 || scorer.Skips(i)) continue;
     const double d2 = to.squaredNorm();
     const double f = relative(concavity.outer[i]);
@@ -463,7 +461,8 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
     }
   }
   if (ray_outer) {
-    offer_edge(m - 1, 0, side_prev, noise_prev, ray.Side(outer[0]), ray.SideNoise(outer[0]));
+    const Point2d to = outer[0] - r;
+    offer_edge(m - 1, 0, side_prev, noise_prev, ray.Side(to), ray.SideNoise(to));
     for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
       const Ring2d& hole = polygon.holes[k];
       const int h = static_cast<int>(hole.size());
