@@ -507,12 +507,41 @@ void FinishMeasure(const Polygon2d& polygon, const ConcavityOptions& options, Po
                    Concavity2d* result) {
   const Ring2d& ring = polygon.outer;
   const int n = static_cast<int>(ring.size());
-  // The maximum over notches only (Lemma C.2: the most concave point is a notch).
-  for (int i = 0; i < n; ++i) {
-    if ((result->witness_vertex < 0 || result->outer[i] > result->value) &&
-        internal::IsNotchInline(ring[i == 0 ? n - 1 : i - 1], ring[i],
-                                ring[i + 1 == n ? 0 : i + 1])) {
-      result->value = result->outer[i];
+  // The maximum over notches only (Lemma C.2: the most concave point is a notch), the first
+  // notch in ring order on equal concavity. Taken by decreasing concavity: the deepest vertex
+  // of a pocket is extreme in the pocket, so almost always a notch, and a few passes for the
+  // largest value left replace a notch test on every vertex that tops the notches before it
+  // in ring order (most do, going down into a pocket). After kRounds values, the ring order.
+  const std::vector<double>& concavity = result->outer;
+  auto is_notch = [&](int i) {
+    return internal::IsNotchInline(ring[i == 0 ? n - 1 : i - 1], ring[i],
+                                   ring[i + 1 == n ? 0 : i + 1]);
+  };
+  constexpr int kRounds = 3;
+  double below = std::numeric_limits<double>::infinity();  // Values tried so far are >= this.
+  bool settled = false;
+  for (int round = 0; round < kRounds && !settled; ++round) {
+    double top = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < n; ++i) {
+      if (concavity[i] < below && concavity[i] > top) top = concavity[i];
+    }
+    if (top == -std::numeric_limits<double>::infinity()) {  // No vertex is a notch.
+      settled = true;
+      break;
+    }
+    for (int i = 0; i < n; ++i) {
+      if (concavity[i] == top && is_notch(i)) {
+        result->value = top;
+        result->witness_vertex = i;
+        settled = true;
+        break;
+      }
+    }
+    below = top;
+  }
+  for (int i = 0; i < n && !settled; ++i) {
+    if ((result->witness_vertex < 0 || concavity[i] > result->value) && is_notch(i)) {
+      result->value = concavity[i];
       result->witness_vertex = i;
     }
   }
