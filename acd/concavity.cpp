@@ -58,14 +58,6 @@ void AppendGapPockets(const Ring2d& ring, int begin, int end, std::vector<Pocket
   if ((end - start + n) % n > 1) pockets->push_back({start, end});
 }
 
-// Bridges and pockets of the outer ring (Ch. III.B, Observation B.3).
-std::vector<Pocket> FindPockets(const Ring2d& ring, const std::vector<int>& hull) {
-  std::vector<Pocket> pockets;
-  const int h = static_cast<int>(hull.size());
-  for (int k = 0; k < h; ++k) AppendGapPockets(ring, hull[k], hull[(k + 1) % h], &pockets);
-  return pockets;
-}
-
 Ring2d PocketChain(const Ring2d& ring, const Pocket& pocket) {
   const int n = static_cast<int>(ring.size());
   Ring2d chain;
@@ -463,27 +455,12 @@ void PocketCache::InsertAntipodes(const Ring2d& hole, const HoleAntipodes& antip
 
 namespace {
 
-// The concavity of every vertex of `pocket` into result->outer (Ch. IV.A.1).
-void MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOptions& options,
-                   PocketCache* cache, Concavity2d* result) {
+// The concavity of the vertices of `pocket` for the measures beyond SL, given its SL distances
+// in result->outer and whether it has a hazard: SL distances are final for SL, for H2 when they
+// exceed tau, and for SP and H1 when the pocket has no hazard (see PocketConcavity()).
+void FinishPocket(const Ring2d& ring, const Pocket& pocket, bool hazard, double sl_max,
+                  const ConcavityOptions& options, PocketCache* cache, Concavity2d* result) {
   const int n = static_cast<int>(ring.size());
-  // SL distances straight off the ring: no copy, no lookup. They are final for SL, for H2
-  // when they exceed tau, and for SP and H1 when the pocket has no hazard (see
-  // PocketConcavity()).
-  const Point2d& from = ring[pocket.begin];
-  const Point2d& to = ring[pocket.end];
-  const Point2d bridge = to - from;
-  bool hazard = false;
-  double sl_max = 0.0;
-  for (int i = pocket.begin; i != pocket.end;) {
-    const int next = i + 1 == n ? 0 : i + 1;
-    hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
-    if (i != pocket.begin) {
-      result->outer[i] = DistanceToSegment(ring[i], from, to);
-      sl_max = std::max(sl_max, result->outer[i]);
-    }
-    i = next;
-  }
   const bool needs_sp =
       hazard && (options.measure == ConcavityMeasure::kShortestPath ||
                  options.measure == ConcavityMeasure::kHybrid1 ||
@@ -500,6 +477,64 @@ void MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOpti
   for (size_t k = 1; k + 1 < chain.size(); ++k) {
     result->outer[(pocket.begin + static_cast<int>(k)) % n] = d[k];
   }
+}
+
+// The concavity of every vertex of `pocket` into result->outer (Ch. IV.A.1).
+void MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOptions& options,
+                   PocketCache* cache, Concavity2d* result) {
+  const int n = static_cast<int>(ring.size());
+  // SL distances straight off the ring: no copy, no lookup.
+  const Point2d& from = ring[pocket.begin];
+  const Point2d& to = ring[pocket.end];
+  const Point2d bridge = to - from;
+  bool hazard = false;
+  double sl_max = 0.0;
+  for (int i = pocket.begin; i != pocket.end;) {
+    const int next = i + 1 == n ? 0 : i + 1;
+    hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
+    if (i != pocket.begin) {
+      result->outer[i] = DistanceToSegment(ring[i], from, to);
+      sl_max = std::max(sl_max, result->outer[i]);
+    }
+    i = next;
+  }
+  FinishPocket(ring, pocket, hazard, sl_max, options, cache, result);
+}
+
+// The pockets of the hull gap from hull vertex `begin` to hull vertex `end` (the bridges and
+// pockets of Ch. III.B, Observation B.3) measured:
+// AppendGapPockets() and MeasurePocket() on each, in one pass where no vertex lies on the
+// bridge (then the gap is one pocket). A vertex on the bridge lies between its ends (every
+// vertex lies in the hull), so its SL distance is rounding noise, far below `on_bridge`:
+// the exact test runs only for distances that small.
+void MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions& options,
+                PocketCache* cache, Concavity2d* result) {
+  const int n = static_cast<int>(ring.size());
+  if ((end - begin + n) % n <= 1) return;
+  const Point2d& from = ring[begin];
+  const Point2d& to = ring[end];
+  const Point2d bridge = to - from;
+  const double on_bridge =
+      1e-9 * (from.cwiseAbs().maxCoeff() + to.cwiseAbs().maxCoeff() + bridge.cwiseAbs().maxCoeff());
+  bool hazard = false;
+  double sl_max = 0.0;
+  for (int i = begin; i != end;) {
+    const int next = i + 1 == n ? 0 : i + 1;
+    hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
+    if (i != begin) {
+      const double d = DistanceToSegment(ring[i], from, to);
+      if (d <= on_bridge && Orientation(from, to, ring[i]) == 0) {  // Several pockets.
+        std::vector<Pocket> pockets;
+        AppendGapPockets(ring, begin, end, &pockets);
+        for (const Pocket& pocket : pockets) MeasurePocket(ring, pocket, options, cache, result);
+        return;
+      }
+      result->outer[i] = d;
+      sl_max = std::max(sl_max, d);
+    }
+    i = next;
+  }
+  FinishPocket(ring, {begin, end}, hazard, sl_max, options, cache, result);
 }
 
 // The witness notch and the holes, once result->outer is complete.
@@ -564,8 +599,9 @@ Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOpti
   const Ring2d& ring = polygon.outer;
   result.outer.assign(ring.size(), 0.0);
   result.hull = ConvexHullIndices(ring);
-  for (const Pocket& pocket : FindPockets(ring, result.hull)) {
-    MeasurePocket(ring, pocket, options, cache, &result);
+  const int h = static_cast<int>(result.hull.size());
+  for (int k = 0; k < h; ++k) {
+    MeasureGap(ring, result.hull[k], result.hull[(k + 1) % h], options, cache, &result);
   }
   FinishMeasure(polygon, options, cache, &result);
   return result;
@@ -627,16 +663,14 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const std::vector<int>
   result.hull = MelkmanHull(
       ring, kept_size, [&](int k) { return kept[k]; }, first_hull);
   const int h = static_cast<int>(result.hull.size());
-  std::vector<Pocket> pockets;
   for (int k = 0; k < h; ++k) {
     const int begin = result.hull[k];
     if (result.outer[begin] == kInheritedGap) {
       result.outer[begin] = 0.0;
       continue;
     }
-    AppendGapPockets(ring, begin, result.hull[(k + 1) % h], &pockets);
+    MeasureGap(ring, begin, result.hull[(k + 1) % h], options, cache, &result);
   }
-  for (const Pocket& pocket : pockets) MeasurePocket(ring, pocket, options, cache, &result);
   FinishMeasure(piece, options, cache, &result);
   return result;
 }

@@ -136,6 +136,30 @@ TEST(ConcavityTest, HullIndicesSkipVerticesOnHullEdges) {
   EXPECT_DOUBLE_EQ(SignedArea(hull), 4.0);
 }
 
+// A vertex on a bridge splits its gap into two pockets, each measured against its own part of
+// the bridge: (1.5, 1) lies 1 below the whole bridge (4,2)-(0,2), but its pocket's bridge ends
+// at (2, 2), which is sqrt(1.25) away.
+TEST(ConcavityTest, PocketsSplitAtVerticesOnTheirBridge) {
+  const Polygon2d p = {{{0, 0}, {4, 0}, {4, 2}, {1.5, 1}, {2, 2}, {0.5, 1}, {0, 2}}, {}};
+  for (ConcavityMeasure m : {ConcavityMeasure::kStraightLine, ConcavityMeasure::kHybrid2}) {
+    const Concavity2d c = MeasureConcavity(p, {m});
+    EXPECT_DOUBLE_EQ(c.outer[3], std::sqrt(1.25));
+    EXPECT_EQ(c.outer[4], 0.0);
+    EXPECT_DOUBLE_EQ(c.outer[5], 1.0);
+    EXPECT_EQ(c.witness_vertex, 3);
+  }
+}
+
+// Two notches 4 deep: the witness is the first in ring order, wherever the ring starts.
+TEST(ConcavityTest, WitnessIsTheFirstOfEqualNotches) {
+  const Polygon2d w = {{{0, 0}, {10, 0}, {10, 10}, {7.5, 6}, {5, 10}, {2.5, 6}, {0, 10}}, {}};
+  EXPECT_EQ(MeasureConcavity(w).witness_vertex, 3);
+  const Polygon2d turned = {{{5, 10}, {2.5, 6}, {0, 10}, {0, 0}, {10, 0}, {10, 10}, {7.5, 6}}, {}};
+  const Concavity2d c = MeasureConcavity(turned);
+  EXPECT_EQ(c.witness_vertex, 1);
+  EXPECT_DOUBLE_EQ(c.value, 4.0);
+}
+
 TEST(ConcavityTest, CountNotchesCountsHoleVerticesPointingIntoThePolygon) {
   Polygon2d p = Square(10);
   EXPECT_EQ(CountNotches(p), 0);
