@@ -378,13 +378,24 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int sta
     const int v = at(k);
     // Inside the current hull or on its boundary (then it cannot be a strict hull vertex, and
     // letting it in would pop true hull vertices that are collinear with it).
-    if (turn(deque[top - 1], deque[top], v) >= 0 &&
-        turn(deque[bottom], deque[bottom + 1], v) >= 0) {
-      continue;
+    const int top_turn = turn(deque[top - 1], deque[top], v);
+    int bottom_turn = 2;  // Not taken yet.
+    if (top_turn >= 0) {
+      bottom_turn = turn(deque[bottom], deque[bottom + 1], v);
+      if (bottom_turn >= 0) continue;
     }
-    while (top - bottom >= 2 && turn(deque[top - 1], deque[top], v) <= 0) --top;
+    // Each loop's first turn is one taken above (the exact sign of a cyclic permutation is
+    // the same, and pushing on top leaves the two bottom entries as they were).
+    if (top - bottom >= 2 && top_turn <= 0) {
+      --top;
+      while (top - bottom >= 2 && turn(deque[top - 1], deque[top], v) <= 0) --top;
+    }
     push_top(v);
-    while (top - bottom >= 2 && turn(v, deque[bottom], deque[bottom + 1]) <= 0) ++bottom;
+    if (top - bottom >= 2 &&
+        (bottom_turn != 2 ? bottom_turn : turn(v, deque[bottom], deque[bottom + 1])) <= 0) {
+      ++bottom;
+      while (top - bottom >= 2 && turn(v, deque[bottom], deque[bottom + 1]) <= 0) ++bottom;
+    }
     push_bottom(v);
   }
   std::vector<int> hull(deque.get() + bottom, deque.get() + top);  // Drop the repeated end.
