@@ -58,14 +58,6 @@ void AppendGapPockets(const Ring2d& ring, int begin, int end, std::vector<Pocket
   if ((end - start + n) % n > 1) pockets->push_back({start, end});
 }
 
-// Bridges and pockets of the outer ring (Ch. III.B, Observation B.3).
-std::vector<Pocket> FindPockets(const Ring2d& ring, const std::vector<int>& hull) {
-  std::vector<Pocket> pockets;
-  const int h = static_cast<int>(hull.size());
-  for (int k = 0; k < h; ++k) AppendGapPockets(ring, hull[k], hull[(k + 1) % h], &pockets);
-  return pockets;
-}
-
 Ring2d PocketChain(const Ring2d& ring, const Pocket& pocket) {
   const int n = static_cast<int>(ring.size());
   Ring2d chain;
@@ -386,13 +378,24 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int sta
     const int v = at(k);
     // Inside the current hull or on its boundary (then it cannot be a strict hull vertex, and
     // letting it in would pop true hull vertices that are collinear with it).
-    if (turn(deque[top - 1], deque[top], v) >= 0 &&
-        turn(deque[bottom], deque[bottom + 1], v) >= 0) {
-      continue;
+    const int top_turn = turn(deque[top - 1], deque[top], v);
+    int bottom_turn = 2;  // Not taken yet.
+    if (top_turn >= 0) {
+      bottom_turn = turn(deque[bottom], deque[bottom + 1], v);
+      if (bottom_turn >= 0) continue;
     }
-    while (top - bottom >= 2 && turn(deque[top - 1], deque[top], v) <= 0) --top;
+    // Each loop's first turn is one taken above (the exact sign of a cyclic permutation is
+    // the same, and pushing on top leaves the two bottom entries as they were).
+    if (top - bottom >= 2 && top_turn <= 0) {
+      --top;
+      while (top - bottom >= 2 && turn(deque[top - 1], deque[top], v) <= 0) --top;
+    }
     push_top(v);
-    while (top - bottom >= 2 && turn(v, deque[bottom], deque[bottom + 1]) <= 0) ++bottom;
+    if (top - bottom >= 2 &&
+        (bottom_turn != 2 ? bottom_turn : turn(v, deque[bottom], deque[bottom + 1])) <= 0) {
+      ++bottom;
+      while (top - bottom >= 2 && turn(v, deque[bottom], deque[bottom + 1]) <= 0) ++bottom;
+    }
     push_bottom(v);
   }
   std::vector<int> hull(deque.get() + bottom, deque.get() + top);  // Drop the repeated end.
@@ -463,27 +466,12 @@ void PocketCache::InsertAntipodes(const Ring2d& hole, const HoleAntipodes& antip
 
 namespace {
 
-// The concavity of every vertex of `pocket` into result->outer (Ch. IV.A.1).
-void MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOptions& options,
-                   PocketCache* cache, Concavity2d* result) {
+// The concavity of the vertices of `pocket` for the measures beyond SL, given its SL distances
+// in result->outer and whether it has a hazard: SL distances are final for SL, for H2 when they
+// exceed tau, and for SP and H1 when the pocket has no hazard (see PocketConcavity()).
+void FinishPocket(const Ring2d& ring, const Pocket& pocket, bool hazard, double sl_max,
+                  const ConcavityOptions& options, PocketCache* cache, Concavity2d* result) {
   const int n = static_cast<int>(ring.size());
-  // SL distances straight off the ring: no copy, no lookup. They are final for SL, for H2
-  // when they exceed tau, and for SP and H1 when the pocket has no hazard (see
-  // PocketConcavity()).
-  const Point2d& from = ring[pocket.begin];
-  const Point2d& to = ring[pocket.end];
-  const Point2d bridge = to - from;
-  bool hazard = false;
-  double sl_max = 0.0;
-  for (int i = pocket.begin; i != pocket.end;) {
-    const int next = i + 1 == n ? 0 : i + 1;
-    hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
-    if (i != pocket.begin) {
-      result->outer[i] = DistanceToSegment(ring[i], from, to);
-      sl_max = std::max(sl_max, result->outer[i]);
-    }
-    i = next;
-  }
   const bool needs_sp =
       hazard && (options.measure == ConcavityMeasure::kShortestPath ||
                  options.measure == ConcavityMeasure::kHybrid1 ||
@@ -502,17 +490,104 @@ void MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOpti
   }
 }
 
+// The concavity of every vertex of `pocket` into result->outer (Ch. IV.A.1).
+void MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOptions& options,
+                   PocketCache* cache, Concavity2d* result) {
+  const int n = static_cast<int>(ring.size());
+  // SL distances straight off the ring: no copy, no lookup.
+  const Point2d& from = ring[pocket.begin];
+  const Point2d& to = ring[pocket.end];
+  const Point2d bridge = to - from;
+  bool hazard = false;
+  double sl_max = 0.0;
+  for (int i = pocket.begin; i != pocket.end;) {
+    const int next = i + 1 == n ? 0 : i + 1;
+    hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
+    if (i != pocket.begin) {
+      result->outer[i] = DistanceToSegment(ring[i], from, to);
+      sl_max = std::max(sl_max, result->outer[i]);
+    }
+    i = next;
+  }
+  FinishPocket(ring, pocket, hazard, sl_max, options, cache, result);
+}
+
+// The pockets of the hull gap from hull vertex `begin` to hull vertex `end` (the bridges and
+// pockets of Ch. III.B, Observation B.3) measured:
+// AppendGapPockets() and MeasurePocket() on each, in one pass where no vertex lies on the
+// bridge (then the gap is one pocket). A vertex on the bridge lies between its ends (every
+// vertex lies in the hull), so its SL distance is rounding noise, far below `on_bridge`:
+// the exact test runs only for distances that small.
+void MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions& options,
+                PocketCache* cache, Concavity2d* result) {
+  const int n = static_cast<int>(ring.size());
+  if ((end - begin + n) % n <= 1) return;
+  const Point2d& from = ring[begin];
+  const Point2d& to = ring[end];
+  const Point2d bridge = to - from;
+  const double on_bridge =
+      1e-9 * (from.cwiseAbs().maxCoeff() + to.cwiseAbs().maxCoeff() + bridge.cwiseAbs().maxCoeff());
+  bool hazard = false;
+  double sl_max = 0.0;
+  for (int i = begin; i != end;) {
+    const int next = i + 1 == n ? 0 : i + 1;
+    hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
+    if (i != begin) {
+      const double d = DistanceToSegment(ring[i], from, to);
+      if (d <= on_bridge && Orientation(from, to, ring[i]) == 0) {  // Several pockets.
+        std::vector<Pocket> pockets;
+        AppendGapPockets(ring, begin, end, &pockets);
+        for (const Pocket& pocket : pockets) MeasurePocket(ring, pocket, options, cache, result);
+        return;
+      }
+      result->outer[i] = d;
+      sl_max = std::max(sl_max, d);
+    }
+    i = next;
+  }
+  FinishPocket(ring, {begin, end}, hazard, sl_max, options, cache, result);
+}
+
 // The witness notch and the holes, once result->outer is complete.
 void FinishMeasure(const Polygon2d& polygon, const ConcavityOptions& options, PocketCache* cache,
                    Concavity2d* result) {
   const Ring2d& ring = polygon.outer;
   const int n = static_cast<int>(ring.size());
-  // The maximum over notches only (Lemma C.2: the most concave point is a notch).
-  for (int i = 0; i < n; ++i) {
-    if ((result->witness_vertex < 0 || result->outer[i] > result->value) &&
-        internal::IsNotchInline(ring[i == 0 ? n - 1 : i - 1], ring[i],
-                                ring[i + 1 == n ? 0 : i + 1])) {
-      result->value = result->outer[i];
+  // The maximum over notches only (Lemma C.2: the most concave point is a notch), the first
+  // notch in ring order on equal concavity. Taken by decreasing concavity: the deepest vertex
+  // of a pocket is extreme in the pocket, so almost always a notch, and a few passes for the
+  // largest value left replace a notch test on every vertex that tops the notches before it
+  // in ring order (most do, going down into a pocket). After kRounds values, the ring order.
+  const std::vector<double>& concavity = result->outer;
+  auto is_notch = [&](int i) {
+    return internal::IsNotchInline(ring[i == 0 ? n - 1 : i - 1], ring[i],
+                                   ring[i + 1 == n ? 0 : i + 1]);
+  };
+  constexpr int kRounds = 3;
+  double below = std::numeric_limits<double>::infinity();  // Values tried so far are >= this.
+  bool settled = false;
+  for (int round = 0; round < kRounds && !settled; ++round) {
+    double top = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < n; ++i) {
+      if (concavity[i] < below && concavity[i] > top) top = concavity[i];
+    }
+    if (top == -std::numeric_limits<double>::infinity()) {  // No vertex is a notch.
+      settled = true;
+      break;
+    }
+    for (int i = 0; i < n; ++i) {
+      if (concavity[i] == top && is_notch(i)) {
+        result->value = top;
+        result->witness_vertex = i;
+        settled = true;
+        break;
+      }
+    }
+    below = top;
+  }
+  for (int i = 0; i < n && !settled; ++i) {
+    if ((result->witness_vertex < 0 || concavity[i] > result->value) && is_notch(i)) {
+      result->value = concavity[i];
       result->witness_vertex = i;
     }
   }
@@ -535,8 +610,9 @@ Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOpti
   const Ring2d& ring = polygon.outer;
   result.outer.assign(ring.size(), 0.0);
   result.hull = ConvexHullIndices(ring);
-  for (const Pocket& pocket : FindPockets(ring, result.hull)) {
-    MeasurePocket(ring, pocket, options, cache, &result);
+  const int h = static_cast<int>(result.hull.size());
+  for (int k = 0; k < h; ++k) {
+    MeasureGap(ring, result.hull[k], result.hull[(k + 1) % h], options, cache, &result);
   }
   FinishMeasure(polygon, options, cache, &result);
   return result;
@@ -598,16 +674,14 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const std::vector<int>
   result.hull = MelkmanHull(
       ring, kept_size, [&](int k) { return kept[k]; }, first_hull);
   const int h = static_cast<int>(result.hull.size());
-  std::vector<Pocket> pockets;
   for (int k = 0; k < h; ++k) {
     const int begin = result.hull[k];
     if (result.outer[begin] == kInheritedGap) {
       result.outer[begin] = 0.0;
       continue;
     }
-    AppendGapPockets(ring, begin, result.hull[(k + 1) % h], &pockets);
+    MeasureGap(ring, begin, result.hull[(k + 1) % h], options, cache, &result);
   }
-  for (const Pocket& pocket : pockets) MeasurePocket(ring, pocket, options, cache, &result);
   FinishMeasure(piece, options, cache, &result);
   return result;
 }

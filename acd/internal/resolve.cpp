@@ -184,16 +184,77 @@ std::optional<RayHit> RayEdgeHit(const Point2d& v, const Point2d& d, const Point
 // within rounding noise of it (an absolute distance: a bound relative to the edge length
 // snapped a hit 1e-7 from the notch on a 6.5e7-long edge to an end 1 unit away, outside the
 // cone, and left the notch without a cut).
+// Edges are offered one at a time, in ring order (outer ring first, then the holes): on equal
+// rounded distances the first edge offered wins, so every search offers them in that order.
+class BisectorRay {
+ public:
+  BisectorRay(const Polygon2d& polygon, int ring_id, int r) : ring_id_(ring_id), r_(r) {
+    const Ring2d& ring = RingOf(polygon, ring_id);
+    const int n = static_cast<int>(ring.size());
+    v_ = ring[r];
+    d_ = (v_ - ring[Prev(r, n)]).normalized() + (v_ - ring[Next(r, n)]).normalized();
+    valid_ = d_.squaredNorm() >= 1e-24;
+    noise_per_l1_ = 1e-9 * (std::abs(d_.x()) + std::abs(d_.y()));
+  }
+
+  // Whether the ray has a direction (else it hits nothing).
+  bool Valid() const { return valid_; }
+  const Point2d& From() const { return v_; }
+
+  // Which side of the ray's line the point v + `to` lies on (the sign), and a bound far above
+  // (1e-9 relative) the rounding of that value and of RayEdgeHit()'s for an edge ending there:
+  // an edge whose ends lie on one side by more than the sum of their bounds misses the line,
+  // and RayEdgeHit() would put the crossing outside it (s < 0 or s > 1).
+  double Side(const Point2d& to) const { return d_.x() * to.y() - d_.y() * to.x(); }
+  double SideNoise(const Point2d& to) const {
+    return noise_per_l1_ * (std::abs(to.x()) + std::abs(to.y()));
+  }
+
+  // Offers edge i -> j of ring k (`other`).
+  void Offer(int k, const Ring2d& other, int i, int j) {
+    if (k == ring_id_ && (i == r_ || j == r_)) return;
+    std::optional<RayHit> hit = RayEdgeHit(v_, d_, other[i], other[j] - other[i]);
+    if (!hit || hit->t <= 0.0 || hit->s < 0.0 || hit->s > 1.0 || hit->t >= best_t_) return;
+    const bool from_end = hit->s > 0.5;
+    if (from_end) {  // Again from the nearer end, other[j].
+      hit = RayEdgeHit(v_, d_, other[j], other[i] - other[j]);
+      if (!hit || hit->t <= 0.0 || hit->t >= best_t_) return;
+      hit->s = std::clamp(hit->s, 0.0, 1.0);
+    }
+    best_t_ = hit->t;
+    const int near = from_end ? j : i;
+    const Point2d& origin = other[near];
+    const Point2d offset = hit->s * (other[from_end ? i : j] - origin);
+    const double noise = kRoundingNoise * std::max(1.0, MaxAbs(origin));
+    best_ = offset.cwiseAbs().maxCoeff() <= noise ? Endpoint{k, near, false, origin}
+                                                  : Endpoint{k, i, true, origin + offset};
+    found_ = true;
+  }
+
+  // The first hit among the edges offered.
+  std::optional<Endpoint> Best() const {
+    return found_ ? std::optional<Endpoint>(best_) : std::nullopt;
+  }
+
+ private:
+  int ring_id_, r_;
+  Point2d v_, d_;
+  bool valid_;
+  double noise_per_l1_;
+  double best_t_ = std::numeric_limits<double>::infinity();
+  bool found_ = false;
+  Endpoint best_;
+};
+
+// BisectorRay's first hit over every edge.
 // With a finite `reach`, edges whose bounding box keeps farther than `reach` from the vertex (in
 // both coordinates) are skipped: a hit returned within `reach` is then still the first hit
 // (an edge holding an earlier hit passes the box test), one beyond it may not be.
 std::optional<Endpoint> BisectorHit(const Polygon2d& polygon, int ring_id, int r,
                                     double reach = std::numeric_limits<double>::infinity()) {
-  const Ring2d& ring = RingOf(polygon, ring_id);
-  const int n = static_cast<int>(ring.size());
-  const Point2d& v = ring[r];
-  const Point2d d = (v - ring[Prev(r, n)]).normalized() + (v - ring[Next(r, n)]).normalized();
-  if (d.squaredNorm() < 1e-24) return std::nullopt;
+  BisectorRay ray(polygon, ring_id, r);
+  if (!ray.Valid()) return std::nullopt;
+  const Point2d& v = ray.From();
   const double xmin = v.x() - reach, xmax = v.x() + reach;
   const double ymin = v.y() - reach, ymax = v.y() + reach;
   // Cohen-Sutherland outcodes: an edge whose two ends share a side of the box misses it.
@@ -201,8 +262,6 @@ std::optional<Endpoint> BisectorHit(const Polygon2d& polygon, int ring_id, int r
     return (p.x() < xmin ? 1 : 0) | (p.x() > xmax ? 2 : 0) | (p.y() < ymin ? 4 : 0) |
            (p.y() > ymax ? 8 : 0);
   };
-  double best_t = std::numeric_limits<double>::infinity();
-  std::optional<Endpoint> best;
   for (int k = -1; k < static_cast<int>(polygon.holes.size()); ++k) {
     const Ring2d& other = RingOf(polygon, k);
     const int m = static_cast<int>(other.size());
@@ -211,26 +270,10 @@ std::optional<Endpoint> BisectorHit(const Polygon2d& polygon, int ring_id, int r
       const int j = Next(i, m);
       const int code_i = code_j;
       code_j = outcode(other[j]);
-      if ((code_i & code_j) != 0) continue;
-      if (k == ring_id && (i == r || j == r)) continue;
-      std::optional<RayHit> hit = RayEdgeHit(v, d, other[i], other[j] - other[i]);
-      if (!hit || hit->t <= 0.0 || hit->s < 0.0 || hit->s > 1.0 || hit->t >= best_t) continue;
-      const bool from_end = hit->s > 0.5;
-      if (from_end) {  // Again from the nearer end, other[j].
-        hit = RayEdgeHit(v, d, other[j], other[i] - other[j]);
-        if (!hit || hit->t <= 0.0 || hit->t >= best_t) continue;
-        hit->s = std::clamp(hit->s, 0.0, 1.0);
-      }
-      best_t = hit->t;
-      const int near = from_end ? j : i;
-      const Point2d& origin = other[near];
-      const Point2d offset = hit->s * (other[from_end ? i : j] - origin);
-      const double noise = kRoundingNoise * std::max(1.0, MaxAbs(origin));
-      best = offset.cwiseAbs().maxCoeff() <= noise ? Endpoint{k, near, false, origin}
-                                                   : Endpoint{k, i, true, origin + offset};
+      if ((code_i & code_j) == 0) ray.Offer(k, other, i, j);
     }
   }
-  return best;
+  return ray.Best();
 }
 
 double ConcavityAt(const Concavity2d& concavity, const Ring2d& outer, const Endpoint& e) {
@@ -382,20 +425,48 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
   // 1 + s_c concavity / unit, to within rounding (the bounds below have slack for it).
   const double per_unit = options.score_concavity / options.concavity_unit;
   auto relative = [&](double c) { return 1.0 + per_unit * c; };
-  // Pass 1: the guess.
+  // Pass 1: the guess, and the bisector's first hit over the outer edges, in ring order.
+  // Without a diagonal that must win, the bisector's hit is always wanted, and taking it here
+  // over every edge saves a pass (the first hit is the same; see BisectorHit()). Most edges do
+  // not cross the ray's line; they are told by the sides of their ends, computed once per vertex.
   const Point2d in = r - scorer.Before(), out = scorer.After() - r;
   int guess = -1;
   double guess_value = 0.0;    // (s_d score)^2 without the bonus.
   double max_concavity = 0.0;  // Over all vertices, for the bound on points on edges below.
+  const bool ray_here = !options.double_resolves_first;
+  BisectorRay ray(polygon, ring_id, index);
+  const bool ray_outer = ray_here && ray.Valid() && m > 0;
+  double side_prev = 0.0, noise_prev = 0.0;  // Of vertex i - 1.
+  auto offer_edge = [&](int i, int j, double side_i, double noise_i, double side_j,
+                        double noise_j) {
+    const double margin = noise_i + noise_j;
+    if ((side_i > margin && side_j > margin) || (side_i < -margin && side_j < -margin)) return;
+    ray.Offer(-1, outer, i, j);
+  };
   for (int i = 0; i < m; ++i) {
     max_concavity = std::max(max_concavity, concavity.outer[i]);
-    const Point2d to = outer[i] - r;
+    const Point2d to = outer[i] - r;  // r is the ray's origin.
+    if (ray_outer) {
+      const double side_i = ray.Side(to), noise_i = ray.SideNoise(to);
+      if (i > 0) offer_edge(i - 1, i, side_prev, noise_prev, side_i, noise_i);
+      side_prev = side_i;
+      noise_prev = noise_i;
+    }
     if (cross(in, to) < 0.0 || cross(out, to) < 0.0 || scorer.Skips(i)) continue;
     const double d2 = to.squaredNorm();
     const double f = relative(concavity.outer[i]);
     if (d2 > 0.0 && f * f > guess_value * d2) {
       guess = i;
       guess_value = f * f / d2;
+    }
+  }
+  if (ray_outer) {
+    const Point2d to = outer[0] - r;
+    offer_edge(m - 1, 0, side_prev, noise_prev, ray.Side(to), ray.SideNoise(to));
+    for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
+      const Ring2d& hole = polygon.holes[k];
+      const int h = static_cast<int>(hole.size());
+      for (int i = 0; i < h; ++i) ray.Offer(k, hole, i, Next(i, h));
     }
   }
   // Pass 2: every candidate that may reach the floor, the best candidate known so far.
@@ -449,7 +520,8 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
   }
   // The bisector's hit (see ScoredCandidates()), a point on an edge: rank 0.
   if (floor.rank < 1) {
-    const std::optional<Endpoint> hit = BisectorHit(polygon, ring_id, index, reach * 1.000001);
+    const std::optional<Endpoint> hit =
+        ray_here ? ray.Best() : BisectorHit(polygon, ring_id, index, reach * 1.000001);
     if (hit && hit->ring < 0 && hit->on_edge && (hit->point - r).norm() <= reach &&
         scorer.Score(*hit, &candidate)) {
       if (!options.steiner_cuts) candidate.score = -1.0;

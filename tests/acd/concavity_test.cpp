@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace acdplan::acd {
 namespace {
@@ -134,6 +138,70 @@ TEST(ConcavityTest, HullIndicesSkipVerticesOnHullEdges) {
   const Ring2d hull = ConvexHull(cloud);
   ASSERT_EQ(hull.size(), 4u);
   EXPECT_DOUBLE_EQ(SignedArea(hull), 4.0);
+}
+
+// A vertex on a bridge splits its gap into two pockets, each measured against its own part of
+// the bridge: (1.5, 1) lies 1 below the whole bridge (4,2)-(0,2), but its pocket's bridge ends
+// at (2, 2), which is sqrt(1.25) away.
+TEST(ConcavityTest, PocketsSplitAtVerticesOnTheirBridge) {
+  const Polygon2d p = {{{0, 0}, {4, 0}, {4, 2}, {1.5, 1}, {2, 2}, {0.5, 1}, {0, 2}}, {}};
+  for (ConcavityMeasure m : {ConcavityMeasure::kStraightLine, ConcavityMeasure::kHybrid2}) {
+    const Concavity2d c = MeasureConcavity(p, {m});
+    EXPECT_DOUBLE_EQ(c.outer[3], std::sqrt(1.25));
+    EXPECT_EQ(c.outer[4], 0.0);
+    EXPECT_DOUBLE_EQ(c.outer[5], 1.0);
+    EXPECT_EQ(c.witness_vertex, 3);
+  }
+}
+
+// Two notches 4 deep: the witness is the first in ring order, wherever the ring starts.
+TEST(ConcavityTest, WitnessIsTheFirstOfEqualNotches) {
+  const Polygon2d w = {{{0, 0}, {10, 0}, {10, 10}, {7.5, 6}, {5, 10}, {2.5, 6}, {0, 10}}, {}};
+  EXPECT_EQ(MeasureConcavity(w).witness_vertex, 3);
+  const Polygon2d turned = {{{5, 10}, {2.5, 6}, {0, 10}, {0, 0}, {10, 0}, {10, 10}, {7.5, 6}}, {}};
+  const Concavity2d c = MeasureConcavity(turned);
+  EXPECT_EQ(c.witness_vertex, 1);
+  EXPECT_DOUBLE_EQ(c.value, 4.0);
+}
+
+// Star-shaped rings (simple: vertices by angle around the origin, random radii) with many
+// notches, and with the midpoint of every third edge added (exactly collinear: coordinates
+// are multiples of 1/1024): ConvexHullIndices() (Melkman's hull of the ring) picks the
+// points of CGAL's hull of the same points, never a point on a hull edge.
+TEST(ConcavityTest, HullIndicesMatchThePointSetHullOnStarRings) {
+  std::uint64_t state = 0x9E3779B97F4A7C15ull;
+  auto next = [&state]() {  // xorshift64: the same sequence with every standard library.
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return state;
+  };
+  auto snap = [](double x) { return std::round(x * 1024.0) / 1024.0; };
+  constexpr double kPi = 3.14159265358979323846;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 4 + static_cast<int>(next() % 60);
+    Ring2d ring;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2.0 * kPi * (i + 0.8 * static_cast<double>(next() % 1000) / 1000.0) / n;
+      const double radius = 2.0 + 8.0 * static_cast<double>(next() % 1000) / 1000.0;
+      const Point2d p(snap(radius * std::cos(angle)), snap(radius * std::sin(angle)));
+      if (ring.empty() || p != ring.back()) ring.push_back(p);
+    }
+    if (trial % 2 == 1) {  // Midpoints, exact.
+      Ring2d with_midpoints;
+      for (size_t i = 0; i < ring.size(); ++i) {
+        with_midpoints.push_back(ring[i]);
+        if (i % 3 == 0) with_midpoints.push_back(0.5 * (ring[i] + ring[(i + 1) % ring.size()]));
+      }
+      ring = with_midpoints;
+    }
+    std::vector<std::pair<double, double>> melkman, cgal;
+    for (const int i : ConvexHullIndices(ring)) melkman.emplace_back(ring[i].x(), ring[i].y());
+    for (const Point2d& p : ConvexHull(ring)) cgal.emplace_back(p.x(), p.y());
+    std::sort(melkman.begin(), melkman.end());
+    std::sort(cgal.begin(), cgal.end());
+    EXPECT_EQ(melkman, cgal) << "trial " << trial;
+  }
 }
 
 TEST(ConcavityTest, CountNotchesCountsHoleVerticesPointingIntoThePolygon) {
