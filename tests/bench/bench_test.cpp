@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <csignal>
 #include <filesystem>
@@ -635,9 +636,22 @@ TEST(BenchCli, CtrlCWritesTheFinishedRunsAndExits130) {
           static_cast<char*>(nullptr));
     _exit(127);
   }
-  sleep(2);
-  kill(pid, SIGINT);
+  // The signal goes once the bench has said it started, which it does after installing its
+  // handler (a fixed delay raced with a slow start-up under the sanitizers on a loaded machine).
+  const std::string started = "bench sigint:";
   int status = 0;
+  bool said = false;
+  for (int waited = 0; waited < 6000 && !said; ++waited) {  // at most 300 s
+    said = ReadText(dir / "log.txt").find(started) != std::string::npos;
+    if (!said) {
+      ASSERT_EQ(waitpid(pid, &status, WNOHANG), 0) << "the bench ended before it started:\n"
+                                                   << ReadText(dir / "log.txt");
+      usleep(50000);
+    }
+  }
+  if (said) sleep(1);  // a few runs finish first
+  kill(pid, SIGINT);
+  ASSERT_TRUE(said) << "no '" << started << "' from the bench in 300 s";
   ASSERT_EQ(waitpid(pid, &status, 0), pid);
   ASSERT_TRUE(WIFEXITED(status));
   const int code = WEXITSTATUS(status);
