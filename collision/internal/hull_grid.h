@@ -14,14 +14,14 @@ namespace acdplan::collision::internal {
 /// `kTargetCells` near-cubic cells; each cell lists the hulls that may contain a point of it (no
 /// plane of theirs has the whole cell outside), each with only the planes that cross the cell
 /// (the others hold on all of it). A cell inside one hull is *covered* and a cell no hull reaches
-/// is *empty*: one lookup in a 2-bit-per-cell array (16 KiB, so it stays in the L1 cache under
-/// random queries) answers their points. The other, *mixed* cells (where hull surfaces pass) are
-/// cut again into 4 x 4 x 4 subcells, each empty, covered or mixed in a 128-bit mask, so that
-/// most of their points are answered without a plane test too; only a point of a mixed subcell
-/// tests a few planes of a few hulls. The answers equal the plain test "n . p <= d + slack for
-/// every plane of some hull", up to rounding at that boundary. Build O(planes x cells met by each
-/// hull's surface), by halving blocks of cells that a plane crosses; a query O(listed planes of
-/// its cell). Immutable after construction; queries are thread-safe.
+/// is *empty*: one lookup in a 2-bit-per-cell array (about 18 KiB with the grid's border, so it
+/// stays in the L1 cache under random queries) answers their points. The other, *mixed* cells
+/// (where hull surfaces pass) are cut again into 4 x 4 x 4 subcells, each empty, covered or mixed
+/// in a 128-bit mask, so that most of their points are answered without a plane test too; only a
+/// point of a mixed subcell tests a few planes of a few hulls. The answers equal the plain test "n
+/// . p <= d + slack for every plane of some hull", up to rounding at that boundary. Build O(planes
+/// x cells met by each hull's surface), by halving blocks of cells that a plane crosses; a query
+/// O(listed planes of its cell). Immutable after construction; queries are thread-safe.
 class HullGrid {
  public:
   HullGrid() = default;
