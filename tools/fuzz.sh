@@ -1,7 +1,6 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (fuzz/, one per reader) with clang in the sanitizer build,
-# build-asan/ (or $ACDPLAN_ASAN_BUILD_DIR; tools/sanitizer-build.sh, shared with
-# tools/test.sh --sanitize), and runs each in turn, one process at a time.
+# Builds the libFuzzer targets (fuzz/, one per reader) with clang in build-fuzz/ (or
+# $ACDPLAN_FUZZ_BUILD_DIR) and runs each in turn, one process at a time.
 #
 #   tools/fuzz.sh [SECONDS] [TARGET...]   SECONDS per target (default 20); TARGET e.g.
 #                                         poly_reader or fuzz_poly_reader (default: all)
@@ -30,7 +29,7 @@ list=0
 requested=()
 for arg in "$@"; do
   case "$arg" in
-    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     --list) list=1 ;;
     -*) echo "fuzz.sh: unknown option '$arg' (expected SECONDS, targets, --list or --help)" >&2
       exit 2 ;;
@@ -60,14 +59,14 @@ if ! command -v clang++ >/dev/null 2>&1; then
   exit 1
 fi
 
-source "$root/tools/sanitizer-build.sh"
-build_dir=$sanitizer_build_dir
+build_dir=${ACDPLAN_FUZZ_BUILD_DIR:-build-fuzz}
 jobs=${ACDPLAN_JOBS:-$(nproc)}
 werror=OFF
 if [[ ${ACDPLAN_WERROR:-0} == 1 ]]; then werror=ON; fi
 
 start=$SECONDS
-cmake -S "$root" -B "$build_dir" "${sanitizer_cmake_args[@]}" \
+CC=clang CXX=clang++ cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DACDPLAN_FUZZ=ON -DACDPLAN_BUILD_TESTS=OFF -DACDPLAN_BUILD_TOOLS=ON \
   -DACDPLAN_WARNINGS_AS_ERRORS=$werror >/dev/null
 if ! cmake --build "$build_dir" -j "$jobs" --target acdplan_fuzz; then
   echo "fuzz.sh: building the fuzz targets failed" >&2

@@ -3,8 +3,7 @@
 #
 #   tools/test.sh             Release build in build/ (or $ACDPLAN_BUILD_DIR)
 #   tools/test.sh --sanitize  ASan+UBSan RelWithDebInfo build in build-asan/
-#                             (or $ACDPLAN_ASAN_BUILD_DIR); the tree also holds the
-#                             libFuzzer targets that tools/fuzz.sh runs
+#                             (or $ACDPLAN_ASAN_BUILD_DIR)
 #   tools/test.sh --tsan      ThreadSanitizer RelWithDebInfo build in build-tsan/
 #                             (or $ACDPLAN_TSAN_BUILD_DIR); builds and runs only the tests
 #                             labelled `threads` (suppressions: tools/tsan.supp)
@@ -28,7 +27,7 @@ for arg in "$@"; do
   case "$arg" in
     --sanitize) sanitize=1 ;;
     --tsan) tsan=1 ;;
-    -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "test.sh: unknown argument '$arg' (expected --sanitize or --tsan)" >&2; exit 2 ;;
   esac
 done
@@ -45,10 +44,8 @@ build_targets=()
 ctest_args=()
 
 if [[ $sanitize -eq 1 ]]; then
-  # The tree tools/fuzz.sh uses too (its fuzz targets are built here, not run).
-  source "$root/tools/sanitizer-build.sh"
-  build_dir=$sanitizer_build_dir
-  cmake_args=("${sanitizer_cmake_args[@]}")
+  build_dir=${ACDPLAN_ASAN_BUILD_DIR:-build-asan}
+  cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DACDPLAN_SANITIZE=ON "${clang_args[@]}")
   # Options already in the environment come last, so they win.
   export ASAN_OPTIONS="detect_leaks=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
