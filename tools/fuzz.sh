@@ -29,7 +29,7 @@ list=0
 requested=()
 for arg in "$@"; do
   case "$arg" in
-    -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     --list) list=1 ;;
     -*) echo "fuzz.sh: unknown option '$arg' (expected SECONDS, targets, --list or --help)" >&2
       exit 2 ;;
