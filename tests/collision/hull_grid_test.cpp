@@ -54,6 +54,16 @@ bool PlainContains(const Planes& planes, const Eigen::Vector3d& p, double slack)
   return true;
 }
 
+// The hulls that contain `p` by the plain test, in increasing order (as HullGrid::Candidates).
+std::vector<int> PlainHullsContaining(const RandomHulls& hulls, const Eigen::Vector3d& p,
+                                      double slack) {
+  std::vector<int> out;
+  for (size_t h = 0; h < hulls.planes.size(); ++h) {
+    if (PlainContains(hulls.planes[h], p, slack)) out.push_back(static_cast<int>(h));
+  }
+  return out;
+}
+
 TEST(HullGrid, AnswersAsThePlainTestOnEveryHull) {
   const double slack = 1e-12;
   for (int count : {1, 7, 120}) {
@@ -66,10 +76,7 @@ TEST(HullGrid, AnswersAsThePlainTestOnEveryHull) {
     for (int i = 0; i < 200000; ++i) {
       Eigen::Vector3d p;
       for (int k = 0; k < 3; ++k) p[k] = UniformReal(rng, -0.5, 4.5);
-      std::vector<int> expected;
-      for (int h = 0; h < count; ++h) {
-        if (PlainContains(hulls.planes[static_cast<size_t>(h)], p, slack)) expected.push_back(h);
-      }
+      const std::vector<int> expected = PlainHullsContaining(hulls, p, slack);
       std::vector<int> found;
       grid.Candidates(p, &found);
       ASSERT_EQ(found, expected) << p.transpose();
@@ -106,10 +113,7 @@ TEST(HullGrid, AnswersAsThePlainTestNearHullSurfaces) {
       Eigen::Vector3d p = a + u * (b - a) + v * (c - a);
       const bool on_face = i % 4 == 0;
       if (!on_face) p += UniformReal(rng, -0.02, 0.02) * (b - a).cross(c - a).normalized();
-      std::vector<int> expected;
-      for (int h = 0; h < count; ++h) {
-        if (PlainContains(hulls.planes[static_cast<size_t>(h)], p, slack)) expected.push_back(h);
-      }
+      const std::vector<int> expected = PlainHullsContaining(hulls, p, slack);
       std::vector<int> found;
       grid.Candidates(p, &found);
       ASSERT_EQ(found, expected) << p.transpose();
