@@ -316,14 +316,11 @@ class Checker {
         }
       }
       if (node.children.empty()) {
+        // Several leaves share a component that the merge pass united (MergeComponents()).
         if (node.component < 0 || node.component >= Count()) {
           problems_.Add(label + "leaf without a component (" + std::to_string(node.component) +
                         ")");
-        } else if (leaf_of[static_cast<size_t>(node.component)] >= 0) {
-          problems_.Add(label + "component " + std::to_string(node.component) +
-                        " is also the leaf of node " +
-                        std::to_string(leaf_of[static_cast<size_t>(node.component)]));
-        } else {
+        } else if (leaf_of[static_cast<size_t>(node.component)] < 0) {
           leaf_of[static_cast<size_t>(node.component)] = n;
         }
       } else if (node.children.size() < 2) {

@@ -22,6 +22,14 @@ struct Decompose3dOptions {
   /// default: on the V-HACD meshes it gave about 2 % fewer parts but 2-8 % more hull volume
   /// over the mesh's, and up to 30 % more parts on some (docs/bench/acd3d_solid.md).
   bool feature_grouping = false;
+  /// Solid ACD: after the cuts, merge adjacent components whose union is still tau-convex (one
+  /// genus-0 shell) while the union's hull adds at most this fraction of the two hulls' volume,
+  /// the cheapest pair first. Each cut is chosen for the piece in hand, so some leave a piece a
+  /// neighbour can take back: a rounding-level sliver beside a cut through a vertex, a thin
+  /// shell wrapped on its neighbour. The default merges where the hulls barely grow, so the
+  /// hulls stay as tight; a large value merges every tau-convex pair it can (fewest parts);
+  /// < 0 turns merging off. Not with the surface ACD.
+  double merge_growth = 0.01;
 };
 
 /// Splits every part of `prepared` into components whose concavity is at most `options.tau`,

@@ -8,7 +8,8 @@
 
 namespace acdplan::acd {
 
-/// A leaf of the decomposition: a tau-convex piece of the input.
+/// A tau-convex piece of the input: a leaf of the hierarchy, or the union of adjacent leaves that
+/// the solid ACD merged after its cuts (Decompose3dOptions::merge_growth).
 struct Component3d {
   /// Solid ACD: the piece, closed and outward-oriented (its cut faces included). Surface ACD:
   /// the patch of the input surface (open).
@@ -44,8 +45,9 @@ struct HierarchyNode3d {
   Plane3d cut;                ///< At an internal node: the plane that split the piece.
   int parent = -1;            ///< -1 at a root.
   std::vector<int> children;  ///< A plane cut leaves >= 2 connected pieces; empty at a leaf.
-  int component = -1;         ///< Index into Decomposition3d::components at a leaf.
-  int depth = 0;              ///< 0 at a root.
+  int component =
+      -1;         ///< Index into Decomposition3d::components at a leaf; merged leaves share one.
+  int depth = 0;  ///< 0 at a root.
 };
 
 /// Summary figures (the JSON's "stats").
@@ -64,6 +66,7 @@ struct DecompositionStats3d {
 struct Decomposition3d {
   double tau = 0.0;                     ///< Absolute tolerance used [units].
   int max_hulls = 0;                    ///< The cap asked for; 0 = none.
+  double merge_growth = -1;             ///< Decompose3dOptions::merge_growth used; < 0: none.
   std::vector<Component3d> components;  ///< The leaves, in depth-first order of the tree.
   std::vector<Opening3d> openings;
   std::vector<HierarchyNode3d> tree;

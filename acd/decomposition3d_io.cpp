@@ -455,6 +455,8 @@ std::string Decomposition3dToJson(const Decomposition3d& decomposition,
   json["tau"] = decomposition.tau;
   json["tau_rel"] = labels.tau_rel >= 0 ? Json(labels.tau_rel) : Json(nullptr);
   json["max_hulls"] = decomposition.max_hulls;
+  json["merge_growth"] =
+      decomposition.merge_growth >= 0 ? Json(decomposition.merge_growth) : Json(nullptr);
 
   Json components = Json::array();
   for (const Component3d& component : decomposition.components) {

@@ -157,6 +157,7 @@ std::string OursWork(const BenchMesh& mesh, bool solid, double tau, int max_hull
   decompose.tau = tau;
   decompose.surface = !solid;
   decompose.feature_grouping = options.feature_grouping;
+  decompose.merge_growth = options.merge_growth;
   decompose.max_hulls = max_hulls;
   auto timed = TimeRuns([&] { return acd::Decompose3d(prepared, decompose); }, options.repeats,
                         options.cell_budget_ms, 1);
@@ -432,7 +433,12 @@ std::string Acd3dBenchMarkdown(const Acd3dBenchResult& result, const Acd3dBenchO
          "on meshes that are solid, or solid after PrepareMesh's repair; surface ACD on the "
          "others"
       << (options.surface_on_solids ? " and on the solids too" : ", and on repairable ones too")
-      << (options.feature_grouping ? "; solid ACD with feature grouping" : "") << ")";
+      << (options.feature_grouping ? "; solid ACD with feature grouping" : "")
+      << (options.merge_growth >= 0
+              ? "; tau-convex neighbours merged while their hull grows by <= " +
+                    FormatSignificant(options.merge_growth, 6)
+              : "; no merge pass")
+      << ")";
   if (options.max_hulls > 0) {
     out << ", and on closed meshes once more at tau_rel "
         << FormatSignificant(options.capped_tau_rel, 6) << " merged down to at most "

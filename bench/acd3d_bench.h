@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "acd/decompose3d.h"
 #include "bench/targets.h"
 
 namespace acdplan::bench {
@@ -35,6 +36,8 @@ struct Acd3dBenchOptions {
   /// Decompose3dOptions::feature_grouping for the solid ACD (the global cut's plane among the
   /// candidates), for before / after comparisons.
   bool feature_grouping = false;
+  /// Decompose3dOptions::merge_growth for the solid ACD (< 0: no merge pass).
+  double merge_growth = acd::Decompose3dOptions{}.merge_growth;
   /// > 0: one more solid ACD cell on every closed mesh (input solid or solid-parts), at
   /// `capped_tau_rel` with Decompose3dOptions::max_hulls = this: a fine tau whose components
   /// are then merged down to V-HACD's cap, so that one setting can be tight and small. 0: none.

@@ -119,6 +119,7 @@ int RunDecompose3d(const Decompose3dArguments& args) {
   options.tau = args.tau >= 0 ? args.tau : tau_rel * radius;
   options.surface = args.surface;
   options.max_hulls = args.max_hulls;
+  options.merge_growth = args.merge_growth;
   const acd::Decomposition3d decomposition = acd::Decompose3d(prepared, options);
 
   if (args.check) {

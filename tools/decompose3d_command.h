@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "acd/decompose3d.h"
+
 namespace acdplan::tools {
 
 /// What `acdplan decompose MESH` was asked.
@@ -13,8 +15,9 @@ struct Decompose3dArguments {
   double tau_rel = -1.0;  ///< Relative to acd::ReferenceRadius(); < 0: not given.
   bool surface = false;   ///< The surface ACD even for a solid.
   int max_hulls = 0;      ///< Merge down to at most this many components; 0: no cap.
-  bool repair = false;    ///< Close holes and remove self-intersections first.
-  bool check = false;     ///< acd::CheckDecomposition3d() before writing anything.
+  double merge_growth = acd::Decompose3dOptions{}.merge_growth;  ///< Solid ACD's merge pass.
+  bool repair = false;  ///< Close holes and remove self-intersections first.
+  bool check = false;   ///< acd::CheckDecomposition3d() before writing anything.
   std::string json_path, obj_path, glb_path, svg_path;
 };
 

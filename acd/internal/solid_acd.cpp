@@ -9,9 +9,9 @@
 #include <tuple>
 #include <utility>
 
-#include "acd/convex_hull3d.h"
 #include "acd/internal/cut_plane.h"
 #include "acd/internal/exact_plane_split.h"
+#include "acd/internal/merge_components.h"
 #include "acd/internal/solid_concavity.h"
 #include "acd/internal/solid_openings.h"
 #include "acd/mesh_measures.h"
@@ -51,24 +51,6 @@ Piece MakePiece(ExactPiece exact, double tau) {
 // or a cavity is cut open even where it is shallow (Sec. V.C).
 bool IsFinal(const Piece& piece, double tau) {
   return piece.concavity.value <= tau && piece.topology.genus == 0 && piece.topology.shells == 1;
-}
-
-Component3d MakeComponent(const Piece& piece, int source) {
-  Component3d c;
-  c.mesh = piece.mesh;
-  c.hull = piece.concavity.hull;
-  if (c.hull.triangles.rows() == 0) {
-    std::vector<Eigen::Vector3d> points;
-    for (Eigen::Index i = 0; i < c.mesh.vertices.rows(); ++i)
-      points.emplace_back(c.mesh.vertices.row(i));
-    c.hull = ConvexHull3(points, 0.0);
-  }
-  c.centroid = MeshCentroid(c.mesh, true);
-  c.volume = MeshVolume(c.mesh);
-  c.hull_volume = MeshVolume(c.hull);
-  c.concavity = piece.concavity.value;
-  c.source = source;
-  return c;
 }
 
 // The pieces `piece` falls into when cut by `plane` (each half split into its connected solids).
@@ -140,7 +122,7 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
     Piece& piece = pieces[static_cast<size_t>(index)];
     if (IsFinal(piece, tau)) {
       out->tree[static_cast<size_t>(piece.node)].component = -2;  // a leaf; numbered later
-      (*leaves)[piece.node] = MakeComponent(piece, source);
+      (*leaves)[piece.node] = SolidComponent(piece.mesh, piece.concavity, source);
       piece.exact = {};
     } else {
       heap.emplace(piece.concavity.value, -index);
@@ -198,14 +180,15 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
     if (parts.empty()) {  // no plane splits it, or the cap is reached: it stays as it is
       const int node = piece.node;
       out->tree[static_cast<size_t>(node)].component = -2;
-      (*leaves)[node] = MakeComponent(piece, source);
+      (*leaves)[node] = SolidComponent(piece.mesh, piece.concavity, source);
       piece.exact = {};
       continue;
     }
     const int node = piece.node;
     out->tree[static_cast<size_t>(node)].cut = chosen;
     piece.exact = {};
-    if (keep_internal) (*internal_nodes)[node] = MakeComponent(piece, source);
+    if (keep_internal)
+      (*internal_nodes)[node] = SolidComponent(piece.mesh, piece.concavity, source);
     piece.mesh = {};
     live += static_cast<int>(parts.size()) - 1;
     for (ExactPiece& p : parts) settle(add_node(MakePiece(std::move(p), tau), node));
@@ -278,7 +261,7 @@ void CapHulls(int max_hulls, Decomposition3d* out, std::map<int, Component3d>* l
 }  // namespace
 
 Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max_hulls,
-                               bool feature_grouping) {
+                               bool feature_grouping, double merge_growth) {
   Decomposition3d out;
   out.tau = tau;
   out.max_hulls = max_hulls;
@@ -303,6 +286,7 @@ Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max
     }
   }
   ComputeOpenings(&out);
+  MergeComponents(tau, merge_growth, &out);
   out.stats.vertices = static_cast<int>(prepared.mesh.vertices.rows());
   out.stats.triangles = static_cast<int>(prepared.mesh.triangles.rows());
   out.stats.components = static_cast<int>(out.components.size());

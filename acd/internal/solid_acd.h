@@ -14,8 +14,10 @@ namespace acdplan::acd::internal {
 /// collapsed back up, the node whose piece's hull adds the least volume over its children's
 /// first, so a merged component is an exact piece of the decomposition (its own cut's caps
 /// never appear); merged components may exceed tau. `feature_grouping`: RankCutPlanes() also
-/// tries the global cut's plane (Decompose3dOptions::feature_grouping).
+/// tries the global cut's plane (Decompose3dOptions::feature_grouping). Then adjacent components
+/// whose union is tau-convex merge while their hull grows by at most `merge_growth`
+/// (MergeComponents(); Decompose3dOptions::merge_growth; < 0: no merging).
 Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max_hulls = 0,
-                               bool feature_grouping = false);
+                               bool feature_grouping = false, double merge_growth = -1);
 
 }  // namespace acdplan::acd::internal

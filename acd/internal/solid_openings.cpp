@@ -96,6 +96,8 @@ void ComputeOpenings(Decomposition3d* decomposition) {
       if (h.component >= 0) leaves.push_back(h.component);
       for (auto it = h.children.rbegin(); it != h.children.rend(); ++it) stack.push_back(*it);
     }
+    std::sort(leaves.begin(), leaves.end());  // merged leaves share a component
+    leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
     std::map<int, PlaneFaces> faces;
     for (int leaf : leaves) {
       const TriangleMesh& mesh = d.components[static_cast<size_t>(leaf)].mesh;

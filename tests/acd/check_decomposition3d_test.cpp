@@ -251,11 +251,14 @@ TEST(CheckDecomposition3dTest, ReportsConcavityAboveTau) {
 }
 
 TEST(CheckDecomposition3dTest, ReportsBrokenTrees) {
+  // Two leaves may share a component (the merge pass unites leaves), but then component 1
+  // is no leaf's; a leaf must name a component.
   SplitBox box;
   box.d.tree[2].component = 0;
-  const DecompositionCheck check = CheckDecomposition3d(box.input, box.d);
-  ExpectProblem(check, "tree node 2: component 0 is also the leaf of node 1");
-  ExpectProblem(check, "component 1: is the leaf of no tree node");
+  ExpectProblem(CheckDecomposition3d(box.input, box.d), "component 1: is the leaf of no tree node");
+  box.d.tree[2].component = 2;
+  ExpectProblem(CheckDecomposition3d(box.input, box.d),
+                "tree node 2: leaf without a component (2)");
 }
 
 // Surface ACD results: a square of two triangles as one patch and as two.

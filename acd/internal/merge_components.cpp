@@ -1,0 +1,245 @@
+#include "acd/internal/merge_components.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <optional>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "acd/convex_hull3d.h"
+#include "acd/internal/exact_plane_split.h"
+#include "acd/internal/mesh_repair.h"
+#include "acd/internal/solid_openings.h"
+#include "acd/mesh_measures.h"
+
+namespace acdplan::acd::internal {
+namespace {
+
+using Triangle = std::array<int, 3>;
+
+Triangle LowestFirst(const Triangle& t) {
+  const int k = t[1] < t[0] ? (t[2] < t[1] ? 2 : 1) : (t[2] < t[0] ? 2 : 0);
+  return {t[static_cast<size_t>(k)], t[static_cast<size_t>((k + 1) % 3)],
+          t[static_cast<size_t>((k + 2) % 3)]};
+}
+
+std::vector<Triangle> Triangles(const TriangleMesh& mesh) {
+  std::vector<Triangle> out;
+  out.reserve(static_cast<size_t>(mesh.triangles.rows()));
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    out.push_back({mesh.triangles(f, 0), mesh.triangles(f, 1), mesh.triangles(f, 2)});
+  }
+  return out;
+}
+
+// The union of the closed pieces `a` and `b` when they meet only along faces both carry, as
+// pieces cut apart by one plane do until a later cut splits the section on one side: every
+// triangle of `a` met by the same triangle of `b` reversed (vertices welded by exact position,
+// since the pieces share their rounded cut points) goes, and what is left must be closed.
+std::optional<TriangleMesh> Glue(const TriangleMesh& a, const TriangleMesh& b) {
+  std::map<std::array<double, 3>, int> index;
+  std::vector<Eigen::Vector3d> vertices;
+  auto welded = [&](const TriangleMesh& mesh) {
+    std::vector<Triangle> out = Triangles(mesh);
+    std::vector<int> id(static_cast<size_t>(mesh.vertices.rows()));
+    for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
+      const auto [it, inserted] = index.emplace(
+          std::array<double, 3>{mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2)},
+          static_cast<int>(vertices.size()));
+      if (inserted) vertices.emplace_back(mesh.vertices.row(v));
+      id[static_cast<size_t>(v)] = it->second;
+    }
+    for (Triangle& t : out) {
+      t = LowestFirst({id[static_cast<size_t>(t[0])], id[static_cast<size_t>(t[1])],
+                       id[static_cast<size_t>(t[2])]});
+    }
+    return out;
+  };
+  const std::vector<Triangle> ta = welded(a), tb = welded(b);
+  std::map<Triangle, std::vector<size_t>> in_b;
+  for (size_t i = 0; i < tb.size(); ++i) in_b[tb[i]].push_back(i);
+  std::vector<char> b_gone(tb.size(), 0);
+  std::vector<Triangle> kept;
+  for (const Triangle& t : ta) {
+    const auto it = in_b.find(LowestFirst({t[0], t[2], t[1]}));
+    if (it != in_b.end() && !it->second.empty()) {
+      b_gone[it->second.back()] = 1;
+      it->second.pop_back();
+    } else {
+      kept.push_back(t);
+    }
+  }
+  const size_t glued = ta.size() - kept.size();
+  for (size_t i = 0; i < tb.size(); ++i) {
+    if (!b_gone[i]) kept.push_back(tb[i]);
+  }
+  if (glued == 0 || !IsClosedSurface(kept)) return std::nullopt;
+  std::vector<int> used(vertices.size(), -1);
+  std::vector<Eigen::Vector3d> out_vertices;
+  std::vector<Eigen::Vector3i> out_triangles;
+  for (const Triangle& t : kept) {
+    Eigen::Vector3i u;
+    for (int k = 0; k < 3; ++k) {
+      int& v = used[static_cast<size_t>(t[static_cast<size_t>(k)])];
+      if (v < 0) {
+        v = static_cast<int>(out_vertices.size());
+        out_vertices.push_back(vertices[static_cast<size_t>(t[static_cast<size_t>(k)])]);
+      }
+      u(k) = v;
+    }
+    out_triangles.push_back(u);
+  }
+  return MakeTriangleMesh(out_vertices, out_triangles);
+}
+
+// A piece the solid ACD may output: one closed shell of genus 0 that is a valid solid in doubles.
+bool IsValidPiece(const TriangleMesh& mesh) {
+  const std::vector<Triangle> triangles = Triangles(mesh);
+  if (!IsClosedSurface(triangles)) return false;
+  const ShellTopology topology = Topology(triangles);
+  return topology.shells == 1 && topology.genus == 0 && RoundsToValidSolid(ToExact(mesh));
+}
+
+// The union of the adjacent closed pieces `a` and `b` as a valid piece, or nullopt.
+std::optional<TriangleMesh> Unite(const TriangleMesh& a, const TriangleMesh& b) {
+  if (std::optional<TriangleMesh> glued = Glue(a, b); glued && IsValidPiece(*glued)) return glued;
+  TriangleMesh both;
+  both.vertices.resize(a.vertices.rows() + b.vertices.rows(), 3);
+  both.vertices << a.vertices, b.vertices;
+  both.triangles.resize(a.triangles.rows() + b.triangles.rows(), 3);
+  both.triangles << a.triangles,
+      (b.triangles.array() + static_cast<int>(a.vertices.rows())).matrix();
+  std::vector<std::vector<int>> shells(2);
+  for (Eigen::Index f = 0; f < both.triangles.rows(); ++f) {
+    shells[f < a.triangles.rows() ? 0 : 1].push_back(static_cast<int>(f));
+  }
+  std::optional<TriangleMesh> united = UniteClosedShells(both, shells);
+  if (united && IsValidPiece(*united)) return united;
+  return std::nullopt;
+}
+
+}  // namespace
+
+Component3d SolidComponent(TriangleMesh mesh, const SolidConcavity& concavity, int source) {
+  Component3d c;
+  c.mesh = std::move(mesh);
+  c.hull = concavity.hull;
+  if (c.hull.triangles.rows() == 0) {
+    std::vector<Eigen::Vector3d> points;
+    for (Eigen::Index i = 0; i < c.mesh.vertices.rows(); ++i)
+      points.emplace_back(c.mesh.vertices.row(i));
+    c.hull = ConvexHull3(points, 0.0);
+  }
+  c.centroid = MeshCentroid(c.mesh, true);
+  c.volume = MeshVolume(c.mesh);
+  c.hull_volume = MeshVolume(c.hull);
+  c.concavity = concavity.value;
+  c.source = source;
+  return c;
+}
+
+int MergeComponents(double tau, double max_growth, Decomposition3d* decomposition) {
+  if (!(max_growth >= 0)) return 0;
+  Decomposition3d& d = *decomposition;
+  const int count = static_cast<int>(d.components.size());
+  std::vector<std::set<int>> neighbours(static_cast<size_t>(count));
+  for (const Opening3d& o : d.openings) {
+    neighbours[static_cast<size_t>(o.component_a)].insert(o.component_b);
+    neighbours[static_cast<size_t>(o.component_b)].insert(o.component_a);
+  }
+  struct Merge {
+    double growth = 0;
+    TriangleMesh mesh;
+    SolidConcavity concavity;
+  };
+  std::map<std::pair<int, int>, Merge> ready;  // the pairs that may merge, a < b
+  auto consider = [&](int a, int b) {
+    if (a > b) std::swap(a, b);
+    const Component3d& x = d.components[static_cast<size_t>(a)];
+    const Component3d& y = d.components[static_cast<size_t>(b)];
+    const double before = x.hull_volume + y.hull_volume;
+    if (x.source != y.source || !(before > 0)) return;
+    std::vector<Eigen::Vector3d> points;
+    for (const TriangleMesh* m : {&x.mesh, &y.mesh}) {
+      for (Eigen::Index i = 0; i < m->vertices.rows(); ++i) points.emplace_back(m->vertices.row(i));
+    }
+    const TriangleMesh hull = ConvexHull3(points, 0.0);
+    const double growth = (MeshVolume(hull) - before) / before;
+    if (!(growth <= max_growth)) return;
+    // Every vertex of either piece is on the union's boundary (a cut face's corners lie on
+    // the faces around it), and the concavity measures a boundary point at no less than its
+    // depth below the nearest hull plane: a vertex deeper than tau rules the pair out.
+    const Eigen::Matrix<double, Eigen::Dynamic, 4> planes = HullPlanes(hull);
+    for (const Eigen::Vector3d& p : points) {
+      if ((planes.col(3) - planes.leftCols<3>() * p).minCoeff() > tau) return;
+    }
+    std::optional<TriangleMesh> united = Unite(x.mesh, y.mesh);
+    if (!united) return;
+    SolidConcavity concavity = MeasureSolidConcavity(*united, tau);
+    if (!(concavity.value <= tau)) return;
+    ready[{a, b}] = Merge{growth, std::move(*united), std::move(concavity)};
+  };
+  for (int a = 0; a < count; ++a) {
+    for (int b : neighbours[static_cast<size_t>(a)]) {
+      if (b > a) consider(a, b);
+    }
+  }
+  int merges = 0;
+  while (!ready.empty()) {
+    auto best = ready.begin();
+    for (auto it = ready.begin(); it != ready.end(); ++it) {
+      if (it->second.growth < best->second.growth) best = it;
+    }
+    const auto [a, b] = best->first;
+    Merge merge = std::move(best->second);
+    Component3d& kept = d.components[static_cast<size_t>(a)];
+    kept = SolidComponent(std::move(merge.mesh), merge.concavity, kept.source);
+    d.components[static_cast<size_t>(b)] = Component3d{};
+    for (auto it = ready.begin(); it != ready.end();) {
+      const bool stale = it->first.first == a || it->first.first == b || it->first.second == a ||
+                         it->first.second == b;
+      it = stale ? ready.erase(it) : std::next(it);
+    }
+    for (int c : neighbours[static_cast<size_t>(b)]) {
+      neighbours[static_cast<size_t>(c)].erase(b);
+      if (c != a) {
+        neighbours[static_cast<size_t>(c)].insert(a);
+        neighbours[static_cast<size_t>(a)].insert(c);
+      }
+    }
+    neighbours[static_cast<size_t>(b)].clear();
+    neighbours[static_cast<size_t>(a)].erase(b);
+    for (HierarchyNode3d& node : d.tree) {
+      if (node.component == b) node.component = a;
+    }
+    for (int c : neighbours[static_cast<size_t>(a)]) consider(a, c);
+    ++merges;
+  }
+  if (merges == 0) return 0;
+  // Renumber by first leaf in depth-first order, as the leaves were numbered.
+  std::vector<int> id(static_cast<size_t>(count), -1);
+  std::vector<Component3d> components;
+  for (int root : d.roots) {
+    std::vector<int> stack = {root};
+    while (!stack.empty()) {
+      HierarchyNode3d& node = d.tree[static_cast<size_t>(stack.back())];
+      stack.pop_back();
+      if (node.component >= 0) {
+        int& to = id[static_cast<size_t>(node.component)];
+        if (to < 0) {
+          to = static_cast<int>(components.size());
+          components.push_back(std::move(d.components[static_cast<size_t>(node.component)]));
+        }
+        node.component = to;
+      }
+      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back(*it);
+    }
+  }
+  d.components = std::move(components);
+  ComputeOpenings(&d);
+  return merges;
+}
+
+}  // namespace acdplan::acd::internal
