@@ -180,6 +180,9 @@ int RunDecompose3d(const Decompose3dArguments& args) {
     Line("tau", Short(decomposition.tau));
   }
   if (decomposition.max_hulls > 0) Line("max hulls", std::to_string(decomposition.max_hulls));
+  if (decomposition.merge_growth >= 0) {
+    Line("merge", "tau-convex neighbours, hull growth <= " + Short(decomposition.merge_growth));
+  }
   Line("components", std::to_string(stats.components));
   if (stats.surface) {
     Line("hull volume", Short(stats.hull_volume));

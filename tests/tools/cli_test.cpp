@@ -460,7 +460,7 @@ TEST_F(CliTest, AClosedNonManifoldMeshNeedsSurfaceOrRepair) {
   EXPECT_NE(surface.out.find("non-manifold edge"), std::string::npos) << surface.out;
 }
 
-TEST_F(CliTest, TauMaxHullsAndTheirDefaults) {
+TEST_F(CliTest, TauMaxHullsMergeGrowthAndTheirDefaults) {
   const fs::path box = Write("box.obj", BoxObj({0, 0, 0}, {1, 1, 1}));
   const fs::path a = dir_ / "a.json", b = dir_ / "b.json";
   RunResult run = Acdplan("decompose " + Quote(box.string()) + " --json " + Quote(a.string()));
@@ -470,15 +470,21 @@ TEST_F(CliTest, TauMaxHullsAndTheirDefaults) {
   nlohmann::json j = nlohmann::json::parse(Read(a));
   EXPECT_EQ(j.at("tau_rel"), 0.05);
   EXPECT_EQ(j.at("max_hulls"), 0);
+  EXPECT_EQ(j.at("merge_growth"), 0.01);
+  EXPECT_NE(run.out.find("merge          tau-convex neighbours, hull growth <= 0.01"),
+            std::string::npos)
+      << run.out;
 
-  run = Acdplan("decompose " + Quote(box.string()) + " --tau 0.125 --max-hulls 3 --json " +
-                Quote(b.string()));
+  run = Acdplan("decompose " + Quote(box.string()) +
+                " --tau 0.125 --max-hulls 3 --merge-growth -1 --json " + Quote(b.string()));
   ASSERT_EQ(run.status, 0) << run.err;
   EXPECT_NE(run.out.find("max hulls      3"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("merge   "), std::string::npos) << run.out;
   j = nlohmann::json::parse(Read(b));
   EXPECT_EQ(j.at("tau"), 0.125);
   EXPECT_TRUE(j.at("tau_rel").is_null());
   EXPECT_EQ(j.at("max_hulls"), 3);
+  EXPECT_TRUE(j.at("merge_growth").is_null());
   EXPECT_LE(j.at("components").size(), 3u);
 }
 
