@@ -374,14 +374,29 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int sta
     push_top(at(0));
   }
   push_top(third);
+  // The deque's top edge (deque[top - 1] -> deque[top]) and bottom edge (deque[bottom] ->
+  // deque[bottom + 1]) with their vectors: most vertices fall inside and leave both alone.
+  struct Edge {
+    Point2d from, along, to;
+    void Set(const Point2d& a, const Point2d& b) {
+      from = a;
+      to = b;
+      along = b - a;
+    }
+    int Turn(const Point2d& c) const { return internal::OrientationAlong(from, along, to, c); }
+  };
+  Edge top_edge, bottom_edge;
+  top_edge.Set(ring[deque[top - 1]], ring[deque[top]]);
+  bottom_edge.Set(ring[deque[bottom]], ring[deque[bottom + 1]]);
   for (++k; k < n; ++k) {
     const int v = at(k);
+    const Point2d& point = ring[v];
     // Inside the current hull or on its boundary (then it cannot be a strict hull vertex, and
     // letting it in would pop true hull vertices that are collinear with it).
-    const int top_turn = turn(deque[top - 1], deque[top], v);
+    const int top_turn = top_edge.Turn(point);
     int bottom_turn = 2;  // Not taken yet.
     if (top_turn >= 0) {
-      bottom_turn = turn(deque[bottom], deque[bottom + 1], v);
+      bottom_turn = bottom_edge.Turn(point);
       if (bottom_turn >= 0) continue;
     }
     // Each loop's first turn is one taken above (the exact sign of a cyclic permutation is
@@ -397,6 +412,8 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int sta
       while (top - bottom >= 2 && turn(v, deque[bottom], deque[bottom + 1]) <= 0) ++bottom;
     }
     push_bottom(v);
+    top_edge.Set(ring[deque[top - 1]], point);
+    bottom_edge.Set(point, ring[deque[bottom + 1]]);
   }
   std::vector<int> hull(deque.get() + bottom, deque.get() + top);  // Drop the repeated end.
   std::sort(hull.begin(), hull.end());

@@ -14,18 +14,37 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 inline Kernel::Point_2 ToCgal(const Point2d& p) { return {p.x(), p.y()}; }
 
-/// Sign of the turn a -> b -> c, exactly: +1 left (counter-clockwise), 0 collinear, -1 right.
-/// A floating-point filter decides the clear cases (Shewchuk's orient2d error bound
-/// (3 + 16 eps) eps |detsum|, which certifies the sign of the rounded determinant); CGAL's
-/// exact predicate decides the rest.
-inline int Orientation(const Point2d& a, const Point2d& b, const Point2d& c) {
-  const double left = (a.x() - c.x()) * (b.y() - c.y());
-  const double right = (a.y() - c.y()) * (b.x() - c.x());
+/// The sign of left - right, two rounded products of rounded differences as orient2d forms
+/// them, when their rounding cannot flip it (Shewchuk's orient2d error bound
+/// (3 + 16 eps) eps (|left| + |right|), which certifies the sign of the rounded difference);
+/// 0 when it might.
+inline int FilteredTurnSign(double left, double right) {
   const double det = left - right;
   constexpr double kErrorBound = 3.3306690738754716e-16;
   const double bound = kErrorBound * (std::abs(left) + std::abs(right));
   if (det > bound) return 1;
   if (-det > bound) return -1;
+  return 0;
+}
+
+/// Sign of the turn a -> b -> c, exactly: +1 left (counter-clockwise), 0 collinear, -1 right.
+/// A floating-point filter decides the clear cases (FilteredTurnSign()); CGAL's exact predicate
+/// decides the rest.
+inline int Orientation(const Point2d& a, const Point2d& b, const Point2d& c) {
+  const int sign =
+      FilteredTurnSign((a.x() - c.x()) * (b.y() - c.y()), (a.y() - c.y()) * (b.x() - c.x()));
+  if (sign != 0) return sign;
+  return static_cast<int>(CGAL::orientation(ToCgal(a), ToCgal(b), ToCgal(c)));
+}
+
+/// Orientation(a, b, c) for loops that test many points c against one edge a -> b: `ab` must
+/// be b - a as rounded, computed once per edge. The filter runs on the cyclic permutation
+/// (b, c, a), which has the same sign, with a as the pivot, so it is as certain as
+/// Orientation()'s, and both return the exact sign.
+inline int OrientationAlong(const Point2d& a, const Point2d& ab, const Point2d& b,
+                            const Point2d& c) {
+  const int sign = FilteredTurnSign(ab.x() * (c.y() - a.y()), ab.y() * (c.x() - a.x()));
+  if (sign != 0) return sign;
   return static_cast<int>(CGAL::orientation(ToCgal(a), ToCgal(b), ToCgal(c)));
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <optional>
 
@@ -436,25 +437,46 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
   const bool ray_here = !options.double_resolves_first;
   BisectorRay ray(polygon, ring_id, index);
   const bool ray_outer = ray_here && ray.Valid() && m > 0;
-  double side_prev = 0.0, noise_prev = 0.0;  // Of vertex i - 1.
-  auto offer_edge = [&](int i, int j, double side_i, double noise_i, double side_j,
-                        double noise_j) {
-    const double margin = noise_i + noise_j;
+  // One margin for every edge, at least the sum of its ends' SideNoise(): the noise grows with
+  // |to.x| + |to.y|, whose rounded terms are largest, each, at vertices of the hull (the
+  // roundings are monotone), so one bound from the hull serves every vertex. An edge within
+  // it of the line is offered, to be told by Offer() as before.
+  double margin = std::numeric_limits<double>::infinity();
+  if (ray_outer && !concavity.hull.empty()) {
+    Point2d largest = Point2d::Zero();
+    for (const int i : concavity.hull) largest = largest.cwiseMax((outer[i] - r).cwiseAbs());
+    margin = 2.0 * ray.SideNoise(largest);
+  }
+  double side_prev = 0.0;  // Of vertex i - 1.
+  auto offer_edge = [&](int i, int j, double side_i, double side_j) {
     if ((side_i > margin && side_j > margin) || (side_i < -margin && side_j < -margin)) return;
     ray.Offer(-1, outer, i, j);
   };
+  // Pass 2 tests every vertex's bound against the floor; without a diagonal that must win
+  // (no rank 1) pass 1 keeps each vertex's bound^2 / dist^2 for it, so that pass 2 reads one
+  // number per vertex and runs the full test only near the floor.
+  constexpr double kSlack = 1.0 + 1e-9;  // Against rounding in the bounds.
+  const double bonus = std::max(1.0, options.double_resolve_bonus);
+  auto bound = [&](double c) { return relative(c) * (c > options.tau ? bonus : 1.0) * kSlack; };
+  const bool keyed = !options.double_resolves_first;
+  // Not zeroed: pass 1 writes every entry before pass 2 reads it.
+  const std::unique_ptr<double[]> key(keyed ? new double[m] : nullptr);
   for (int i = 0; i < m; ++i) {
-    max_concavity = std::max(max_concavity, concavity.outer[i]);
+    const double c = concavity.outer[i];
+    max_concavity = std::max(max_concavity, c);
     const Point2d to = outer[i] - r;  // r is the ray's origin.
     if (ray_outer) {
-      const double side_i = ray.Side(to), noise_i = ray.SideNoise(to);
-      if (i > 0) offer_edge(i - 1, i, side_prev, noise_prev, side_i, noise_i);
+      const double side_i = ray.Side(to);
+      if (i > 0) offer_edge(i - 1, i, side_prev, side_i);
       side_prev = side_i;
-      noise_prev = noise_i;
+    }
+    const double d2 = to.squaredNorm();
+    if (keyed) {
+      const double f = bound(c);
+      key[i] = f * f / d2;  // +inf at r itself.
     }
     if (cross(in, to) < 0.0 || cross(out, to) < 0.0 || scorer.Skips(i)) continue;
-    const double d2 = to.squaredNorm();
-    const double f = relative(concavity.outer[i]);
+    const double f = relative(c);
     if (d2 > 0.0 && f * f > guess_value * d2) {
       guess = i;
       guess_value = f * f / d2;
@@ -462,7 +484,7 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
   }
   if (ray_outer) {
     const Point2d to = outer[0] - r;
-    offer_edge(m - 1, 0, side_prev, noise_prev, ray.Side(to), ray.SideNoise(to));
+    offer_edge(m - 1, 0, side_prev, ray.Side(to));
     for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
       const Ring2d& hole = polygon.holes[k];
       const int h = static_cast<int>(hole.size());
@@ -470,8 +492,6 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
     }
   }
   // Pass 2: every candidate that may reach the floor, the best candidate known so far.
-  constexpr double kSlack = 1.0 + 1e-9;  // Against rounding in the bounds.
-  const double bonus = std::max(1.0, options.double_resolve_bonus);
   const double edge_bound = relative(max_concavity) * bonus * kSlack / options.score_distance;
   Candidate floor;
   floor.score = -std::numeric_limits<double>::infinity();
@@ -503,20 +523,30 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
       ++ties;
     }
   };
-  for (int i = 0; i < m; ++i) {
+  auto visit = [&](int i) {
     // Whether x may rank 1 (a diagonal that must win, ResolveOptions::double_resolves_first).
     const double c = concavity.outer[i];
     const bool may_rank = options.double_resolves_first && c > options.tau;
-    if (floor.rank == 1 && !may_rank) continue;
+    if (floor.rank == 1 && !may_rank) return;
     if (floor.rank == 1 || !may_rank) {  // Only its score can lift it above the floor.
       const double d2 = (outer[i] - r).squaredNorm();
-      const double f = relative(c) * (c > options.tau ? bonus : 1.0) * kSlack;
-      if (f * f < floor2 * d2) continue;
+      const double f = bound(c);
+      if (f * f < floor2 * d2) return;
     }
-    if (SurelyOutsideCone(scorer.Before(), r, scorer.After(), outer[i])) continue;
+    if (SurelyOutsideCone(scorer.Before(), r, scorer.After(), outer[i])) return;
     if (!scorer.Skips(i) && scorer.Score({-1, i, false, outer[i]}, &candidate)) {
       consider(candidate);
     }
+  };
+  if (keyed) {
+    // key < floor2 (1 - 1e-12) implies f^2 < floor2 d2 (the division rounds by half an ulp):
+    // the full test skips such a vertex too; the others go through it.
+    for (int i = 0; i < m; ++i) {
+      if (key[i] < floor2 * (1.0 - 1e-12)) continue;
+      visit(i);
+    }
+  } else {
+    for (int i = 0; i < m; ++i) visit(i);
   }
   // The bisector's hit (see ScoredCandidates()), a point on an edge: rank 0.
   if (floor.rank < 1) {
