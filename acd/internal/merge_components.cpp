@@ -11,6 +11,7 @@
 #include "acd/convex_hull3d.h"
 #include "acd/internal/exact_plane_split.h"
 #include "acd/internal/mesh_repair.h"
+#include "acd/internal/neighbour_sets.h"
 #include "acd/internal/solid_openings.h"
 #include "acd/mesh_measures.h"
 
@@ -202,15 +203,7 @@ int MergeComponents(double tau, double max_growth, Decomposition3d* decompositio
                          it->first.second == b;
       it = stale ? ready.erase(it) : std::next(it);
     }
-    for (int c : neighbours[static_cast<size_t>(b)]) {
-      neighbours[static_cast<size_t>(c)].erase(b);
-      if (c != a) {
-        neighbours[static_cast<size_t>(c)].insert(a);
-        neighbours[static_cast<size_t>(a)].insert(c);
-      }
-    }
-    neighbours[static_cast<size_t>(b)].clear();
-    neighbours[static_cast<size_t>(a)].erase(b);
+    ContractInto(a, b, &neighbours);
     for (HierarchyNode3d& node : d.tree) {
       if (node.component == b) node.component = a;
     }

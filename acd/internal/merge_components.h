@@ -22,8 +22,10 @@ Component3d SolidComponent(TriangleMesh mesh, const SolidConcavity& concavity, i
 /// the pair whose hull adds least (relative, ties by index) first, again and again, so a merged
 /// component can merge on. The hull test comes first: it needs only the points' hull, and rules
 /// out most pairs before any union is formed. A tree leaf of a merged component points to the
-/// union, so several leaves can share one component; components are renumbered by their first
-/// leaf in depth-first order, and the openings are recomputed. `max_growth` < 0: no merging.
+/// union, so several leaves can share one component: unlike the surface ACD's patch merge, no
+/// leaf leaves the tree, because its internal nodes' cut planes are where ComputeOpenings()
+/// finds the openings. Components are renumbered by their first leaf in depth-first order, and
+/// the openings are recomputed. `max_growth` < 0: no merging.
 /// Returns the number of merges.
 int MergeComponents(double tau, double max_growth, Decomposition3d* decomposition);
 

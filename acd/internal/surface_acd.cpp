@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "acd/convex_hull3d.h"
+#include "acd/internal/neighbour_sets.h"
 #include "acd/mesh_measures.h"
 
 namespace acdplan::acd::internal {
@@ -565,15 +566,7 @@ void MergePatches(const SurfacePart& part, int source, double tau, int base, int
     merged[static_cast<size_t>(a)] = 1;
     alive[static_cast<size_t>(b)] = 0;
     ++version[static_cast<size_t>(a)];
-    for (int n : neighbours[static_cast<size_t>(b)]) {
-      neighbours[static_cast<size_t>(n)].erase(b);
-      if (n != a) {
-        neighbours[static_cast<size_t>(n)].insert(a);
-        neighbours[static_cast<size_t>(a)].insert(n);
-      }
-    }
-    neighbours[static_cast<size_t>(b)].clear();
-    neighbours[static_cast<size_t>(a)].erase(b);
+    ContractInto(a, b, &neighbours);
     for (int n : neighbours[static_cast<size_t>(a)]) consider(a, n);
   }
   // The hierarchy: drop the merged-away leaves and the internal nodes left with one child.
