@@ -26,6 +26,11 @@ Triangle LowestFirst(const Triangle& t) {
           t[static_cast<size_t>((k + 2) % 3)]};
 }
 
+void AppendVertices(const TriangleMesh& mesh, std::vector<Eigen::Vector3d>* points) {
+  for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i)
+    points->emplace_back(mesh.vertices.row(i));
+}
+
 std::vector<Triangle> Triangles(const TriangleMesh& mesh) {
   std::vector<Triangle> out;
   out.reserve(static_cast<size_t>(mesh.triangles.rows()));
@@ -97,10 +102,10 @@ std::optional<TriangleMesh> Glue(const TriangleMesh& a, const TriangleMesh& b) {
 
 // A piece the solid ACD may output: one closed shell of genus 0 that is a valid solid in doubles.
 bool IsValidPiece(const TriangleMesh& mesh) {
-  const std::vector<Triangle> triangles = Triangles(mesh);
-  if (!IsClosedSurface(triangles)) return false;
-  const ShellTopology topology = Topology(triangles);
-  return topology.shells == 1 && topology.genus == 0 && RoundsToValidSolid(ToExact(mesh));
+  const ExactPiece piece = ToExact(mesh);
+  if (!IsClosedSurface(piece.triangles)) return false;
+  const ShellTopology topology = Topology(piece.triangles);
+  return topology.shells == 1 && topology.genus == 0 && RoundsToValidSolid(piece);
 }
 
 // The union of the adjacent closed pieces `a` and `b` as a valid piece, or nullopt.
@@ -129,8 +134,7 @@ Component3d SolidComponent(TriangleMesh mesh, const SolidConcavity& concavity, i
   c.hull = concavity.hull;
   if (c.hull.triangles.rows() == 0) {
     std::vector<Eigen::Vector3d> points;
-    for (Eigen::Index i = 0; i < c.mesh.vertices.rows(); ++i)
-      points.emplace_back(c.mesh.vertices.row(i));
+    AppendVertices(c.mesh, &points);
     c.hull = ConvexHull3(points, 0.0);
   }
   c.centroid = MeshCentroid(c.mesh, true);
@@ -163,9 +167,8 @@ int MergeComponents(double tau, double max_growth, Decomposition3d* decompositio
     const double before = x.hull_volume + y.hull_volume;
     if (x.source != y.source || !(before > 0)) return;
     std::vector<Eigen::Vector3d> points;
-    for (const TriangleMesh* m : {&x.mesh, &y.mesh}) {
-      for (Eigen::Index i = 0; i < m->vertices.rows(); ++i) points.emplace_back(m->vertices.row(i));
-    }
+    AppendVertices(x.mesh, &points);
+    AppendVertices(y.mesh, &points);
     const TriangleMesh hull = ConvexHull3(points, 0.0);
     const double growth = (MeshVolume(hull) - before) / before;
     if (!(growth <= max_growth)) return;
