@@ -642,7 +642,14 @@ class Checker {
       }
       const Eigen::Vector3d newell = NewellNormal(opening.polygon);
       const double area = 0.5 * newell.norm();
-      if (!Near(opening.area, area, 1e-6, tol * tol)) {
+      // The polygon's vertices are rounded to doubles: each may lie up to tol off, which moves
+      // the area by up to tol x the perimeter (it matters for slivers of 1e-11 units^2).
+      double perimeter = 0;
+      for (size_t k = 0; k < opening.polygon.size(); ++k) {
+        perimeter +=
+            (opening.polygon[(k + 1) % opening.polygon.size()] - opening.polygon[k]).norm();
+      }
+      if (!Near(opening.area, area, 1e-6, tol * perimeter)) {
         problems_.Add(label + "area " + Num(opening.area) + " != polygon area " + Num(area));
       }
       if (area > 0 && !((opening.normal - newell.normalized()).norm() <= 1e-6)) {

@@ -16,6 +16,7 @@
 #include "acd/internal/face_intersections.h"
 #include "acd/internal/mesh_edges.h"
 #include "acd/internal/mesh_repair.h"
+#include "acd/internal/winding_union.h"
 #include "base/format.h"
 #include "base/input_error.h"
 
@@ -387,9 +388,10 @@ TriangleMesh CloseHoles(const Diagnosis& d, std::vector<std::string>* notes) {
   return MakeTriangleMesh(vertices, triangles);
 }
 
-// Replaces each group of closed shells that cross each other by their union. Shells that
-// cross themselves are left as they are (their repair would need autorefinement, which is
-// not robust enough in CGAL 5.5 to run on untrusted input). Empty when nothing was united.
+// Replaces each group of closed shells that cross each other or themselves by their union:
+// CGAL's corefinement when none crosses itself (it requires that), else the positive-winding
+// solid of the group (UniteByWinding; CGAL 5.5's autorefinement is experimental and not safe
+// on untrusted input). Empty when nothing was united.
 std::optional<TriangleMesh> UniteCrossingShells(const Diagnosis& d,
                                                 std::vector<std::string>* notes) {
   const int count = static_cast<int>(d.patches.size());
@@ -418,26 +420,39 @@ std::optional<TriangleMesh> UniteCrossingShells(const Diagnosis& d,
     vertices.push_back(d.mesh.vertices.row(v).transpose());
   }
   std::vector<Eigen::Vector3i> triangles;
-  int united_groups = 0, united_shells = 0, failed_groups = 0, self_crossing = 0;
+  int united_groups = 0, united_shells = 0, failed_groups = 0;
+  int self_crossing = 0, failed_self_crossing = 0, pinches = 0, specks = 0;
   for (int root = 0; root < count; ++root) {
     const auto& group = members[static_cast<size_t>(root)];
-    bool unite = group.size() >= 2;
-    for (const int p : group) {
-      if (crosses_itself[static_cast<size_t>(p)]) {
-        unite = false;
-        ++self_crossing;
-      }
-    }
+    int self_crossing_here = 0;
+    for (const int p : group) self_crossing_here += crosses_itself[static_cast<size_t>(p)];
     std::optional<TriangleMesh> united;
-    if (unite) {
+    if (self_crossing_here > 0) {
+      std::vector<int> faces;
+      for (const int p : group) {
+        const auto& shell = d.patches[static_cast<size_t>(p)];
+        faces.insert(faces.end(), shell.begin(), shell.end());
+      }
+      if (auto solid = internal::UniteByWinding(d.mesh, faces, d.crossings)) {
+        united = std::move(solid->mesh);
+        self_crossing += self_crossing_here;
+        pinches += solid->pinches;
+        specks += solid->specks;
+      } else {
+        failed_self_crossing += self_crossing_here;
+      }
+    } else if (group.size() >= 2) {
       std::vector<std::vector<int>> shells;
       for (const int p : group) shells.push_back(d.patches[static_cast<size_t>(p)]);
       united = internal::UniteClosedShells(d.mesh, shells);
-      if (!united) ++failed_groups;
+      if (united) {
+        ++united_groups;
+        united_shells += static_cast<int>(group.size());
+      } else {
+        ++failed_groups;
+      }
     }
     if (united) {
-      ++united_groups;
-      united_shells += static_cast<int>(group.size());
       const int offset = static_cast<int>(vertices.size());
       for (Eigen::Index v = 0; v < united->vertices.rows(); ++v) {
         vertices.push_back(united->vertices.row(v).transpose());
@@ -463,9 +478,21 @@ std::optional<TriangleMesh> UniteCrossingShells(const Diagnosis& d,
                      " of crossing shells (the union would not be manifold)");
   }
   if (self_crossing > 0) {
-    notes->push_back("repair: left " + Plural(self_crossing, "shell") +
-                     (self_crossing == 1 ? " that crosses itself" : " that cross themselves") +
-                     first_self + " (only crossings between shells are removed)");
+    notes->push_back(
+        "repair: replaced " + Plural(self_crossing, "shell") +
+        (self_crossing == 1 ? " that crosses itself" : " that cross themselves") + first_self +
+        " by the solid inside them (positive winding)" +
+        (pinches > 0 ? ", separating the fans of " + Plural(pinches, "pinch vertex") +
+                           " by 1e-3 of their shortest edge"
+                     : std::string()) +
+        (specks > 0 ? ", dropping " + Plural(specks, "shell") + " of less than 1e-9 of its volume"
+                    : std::string()));
+  }
+  if (failed_self_crossing > 0) {
+    notes->push_back(
+        "repair: could not unite " + Plural(failed_self_crossing, "shell") +
+        (failed_self_crossing == 1 ? " that crosses itself" : " that cross themselves") +
+        first_self + " (the winding rule left no surface, or no ray found a clear way out)");
   }
   return MakeTriangleMesh(vertices, triangles);
 }

@@ -76,9 +76,10 @@ struct PreparedMesh {
 /// new vertices (PMP::triangulate_hole_polyline, 2D constrained Delaunay when the loop is
 /// nearly planar); then, if the mesh is closed and manifold, each group of closed shells that
 /// cross each other is replaced by its union (PMP::corefine_and_compute_union on exact
-/// copies, rounded to doubles). Shells that cross themselves are left alone (CGAL 5.5's
-/// autorefinement is experimental and not safe on untrusted input). The result is cleaned and
-/// diagnosed again; what repair could not mend stays in `defects`.
+/// copies, rounded to doubles), and a group with a shell that crosses itself by the solid its
+/// shells bound by the nonzero winding rule (the same union where none crosses itself;
+/// internal::UniteByWinding, exact). The result is cleaned and diagnosed again; what repair
+/// could not mend stays in `defects`.
 ///
 /// Complexity: O(F log F) for F triangles plus O(k) for k crossing candidate pairs (box
 /// intersection), O(S^2) bounding-box tests for S closed shells; repair adds the hole

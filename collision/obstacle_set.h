@@ -60,8 +60,9 @@ struct ObstaclePiece {
   /// obstacle has cavities).
   bool convex = false;
   /// 3D: the piece is a solid ACD piece of a part that crossed itself and was repaired first
-  /// (into its union), so it may cover points the exact test (ray parity in each part) calls
-  /// outside: a point inside it is not taken as inside the obstacle without confirmation.
+  /// (into the solid it winds around positively, acd::PrepareMesh()), so it may cover points the
+  /// exact test (ray parity in each part) calls outside, such as where the part overlaps itself:
+  /// a point inside it is not taken as inside the obstacle without confirmation.
   bool repaired = false;
   acd::TriangleMesh hull;  ///< Convex hull of `solid`, closed, faces counter-clockwise
                            ///< seen from outside.

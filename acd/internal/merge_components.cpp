@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <utility>
@@ -10,9 +11,10 @@
 
 #include "acd/convex_hull3d.h"
 #include "acd/internal/exact_plane_split.h"
-#include "acd/internal/mesh_repair.h"
+#include "acd/internal/face_intersections.h"
 #include "acd/internal/neighbour_sets.h"
 #include "acd/internal/solid_openings.h"
+#include "acd/internal/winding_union.h"
 #include "acd/mesh_measures.h"
 
 namespace acdplan::acd::internal {
@@ -117,12 +119,14 @@ std::optional<TriangleMesh> Unite(const TriangleMesh& a, const TriangleMesh& b) 
   both.triangles.resize(a.triangles.rows() + b.triangles.rows(), 3);
   both.triangles << a.triangles,
       (b.triangles.array() + static_cast<int>(a.vertices.rows())).matrix();
-  std::vector<std::vector<int>> shells(2);
-  for (Eigen::Index f = 0; f < both.triangles.rows(); ++f) {
-    shells[f < a.triangles.rows() ? 0 : 1].push_back(static_cast<int>(f));
+  std::vector<int> faces(static_cast<size_t>(both.triangles.rows()));
+  std::iota(faces.begin(), faces.end(), 0);
+  std::optional<WindingUnion> united = UniteByWinding(both, faces, IntersectingFacePairs(both));
+  // A union that touches itself in a point, or leaves a speck, is no piece (UniteByWinding would
+  // move or drop geometry to mend it).
+  if (united && united->pinches == 0 && united->specks == 0 && IsValidPiece(united->mesh)) {
+    return std::move(united->mesh);
   }
-  std::optional<TriangleMesh> united = UniteClosedShells(both, shells);
-  if (united && IsValidPiece(*united)) return united;
   return std::nullopt;
 }
 

@@ -54,7 +54,9 @@ bool IsFinal(const Piece& piece, double tau) {
 }
 
 // The pieces `piece` falls into when cut by `plane` (each half split into its connected solids).
-std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane) {
+// `*sliver` says whether one of them is a sliver (below kMinPieceFraction of their volume).
+std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane, bool* sliver) {
+  *sliver = false;
   const ExactKernel::Plane_3 exact(plane.normal.x(), plane.normal.y(), plane.normal.z(),
                                    -plane.offset);
   ExactPiece below, above;
@@ -65,8 +67,9 @@ std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane) {
   // A section the cap could not close cleanly (constraints that overlap or cross, which a
   // valid solid's section should not have) rejects the plane rather than leak an open piece;
   // so does a piece that is valid exactly but not once rounded to the doubles it is output as.
-  // So does a plane that only shaves off a rounding-level sliver (a plane through a vertex
-  // whose neighbours lie a hair off it): such a piece would be a component of no use.
+  // A plane that only shaves off a rounding-level sliver (a plane through a vertex whose
+  // neighbours lie a hair off it) is flagged: such a piece would be a component of no use, so
+  // the plane is taken only when no other splits the piece.
   std::vector<double> volumes;
   double total = 0;
   for (const ExactPiece& p : out) {
@@ -74,9 +77,7 @@ std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane) {
     volumes.push_back(MeshVolume(ToDouble(p)));
     total += volumes.back();
   }
-  for (double v : volumes) {
-    if (!(v > kMinPieceFraction * total)) return {};
-  }
+  for (double v : volumes) *sliver = *sliver || !(v > kMinPieceFraction * total);
   // Each piece goes on from its rounded coordinates, which RoundsToValidSolid has just found a
   // valid solid (and which the pieces share where they meet): exact cut points of cut points
   // grow without bound (measured: teapot at tau_rel 0.2 spent minutes in the section's
@@ -140,8 +141,8 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
       // If none does, the same planes moved off by kPlaneShift x tau either way: a plane
       // through the witness vertex can leave a piece pinched at a vertex, or one that
       // self-intersects once its cut points are rounded, where a plane beside it does not.
-      std::vector<ExactPiece> fallback;
-      Plane3d fallback_plane;
+      std::vector<ExactPiece> fallback, sliver_fallback;
+      Plane3d fallback_plane, sliver_plane;
       const std::vector<Plane3d> ranked =
           RankCutPlanes(piece.mesh, piece.concavity, tau, feature_grouping);
       std::vector<Plane3d> candidates = ranked;
@@ -154,8 +155,15 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
       for (size_t i = 0; i < candidates.size(); ++i) {
         if (i == ranked.size() && !fallback.empty()) break;  // unshifted planes split it
         const Plane3d& plane = candidates[i];
-        std::vector<ExactPiece> result = Cut(piece.exact, plane);
+        bool sliver = false;
+        std::vector<ExactPiece> result = Cut(piece.exact, plane, &sliver);
         if (result.size() < 2) continue;
+        if (sliver) {
+          // Last resort: a sliver component beats a piece left above tau (e.g. a repaired
+          // solid whose every witness plane crosses a lens where two sheets crossed).
+          if (sliver_fallback.empty()) sliver_fallback = std::move(result), sliver_plane = plane;
+          continue;
+        }
         if (piece.topology.genus == 0 && piece.topology.shells == 1) {
           parts = std::move(result);
           chosen = plane;
@@ -176,6 +184,9 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
         if (fallback.empty()) fallback = std::move(result), fallback_plane = plane;
       }
       if (parts.empty() && !fallback.empty()) parts = std::move(fallback), chosen = fallback_plane;
+      if (parts.empty() && !sliver_fallback.empty()) {
+        parts = std::move(sliver_fallback), chosen = sliver_plane;
+      }
     }
     if (parts.empty()) {  // no plane splits it, or the cap is reached: it stays as it is
       const int node = piece.node;

@@ -379,21 +379,23 @@ TEST(PrepareMeshTest, AMoebiusBandIsAnOpenPatchAndRepairDoesNotCrash) {
   EXPECT_FALSE(repaired.parts.empty());
 }
 
-TEST(PrepareMeshTest, RepairLeavesAShellThatCrossesItself) {
-  // teddy.obj is closed and manifold, but one shell crosses itself in 6 pairs of faces: the
-  // union cannot mend that, and autorefinement is not used.
+TEST(PrepareMeshTest, RepairReplacesAShellThatCrossesItselfByItsSolid) {
+  // teddy.obj is closed and manifold, but one shell crosses itself in 6 pairs of faces: repair
+  // replaces it by the solid it winds around (UniteByWinding), where the overlap counts once.
   const TriangleMesh teddy =
       envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/teddy.obj");
-  const PreparedMesh prepared = PrepareMesh(teddy, Repair(), "teddy.obj");
-  EXPECT_FALSE(prepared.solid());
-  EXPECT_EQ(prepared.defects.boundary_edges, 0);
-  EXPECT_EQ(prepared.defects.non_manifold_edges, 0);
-  EXPECT_EQ(prepared.defects.self_intersections, 6);
-  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{true});
-  EXPECT_TRUE(HasNote(prepared, "repair: left 1 shell that crosses itself (first: faces "));
-  EXPECT_TRUE(HasNote(prepared, "repair: still not a solid: faces "));
-  EXPECT_THAT(ErrorOf([&] { RequireSolid(prepared, "teddy.obj"); }),
+  const PreparedMesh as_read = PrepareMesh(teddy, {}, "teddy.obj");
+  EXPECT_FALSE(as_read.solid());
+  EXPECT_EQ(as_read.defects.self_intersections, 6);
+  EXPECT_THAT(ErrorOf([&] { RequireSolid(as_read, "teddy.obj"); }),
               HasSubstr("teddy.obj: not a solid: faces "));
+  const PreparedMesh prepared = PrepareMesh(teddy, Repair(), "teddy.obj");
+  EXPECT_TRUE(prepared.solid()) << prepared.defects.first;
+  EXPECT_EQ(prepared.closed_parts, std::vector<bool>{true});
+  EXPECT_TRUE(HasNote(prepared, "repair: replaced 1 shell that crosses itself (first: faces "));
+  const double volume = MeshVolume(prepared.mesh);
+  EXPECT_GT(volume, 0.99 * MeshVolume(as_read.mesh));
+  EXPECT_LT(volume, MeshVolume(as_read.mesh));
 }
 
 TEST(ReferenceRadiusTest, CubeOfSideTwoHasRadiusSqrtThree) {

@@ -576,18 +576,35 @@ TEST_F(CliTest, RepairMakesMeshesSolidAndSaysWhat) {
 }
 
 TEST_F(CliTest, WhatRepairCannotMendGetsTheSurfaceAcd) {
-  // teddy.obj is closed but one of its shells crosses itself, which repair leaves alone.
+  // Two cubes that share an edge: closed, but that edge has 4 faces, which repair leaves alone.
+  const fs::path cubes =
+      Write("edge.obj", BoxObj({0, 0, 0}, {1, 1, 1}) + BoxObj({1, 1, 0}, {2, 2, 1}, 9));
+  const RunResult strict = Acdplan("decompose " + Quote(cubes.string()));
+  ExpectUsageError(strict);
+  EXPECT_NE(strict.err.find(cubes.string() + ": not a solid: edge "), std::string::npos)
+      << strict.err;
+  const fs::path json_path = dir_ / "edge.json";
+  const RunResult run = Acdplan("decompose " + Quote(cubes.string()) +
+                                " --repair --tau-rel 0.2 --json " + Quote(json_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("surface ACD (--repair could not make a solid: edge "), std::string::npos)
+      << run.out;
+  EXPECT_EQ(nlohmann::json::parse(Read(json_path)).at("stats").at("surface"), true);
+}
+
+TEST_F(CliTest, RepairUntanglesAShellThatCrossesItself) {
+  // teddy.obj is closed but one of its shells crosses itself: --repair replaces it by the solid
+  // it winds around.
   const std::string teddy = kMeshes + "teddy.obj";
   const RunResult strict = Acdplan("decompose " + Quote(teddy));
   ExpectUsageError(strict);
   EXPECT_NE(strict.err.find(teddy + ": not a solid: faces "), std::string::npos) << strict.err;
-  const fs::path json_path = dir_ / "teddy.json";
-  const RunResult run = Acdplan("decompose " + Quote(teddy) + " --repair --tau-rel 0.2 --json " +
-                                Quote(json_path.string()));
+  const RunResult run = Acdplan("decompose " + Quote(teddy) + " --repair --tau-rel 0.2 --check");
   ASSERT_EQ(run.status, 0) << run.err;
-  EXPECT_NE(run.out.find("surface ACD (--repair could not make a solid: faces "), std::string::npos)
+  EXPECT_NE(run.out.find("replaced 1 shell that crosses itself"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("solid ACD (closed, manifold, no self-intersections after --repair)"),
+            std::string::npos)
       << run.out;
-  EXPECT_EQ(nlohmann::json::parse(Read(json_path)).at("stats").at("surface"), true);
 }
 
 TEST_F(CliTest, DecomposesACorpusMesh) {
