@@ -333,6 +333,25 @@ int DropSpecks(const std::vector<Eigen::Vector3d>& vertices,
   return dropped;
 }
 
+// Renumbers `triangles` (over `count` vertices) to the vertices they use, kept in their order;
+// returns the old index of each new vertex.
+std::vector<size_t> KeepUsedVertices(size_t count, std::vector<std::array<int, 3>>* triangles) {
+  std::vector<int> renumber(count, -1);
+  for (const auto& t : *triangles) {
+    for (const int v : t) renumber[static_cast<size_t>(v)] = 0;
+  }
+  std::vector<size_t> used;
+  for (size_t v = 0; v < count; ++v) {
+    if (renumber[v] < 0) continue;
+    renumber[v] = static_cast<int>(used.size());
+    used.push_back(v);
+  }
+  for (auto& t : *triangles) {
+    for (int& v : t) v = renumber[static_cast<size_t>(v)];
+  }
+  return used;
+}
+
 // Rotates t so that its lowest vertex comes first (the orientation is kept).
 std::array<int, 3> LowestFirst(const std::array<int, 3>& t) {
   const int k = t[0] < t[1] ? (t[0] < t[2] ? 0 : 2) : (t[1] < t[2] ? 1 : 2);
@@ -465,39 +484,19 @@ std::optional<WindingUnion> UniteByWinding(const TriangleMesh& mesh, const std::
   if (kept.empty()) return std::nullopt;
 
   // Only the vertices used, in the same (lexicographic) order.
-  std::vector<int> renumber(points.size(), -1);
-  for (const auto& t : kept) {
-    for (const int v : t) renumber[static_cast<size_t>(v)] = 0;
-  }
   std::vector<Eigen::Vector3d> vertices;
-  for (size_t v = 0; v < points.size(); ++v) {
-    if (renumber[v] < 0) continue;
-    renumber[v] = static_cast<int>(vertices.size());
+  for (const size_t v : KeepUsedVertices(points.size(), &kept)) {
     vertices.push_back(RoundToDouble(points[v]));  // See RoundToDouble() on why.
   }
-  std::vector<std::array<int, 3>> sorted;
-  for (const auto& t : kept) {
-    sorted.push_back({renumber[static_cast<size_t>(t[0])], renumber[static_cast<size_t>(t[1])],
-                      renumber[static_cast<size_t>(t[2])]});
-  }
+  std::vector<std::array<int, 3>> sorted = std::move(kept);
   WindingUnion out;
   MendFlatTriangles(vertices, &sorted);
   out.pinches = SeparatePinches(&vertices, &sorted);
   out.specks = DropSpecks(vertices, &sorted);
   if (out.specks > 0) {  // Their vertices go too (the order of the others is kept).
-    std::vector<int> used(vertices.size(), -1);
-    for (const auto& t : sorted) {
-      for (const int v : t) used[static_cast<size_t>(v)] = 0;
-    }
     std::vector<Eigen::Vector3d> compact;
-    for (size_t v = 0; v < vertices.size(); ++v) {
-      if (used[v] < 0) continue;
-      used[v] = static_cast<int>(compact.size());
+    for (const size_t v : KeepUsedVertices(vertices.size(), &sorted))
       compact.push_back(vertices[v]);
-    }
-    for (auto& t : sorted) {
-      for (int& v : t) v = used[static_cast<size_t>(v)];
-    }
     vertices = std::move(compact);
   }
   for (auto& t : sorted) t = LowestFirst(t);
