@@ -1,11 +1,16 @@
 #include "acd/internal/solid_openings.h"
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <tuple>
 #include <vector>
+
+#include "acd/internal/exact_rounding.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -43,6 +48,54 @@ Polygon2 ClipConvex(Polygon2 subject, const Polygon2& clip) {
     subject = std::move(out);
   }
   return subject;
+}
+
+// ClipConvex() in exact arithmetic, rounded once at the end.
+Polygon2 ClipConvexExact(const Polygon2& subject, const Polygon2& clip) {
+  using K = CGAL::Epeck;
+  const auto exact = [](const Point2& p) { return K::Point_2(p.x(), p.y()); };
+  std::vector<K::Point_2> kept;
+  for (const Point2& p : subject) kept.push_back(exact(p));
+  for (size_t i = 0; i < clip.size() && !kept.empty(); ++i) {
+    const K::Point_2 a = exact(clip[i]), b = exact(clip[(i + 1) % clip.size()]);
+    std::vector<K::Point_2> out;
+    for (size_t j = 0; j < kept.size(); ++j) {
+      const K::Point_2& p = kept[j];
+      const K::Point_2& q = kept[(j + 1) % kept.size()];
+      const bool p_in = CGAL::orientation(a, b, p) != CGAL::RIGHT_TURN;
+      const bool q_in = CGAL::orientation(a, b, q) != CGAL::RIGHT_TURN;
+      if (p_in) out.push_back(p);
+      if (p_in != q_in) {
+        const K::FT sp =
+            CGAL::determinant(b.x() - a.x(), b.y() - a.y(), p.x() - a.x(), p.y() - a.y());
+        const K::FT sq =
+            CGAL::determinant(b.x() - a.x(), b.y() - a.y(), q.x() - a.x(), q.y() - a.y());
+        const K::FT t = sp / (sp - sq);
+        out.emplace_back(p.x() + (q.x() - p.x()) * t, p.y() + (q.y() - p.y()) * t);
+      }
+    }
+    kept = std::move(out);
+  }
+  Polygon2 rounded;
+  for (const K::Point_2& p : kept) rounded.push_back(RoundToDouble(p));
+  return rounded;
+}
+
+// Whether every point of `points` lies within `margin` of the counter-clockwise convex `polygon`.
+bool NearConvex(const Polygon2& points, const Polygon2& polygon, double margin) {
+  for (const Point2& p : points) {
+    bool inside = true;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < polygon.size(); ++i) {
+      const Point2& a = polygon[i];
+      const Point2 e = polygon[(i + 1) % polygon.size()] - a;
+      if (Cross(a, a + e, p) < 0) inside = false;
+      const double s = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+      nearest = std::min(nearest, (a + s * e - p).norm());
+    }
+    if (!inside && nearest > margin) return false;
+  }
+  return true;
 }
 
 // Andrew's monotone chain, counter-clockwise.
@@ -130,6 +183,12 @@ void ComputeOpenings(Decomposition3d* decomposition) {
           for (const Polygon2& t : fb.above) {
             Polygon2 x = ClipConvex(s, t);
             if (x.size() < 3) continue;
+            // Where an edge of s crosses one of t at a tiny angle, the rounded crossing can slide
+            // along them, past a corner of t (off t's component).
+            if (!NearConvex(x, s, 1e-3 * tol) || !NearConvex(x, t, 1e-3 * tol)) {
+              x = ClipConvexExact(s, t);
+              if (x.size() < 3) continue;
+            }
             const double ax = Area(x);
             if (ax > 1e-10 * scale * scale) {  // clipping slivers are no opening
               area += ax;

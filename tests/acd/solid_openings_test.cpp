@@ -1,0 +1,100 @@
+#include "acd/internal/solid_openings.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "base/random.h"
+
+namespace acdplan::acd::internal {
+namespace {
+
+// Only the section faces of a piece: the unit square in z = 0 triangulated by `triangles` (in
+// the plane, counter-clockwise), facing +z (`below` the cut) or -z.
+TriangleMesh Section(const std::vector<Eigen::Vector2d>& points,
+                     const std::vector<Eigen::Vector3i>& triangles, bool below) {
+  std::vector<Eigen::Vector3d> vertices;
+  for (const Eigen::Vector2d& p : points) vertices.emplace_back(p.x(), p.y(), 0.0);
+  std::vector<Eigen::Vector3i> faces;
+  for (const Eigen::Vector3i& t : triangles) {
+    faces.push_back(below ? t : Eigen::Vector3i(t[0], t[2], t[1]));
+  }
+  return MakeTriangleMesh(vertices, faces);
+}
+
+// Pieces cut apart by z = 0: leaves of one root, in order.
+Decomposition3d Pieces(const std::vector<TriangleMesh>& sections) {
+  Decomposition3d d;
+  HierarchyNode3d root;
+  root.cut = {Eigen::Vector3d::UnitZ(), 0.0};
+  d.tree.push_back(root);
+  for (const TriangleMesh& mesh : sections) {
+    HierarchyNode3d leaf;
+    leaf.parent = 0;
+    leaf.depth = 1;
+    leaf.component = static_cast<int>(d.components.size());
+    d.tree[0].children.push_back(static_cast<int>(d.tree.size()));
+    d.tree.push_back(leaf);
+    Component3d c;
+    c.mesh = mesh;
+    d.components.push_back(c);
+  }
+  d.roots = {0};
+  ComputeOpenings(&d);
+  return d;
+}
+
+// Distance from `x` (in z = 0) to the counter-clockwise triangle `t`.
+double DistanceToTriangle(const Eigen::Vector3d& x, const std::vector<Eigen::Vector2d>& t) {
+  const Eigen::Vector2d p(x.x(), x.y());
+  double outside = 0, nearest = 1e300;
+  for (size_t k = 0; k < 3; ++k) {
+    const Eigen::Vector2d a = t[k], b = t[(k + 1) % 3];
+    const Eigen::Vector2d e = b - a;
+    if (e.x() * (p - a).y() - e.y() * (p - a).x() < 0) outside = 1;
+    const double s = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    nearest = std::min(nearest, (a + s * e - p).norm());
+  }
+  return std::hypot(outside * nearest, x.z());
+}
+
+// Above the cut, the square A B C D is a fan around its centre P, and its triangle P Q B (Q on
+// A B, delta from B) is a piece of its own: a sliver with its apex at P. Below, the square is
+// triangulated with an edge R S from R = (gamma, 1) beside D to S = (1, eta) beside B, which passes
+// P at a tiny angle to the sliver's long edges. A rounded crossing of nearly parallel edges can
+// slide along them past the sliver's apex, off the sliver (hips.obj at tau_rel 0.02 had an opening
+// vertex 4.9e-10 beyond a sliver's apex, off its component). The openings with the sliver must
+// stay on it (to 1e-12 of the diagonal), and all openings must cover the square once.
+TEST(ComputeOpeningsTest, CrossingsNearASliversApexStayOnTheSliver) {
+  RandomEngine rng(3);
+  for (int trial = 0; trial < 400; ++trial) {
+    const double delta = std::pow(10.0, UniformReal(rng, -12, -4));
+    const double gamma = std::pow(10.0, UniformReal(rng, -16, -8));
+    const double eta = std::pow(10.0, UniformReal(rng, -16, -8));
+    const std::vector<Eigen::Vector2d> upper = {{0, 0}, {1, 0},     {1, 1},
+                                                {0, 1}, {0.5, 0.5}, {1 - delta, 0}};
+    const TriangleMesh sliver = Section(upper, {{5, 1, 4}}, false);
+    const TriangleMesh rest = Section(upper, {{0, 5, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}, false);
+    const std::vector<Eigen::Vector2d> lower = {{0, 0}, {1, 0},     {1, 1},
+                                                {0, 1}, {gamma, 1}, {1, eta}};
+    const TriangleMesh below = Section(lower, {{4, 5, 2}, {0, 1, 5}, {0, 5, 4}, {0, 4, 3}}, true);
+    const Decomposition3d d = Pieces({below, sliver, rest});
+    double area = 0;
+    for (const Opening3d& opening : d.openings) {
+      EXPECT_EQ(opening.component_a, 0);
+      area += opening.area;
+      if (opening.component_b != 1) continue;
+      for (const Eigen::Vector3d& x : opening.polygon) {
+        EXPECT_LE(DistanceToTriangle(x, {upper[5], upper[1], upper[4]}), 1e-12 * std::sqrt(2.0))
+            << "trial " << trial << ": delta " << delta << ", gamma " << gamma << ", eta " << eta
+            << ", vertex " << x.transpose();
+      }
+    }
+    EXPECT_NEAR(area, 1.0, 1e-8) << "trial " << trial;  // parts below 1e-10 x 2 are dropped
+  }
+}
+
+}  // namespace
+}  // namespace acdplan::acd::internal
