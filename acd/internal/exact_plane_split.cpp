@@ -6,6 +6,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 #include <cmath>
@@ -131,6 +132,33 @@ void SplitPinchedVertices(ExactPiece* piece) {
           it->second;
     }
   }
+}
+
+// For each triangle of `piece`, whether `source` lacks a triangle with the same three rounded
+// corners (in any order).
+std::vector<bool> FacesNotIn(const ExactPiece& piece, const ExactPiece& source) {
+  using Key = std::array<double, 9>;
+  auto key = [](const ExactPiece& p, const Tri& t) {
+    std::array<std::array<double, 3>, 3> corners;
+    for (size_t k = 0; k < 3; ++k) {
+      const Eigen::Vector3d& q = p.rounded[static_cast<size_t>(t[k])];
+      corners[k] = {q.x(), q.y(), q.z()};
+    }
+    std::sort(corners.begin(), corners.end());
+    Key out;
+    for (size_t k = 0; k < 9; ++k) out[k] = corners[k / 3][k % 3];
+    return out;
+  };
+  std::vector<Key> known;
+  known.reserve(source.triangles.size());
+  for (const Tri& t : source.triangles) known.push_back(key(source, t));
+  std::sort(known.begin(), known.end());
+  std::vector<bool> fresh;
+  fresh.reserve(piece.triangles.size());
+  for (const Tri& t : piece.triangles) {
+    fresh.push_back(!std::binary_search(known.begin(), known.end(), key(piece, t)));
+  }
+  return fresh;
 }
 
 // Reproducible rounding (not CGAL::to_double, which depends on the evaluation history).
@@ -466,7 +494,7 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
   return out;
 }
 
-bool RoundsToValidSolid(const ExactPiece& piece) {
+bool RoundsToValidSolid(const ExactPiece& piece, const ExactPiece* valid_source) {
   using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL::Surface_mesh<Inexact::Point_3>;
   Mesh mesh;
@@ -487,7 +515,31 @@ bool RoundsToValidSolid(const ExactPiece& piece) {
     if (mesh.add_face(a, b, c) == Mesh::null_face()) return false;
   }
   if (!CGAL::is_closed(mesh)) return false;
-  return !CGAL::Polygon_mesh_processing::does_self_intersect(mesh);
+  if (valid_source == nullptr) return !CGAL::Polygon_mesh_processing::does_self_intersect(mesh);
+  // Faces are added in triangle order, so face f of `mesh` is piece.triangles[f].
+  const std::vector<bool> fresh = FacesNotIn(piece, *valid_source);
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, size_t>;
+  std::vector<Box> fresh_boxes, all_boxes;
+  for (size_t f = 0; f < piece.triangles.size(); ++f) {
+    CGAL::Bbox_3 box;
+    for (int k : piece.triangles[f]) {
+      const Eigen::Vector3d& p = piece.rounded[static_cast<size_t>(k)];
+      box += CGAL::Bbox_3(p.x(), p.y(), p.z(), p.x(), p.y(), p.z());
+    }
+    all_boxes.emplace_back(box, f);
+    if (fresh[f]) fresh_boxes.emplace_back(box, f);
+  }
+  if (fresh_boxes.empty()) return true;
+  // Only pairs with a fresh face can cross: the faces near one, and the fresh faces themselves.
+  std::vector<bool> near = fresh;
+  CGAL::box_intersection_d(fresh_boxes.begin(), fresh_boxes.end(), all_boxes.begin(),
+                           all_boxes.end(),
+                           [&](const Box&, const Box& other) { near[other.info()] = true; });
+  std::vector<Mesh::Face_index> range;
+  for (size_t f = 0; f < near.size(); ++f) {
+    if (near[f]) range.emplace_back(static_cast<Mesh::size_type>(f));
+  }
+  return !CGAL::Polygon_mesh_processing::does_self_intersect(range, mesh);
 }
 
 bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles) {

@@ -55,7 +55,11 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece);
 /// (two crossings on a sliver triangle's edges 1e-18 apart) round onto one position, and
 /// rounding can fold near-coplanar faces through each other; a cut whose pieces do not round
 /// cleanly is rejected rather than output. O(n log n) for n triangles.
-bool RoundsToValidSolid(const ExactPiece& piece);
+///
+/// With `valid_source`, a piece that rounds to a valid solid and that `piece` was cut from, two
+/// faces that `valid_source` has too (the same three rounded corners) are known not to cross, and
+/// only pairs with a fresh face (a cut or cap face) are tested.
+bool RoundsToValidSolid(const ExactPiece& piece, const ExactPiece* valid_source = nullptr);
 
 /// Whether every directed edge of `triangles` is met by its reverse exactly once (closed,
 /// edge-manifold, consistently oriented).

@@ -73,7 +73,7 @@ std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane, bool*
   std::vector<double> volumes;
   double total = 0;
   for (const ExactPiece& p : out) {
-    if (!IsClosedSurface(p.triangles) || !RoundsToValidSolid(p)) return {};
+    if (!IsClosedSurface(p.triangles) || !RoundsToValidSolid(p, &piece)) return {};
     volumes.push_back(MeshVolume(ToDouble(p)));
     total += volumes.back();
   }

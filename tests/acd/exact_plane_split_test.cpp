@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "acd/mesh_measures.h"
@@ -67,6 +68,31 @@ TEST(ExactPlaneSplitTest, RoundsToValidSolidRejectsTwoCornersAtOnePosition) {
   ExactPiece piece = ToExact(NeedleTetrahedron());
   piece.rounded[1] = piece.rounded[0];  // q rounded onto p
   EXPECT_FALSE(RoundsToValidSolid(piece));
+}
+
+// Given the piece it was cut from, RoundsToValidSolid tests only pairs with a fresh face: here the
+// unit box whose top is replaced by a tent with its apex below the bottom, so the fresh tent faces
+// cross the box's old bottom faces. Both ways must reject it; the box itself passes both ways.
+TEST(ExactPlaneSplitTest, RoundsToValidSolidFindsFreshFacesCrossingOldOnes) {
+  std::vector<Eigen::Vector3d> v;
+  for (int k = 0; k < 8; ++k) v.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+  std::vector<Eigen::Vector3i> sides = {{0, 2, 3}, {0, 3, 1}, {0, 1, 5}, {0, 5, 4}, {1, 3, 7},
+                                        {1, 7, 5}, {3, 2, 6}, {3, 6, 7}, {2, 0, 4}, {2, 4, 6}};
+  std::vector<Eigen::Vector3i> box_faces = sides;
+  box_faces.emplace_back(4, 5, 7);
+  box_faces.emplace_back(4, 7, 6);
+  const ExactPiece box = ToExact(MakeTriangleMesh(v, box_faces));
+  ASSERT_GT(MeshVolume(ToDouble(box)), 0.0);
+  v.emplace_back(0.5, 0.5, -0.5);  // 8: the tent's apex, below the bottom z = 0
+  std::vector<Eigen::Vector3i> tent_faces = sides;
+  for (const auto& [a, b] : {std::pair{4, 5}, {5, 7}, {7, 6}, {6, 4}})
+    tent_faces.emplace_back(a, b, 8);
+  const ExactPiece tent = ToExact(MakeTriangleMesh(v, tent_faces));
+  ASSERT_TRUE(IsClosedSurface(tent.triangles));
+  EXPECT_TRUE(RoundsToValidSolid(box));
+  EXPECT_TRUE(RoundsToValidSolid(box, &box));
+  EXPECT_FALSE(RoundsToValidSolid(tent));
+  EXPECT_FALSE(RoundsToValidSolid(tent, &box));
 }
 
 }  // namespace
