@@ -389,11 +389,11 @@ Acd3dBenchResult RunAcd3dBench(const Acd3dBenchOptions& options, std::ostream* p
     for (const char* method : {kAcdSolid, kAcdSurface}) {
       const bool is_solid = method == std::string(kAcdSolid);
       if (!Wanted(options, method) || !(is_solid ? solid : surface)) continue;
-      // (tau_rel, max_hulls): the settings, then on a closed mesh the capped one.
+      // (tau_rel, max_hulls): the settings, then for the solid ACD (of a mesh solid as read or
+      // after repair) the capped one.
       std::vector<std::pair<double, int>> settings;
       for (double tau_rel : tau_rels) settings.emplace_back(tau_rel, 0);
-      const bool closed = mesh.input == kSolid || mesh.input == kSolidParts;
-      if (is_solid && closed && options.max_hulls > 0) {
+      if (is_solid && options.max_hulls > 0) {
         settings.emplace_back(options.capped_tau_rel, options.max_hulls);
       }
       for (const auto& [tau_rel, max_hulls] : settings) {

@@ -38,7 +38,8 @@ struct Acd3dBenchOptions {
   bool feature_grouping = false;
   /// Decompose3dOptions::merge_growth for the solid ACD (< 0: no merge pass).
   double merge_growth = acd::Decompose3dOptions{}.merge_growth;
-  /// > 0: one more solid ACD cell on every closed mesh (input solid or solid-parts), at
+  /// > 0: one more solid ACD cell on every mesh that gets the solid ACD (solid as read or after
+  /// repair), at
   /// `capped_tau_rel` with Decompose3dOptions::max_hulls = this: a fine tau whose components
   /// are then merged down to V-HACD's cap, so that one setting can be tight and small. 0: none.
   int max_hulls = 64;

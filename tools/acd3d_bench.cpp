@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
                  "fraction (Decompose3dOptions::merge_growth); < 0: no merge pass")
       ->capture_default_str();
   app.add_option("--max-hulls", options.max_hulls,
-                 "Closed meshes: one more solid ACD cell, at --capped-tau-rel, merged down to at "
+                 "One more solid ACD cell, at --capped-tau-rel, merged down to at "
                  "most N parts (Decompose3dOptions::max_hulls); 0: none")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
