@@ -53,11 +53,11 @@ Polygon2 ClipConvex(Polygon2 subject, const Polygon2& clip) {
 // ClipConvex() in exact arithmetic, rounded once at the end.
 Polygon2 ClipConvexExact(const Polygon2& subject, const Polygon2& clip) {
   using K = CGAL::Epeck;
-  const auto exact = [](const Point2& p) { return K::Point_2(p.x(), p.y()); };
+  const auto to_exact = [](const Point2& p) { return K::Point_2(p.x(), p.y()); };
   std::vector<K::Point_2> kept;
-  for (const Point2& p : subject) kept.push_back(exact(p));
+  for (const Point2& p : subject) kept.push_back(to_exact(p));
   for (size_t i = 0; i < clip.size() && !kept.empty(); ++i) {
-    const K::Point_2 a = exact(clip[i]), b = exact(clip[(i + 1) % clip.size()]);
+    const K::Point_2 a = to_exact(clip[i]), b = to_exact(clip[(i + 1) % clip.size()]);
     std::vector<K::Point_2> out;
     for (size_t j = 0; j < kept.size(); ++j) {
       const K::Point_2& p = kept[j];

@@ -6,6 +6,7 @@
 #include <CGAL/Projection_traits_xy_3.h>
 #include <CGAL/Projection_traits_xz_3.h>
 #include <CGAL/Projection_traits_yz_3.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 
 #include <algorithm>
@@ -114,11 +115,39 @@ void Refine(const Triangle& t, const Constraints& c, std::vector<Corners>* out) 
   }
 }
 
+// The signed count of the triangles `shells[i]`, i in `candidates`, that the segment from `from`
+// to `to` crosses, +1 where it leaves through a triangle's front; empty if it meets an edge or a
+// vertex of one. Triangles through `from` are coplanar with it there and do not count.
+std::optional<int> Crossings(const std::vector<Triangle>& shells,
+                             const std::vector<size_t>& candidates, const Point& from,
+                             const Point& to) {
+  int winding = 0;
+  for (const size_t i : candidates) {
+    const Triangle& t = shells[i];
+    const CGAL::Orientation side = CGAL::orientation(t[0], t[1], t[2], from);
+    if (side == CGAL::COPLANAR) continue;
+    const CGAL::Orientation end = CGAL::orientation(t[0], t[1], t[2], to);
+    if (end == side || end == CGAL::COPLANAR) continue;
+    const CGAL::Orientation o[3] = {CGAL::orientation(from, to, t[0], t[1]),
+                                    CGAL::orientation(from, to, t[1], t[2]),
+                                    CGAL::orientation(from, to, t[2], t[0])};
+    const bool positive =
+        o[0] == CGAL::POSITIVE || o[1] == CGAL::POSITIVE || o[2] == CGAL::POSITIVE;
+    const bool negative =
+        o[0] == CGAL::NEGATIVE || o[1] == CGAL::NEGATIVE || o[2] == CGAL::NEGATIVE;
+    if (positive && negative) continue;  // The ray passes beside t.
+    if (o[0] == CGAL::COPLANAR || o[1] == CGAL::COPLANAR || o[2] == CGAL::COPLANAR) {
+      return std::nullopt;  // Through an edge or a vertex of t.
+    }
+    winding += side == CGAL::NEGATIVE ? 1 : -1;
+  }
+  return winding;
+}
+
 // The winding number of `shells` just in front of `from` (a point inside a refined triangle
-// of normal `normal`): the signed count of the shell triangles a ray from `from` into the
-// front side crosses, +1 where it leaves through a triangle's front. Triangles through `from`
-// are coplanar with it there, so they are behind the start and do not count. A ray that meets
-// an edge or a vertex is cast again in another direction; empty if none of them is clear.
+// of normal `normal`), counted along rays from `from` into the front side that end `reach`
+// beyond every shell triangle: along `normal`, then, while a ray meets an edge or a vertex, in
+// directions drawn from `rng`; empty if none of 64 is clear.
 std::optional<int> FrontWinding(const std::vector<Triangle>& shells,
                                 const std::vector<CGAL::Bbox_3>& boxes, double reach,
                                 const Point& from, const Vector& normal, RandomEngine& rng) {
@@ -137,30 +166,11 @@ std::optional<int> FrontWinding(const std::vector<Triangle>& shells,
                   std::abs(CGAL::to_double(d.z()))});
     const Point to = from + d * K::FT(reach / length);  // Beyond every shell triangle.
     const CGAL::Bbox_3 ray_box = from.bbox() + to.bbox();
-    int winding = 0;
-    bool clear = true;
-    for (size_t i = 0; i < shells.size() && clear; ++i) {
-      if (!CGAL::do_overlap(boxes[i], ray_box)) continue;
-      const Triangle& t = shells[i];
-      const CGAL::Orientation side = CGAL::orientation(t[0], t[1], t[2], from);
-      if (side == CGAL::COPLANAR) continue;
-      const CGAL::Orientation end = CGAL::orientation(t[0], t[1], t[2], to);
-      if (end == side || end == CGAL::COPLANAR) continue;
-      const CGAL::Orientation o[3] = {CGAL::orientation(from, to, t[0], t[1]),
-                                      CGAL::orientation(from, to, t[1], t[2]),
-                                      CGAL::orientation(from, to, t[2], t[0])};
-      const bool positive =
-          o[0] == CGAL::POSITIVE || o[1] == CGAL::POSITIVE || o[2] == CGAL::POSITIVE;
-      const bool negative =
-          o[0] == CGAL::NEGATIVE || o[1] == CGAL::NEGATIVE || o[2] == CGAL::NEGATIVE;
-      if (positive && negative) continue;  // The ray passes beside t.
-      if (o[0] == CGAL::COPLANAR || o[1] == CGAL::COPLANAR || o[2] == CGAL::COPLANAR) {
-        clear = false;  // Through an edge or a vertex of t.
-      } else {
-        winding += side == CGAL::NEGATIVE ? 1 : -1;
-      }
+    std::vector<size_t> candidates;
+    for (size_t i = 0; i < shells.size(); ++i) {
+      if (CGAL::do_overlap(boxes[i], ray_box)) candidates.push_back(i);
     }
-    if (clear) return winding;
+    if (const std::optional<int> winding = Crossings(shells, candidates, from, to)) return winding;
   }
   return std::nullopt;
 }
@@ -457,18 +467,48 @@ std::optional<WindingUnion> UniteByWinding(const TriangleMesh& mesh, const std::
                                        CGAL::square(all.ymax() - all.ymin()) +
                                        CGAL::square(all.zmax() - all.zmin())) +
                        1.0;
-  RandomEngine rng(1);  // Only for rays that must be cast again.
-  std::vector<std::optional<int>> front(static_cast<size_t>(count));
+  // First along the axis each patch's normal leans to most: such rays have thin boxes, and the
+  // shell triangles whose boxes they meet are found for all of them at once.
+  std::vector<Point> from(static_cast<size_t>(count));
+  std::vector<Vector> normal(static_cast<size_t>(count));
+  std::vector<std::optional<Point>> axis_end(static_cast<size_t>(count));
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, size_t>;
+  std::vector<Box> ray_boxes, shell_boxes;
   for (int g = 0; g < count; ++g) {
-    const int root = patches.Find(g);
-    if (root != g) continue;
+    if (patches.Find(g) != g) continue;
     const auto& t = groups[static_cast<size_t>(g)];
     const Point& a = points[static_cast<size_t>(t[0])];
     const Point& b = points[static_cast<size_t>(t[1])];
     const Point& c = points[static_cast<size_t>(t[2])];
-    front[static_cast<size_t>(g)] = FrontWinding(shells, boxes, reach, CGAL::centroid(a, b, c),
-                                                 CGAL::cross_product(b - a, c - a), rng);
-    if (!front[static_cast<size_t>(g)]) return std::nullopt;
+    const size_t i = static_cast<size_t>(g);
+    from[i] = CGAL::centroid(a, b, c);
+    normal[i] = CGAL::cross_product(b - a, c - a);
+    int axis = 0;
+    for (int k = 1; k < 3; ++k) {
+      if (std::abs(CGAL::to_double(normal[i][k])) > std::abs(CGAL::to_double(normal[i][axis]))) {
+        axis = k;
+      }
+    }
+    const CGAL::Sign sign = CGAL::sign(normal[i][axis]);
+    if (sign == CGAL::ZERO) continue;
+    std::array<double, 3> step = {0, 0, 0};
+    step[static_cast<size_t>(axis)] = sign == CGAL::POSITIVE ? reach : -reach;
+    axis_end[i] = from[i] + Vector(step[0], step[1], step[2]);
+    ray_boxes.emplace_back(from[i].bbox() + axis_end[i]->bbox(), i);
+  }
+  for (size_t i = 0; i < shells.size(); ++i) shell_boxes.emplace_back(boxes[i], i);
+  std::vector<std::vector<size_t>> met(static_cast<size_t>(count));
+  CGAL::box_intersection_d(
+      ray_boxes.begin(), ray_boxes.end(), shell_boxes.begin(), shell_boxes.end(),
+      [&](const Box& ray, const Box& shell) { met[ray.info()].push_back(shell.info()); });
+  RandomEngine rng(1);  // Only for rays that must be cast again.
+  std::vector<std::optional<int>> front(static_cast<size_t>(count));
+  for (int g = 0; g < count; ++g) {
+    if (patches.Find(g) != g) continue;
+    const size_t i = static_cast<size_t>(g);
+    if (axis_end[i]) front[i] = Crossings(shells, met[i], from[i], *axis_end[i]);
+    if (!front[i]) front[i] = FrontWinding(shells, boxes, reach, from[i], normal[i], rng);
+    if (!front[i]) return std::nullopt;
   }
 
   // 4. The groups between w <= 0 and w > 0, facing w <= 0.
