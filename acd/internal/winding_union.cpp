@@ -407,9 +407,13 @@ std::optional<WindingUnion> UniteByWinding(const TriangleMesh& mesh, const std::
   }
 
   // Vertices numbered in exact lexicographic order.
-  std::map<Point, int, LessXyz> index;
+  using Index = std::map<Point, int, LessXyz>;
+  Index index;
+  std::vector<std::array<Index::const_iterator, 3>> corner_at;  // each corner's entry, found once
+  corner_at.reserve(refined.size());
   for (const Corners& t : refined) {
-    for (const Point& p : t) index.emplace(p, 0);
+    corner_at.push_back(
+        {index.emplace(t[0], 0).first, index.emplace(t[1], 0).first, index.emplace(t[2], 0).first});
   }
   std::vector<Point> points;
   points.reserve(index.size());
@@ -420,8 +424,8 @@ std::optional<WindingUnion> UniteByWinding(const TriangleMesh& mesh, const std::
 
   // 2. Identical triangles grouped, with their multiplicity, oriented so that it is > 0.
   std::map<std::array<int, 3>, int> multiplicity;
-  for (const Corners& t : refined) {
-    const std::array<int, 3> r = LowestFirst({index.at(t[0]), index.at(t[1]), index.at(t[2])});
+  for (const auto& at : corner_at) {
+    const std::array<int, 3> r = LowestFirst({at[0]->second, at[1]->second, at[2]->second});
     multiplicity[{r[0], std::min(r[1], r[2]), std::max(r[1], r[2])}] += r[1] < r[2] ? 1 : -1;
   }
   std::vector<std::array<int, 3>> groups;
