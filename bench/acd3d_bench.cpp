@@ -440,7 +440,7 @@ std::string Acd3dBenchMarkdown(const Acd3dBenchResult& result, const Acd3dBenchO
               : "; no merge pass")
       << ")";
   if (options.max_hulls > 0) {
-    out << ", and on closed meshes once more at tau_rel "
+    out << ", and the solid ACD once more at tau_rel "
         << FormatSignificant(options.capped_tau_rel, 6) << " merged down to at most "
         << options.max_hulls << " parts (max hulls: Decompose3dOptions::max_hulls)";
   }
