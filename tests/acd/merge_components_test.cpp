@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "acd/internal/solid_openings.h"
@@ -15,24 +16,14 @@ namespace {
 
 using test::Box;
 
-// A hand-made solid decomposition: one root cut by `plane` into the leaves `boxes` (in order).
+// One root cut by `plane` into the leaves `boxes` (in order).
 Decomposition3d Leaves(const std::vector<TriangleMesh>& boxes, const Plane3d& plane, double tau) {
-  Decomposition3d d;
-  d.tau = tau;
-  HierarchyNode3d root;
-  root.cut = plane;
-  d.tree.push_back(root);
-  d.roots = {0};
+  std::vector<Component3d> components;
   for (const TriangleMesh& box : boxes) {
-    HierarchyNode3d leaf;
-    leaf.parent = 0;
-    leaf.depth = 1;
-    leaf.component = static_cast<int>(d.components.size());
-    d.tree[0].children.push_back(static_cast<int>(d.tree.size()));
-    d.tree.push_back(leaf);
-    d.components.push_back(SolidComponent(box, MeasureSolidConcavity(box, tau), 0));
+    components.push_back(SolidComponent(box, MeasureSolidConcavity(box, tau), 0));
   }
-  ComputeOpenings(&d);
+  Decomposition3d d = test::OneCut(plane, std::move(components));
+  d.tau = tau;
   return d;
 }
 

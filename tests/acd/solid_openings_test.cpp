@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "base/random.h"
+#include "solid_test_meshes.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -24,26 +26,11 @@ TriangleMesh Section(const std::vector<Eigen::Vector2d>& points,
   return MakeTriangleMesh(vertices, faces);
 }
 
-// Pieces cut apart by z = 0: leaves of one root, in order.
+// Pieces cut apart by z = 0, with only their section faces.
 Decomposition3d Pieces(const std::vector<TriangleMesh>& sections) {
-  Decomposition3d d;
-  HierarchyNode3d root;
-  root.cut = {Eigen::Vector3d::UnitZ(), 0.0};
-  d.tree.push_back(root);
-  for (const TriangleMesh& mesh : sections) {
-    HierarchyNode3d leaf;
-    leaf.parent = 0;
-    leaf.depth = 1;
-    leaf.component = static_cast<int>(d.components.size());
-    d.tree[0].children.push_back(static_cast<int>(d.tree.size()));
-    d.tree.push_back(leaf);
-    Component3d c;
-    c.mesh = mesh;
-    d.components.push_back(c);
-  }
-  d.roots = {0};
-  ComputeOpenings(&d);
-  return d;
+  std::vector<Component3d> components(sections.size());
+  for (size_t i = 0; i < sections.size(); ++i) components[i].mesh = sections[i];
+  return test::OneCut({Eigen::Vector3d::UnitZ(), 0.0}, std::move(components));
 }
 
 // Distance from `x` (in z = 0) to the counter-clockwise triangle `t`.

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "acd/decomposition3d.h"
+#include "acd/internal/solid_openings.h"
 #include "acd/internal/triangulate_ring.h"
 #include "acd/prepare_mesh.h"
 #include "acd/triangle_mesh.h"
@@ -170,6 +172,27 @@ inline TriangleMesh ReadObjForTest(const std::string& path) {
     }
   }
   return MakeTriangleMesh(vertices, faces);
+}
+
+/// A hand-made solid decomposition: one root cut by `plane` into leaves holding `components` (in
+/// order), with the openings ComputeOpenings() finds between them.
+inline Decomposition3d OneCut(const Plane3d& plane, std::vector<Component3d> components) {
+  Decomposition3d d;
+  HierarchyNode3d root;
+  root.cut = plane;
+  d.tree.push_back(root);
+  d.roots = {0};
+  for (Component3d& c : components) {
+    HierarchyNode3d leaf;
+    leaf.parent = 0;
+    leaf.depth = 1;
+    leaf.component = static_cast<int>(d.components.size());
+    d.tree[0].children.push_back(static_cast<int>(d.tree.size()));
+    d.tree.push_back(leaf);
+    d.components.push_back(std::move(c));
+  }
+  internal::ComputeOpenings(&d);
+  return d;
 }
 
 }  // namespace acdplan::acd::test
