@@ -134,36 +134,6 @@ void SplitPinchedVertices(ExactPiece* piece) {
   }
 }
 
-// For each triangle of `piece`, whether `source` lacks a triangle with the same three rounded
-// corners (in any order).
-std::vector<bool> FacesNotIn(const ExactPiece& piece, const ExactPiece& source) {
-  using Key = std::array<double, 9>;
-  auto key = [](const ExactPiece& p, const Tri& t) {
-    std::array<std::array<double, 3>, 3> corners;
-    for (size_t k = 0; k < 3; ++k) {
-      const Eigen::Vector3d& q = p.rounded[static_cast<size_t>(t[k])];
-      corners[k] = {q.x(), q.y(), q.z()};
-    }
-    std::sort(corners.begin(), corners.end());
-    Key out;
-    for (size_t k = 0; k < 9; ++k) out[k] = corners[k / 3][k % 3];
-    return out;
-  };
-  std::vector<Key> known;
-  known.reserve(source.triangles.size());
-  for (const Tri& t : source.triangles) known.push_back(key(source, t));
-  std::sort(known.begin(), known.end());
-  std::vector<bool> fresh;
-  fresh.reserve(piece.triangles.size());
-  for (const Tri& t : piece.triangles) {
-    fresh.push_back(!std::binary_search(known.begin(), known.end(), key(piece, t)));
-  }
-  return fresh;
-}
-
-// Reproducible rounding (not CGAL::to_double, which depends on the evaluation history).
-Eigen::Vector3d Approx(const Point3& p) { return RoundToDouble(p); }
-
 FT Coordinate(const Point3& p, int axis) { return axis == 0 ? p.x() : (axis == 1 ? p.y() : p.z()); }
 
 // The cap closing `below`'s section: the region bounded by the boundary edges of `below`
@@ -259,7 +229,7 @@ std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Pl
                                          coef[static_cast<size_t>(drop)];
         vh->info().id = static_cast<int>(points->size());
         points->emplace_back(xyz[0], xyz[1], xyz[2]);
-        rounded->push_back(Approx(points->back()));
+        rounded->push_back(RoundToDouble(points->back()));
       }
       t[static_cast<size_t>(i)] = vh->info().id;
     }
@@ -373,8 +343,7 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
     const std::array<ExactFT, 3> xe = {p.x() + (q.x() - p.x()) * t, p.y() + (q.y() - p.y()) * t,
                                        p.z() + (q.z() - p.z()) * t};
     const Point3 x{FT(xe[0]), FT(xe[1]), FT(xe[2])};
-    // As RoundToDouble() rounds x: an exact value that is a double is that double.
-    const Eigen::Vector3d r(CGAL::to_double(xe[0]), CGAL::to_double(xe[1]), CGAL::to_double(xe[2]));
+    const Eigen::Vector3d r(RoundToDouble(xe[0]), RoundToDouble(xe[1]), RoundToDouble(xe[2]));
     auto [at, inserted] = crossing_at.emplace(std::array<double, 3>{r.x(), r.y(), r.z()},
                                               static_cast<int>(points.size()));
     if (inserted) {
@@ -502,7 +471,29 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
   return out;
 }
 
-bool RoundsToValidSolid(const ExactPiece& piece, const ExactPiece* valid_source) {
+RoundedFaceSet::Key RoundedFaceSet::KeyOf(const ExactPiece& piece, const Tri& t) {
+  std::array<std::array<double, 3>, 3> corners;
+  for (size_t k = 0; k < 3; ++k) {
+    const Eigen::Vector3d& q = piece.rounded[static_cast<size_t>(t[k])];
+    corners[k] = {q.x(), q.y(), q.z()};
+  }
+  std::sort(corners.begin(), corners.end());
+  Key key;
+  for (size_t k = 0; k < 9; ++k) key[k] = corners[k / 3][k % 3];
+  return key;
+}
+
+RoundedFaceSet::RoundedFaceSet(const ExactPiece& piece) {
+  keys_.reserve(piece.triangles.size());
+  for (const Tri& t : piece.triangles) keys_.push_back(KeyOf(piece, t));
+  std::sort(keys_.begin(), keys_.end());
+}
+
+bool RoundedFaceSet::Contains(const ExactPiece& piece, const Tri& t) const {
+  return std::binary_search(keys_.begin(), keys_.end(), KeyOf(piece, t));
+}
+
+bool RoundsToValidSolid(const ExactPiece& piece, const RoundedFaceSet* valid_source) {
   using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL::Surface_mesh<Inexact::Point_3>;
   Mesh mesh;
@@ -525,7 +516,9 @@ bool RoundsToValidSolid(const ExactPiece& piece, const ExactPiece* valid_source)
   if (!CGAL::is_closed(mesh)) return false;
   if (valid_source == nullptr) return !CGAL::Polygon_mesh_processing::does_self_intersect(mesh);
   // Faces are added in triangle order, so face f of `mesh` is piece.triangles[f].
-  const std::vector<bool> fresh = FacesNotIn(piece, *valid_source);
+  std::vector<bool> fresh;
+  fresh.reserve(piece.triangles.size());
+  for (const Tri& t : piece.triangles) fresh.push_back(!valid_source->Contains(piece, t));
   using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, size_t>;
   std::vector<Box> fresh_boxes, all_boxes;
   for (size_t f = 0; f < piece.triangles.size(); ++f) {

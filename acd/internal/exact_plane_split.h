@@ -48,6 +48,20 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
 /// smallest triangle index, so the order is deterministic.
 std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece);
 
+/// The faces of a piece, each known by its three rounded corners in any order: built once per
+/// cut piece, asked about the faces of each of its children. O(n log n) for n triangles.
+class RoundedFaceSet {
+ public:
+  explicit RoundedFaceSet(const ExactPiece& piece);
+  /// Whether the set has a face with the rounded corners of triangle `t` of `piece`.
+  bool Contains(const ExactPiece& piece, const std::array<int, 3>& t) const;
+
+ private:
+  using Key = std::array<double, 9>;  // the corners, sorted
+  static Key KeyOf(const ExactPiece& piece, const std::array<int, 3>& t);
+  std::vector<Key> keys_;  // sorted
+};
+
 /// Whether `piece` rounded to doubles (ToDouble) is still the boundary of a solid, judged as
 /// CheckDecomposition3d judges a component: vertices merged by rounded position, no triangle
 /// with two corners at one position, a 2-manifold CGAL accepts, free of self-intersections
@@ -56,10 +70,10 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece);
 /// rounding can fold near-coplanar faces through each other; a cut whose pieces do not round
 /// cleanly is rejected rather than output. O(n log n) for n triangles.
 ///
-/// With `valid_source`, a piece that rounds to a valid solid and that `piece` was cut from, two
-/// faces that `valid_source` has too (the same three rounded corners) are known not to cross, and
-/// only pairs with a fresh face (a cut or cap face) are tested.
-bool RoundsToValidSolid(const ExactPiece& piece, const ExactPiece* valid_source = nullptr);
+/// With `valid_source`, the faces of a piece that rounds to a valid solid and that `piece` was
+/// cut from, two faces that it has too are known not to cross, and only pairs with a fresh face
+/// (a cut or cap face) are tested.
+bool RoundsToValidSolid(const ExactPiece& piece, const RoundedFaceSet* valid_source = nullptr);
 
 /// Whether every directed edge of `triangles` is met by its reverse exactly once (closed,
 /// edge-manifold, consistently oriented).

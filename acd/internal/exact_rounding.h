@@ -9,7 +9,11 @@
 
 namespace acdplan::acd::internal {
 
-/// `x` rounded to a double that depends on the value of `x` alone.
+/// An exact rational rounded to a double: the one rule by which exact values become output.
+inline double RoundToDouble(const CGAL::Epeck::Exact_kernel::FT& x) { return CGAL::to_double(x); }
+
+/// A lazy-exact number rounded as its exact value is (above): to a double that depends on the
+/// value of `x` alone.
 ///
 /// Why not CGAL::to_double(): on a lazy-exact number it returns the midpoint of the current
 /// interval approximation whenever that is narrower than 1e-5 relative. That interval is
@@ -21,7 +25,7 @@ namespace acdplan::acd::internal {
 inline double RoundToDouble(const CGAL::Epeck::FT& x) {
   const std::pair<double, double> bounds = CGAL::to_interval(x);
   if (bounds.first == bounds.second) return bounds.first;
-  return CGAL::to_double(CGAL::exact(x));
+  return RoundToDouble(CGAL::exact(x));
 }
 
 /// RoundToDouble() of each coordinate.

@@ -72,8 +72,9 @@ std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane, bool*
   // the plane is taken only when no other splits the piece.
   std::vector<double> volumes;
   double total = 0;
+  const RoundedFaceSet faces_of_piece(piece);
   for (const ExactPiece& p : out) {
-    if (!IsClosedSurface(p.triangles) || !RoundsToValidSolid(p, &piece)) return {};
+    if (!IsClosedSurface(p.triangles) || !RoundsToValidSolid(p, &faces_of_piece)) return {};
     volumes.push_back(MeshVolume(ToDouble(p)));
     total += volumes.back();
   }

@@ -32,52 +32,47 @@ double Area(const Polygon2& p) {
   return a / 2;
 }
 
-// Sutherland-Hodgman: the part of convex `subject` inside the counter-clockwise convex `clip`.
-Polygon2 ClipConvex(Polygon2 subject, const Polygon2& clip) {
+// Sutherland-Hodgman: the part of convex `subject` inside the counter-clockwise convex `clip`,
+// on points in doubles (Eigen) or exact (CGAL); `area(a, b, p)` is twice the signed area of
+// triangle abp, >= 0 when p is on or left of a->b.
+template <class Point, class Area>
+std::vector<Point> ClipConvex(std::vector<Point> subject, const std::vector<Point>& clip,
+                              Area area) {
   for (size_t i = 0; i < clip.size() && !subject.empty(); ++i) {
-    const Point2& a = clip[i];
-    const Point2& b = clip[(i + 1) % clip.size()];
-    Polygon2 out;
+    const Point& a = clip[i];
+    const Point& b = clip[(i + 1) % clip.size()];
+    std::vector<Point> out;
     for (size_t j = 0; j < subject.size(); ++j) {
-      const Point2& p = subject[j];
-      const Point2& q = subject[(j + 1) % subject.size()];
-      const double sp = Cross(a, b, p), sq = Cross(a, b, q);
-      if (sp >= 0) out.push_back(p);
-      if ((sp >= 0) != (sq >= 0)) out.push_back(p + (q - p) * (sp / (sp - sq)));
+      const Point& p = subject[j];
+      const Point& q = subject[(j + 1) % subject.size()];
+      const auto sp = area(a, b, p), sq = area(a, b, q);
+      const bool p_in = sp >= 0, q_in = sq >= 0;
+      if (p_in) out.push_back(p);
+      if (p_in != q_in) out.push_back(p + (q - p) * (sp / (sp - sq)));
     }
     subject = std::move(out);
   }
   return subject;
 }
 
+Polygon2 ClipConvex(const Polygon2& subject, const Polygon2& clip) {
+  return ClipConvex(subject, clip, Cross);
+}
+
 // ClipConvex() in exact arithmetic, rounded once at the end.
 Polygon2 ClipConvexExact(const Polygon2& subject, const Polygon2& clip) {
-  using K = CGAL::Epeck;
-  const auto to_exact = [](const Point2& p) { return K::Point_2(p.x(), p.y()); };
-  std::vector<K::Point_2> kept;
-  for (const Point2& p : subject) kept.push_back(to_exact(p));
-  for (size_t i = 0; i < clip.size() && !kept.empty(); ++i) {
-    const K::Point_2 a = to_exact(clip[i]), b = to_exact(clip[(i + 1) % clip.size()]);
-    std::vector<K::Point_2> out;
-    for (size_t j = 0; j < kept.size(); ++j) {
-      const K::Point_2& p = kept[j];
-      const K::Point_2& q = kept[(j + 1) % kept.size()];
-      const bool p_in = CGAL::orientation(a, b, p) != CGAL::RIGHT_TURN;
-      const bool q_in = CGAL::orientation(a, b, q) != CGAL::RIGHT_TURN;
-      if (p_in) out.push_back(p);
-      if (p_in != q_in) {
-        const K::FT sp =
-            CGAL::determinant(b.x() - a.x(), b.y() - a.y(), p.x() - a.x(), p.y() - a.y());
-        const K::FT sq =
-            CGAL::determinant(b.x() - a.x(), b.y() - a.y(), q.x() - a.x(), q.y() - a.y());
-        const K::FT t = sp / (sp - sq);
-        out.emplace_back(p.x() + (q.x() - p.x()) * t, p.y() + (q.y() - p.y()) * t);
-      }
-    }
-    kept = std::move(out);
-  }
+  using Exact = CGAL::Epeck::Point_2;
+  auto exact = [](const Polygon2& polygon) {
+    std::vector<Exact> out;
+    for (const Point2& p : polygon) out.emplace_back(p.x(), p.y());
+    return out;
+  };
+  const std::vector<Exact> kept =
+      ClipConvex(exact(subject), exact(clip), [](const Exact& a, const Exact& b, const Exact& p) {
+        return CGAL::determinant(b - a, p - a);
+      });
   Polygon2 rounded;
-  for (const K::Point_2& p : kept) rounded.push_back(RoundToDouble(p));
+  for (const Exact& p : kept) rounded.push_back(RoundToDouble(p));
   return rounded;
 }
 

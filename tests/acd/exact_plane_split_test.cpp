@@ -90,9 +90,14 @@ TEST(ExactPlaneSplitTest, RoundsToValidSolidFindsFreshFacesCrossingOldOnes) {
   const ExactPiece tent = ToExact(MakeTriangleMesh(v, tent_faces));
   ASSERT_TRUE(IsClosedSurface(tent.triangles));
   EXPECT_TRUE(RoundsToValidSolid(box));
-  EXPECT_TRUE(RoundsToValidSolid(box, &box));
+  const RoundedFaceSet faces_of_box(box);
+  EXPECT_TRUE(faces_of_box.Contains(tent, tent.triangles.front()));  // a side, in its order
+  EXPECT_TRUE(faces_of_box.Contains(
+      tent, {tent.triangles[0][1], tent.triangles[0][2], tent.triangles[0][0]}));  // rotated
+  EXPECT_FALSE(faces_of_box.Contains(tent, tent.triangles.back()));                // a tent face
+  EXPECT_TRUE(RoundsToValidSolid(box, &faces_of_box));
   EXPECT_FALSE(RoundsToValidSolid(tent));
-  EXPECT_FALSE(RoundsToValidSolid(tent, &box));
+  EXPECT_FALSE(RoundsToValidSolid(tent, &faces_of_box));
 }
 
 }  // namespace
