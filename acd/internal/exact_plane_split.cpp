@@ -42,32 +42,50 @@ using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt =
     CGAL::Constrained_Delaunay_triangulation_2<ExactKernel, Tds, CGAL::Exact_intersections_tag>;
 
-// Labels each triangle with its shell (edge-connected set), numbered by smallest triangle.
-// Only edges with exactly two faces join: two lobes touching along an edge (a cut through
-// the edge where they meet) stay apart.
-std::vector<int> ShellLabels(const std::vector<Tri>& triangles, int* count) {
-  const int n = static_cast<int>(triangles.size());
-  DisjointSets uf(n);
-  std::map<std::pair<int, int>, std::vector<int>> edge_faces;
-  for (int f = 0; f < n; ++f) {
-    for (int k = 0; k < 3; ++k) {
-      int a = triangles[static_cast<size_t>(f)][static_cast<size_t>(k)];
-      int b = triangles[static_cast<size_t>(f)][static_cast<size_t>((k + 1) % 3)];
-      if (a > b) std::swap(a, b);
-      edge_faces[{a, b}].push_back(f);
+// Each edge of `triangles` as (a, b, face) with a < b, sorted: the faces of an edge are one run.
+using EdgeFace = std::array<int, 3>;
+std::vector<EdgeFace> SortedEdgeFaces(const std::vector<Tri>& triangles) {
+  std::vector<EdgeFace> out;
+  out.reserve(3 * triangles.size());
+  for (size_t f = 0; f < triangles.size(); ++f) {
+    for (size_t k = 0; k < 3; ++k) {
+      const int a = triangles[f][k], b = triangles[f][(k + 1) % 3];
+      out.push_back({std::min(a, b), std::max(a, b), static_cast<int>(f)});
     }
   }
-  for (const auto& [edge, faces] : edge_faces) {
-    if (faces.size() == 2) uf.Unite(faces[0], faces[1]);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Calls `visit(begin, end)` for each edge's run [begin, end) of `edge_faces` (SortedEdgeFaces).
+template <class Visit>
+void ForEachEdge(const std::vector<EdgeFace>& edge_faces, Visit visit) {
+  for (size_t i = 0, j = 0; i < edge_faces.size(); i = j) {
+    while (j < edge_faces.size() && edge_faces[j][0] == edge_faces[i][0] &&
+           edge_faces[j][1] == edge_faces[i][1]) {
+      ++j;
+    }
+    visit(i, j);
   }
-  std::vector<int> label(static_cast<size_t>(n), -1);
-  std::map<int, int> root_label;
+}
+
+// Labels each triangle with its shell (edge-connected set), numbered by smallest triangle.
+// Only edges with exactly two faces join: two lobes touching along an edge (a cut through
+// the edge where they meet) stay apart. `edge_faces`: SortedEdgeFaces(triangles).
+std::vector<int> ShellLabels(const std::vector<Tri>& triangles,
+                             const std::vector<EdgeFace>& edge_faces, int* count) {
+  const int n = static_cast<int>(triangles.size());
+  DisjointSets uf(n);
+  ForEachEdge(edge_faces, [&](size_t begin, size_t end) {
+    if (end - begin == 2) uf.Unite(edge_faces[begin][2], edge_faces[begin + 1][2]);
+  });
+  std::vector<int> label(static_cast<size_t>(n), -1), root_label(static_cast<size_t>(n), -1);
+  *count = 0;
   for (int f = 0; f < n; ++f) {
-    const int r = uf.Find(f);
-    auto [it, inserted] = root_label.emplace(r, static_cast<int>(root_label.size()));
-    label[static_cast<size_t>(f)] = it->second;
+    int& root = root_label[static_cast<size_t>(uf.Find(f))];
+    if (root < 0) root = (*count)++;
+    label[static_cast<size_t>(f)] = root;
   }
-  *count = static_cast<int>(root_label.size());
   return label;
 }
 
@@ -411,7 +429,8 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
 
 std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
   int count = 0;
-  const std::vector<int> label = ShellLabels(piece.triangles, &count);
+  const std::vector<int> label =
+      ShellLabels(piece.triangles, SortedEdgeFaces(piece.triangles), &count);
   std::vector<std::vector<Tri>> shells(static_cast<size_t>(count));
   for (size_t f = 0; f < piece.triangles.size(); ++f) {
     shells[static_cast<size_t>(label[f])].push_back(piece.triangles[f]);
@@ -562,29 +581,34 @@ bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles) {
 }
 
 ShellTopology Topology(const std::vector<std::array<int, 3>>& triangles) {
+  const std::vector<EdgeFace> edge_faces = SortedEdgeFaces(triangles);
   int count = 0;
-  const std::vector<int> label = ShellLabels(triangles, &count);
-  std::vector<std::map<int, int>> vertices(static_cast<size_t>(count));
-  std::vector<std::map<std::pair<int, int>, int>> edges(static_cast<size_t>(count));
-  std::vector<int> faces(static_cast<size_t>(count), 0);
-  for (size_t f = 0; f < triangles.size(); ++f) {
-    const auto s = static_cast<size_t>(label[f]);
-    ++faces[s];
-    for (int k = 0; k < 3; ++k) {
-      int a = triangles[f][static_cast<size_t>(k)],
-          b = triangles[f][static_cast<size_t>((k + 1) % 3)];
-      vertices[s][a] = 1;
-      if (a > b) std::swap(a, b);
-      edges[s][{a, b}] = 1;
+  const std::vector<int> label = ShellLabels(triangles, edge_faces, &count);
+  // The Euler characteristic V - E + F of each shell, its edges and vertices counted once.
+  std::vector<int> chi(static_cast<size_t>(count), 0);
+  for (const int s : label) ++chi[static_cast<size_t>(s)];
+  std::vector<int> shells_of_edge;
+  ForEachEdge(edge_faces, [&](size_t begin, size_t end) {
+    shells_of_edge.clear();
+    for (size_t i = begin; i < end; ++i) {
+      shells_of_edge.push_back(label[static_cast<size_t>(edge_faces[i][2])]);
     }
+    std::sort(shells_of_edge.begin(), shells_of_edge.end());
+    shells_of_edge.erase(std::unique(shells_of_edge.begin(), shells_of_edge.end()),
+                         shells_of_edge.end());
+    for (const int s : shells_of_edge) --chi[static_cast<size_t>(s)];
+  });
+  std::vector<std::pair<int, int>> vertex_shells;  // (vertex, shell)
+  vertex_shells.reserve(3 * triangles.size());
+  for (size_t f = 0; f < triangles.size(); ++f) {
+    for (const int v : triangles[f]) vertex_shells.emplace_back(v, label[f]);
   }
+  std::sort(vertex_shells.begin(), vertex_shells.end());
+  vertex_shells.erase(std::unique(vertex_shells.begin(), vertex_shells.end()), vertex_shells.end());
+  for (const auto& [v, s] : vertex_shells) ++chi[static_cast<size_t>(s)];
   ShellTopology out;
   out.shells = count;
-  for (size_t s = 0; s < static_cast<size_t>(count); ++s) {
-    const int chi =
-        static_cast<int>(vertices[s].size()) - static_cast<int>(edges[s].size()) + faces[s];
-    out.genus += std::max(0, (2 - chi) / 2);
-  }
+  for (const int c : chi) out.genus += std::max(0, (2 - c) / 2);
   return out;
 }
 
