@@ -11,7 +11,7 @@ namespace acdplan::acd::internal {
 
 /// The solid ACD's component for the closed, outward piece `mesh` that `concavity` measured
 /// (MeasureSolidConcavity()); its hull is the measure's, or the points' hull when the piece is
-/// flat.
+/// flat. Either way the hull's vertices are exactly the piece's extreme points.
 Component3d SolidComponent(TriangleMesh mesh, const SolidConcavity& concavity, int source);
 
 /// Merges components that share an opening while their union
