@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "acd/mesh_measures.h"
+#include "solid_test_meshes.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -98,6 +99,30 @@ TEST(ExactPlaneSplitTest, RoundsToValidSolidFindsFreshFacesCrossingOldOnes) {
   EXPECT_TRUE(RoundsToValidSolid(box, &faces_of_box));
   EXPECT_FALSE(RoundsToValidSolid(tent));
   EXPECT_FALSE(RoundsToValidSolid(tent, &faces_of_box));
+}
+
+// Shells are joined across edges with exactly two faces; the genus sums (2 - V + E - F) / 2 over
+// them, each shell counting its own vertices and edges.
+TEST(ExactPlaneSplitTest, TopologyCountsShellsAndTheirGenus) {
+  auto topology = [](const TriangleMesh& mesh) {
+    const ShellTopology t = Topology(ToExact(mesh).triangles);
+    return std::make_pair(t.shells, t.genus);
+  };
+  const TriangleMesh box = test::Box({0, 0, 0}, {1, 1, 1});
+  const TriangleMesh torus = test::Torus(2, 0.5, 12, 8);
+  EXPECT_EQ(topology(box), std::make_pair(1, 0));
+  EXPECT_EQ(topology(torus), std::make_pair(1, 1));
+  EXPECT_EQ(topology(test::Concatenate(box, test::Box({3, 0, 0}, {4, 1, 1}))),
+            std::make_pair(2, 0));
+  EXPECT_EQ(topology(test::Concatenate(torus, test::Concatenate(torus, box))),
+            std::make_pair(3, 2));
+  // Two tetrahedra sharing the edge 0-1: its four faces join neither, so two shells of genus 0,
+  // each with the shared edge and its ends.
+  const std::vector<Eigen::Vector3d> v = {{0, 0, 0}, {0, 0, 1},  {1, 0, 0},
+                                          {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+  const std::vector<Eigen::Vector3i> f = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3},
+                                          {0, 4, 1}, {0, 1, 5}, {0, 5, 4}, {1, 4, 5}};
+  EXPECT_EQ(topology(MakeTriangleMesh(v, f)), std::make_pair(2, 0));
 }
 
 }  // namespace
