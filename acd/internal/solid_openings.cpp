@@ -55,10 +55,6 @@ std::vector<Point> ClipConvex(std::vector<Point> subject, const std::vector<Poin
   return subject;
 }
 
-Polygon2 ClipConvex(const Polygon2& subject, const Polygon2& clip) {
-  return ClipConvex(subject, clip, Cross);
-}
-
 // ClipConvex() in exact arithmetic, rounded once at the end.
 Polygon2 ClipConvexExact(const Polygon2& subject, const Polygon2& clip) {
   using Exact = CGAL::Epeck::Point_2;
@@ -176,7 +172,7 @@ void ComputeOpenings(Decomposition3d* decomposition) {
         std::vector<Polygon2> parts;
         for (const Polygon2& s : fa.below) {
           for (const Polygon2& t : fb.above) {
-            Polygon2 x = ClipConvex(s, t);
+            Polygon2 x = ClipConvex(s, t, Cross);
             if (x.size() < 3) continue;
             // Where an edge of s crosses one of t at a tiny angle, the rounded crossing can slide
             // along them, past a corner of t (off t's component).
