@@ -69,6 +69,23 @@ void ForEachEdge(const std::vector<EdgeFace>& edge_faces, Visit visit) {
   }
 }
 
+// Whether each edge's run of `edge_faces` (SortedEdgeFaces(triangles)) is two faces that run
+// along it in opposite directions.
+bool IsClosedAlong(const std::vector<Tri>& triangles, const std::vector<EdgeFace>& edge_faces) {
+  // Whether triangle f runs from a to b.
+  auto forward = [&](int f, int a, int b) {
+    const Tri& t = triangles[static_cast<size_t>(f)];
+    return (t[0] == a && t[1] == b) || (t[1] == a && t[2] == b) || (t[2] == a && t[0] == b);
+  };
+  bool closed = true;
+  ForEachEdge(edge_faces, [&](size_t begin, size_t end) {
+    const EdgeFace& e = edge_faces[begin];
+    closed = closed && end - begin == 2 &&
+             forward(e[2], e[0], e[1]) != forward(edge_faces[begin + 1][2], e[0], e[1]);
+  });
+  return closed;
+}
+
 // Labels each triangle with its shell (edge-connected set), numbered by smallest triangle.
 // Only edges with exactly two faces join: two lobes touching along an edge (a cut through
 // the edge where they meet) stay apart. `edge_faces`: SortedEdgeFaces(triangles).
@@ -563,21 +580,7 @@ bool RoundsToValidSolid(const ExactPiece& piece, const RoundedFaceSet* valid_sou
 }
 
 bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles) {
-  std::vector<std::pair<int, int>> edges;
-  edges.reserve(3 * triangles.size());
-  for (const Tri& t : triangles) {
-    for (int k = 0; k < 3; ++k)
-      edges.emplace_back(t[static_cast<size_t>(k)], t[static_cast<size_t>((k + 1) % 3)]);
-  }
-  std::sort(edges.begin(), edges.end());
-  for (size_t i = 0; i < edges.size(); ++i) {
-    if (i + 1 < edges.size() && edges[i + 1] == edges[i]) return false;
-    if (!std::binary_search(edges.begin(), edges.end(),
-                            std::make_pair(edges[i].second, edges[i].first))) {
-      return false;
-    }
-  }
-  return true;
+  return IsClosedAlong(triangles, SortedEdgeFaces(triangles));
 }
 
 ShellTopology Topology(const std::vector<std::array<int, 3>>& triangles) {
@@ -608,6 +611,7 @@ ShellTopology Topology(const std::vector<std::array<int, 3>>& triangles) {
   for (const auto& [v, s] : vertex_shells) ++chi[static_cast<size_t>(s)];
   ShellTopology out;
   out.shells = count;
+  out.closed = IsClosedAlong(triangles, edge_faces);
   for (const int c : chi) out.genus += std::max(0, (2 - c) / 2);
   return out;
 }

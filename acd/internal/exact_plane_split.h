@@ -75,15 +75,16 @@ class RoundedFaceSet {
 /// (a cut or cap face) are tested.
 bool RoundsToValidSolid(const ExactPiece& piece, const RoundedFaceSet* valid_source = nullptr);
 
-/// Whether every directed edge of `triangles` is met by its reverse exactly once (closed,
-/// edge-manifold, consistently oriented).
+/// Whether every edge of `triangles` has exactly two faces, which run along it in opposite
+/// directions (closed, edge-manifold, consistently oriented).
 bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles);
 
-/// Shells of `mesh` (edge-connected triangle sets) and the sum of their genera,
-/// (2 - V + E - F) / 2 per shell.
+/// Shells of `triangles` (edge-connected triangle sets), the sum of their genera,
+/// (2 - V + E - F) / 2 per shell, and IsClosedSurface(): all from one sorted list of edges.
 struct ShellTopology {
   int shells = 0;
   int genus = 0;
+  bool closed = false;
 };
 ShellTopology Topology(const std::vector<std::array<int, 3>>& triangles);
 

@@ -42,86 +42,104 @@ std::vector<Triangle> Triangles(const TriangleMesh& mesh) {
   return out;
 }
 
-// The union of the closed pieces `a` and `b` when they meet only along faces both carry, as
-// pieces cut apart by one plane do until a later cut splits the section on one side: every
-// triangle of `a` met by the same triangle of `b` reversed (vertices welded by exact position,
-// since the pieces share their rounded cut points) goes, and what is left must be closed.
-std::optional<TriangleMesh> Glue(const TriangleMesh& a, const TriangleMesh& b) {
-  std::map<std::array<double, 3>, int> index;
+// The closed pieces `a` and `b` as one triangle soup: vertices welded by exact position (the
+// pieces share their rounded cut points), and without each triangle of `a` that `b` carries
+// reversed, nor that copy in `b` (neither bounds their union, and in the winding number the
+// two cancel). Pieces cut apart by one plane meet only along such faces until a later cut
+// splits the section on one side; then what is left is their union's closed boundary.
+struct GluedSoup {
   std::vector<Eigen::Vector3d> vertices;
+  std::vector<Triangle> triangles;
+  int glued = 0;  // the faces of `a` taken out with their copy in `b`
+
+  // The soup as a mesh over the vertices its triangles use.
+  TriangleMesh Mesh() const {
+    std::vector<int> used(vertices.size(), -1);
+    std::vector<Eigen::Vector3d> out_vertices;
+    std::vector<Eigen::Vector3i> out_triangles;
+    for (const Triangle& t : triangles) {
+      Eigen::Vector3i u;
+      for (int k = 0; k < 3; ++k) {
+        int& v = used[static_cast<size_t>(t[static_cast<size_t>(k)])];
+        if (v < 0) {
+          v = static_cast<int>(out_vertices.size());
+          out_vertices.push_back(vertices[static_cast<size_t>(t[static_cast<size_t>(k)])]);
+        }
+        u(k) = v;
+      }
+      out_triangles.push_back(u);
+    }
+    return MakeTriangleMesh(out_vertices, out_triangles);
+  }
+};
+
+GluedSoup Glue(const TriangleMesh& a, const TriangleMesh& b) {
+  GluedSoup out;
+  std::map<std::array<double, 3>, int> index;
   auto welded = [&](const TriangleMesh& mesh) {
-    std::vector<Triangle> out = Triangles(mesh);
+    std::vector<Triangle> triangles = Triangles(mesh);
     std::vector<int> id(static_cast<size_t>(mesh.vertices.rows()));
     for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
       const auto [it, inserted] = index.emplace(
           std::array<double, 3>{mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2)},
-          static_cast<int>(vertices.size()));
-      if (inserted) vertices.emplace_back(mesh.vertices.row(v));
+          static_cast<int>(out.vertices.size()));
+      if (inserted) out.vertices.emplace_back(mesh.vertices.row(v));
       id[static_cast<size_t>(v)] = it->second;
     }
-    for (Triangle& t : out) {
+    for (Triangle& t : triangles) {
       t = LowestFirst({id[static_cast<size_t>(t[0])], id[static_cast<size_t>(t[1])],
                        id[static_cast<size_t>(t[2])]});
     }
-    return out;
+    return triangles;
   };
   const std::vector<Triangle> ta = welded(a), tb = welded(b);
   std::map<Triangle, std::vector<size_t>> in_b;
   for (size_t i = 0; i < tb.size(); ++i) in_b[tb[i]].push_back(i);
   std::vector<char> b_gone(tb.size(), 0);
-  std::vector<Triangle> kept;
   for (const Triangle& t : ta) {
     const auto it = in_b.find(LowestFirst({t[0], t[2], t[1]}));
     if (it != in_b.end() && !it->second.empty()) {
       b_gone[it->second.back()] = 1;
       it->second.pop_back();
+      ++out.glued;
     } else {
-      kept.push_back(t);
+      out.triangles.push_back(t);
     }
   }
-  const size_t glued = ta.size() - kept.size();
   for (size_t i = 0; i < tb.size(); ++i) {
-    if (!b_gone[i]) kept.push_back(tb[i]);
+    if (!b_gone[i]) out.triangles.push_back(tb[i]);
   }
-  if (glued == 0 || !IsClosedSurface(kept)) return std::nullopt;
-  std::vector<int> used(vertices.size(), -1);
-  std::vector<Eigen::Vector3d> out_vertices;
-  std::vector<Eigen::Vector3i> out_triangles;
-  for (const Triangle& t : kept) {
-    Eigen::Vector3i u;
-    for (int k = 0; k < 3; ++k) {
-      int& v = used[static_cast<size_t>(t[static_cast<size_t>(k)])];
-      if (v < 0) {
-        v = static_cast<int>(out_vertices.size());
-        out_vertices.push_back(vertices[static_cast<size_t>(t[static_cast<size_t>(k)])]);
-      }
-      u(k) = v;
-    }
-    out_triangles.push_back(u);
-  }
-  return MakeTriangleMesh(out_vertices, out_triangles);
+  return out;
 }
 
 // A piece the solid ACD may output: one closed shell of genus 0 that is a valid solid in doubles.
 bool IsValidPiece(const TriangleMesh& mesh) {
   const ExactPiece piece = ToExact(mesh);
-  if (!IsClosedSurface(piece.triangles)) return false;
   const ShellTopology topology = Topology(piece.triangles);
-  return topology.shells == 1 && topology.genus == 0 && RoundsToValidSolid(piece);
+  return topology.closed && topology.shells == 1 && topology.genus == 0 &&
+         RoundsToValidSolid(piece);
 }
 
 // The union of the adjacent closed pieces `a` and `b` as a valid piece, or nullopt.
 std::optional<TriangleMesh> Unite(const TriangleMesh& a, const TriangleMesh& b) {
-  if (std::optional<TriangleMesh> glued = Glue(a, b); glued && IsValidPiece(*glued)) return glued;
-  TriangleMesh both;
-  both.vertices.resize(a.vertices.rows() + b.vertices.rows(), 3);
-  both.vertices << a.vertices, b.vertices;
-  both.triangles.resize(a.triangles.rows() + b.triangles.rows(), 3);
-  both.triangles << a.triangles,
-      (b.triangles.array() + static_cast<int>(a.vertices.rows())).matrix();
-  std::vector<int> faces(static_cast<size_t>(both.triangles.rows()));
+  const GluedSoup soup = Glue(a, b);
+  const TriangleMesh mesh = soup.Mesh();
+  if (soup.glued > 0 && IsClosedSurface(soup.triangles)) {
+    const ExactPiece piece = ToExact(mesh);
+    if (RoundsToValidSolid(piece)) {
+      // A valid closed surface whose winding number is the pieces' summed (their interiors
+      // are disjoint) bounds their union: it is the piece, or the union is none (a handle where
+      // they meet twice, or two shells).
+      const ShellTopology topology = Topology(piece.triangles);
+      if (topology.shells == 1 && topology.genus == 0) return mesh;
+      return std::nullopt;
+    }
+  }
+  // Welded, faces that only touch along the edge or vertex they share are no crossing pair:
+  // on mite at tau_rel 0.05, 100x fewer pairs to intersect exactly than the two meshes apart.
+  std::vector<int> faces(static_cast<size_t>(mesh.triangles.rows()));
   std::iota(faces.begin(), faces.end(), 0);
-  std::optional<WindingUnion> united = UniteByWinding(both, faces, IntersectingFacePairs(both));
+  std::optional<WindingUnion> united = UniteByWinding(mesh, faces, IntersectingFacePairs(mesh));
   // A union that touches itself in a point, or leaves a speck, is no piece (UniteByWinding would
   // move or drop geometry to mend it).
   if (united && united->pinches == 0 && united->specks == 0 && IsValidPiece(united->mesh)) {

@@ -38,12 +38,25 @@ struct Piece {
   int node = -1;
 };
 
-Piece MakePiece(ExactPiece exact, double tau) {
+// A piece a cut made (or a whole part), with its double copy and its topology, each found once.
+struct CutPiece {
+  ExactPiece exact;
+  TriangleMesh mesh;
+  ShellTopology topology;
+};
+
+CutPiece WholePart(const TriangleMesh& part) {
+  CutPiece out{ToExact(part), part, {}};
+  out.topology = Topology(out.exact.triangles);
+  return out;
+}
+
+Piece MakePiece(CutPiece cut, double tau) {
   Piece piece;
-  piece.exact = std::move(exact);
-  piece.mesh = ToDouble(piece.exact);
+  piece.exact = std::move(cut.exact);
+  piece.mesh = std::move(cut.mesh);
   piece.concavity = MeasureSolidConcavity(piece.mesh, tau);
-  piece.topology = Topology(piece.exact.triangles);
+  piece.topology = cut.topology;
   return piece;
 }
 
@@ -55,37 +68,42 @@ bool IsFinal(const Piece& piece, double tau) {
 
 // The pieces `piece` falls into when cut by `plane` (each half split into its connected solids).
 // `*sliver` says whether one of them is a sliver (below kMinPieceFraction of their volume).
-std::vector<ExactPiece> Cut(const ExactPiece& piece, const Plane3d& plane, bool* sliver) {
+std::vector<CutPiece> Cut(const ExactPiece& piece, const Plane3d& plane, bool* sliver) {
   *sliver = false;
   const ExactKernel::Plane_3 exact(plane.normal.x(), plane.normal.y(), plane.normal.z(),
                                    -plane.offset);
   ExactPiece below, above;
   SplitByPlane(piece, exact, &below, &above);
   if (below.triangles.empty() || above.triangles.empty()) return {};
-  std::vector<ExactPiece> out = ConnectedSolids(below);
-  for (ExactPiece& p : ConnectedSolids(above)) out.push_back(std::move(p));
+  std::vector<ExactPiece> solids = ConnectedSolids(below);
+  for (ExactPiece& p : ConnectedSolids(above)) solids.push_back(std::move(p));
   // A section the cap could not close cleanly (constraints that overlap or cross, which a
   // valid solid's section should not have) rejects the plane rather than leak an open piece;
   // so does a piece that is valid exactly but not once rounded to the doubles it is output as.
   // A plane that only shaves off a rounding-level sliver (a plane through a vertex whose
   // neighbours lie a hair off it) is flagged: such a piece would be a component of no use, so
   // the plane is taken only when no other splits the piece.
+  std::vector<CutPiece> out;
   std::vector<double> volumes;
   double total = 0;
   const RoundedFaceSet faces_of_piece(piece);
-  for (const ExactPiece& p : out) {
-    if (!IsClosedSurface(p.triangles) || !RoundsToValidSolid(p, &faces_of_piece)) return {};
-    volumes.push_back(MeshVolume(ToDouble(p)));
+  for (ExactPiece& p : solids) {
+    const ShellTopology topology = Topology(p.triangles);
+    if (!topology.closed || !RoundsToValidSolid(p, &faces_of_piece)) return {};
+    TriangleMesh mesh = ToDouble(p);
+    volumes.push_back(MeshVolume(mesh));
     total += volumes.back();
+    out.push_back({std::move(p), std::move(mesh), topology});
   }
   for (double v : volumes) *sliver = *sliver || !(v > kMinPieceFraction * total);
   // Each piece goes on from its rounded coordinates, which RoundsToValidSolid has just found a
   // valid solid (and which the pieces share where they meet): exact cut points of cut points
   // grow without bound (measured: teapot at tau_rel 0.2 spent minutes in the section's
   // triangulation on rationals of deep cuts), while doubles keep every cut's arithmetic small.
-  for (ExactPiece& p : out) {
-    for (size_t i = 0; i < p.points.size(); ++i) {
-      p.points[i] = ExactKernel::Point_3(p.rounded[i].x(), p.rounded[i].y(), p.rounded[i].z());
+  for (CutPiece& p : out) {
+    ExactPiece& e = p.exact;
+    for (size_t i = 0; i < e.points.size(); ++i) {
+      e.points[i] = ExactKernel::Point_3(e.rounded[i].x(), e.rounded[i].y(), e.rounded[i].z());
     }
   }
   return out;
@@ -109,7 +127,7 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
     pieces.push_back(std::move(piece));
     return static_cast<int>(pieces.size()) - 1;
   };
-  const int root = add_node(MakePiece(ToExact(part), tau), -1);
+  const int root = add_node(MakePiece(WholePart(part), tau), -1);
   out->roots.push_back(pieces[static_cast<size_t>(root)].node);
   if (!(tau > 0) && pieces[static_cast<size_t>(root)].concavity.value > 0) {
     std::ostringstream message;
@@ -135,14 +153,14 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
     const int index = -std::get<1>(heap.top());
     heap.pop();
     Piece& piece = pieces[static_cast<size_t>(index)];
-    std::vector<ExactPiece> parts;
+    std::vector<CutPiece> parts;
     Plane3d chosen;
     if (live < kMaxPiecesPerPart) {
       // The best-ranked plane that splits; for a handle, the best one that lowers the genus.
       // If none does, the same planes moved off by kPlaneShift x tau either way: a plane
       // through the witness vertex can leave a piece pinched at a vertex, or one that
       // self-intersects once its cut points are rounded, where a plane beside it does not.
-      std::vector<ExactPiece> fallback, sliver_fallback;
+      std::vector<CutPiece> fallback, sliver_fallback;
       Plane3d fallback_plane, sliver_plane;
       const std::vector<Plane3d> ranked =
           RankCutPlanes(piece.mesh, piece.concavity, tau, feature_grouping);
@@ -157,7 +175,7 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
         if (i == ranked.size() && !fallback.empty()) break;  // unshifted planes split it
         const Plane3d& plane = candidates[i];
         bool sliver = false;
-        std::vector<ExactPiece> result = Cut(piece.exact, plane, &sliver);
+        std::vector<CutPiece> result = Cut(piece.exact, plane, &sliver);
         if (result.size() < 2) continue;
         if (sliver) {
           // Last resort: a sliver component beats a piece left above tau (e.g. a repaired
@@ -171,10 +189,9 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
           break;
         }
         int genus = 0, shells = 0;
-        for (const ExactPiece& p : result) {
-          const ShellTopology t = Topology(p.triangles);
-          genus += t.genus;
-          shells += t.shells - 1;
+        for (const CutPiece& p : result) {
+          genus += p.topology.genus;
+          shells += p.topology.shells - 1;
         }
         if (genus < piece.topology.genus ||
             (genus == piece.topology.genus && shells < piece.topology.shells - 1)) {
@@ -203,7 +220,7 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
       (*internal_nodes)[node] = SolidComponent(piece.mesh, piece.concavity, source);
     piece.mesh = {};
     live += static_cast<int>(parts.size()) - 1;
-    for (ExactPiece& p : parts) settle(add_node(MakePiece(std::move(p), tau), node));
+    for (CutPiece& p : parts) settle(add_node(MakePiece(std::move(p), tau), node));
   }
 }
 

@@ -123,6 +123,19 @@ TEST(ExactPlaneSplitTest, TopologyCountsShellsAndTheirGenus) {
   const std::vector<Eigen::Vector3i> f = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3},
                                           {0, 4, 1}, {0, 1, 5}, {0, 5, 4}, {1, 4, 5}};
   EXPECT_EQ(topology(MakeTriangleMesh(v, f)), std::make_pair(2, 0));
+  // Closed: each edge has two faces running along it in opposite directions.
+  EXPECT_TRUE(Topology(ToExact(box).triangles).closed);
+  EXPECT_TRUE(Topology(ToExact(torus).triangles).closed);
+  EXPECT_FALSE(Topology(ToExact(MakeTriangleMesh(v, f)).triangles).closed);  // four on 0-1
+  std::vector<std::array<int, 3>> open = ToExact(box).triangles;
+  open.pop_back();
+  EXPECT_FALSE(Topology(open).closed);
+  EXPECT_FALSE(IsClosedSurface(open));
+  std::vector<std::array<int, 3>> flipped = ToExact(box).triangles;
+  std::swap(flipped[0][1], flipped[0][2]);
+  EXPECT_FALSE(Topology(flipped).closed);
+  EXPECT_FALSE(IsClosedSurface(flipped));
+  EXPECT_TRUE(IsClosedSurface(ToExact(box).triangles));
 }
 
 }  // namespace
