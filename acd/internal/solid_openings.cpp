@@ -10,12 +10,14 @@
 #include <tuple>
 #include <vector>
 
+#include "acd/internal/box_sweep.h"
 #include "acd/internal/exact_rounding.h"
 
 namespace acdplan::acd::internal {
 namespace {
 
 using Point2 = Eigen::Vector2d;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 using Polygon2 = std::vector<Point2>;
 
 double Cross(const Point2& a, const Point2& b, const Point2& c) {
@@ -164,59 +166,87 @@ void ComputeOpenings(Decomposition3d* decomposition) {
         (along > 0 ? faces[leaf].below : faces[leaf].above).push_back(tri);
       }
     }
-    for (const auto& [a, fa] : faces) {
-      if (fa.below.empty()) continue;
-      for (const auto& [b, fb] : faces) {
-        if (a == b || fb.above.empty()) continue;
-        double area = 0;
-        std::vector<Polygon2> parts;
-        for (const Polygon2& s : fa.below) {
-          for (const Polygon2& t : fb.above) {
-            Polygon2 x = ClipConvex(s, t, Cross);
-            if (x.size() < 3) continue;
-            // Where an edge of s crosses one of t at a tiny angle, the rounded crossing can slide
-            // along them, past a corner of t (off t's component).
-            if (!NearConvex(x, s, 1e-3 * tol) || !NearConvex(x, t, 1e-3 * tol)) {
-              x = ClipConvexExact(s, t);
-              if (x.size() < 3) continue;
-            }
-            const double ax = Area(x);
-            if (ax > 1e-10 * scale * scale) {  // clipping slivers are no opening
-              area += ax;
-              parts.push_back(std::move(x));
-            }
+    // The pairs of a face below the plane (of leaf a) and one above it (of leaf b != a) whose
+    // boxes meet, grown by tol: faces farther apart share no area above rounding. In the order
+    // (a, b, face of a, face of b).
+    std::vector<std::pair<int, int>> below_at, above_at;  // (leaf, index in its faces)
+    std::vector<IdBox> below_boxes, above_boxes;
+    auto add_boxes = [tol](int leaf, const std::vector<Polygon2>& triangles,
+                           std::vector<std::pair<int, int>>* at, std::vector<IdBox>* boxes) {
+      for (size_t i = 0; i < triangles.size(); ++i) {
+        IdBox box{{kInf, kInf}, {-kInf, -kInf}, static_cast<int>(at->size())};
+        for (const Point2& q : triangles[i]) {
+          for (int k = 0; k < 2; ++k) {
+            box.lo[k] = std::min(box.lo[k], q[k] - tol);
+            box.hi[k] = std::max(box.hi[k], q[k] + tol);
           }
         }
-        if (!(area > tol * scale)) continue;
-        // One opening with the convex outline when the shared part is convex (its outline's
-        // area is the shared area); else one per convex part, so each polygon is exact.
-        std::vector<Polygon2> outlines;
-        if (parts.size() == 1) {
-          outlines = parts;
+        boxes->push_back(box);
+        at->emplace_back(leaf, static_cast<int>(i));
+      }
+    };
+    for (const auto& [leaf, f] : faces) {
+      add_boxes(leaf, f.below, &below_at, &below_boxes);
+      add_boxes(leaf, f.above, &above_at, &above_boxes);
+    }
+    std::vector<std::array<int, 4>> pairs;  // (a, b, s, t)
+    ForEachOverlap(below_boxes, above_boxes, [&](int i, int j) {
+      const auto [a, s] = below_at[static_cast<size_t>(i)];
+      const auto [b, t] = above_at[static_cast<size_t>(j)];
+      if (a != b) pairs.push_back({a, b, s, t});
+    });
+    std::sort(pairs.begin(), pairs.end());
+    for (size_t first = 0, last = 0; first < pairs.size(); first = last) {
+      const int a = pairs[first][0], b = pairs[first][1];
+      while (last < pairs.size() && pairs[last][0] == a && pairs[last][1] == b) ++last;
+      double area = 0;
+      std::vector<Polygon2> parts;
+      for (size_t k = first; k < last; ++k) {
+        const Polygon2& s = faces.at(a).below[static_cast<size_t>(pairs[k][2])];
+        const Polygon2& t = faces.at(b).above[static_cast<size_t>(pairs[k][3])];
+        Polygon2 x = ClipConvex(s, t, Cross);
+        if (x.size() < 3) continue;
+        // Where an edge of s crosses one of t at a tiny angle, the rounded crossing can slide
+        // along them, past a corner of t (off t's component).
+        if (!NearConvex(x, s, 1e-3 * tol) || !NearConvex(x, t, 1e-3 * tol)) {
+          x = ClipConvexExact(s, t);
+          if (x.size() < 3) continue;
+        }
+        const double ax = Area(x);
+        if (ax > 1e-10 * scale * scale) {  // clipping slivers are no opening
+          area += ax;
+          parts.push_back(std::move(x));
+        }
+      }
+      if (!(area > tol * scale)) continue;
+      // One opening with the convex outline when the shared part is convex (its outline's
+      // area is the shared area); else one per convex part, so each polygon is exact.
+      std::vector<Polygon2> outlines;
+      if (parts.size() == 1) {
+        outlines = parts;
+      } else {
+        Polygon2 all;
+        for (const Polygon2& p : parts) all.insert(all.end(), p.begin(), p.end());
+        Polygon2 hull = ConvexHull2(all);
+        if (std::abs(Area(hull) - area) <= 1e-9 * area) {
+          outlines.push_back(std::move(hull));
         } else {
-          Polygon2 all;
-          for (const Polygon2& p : parts) all.insert(all.end(), p.begin(), p.end());
-          Polygon2 hull = ConvexHull2(all);
-          if (std::abs(Area(hull) - area) <= 1e-9 * area) {
-            outlines.push_back(std::move(hull));
-          } else {
-            outlines = parts;
-          }
+          outlines = parts;
         }
-        for (Polygon2& outline : outlines) {
-          // From the lower-indexed component into the other; counter-clockwise about the normal.
-          Opening3d opening;
-          opening.component_a = std::min(a, b);
-          opening.component_b = std::max(a, b);
-          const bool forward = a < b;  // a is below: the normal n points from a into b
-          opening.normal = forward ? n : Eigen::Vector3d(-n);
-          opening.area = Area(outline);
-          if (!forward) std::reverse(outline.begin(), outline.end());
-          for (const Point2& q : outline) {
-            opening.polygon.push_back(u * q.x() + v * q.y() + n * offset);
-          }
-          found.emplace_back(opening.component_a, opening.component_b, node, std::move(opening));
+      }
+      for (Polygon2& outline : outlines) {
+        // From the lower-indexed component into the other; counter-clockwise about the normal.
+        Opening3d opening;
+        opening.component_a = std::min(a, b);
+        opening.component_b = std::max(a, b);
+        const bool forward = a < b;  // a is below: the normal n points from a into b
+        opening.normal = forward ? n : Eigen::Vector3d(-n);
+        opening.area = Area(outline);
+        if (!forward) std::reverse(outline.begin(), outline.end());
+        for (const Point2& q : outline) {
+          opening.polygon.push_back(u * q.x() + v * q.y() + n * offset);
         }
+        found.emplace_back(opening.component_a, opening.component_b, node, std::move(opening));
       }
     }
   }
