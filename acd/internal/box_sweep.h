@@ -1,5 +1,6 @@
 #pragma once
-// Axis-aligned box overlap reporting by sort and sweep, used by CheckDecomposition(). Internal.
+// Axis-aligned box overlap reporting by sort and sweep, used by CheckDecomposition() and
+// ComputeOpenings(). Internal.
 
 #include <algorithm>
 #include <vector>

@@ -6,7 +6,6 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +17,7 @@
 
 #include "acd/internal/disjoint_sets.h"
 #include "acd/internal/exact_rounding.h"
+#include "acd/internal/face_intersections.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -551,32 +551,27 @@ bool RoundsToValidSolid(const ExactPiece& piece, const RoundedFaceSet* valid_sou
   }
   if (!CGAL::is_closed(mesh)) return false;
   if (valid_source == nullptr) return !CGAL::Polygon_mesh_processing::does_self_intersect(mesh);
-  // Faces are added in triangle order, so face f of `mesh` is piece.triangles[f].
-  std::vector<bool> fresh;
-  fresh.reserve(piece.triangles.size());
-  for (const Tri& t : piece.triangles) fresh.push_back(!valid_source->Contains(piece, t));
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, size_t>;
-  std::vector<Box> fresh_boxes, all_boxes;
+  // Only pairs with a fresh face can cross; they are tested on the same faces over the merged
+  // vertices (so faces that share a corner there are known to).
+  std::vector<int> fresh;
   for (size_t f = 0; f < piece.triangles.size(); ++f) {
-    CGAL::Bbox_3 box;
-    for (int k : piece.triangles[f]) {
-      const Eigen::Vector3d& p = piece.rounded[static_cast<size_t>(k)];
-      box += CGAL::Bbox_3(p.x(), p.y(), p.z(), p.x(), p.y(), p.z());
-    }
-    all_boxes.emplace_back(box, f);
-    if (fresh[f]) fresh_boxes.emplace_back(box, f);
+    if (!valid_source->Contains(piece, piece.triangles[f])) fresh.push_back(static_cast<int>(f));
   }
-  if (fresh_boxes.empty()) return true;
-  // Only pairs with a fresh face can cross: the faces near one, and the fresh faces themselves.
-  std::vector<bool> near = fresh;
-  CGAL::box_intersection_d(fresh_boxes.begin(), fresh_boxes.end(), all_boxes.begin(),
-                           all_boxes.end(),
-                           [&](const Box&, const Box& other) { near[other.info()] = true; });
-  std::vector<Mesh::Face_index> range;
-  for (size_t f = 0; f < near.size(); ++f) {
-    if (near[f]) range.emplace_back(static_cast<Mesh::size_type>(f));
+  if (fresh.empty()) return true;
+  std::vector<Eigen::Vector3d> positions;
+  positions.reserve(mesh.number_of_vertices());
+  for (const Mesh::Vertex_index v : mesh.vertices()) {
+    const Inexact::Point_3& p = mesh.point(v);
+    positions.emplace_back(p.x(), p.y(), p.z());
   }
-  return !CGAL::Polygon_mesh_processing::does_self_intersect(range, mesh);
+  std::vector<Eigen::Vector3i> faces;
+  faces.reserve(piece.triangles.size());
+  for (const Tri& t : piece.triangles) {
+    faces.emplace_back(static_cast<int>(vertex[static_cast<size_t>(t[0])]),
+                       static_cast<int>(vertex[static_cast<size_t>(t[1])]),
+                       static_cast<int>(vertex[static_cast<size_t>(t[2])]));
+  }
+  return !AnyFaceIntersects(MakeTriangleMesh(positions, faces), fresh);
 }
 
 bool IsClosedSurface(const std::vector<std::array<int, 3>>& triangles) {

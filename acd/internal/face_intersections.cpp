@@ -63,16 +63,19 @@ bool FacesIntersect(const TriangleMesh& mesh, int f, int g) {
   return CGAL::do_intersect(ta, tb);
 }
 
+// The box of face f.
+Box BoxOf(const TriangleMesh& mesh, int f) {
+  CGAL::Bbox_3 box;
+  for (int k = 0; k < 3; ++k) box += PointOf<Epick>(mesh, mesh.triangles(f, k)).bbox();
+  return Box(box, f);
+}
+
 }  // namespace
 
 std::vector<std::pair<int, int>> IntersectingFacePairs(const TriangleMesh& mesh) {
   std::vector<Box> boxes;
   boxes.reserve(static_cast<size_t>(mesh.triangles.rows()));
-  for (int f = 0; f < static_cast<int>(mesh.triangles.rows()); ++f) {
-    CGAL::Bbox_3 box;
-    for (int k = 0; k < 3; ++k) box += PointOf<Epick>(mesh, mesh.triangles(f, k)).bbox();
-    boxes.emplace_back(box, f);
-  }
+  for (int f = 0; f < static_cast<int>(mesh.triangles.rows()); ++f) boxes.push_back(BoxOf(mesh, f));
   std::vector<std::pair<int, int>> pairs;
   // Closed boxes: triangles that only touch are candidates too.
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
@@ -81,6 +84,26 @@ std::vector<std::pair<int, int>> IntersectingFacePairs(const TriangleMesh& mesh)
   });
   std::sort(pairs.begin(), pairs.end());
   return pairs;
+}
+
+bool AnyFaceIntersects(const TriangleMesh& mesh, const std::vector<int>& faces) {
+  std::vector<Box> some, all;
+  for (const int f : faces) some.push_back(BoxOf(mesh, f));
+  all.reserve(static_cast<size_t>(mesh.triangles.rows()));
+  for (int f = 0; f < static_cast<int>(mesh.triangles.rows()); ++f) all.push_back(BoxOf(mesh, f));
+  std::vector<char> listed(static_cast<size_t>(mesh.triangles.rows()), 0);
+  for (const int f : faces) listed[static_cast<size_t>(f)] = 1;
+  bool found = false;
+  CGAL::box_intersection_d(some.begin(), some.end(), all.begin(), all.end(),
+                           [&](const Box& x, const Box& y) {
+                             const int f = x.info(), g = y.info();
+                             // Two listed faces meet twice, as (f, g) and (g, f): tested once.
+                             if (found || f == g || (listed[static_cast<size_t>(g)] && g < f)) {
+                               return;
+                             }
+                             found = FacesIntersect(mesh, std::min(f, g), std::max(f, g));
+                           });
+  return found;
 }
 
 Eigen::Vector3d FaceIntersectionPoint(const TriangleMesh& mesh, int f, int g) {

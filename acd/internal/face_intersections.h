@@ -22,6 +22,12 @@ namespace acdplan::acd::internal {
 /// Sorted.
 std::vector<std::pair<int, int>> IntersectingFacePairs(const TriangleMesh& mesh);
 
+/// Whether a face of `faces` (indices into `mesh`) and another face of `mesh` intersect, by the
+/// rule and under the requirements of IntersectingFacePairs(). Only pairs with a face of `faces`
+/// are tested: a check of the faces new to a mesh whose other faces are known not to cross.
+/// Candidate pairs from a box intersection of those faces with all (CGAL box_intersection_d).
+bool AnyFaceIntersects(const TriangleMesh& mesh, const std::vector<int>& faces);
+
 /// A point common to triangles `f` and `g` of `mesh` (which intersect): computed exactly
 /// (CGAL Epeck), then rounded.
 Eigen::Vector3d FaceIntersectionPoint(const TriangleMesh& mesh, int f, int g);
