@@ -14,6 +14,7 @@
 #include "acd/internal/face_intersections.h"
 #include "acd/internal/neighbour_sets.h"
 #include "acd/internal/solid_openings.h"
+#include "acd/internal/subtree.h"
 #include "acd/internal/winding_union.h"
 #include "acd/mesh_measures.h"
 
@@ -244,20 +245,16 @@ int MergeComponents(double tau, double max_growth, Decomposition3d* decompositio
   // Renumber by first leaf in depth-first order, as the leaves were numbered.
   std::vector<int> id(static_cast<size_t>(count), -1);
   std::vector<Component3d> components;
-  for (int root : d.roots) {
-    std::vector<int> stack = {root};
-    while (!stack.empty()) {
-      HierarchyNode3d& node = d.tree[static_cast<size_t>(stack.back())];
-      stack.pop_back();
-      if (node.component >= 0) {
-        int& to = id[static_cast<size_t>(node.component)];
-        if (to < 0) {
-          to = static_cast<int>(components.size());
-          components.push_back(std::move(d.components[static_cast<size_t>(node.component)]));
-        }
-        node.component = to;
+  for (const int root : d.roots) {
+    for (const int x : SubtreeDepthFirst(d.tree, root)) {
+      HierarchyNode3d& node = d.tree[static_cast<size_t>(x)];
+      if (node.component < 0) continue;
+      int& to = id[static_cast<size_t>(node.component)];
+      if (to < 0) {
+        to = static_cast<int>(components.size());
+        components.push_back(std::move(d.components[static_cast<size_t>(node.component)]));
       }
-      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back(*it);
+      node.component = to;
     }
   }
   d.components = std::move(components);

@@ -14,6 +14,7 @@
 #include "acd/internal/merge_components.h"
 #include "acd/internal/solid_concavity.h"
 #include "acd/internal/solid_openings.h"
+#include "acd/internal/subtree.h"
 #include "acd/mesh_measures.h"
 #include "base/input_error.h"
 
@@ -263,14 +264,10 @@ void CapHulls(int max_hulls, Decomposition3d* out, std::map<int, Component3d>* l
   // Drop the nodes below collapsed ones, renumbering the rest in their order.
   std::vector<int> id(out->tree.size(), -1);
   std::vector<HierarchyNode3d> tree;
-  std::vector<int> stack(out->roots.rbegin(), out->roots.rend());
   std::vector<int> order;
-  while (!stack.empty()) {
-    const int x = stack.back();
-    stack.pop_back();
-    order.push_back(x);
-    const auto& children = out->tree[static_cast<size_t>(x)].children;
-    for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back(*it);
+  for (const int root : out->roots) {
+    const std::vector<int> subtree = SubtreeDepthFirst(out->tree, root);
+    order.insert(order.end(), subtree.begin(), subtree.end());
   }
   std::sort(order.begin(), order.end());
   for (int x : order)
@@ -301,17 +298,13 @@ Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max
   }
   if (max_hulls > 0) CapHulls(max_hulls, &out, &leaves, &internal_nodes);
   // Number the leaves in depth-first order of the tree.
-  for (int root : out.roots) {
-    std::vector<int> stack = {root};
-    while (!stack.empty()) {
-      const int x = stack.back();
-      stack.pop_back();
+  for (const int root : out.roots) {
+    for (const int x : SubtreeDepthFirst(out.tree, root)) {
       HierarchyNode3d& node = out.tree[static_cast<size_t>(x)];
       if (node.component == -2) {
         node.component = static_cast<int>(out.components.size());
         out.components.push_back(std::move(leaves.at(x)));
       }
-      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back(*it);
     }
   }
   ComputeOpenings(&out);

@@ -12,6 +12,7 @@
 
 #include "acd/internal/box_sweep.h"
 #include "acd/internal/exact_rounding.h"
+#include "acd/internal/subtree.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -134,13 +135,10 @@ void ComputeOpenings(Decomposition3d* decomposition) {
     const double offset = cut_node.cut.offset;
     const Eigen::Vector3d u = n.unitOrthogonal(), v = n.cross(u);  // (u, v, n) right-handed
     // The leaves below the node.
-    std::vector<int> leaves, stack = {node};
-    while (!stack.empty()) {
-      const int x = stack.back();
-      stack.pop_back();
-      const HierarchyNode3d& h = d.tree[static_cast<size_t>(x)];
-      if (h.component >= 0) leaves.push_back(h.component);
-      for (auto it = h.children.rbegin(); it != h.children.rend(); ++it) stack.push_back(*it);
+    std::vector<int> leaves;
+    for (const int x : SubtreeDepthFirst(d.tree, node)) {
+      const int component = d.tree[static_cast<size_t>(x)].component;
+      if (component >= 0) leaves.push_back(component);
     }
     std::sort(leaves.begin(), leaves.end());  // merged leaves share a component
     leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
