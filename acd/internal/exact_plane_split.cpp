@@ -551,8 +551,8 @@ bool RoundsToValidSolid(const ExactPiece& piece, const RoundedFaceSet* valid_sou
   }
   if (!CGAL::is_closed(mesh)) return false;
   if (valid_source == nullptr) return !CGAL::Polygon_mesh_processing::does_self_intersect(mesh);
-  // Only pairs with a fresh face can cross; they are tested on the same faces over the merged
-  // vertices (so faces that share a corner there are known to).
+  // Only pairs with a fresh face can cross. They are tested on the faces over the merged
+  // vertices, so that two faces with a corner at one position share that corner.
   std::vector<int> fresh;
   for (size_t f = 0; f < piece.triangles.size(); ++f) {
     if (!valid_source->Contains(piece, piece.triangles[f])) fresh.push_back(static_cast<int>(f));
