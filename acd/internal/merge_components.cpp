@@ -125,13 +125,13 @@ bool IsValidPiece(const TriangleMesh& mesh) {
 std::optional<TriangleMesh> Unite(const TriangleMesh& a, const TriangleMesh& b) {
   const GluedSoup soup = Glue(a, b);
   const TriangleMesh mesh = soup.Mesh();
-  if (soup.glued > 0 && IsClosedSurface(soup.triangles)) {
+  if (soup.glued > 0) {
     const ExactPiece piece = ToExact(mesh);
-    if (RoundsToValidSolid(piece)) {
+    const ShellTopology topology = Topology(piece.triangles);
+    if (topology.closed && RoundsToValidSolid(piece)) {
       // A valid closed surface whose winding number is the pieces' summed (their interiors
       // are disjoint) bounds their union: it is the piece, or the union is none (a handle where
       // they meet twice, or two shells).
-      const ShellTopology topology = Topology(piece.triangles);
       if (topology.shells == 1 && topology.genus == 0) return mesh;
       return std::nullopt;
     }
