@@ -89,8 +89,25 @@ std::vector<std::pair<int, int>> IntersectingFacePairs(const TriangleMesh& mesh)
 bool AnyFaceIntersects(const TriangleMesh& mesh, const std::vector<int>& faces) {
   std::vector<Box> some, all;
   for (const int f : faces) some.push_back(BoxOf(mesh, f));
-  all.reserve(static_cast<size_t>(mesh.triangles.rows()));
-  for (int f = 0; f < static_cast<int>(mesh.triangles.rows()); ++f) all.push_back(BoxOf(mesh, f));
+  if (some.empty()) return false;
+  // Only faces that meet the box around all listed ones can meet one of them: the listed faces
+  // of a cut piece lie along the cut, so this leaves box_intersection_d a fraction of the mesh.
+  std::array<double, 3> lo, hi;
+  for (int d = 0; d < 3; ++d) {
+    lo[d] = some.front().min_coord(d), hi[d] = some.front().max_coord(d);
+    for (const Box& b : some)
+      lo[d] = std::min(lo[d], b.min_coord(d)), hi[d] = std::max(hi[d], b.max_coord(d));
+  }
+  auto overlaps = [&](const Box& b) {
+    for (int d = 0; d < 3; ++d) {
+      if (b.min_coord(d) > hi[d] || lo[d] > b.max_coord(d)) return false;
+    }
+    return true;
+  };
+  for (int f = 0; f < static_cast<int>(mesh.triangles.rows()); ++f) {
+    const Box b = BoxOf(mesh, f);
+    if (overlaps(b)) all.push_back(b);
+  }
   std::vector<char> listed(static_cast<size_t>(mesh.triangles.rows()), 0);
   for (const int f : faces) listed[static_cast<size_t>(f)] = 1;
   bool found = false;

@@ -279,6 +279,19 @@ HullFacets ConvexHullFacets(const std::vector<Eigen::Vector3d>& points, double t
   return Renumbered(corners, polygons);
 }
 
+std::vector<int> ConvexCornersAlongAxis(const std::vector<Eigen::Vector3d>& points, int drop_axis) {
+  if (points.size() <= 1) return std::vector<int>(points.size(), 0);
+  std::vector<Point3> pts;
+  pts.reserve(points.size());
+  for (const auto& p : points) pts.emplace_back(p.x(), p.y(), p.z());
+  std::vector<int> ids(points.size());
+  std::iota(ids.begin(), ids.end(), 0);
+  Projection projection;
+  projection.u = (drop_axis + 1) % 3;
+  projection.v = (drop_axis + 2) % 3;
+  return ConvexPolygon(pts, std::move(ids), projection);
+}
+
 TriangleMesh FanTriangulation(const HullFacets& hull) {
   std::vector<Eigen::Vector3i> triangles;
   for (const std::vector<int>& facet : hull.facets) {

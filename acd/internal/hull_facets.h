@@ -30,6 +30,12 @@ struct HullFacets {
 /// one to one. O(n log n) for n points.
 HullFacets ConvexHullFacets(const std::vector<Eigen::Vector3d>& points, double thickness);
 
+/// Indices of the corners of the 2D convex hull of `points` seen along coordinate axis
+/// `drop_axis` (the other two coordinates; exact orientations, points on an edge or repeated
+/// dropped), counter-clockwise in (u, v) = the next two axes in cyclic order. Collinear points
+/// give their two ends, one point itself. O(n log n).
+std::vector<int> ConvexCornersAlongAxis(const std::vector<Eigen::Vector3d>& points, int drop_axis);
+
 /// `hull` as a triangle mesh: each facet fanned from its first (smallest) corner, triangles
 /// listed from their smallest corner and sorted. Closed and manifold when `hull` bounds a
 /// volume; no triangle has three collinear corners.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <queue>
 #include <sstream>
 #include <stdexcept>
@@ -163,31 +164,22 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
       // self-intersects once its cut points are rounded, where a plane beside it does not.
       std::vector<CutPiece> fallback, sliver_fallback;
       Plane3d fallback_plane, sliver_plane;
-      const std::vector<Plane3d> ranked =
-          RankCutPlanes(piece.mesh, piece.concavity, tau, feature_grouping);
-      std::vector<Plane3d> candidates = ranked;
-      for (const double shift : {kPlaneShift * tau, -kPlaneShift * tau}) {
-        for (Plane3d plane : ranked) {
-          plane.offset += shift;
-          candidates.push_back(plane);
-        }
-      }
-      for (size_t i = 0; i < candidates.size(); ++i) {
-        if (i == ranked.size() && !fallback.empty()) break;  // unshifted planes split it
-        const Plane3d& plane = candidates[i];
+      // Cuts along `plane`; keeps the result in `parts` when it is the cut sought, else as a
+      // fallback.
+      auto try_plane = [&](const Plane3d& plane) {
         bool sliver = false;
         std::vector<CutPiece> result = Cut(piece.exact, plane, &sliver);
-        if (result.size() < 2) continue;
+        if (result.size() < 2) return;
         if (sliver) {
           // Last resort: a sliver component beats a piece left above tau (e.g. a repaired
           // solid whose every witness plane crosses a lens where two sheets crossed).
           if (sliver_fallback.empty()) sliver_fallback = std::move(result), sliver_plane = plane;
-          continue;
+          return;
         }
         if (piece.topology.genus == 0 && piece.topology.shells == 1) {
           parts = std::move(result);
           chosen = plane;
-          break;
+          return;
         }
         int genus = 0, shells = 0;
         for (const CutPiece& p : result) {
@@ -198,9 +190,31 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
             (genus == piece.topology.genus && shells < piece.topology.shells - 1)) {
           parts = std::move(result);
           chosen = plane;
-          break;
+          return;
         }
         if (fallback.empty()) fallback = std::move(result), fallback_plane = plane;
+      };
+      std::vector<Plane3d> caps;  // the cuts that made the piece
+      for (int up = out->tree[static_cast<size_t>(piece.node)].parent; up >= 0;
+           up = out->tree[static_cast<size_t>(up)].parent) {
+        caps.push_back(out->tree[static_cast<size_t>(up)].cut);
+      }
+      CutPlaneRanking ranking(piece.mesh, piece.concavity, tau, caps, feature_grouping);
+      std::vector<Plane3d> ranked;  // the planes tried, best first
+      while (parts.empty()) {
+        const std::optional<ScoredPlane> next = ranking.Next();
+        if (!next) break;
+        ranked.push_back(next->plane);
+        try_plane(next->plane);
+      }
+      if (parts.empty() && fallback.empty()) {  // no unshifted plane splits it
+        for (const double shift : {kPlaneShift * tau, -kPlaneShift * tau}) {
+          for (Plane3d plane : ranked) {
+            if (!parts.empty()) break;
+            plane.offset += shift;
+            try_plane(plane);
+          }
+        }
       }
       if (parts.empty() && !fallback.empty()) parts = std::move(fallback), chosen = fallback_plane;
       if (parts.empty() && !sliver_fallback.empty()) {

@@ -63,5 +63,24 @@ TEST(ConvexHullFacets, FacetsAreStrictlyConvexSupportingPolygons) {
   EXPECT_GT(checked, 40);
 }
 
+// The corners of a tilted square seen along x (so in (y, z)): points inside it, on its edges and
+// repeated are no corners; the order is counter-clockwise in (y, z).
+TEST(ConvexCornersAlongAxis, KeepsOnlyTheCornersCounterClockwise) {
+  std::vector<Eigen::Vector3d> points;
+  auto at = [](double y, double z) { return Eigen::Vector3d(0.5 * y + 0.25 * z, y, z); };
+  for (const auto& [y, z] : std::vector<std::pair<double, double>>{
+           {0.5, 0.5}, {1, 1}, {0, 0.5}, {0, 0}, {1, 0}, {0.25, 0.75}, {0, 1}, {1, 0}, {0.5, 0}}) {
+    points.push_back(at(y, z));
+  }
+  std::vector<Eigen::Vector3d> corners;  // positions: (1, 0) is there twice, either may be kept
+  for (const int i : ConvexCornersAlongAxis(points, 0))
+    corners.push_back(points[static_cast<size_t>(i)]);
+  EXPECT_EQ(corners, (std::vector<Eigen::Vector3d>{at(0, 0), at(1, 0), at(1, 1), at(0, 1)}));
+  // Collinear points: the two ends.
+  const std::vector<Eigen::Vector3d> line = {at(0, 0), at(0.5, 0.5), at(1, 1), at(0.25, 0.25)};
+  EXPECT_EQ(ConvexCornersAlongAxis(line, 0), (std::vector<int>{0, 2}));
+  EXPECT_EQ(ConvexCornersAlongAxis({at(1, 1)}, 0), (std::vector<int>{0}));
+}
+
 }  // namespace
 }  // namespace acdplan::acd::internal
