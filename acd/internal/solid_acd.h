@@ -13,7 +13,7 @@ namespace acdplan::acd::internal {
 /// `max_hulls` > 0 caps the components (Decompose3dOptions::max_hulls): the hierarchy is
 /// collapsed back up, the node whose piece's hull adds the least volume over its children's
 /// first, so a merged component is an exact piece of the decomposition (its own cut's caps
-/// never appear); merged components may exceed tau. `feature_grouping`: RankCutPlanes() also
+/// never appear); merged components may exceed tau. `feature_grouping`: CutPlaneRanking also
 /// tries the global cut's plane (Decompose3dOptions::feature_grouping). Then adjacent components
 /// whose union is tau-convex merge while their hull grows by at most `merge_growth`
 /// (MergeComponents(); Decompose3dOptions::merge_growth; < 0: no merging).
