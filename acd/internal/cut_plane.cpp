@@ -277,11 +277,15 @@ void CutPlaneRanking::ScoreNextSide(Candidate* candidate) {
   }
   candidate->concavity = std::max(candidate->concavity, side.concavity);
   candidate->hull_volume += side.hull_volume;
-  const double worst = candidate->concavity;
+}
+
+std::tuple<long long, long long, size_t> CutPlaneRanking::KeyOf(size_t c) const {
+  const Candidate& candidate = candidates_[c];
+  const double worst = candidate.concavity;
   const long long level =
       worst <= tau_ ? 0 : 1 + static_cast<long long>(std::floor((worst - tau_) / bin_));
   // Volumes equal to rounding are ties.
-  candidate->key = {level, std::llround(candidate->hull_volume / volume_unit_)};
+  return {level, std::llround(candidate.hull_volume / volume_unit_), c};
 }
 
 std::optional<ScoredPlane> CutPlaneRanking::Next() {
@@ -291,10 +295,9 @@ std::optional<ScoredPlane> CutPlaneRanking::Next() {
   while (true) {
     std::optional<Key> best_full, best_half;
     for (size_t c = 0; c < candidates_.size(); ++c) {
-      const Candidate& candidate = candidates_[c];
-      if (candidate.done) continue;
-      const Key key{candidate.key[0], candidate.key[1], c};
-      std::optional<Key>& best = candidate.sides_scored == 2 ? best_full : best_half;
+      if (candidates_[c].done) continue;
+      const Key key = KeyOf(c);
+      std::optional<Key>& best = candidates_[c].sides_scored == 2 ? best_full : best_half;
       if (!best || key < *best) best = key;
     }
     if (!best_full && !best_half) return std::nullopt;

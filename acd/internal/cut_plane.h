@@ -1,8 +1,8 @@
 #pragma once
 // The cut plane that resolves a piece's most concave feature (dissertation Sec. V.B.3).
 
-#include <array>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "acd/decomposition3d.h"
@@ -65,14 +65,16 @@ class CutPlaneRanking {
  private:
   struct Candidate {
     Plane3d plane;
-    int sides_scored = 0;            // 0, 1 or 2
-    int first_side = -1;             // the side scored first: -1 below the plane, 1 above
-    bool done = false;               // returned or dropped
-    std::array<long long, 2> key{};  // (bin, rounded hull volume): exact at 2, a bound at 1
-    double concavity = 0.0;          // the worse scored side's
-    double hull_volume = 0.0;        // summed over the scored sides
+    int sides_scored = 0;      // 0, 1 or 2
+    int first_side = -1;       // the side scored first: -1 below the plane, 1 above
+    bool done = false;         // returned or dropped
+    double concavity = 0.0;    // the worse scored side's
+    double hull_volume = 0.0;  // summed over the scored sides
   };
   void ScoreNextSide(Candidate* candidate);
+  // (bin, rounded hull volume, index) of candidate `c`: its rank key once both sides are
+  // scored, a lower bound of it after one.
+  std::tuple<long long, long long, size_t> KeyOf(size_t c) const;
 
   const TriangleMesh& mesh_;
   double tau_, bin_, volume_unit_, tol_;

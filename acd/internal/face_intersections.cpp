@@ -64,10 +64,10 @@ bool FacesIntersect(const TriangleMesh& mesh, int f, int g) {
 }
 
 // The box of face f.
-Box BoxOf(const TriangleMesh& mesh, int f) {
+CGAL::Bbox_3 BboxOf(const TriangleMesh& mesh, int f) {
   CGAL::Bbox_3 box;
   for (int k = 0; k < 3; ++k) box += PointOf<Epick>(mesh, mesh.triangles(f, k)).bbox();
-  return Box(box, f);
+  return box;
 }
 
 }  // namespace
@@ -75,7 +75,9 @@ Box BoxOf(const TriangleMesh& mesh, int f) {
 std::vector<std::pair<int, int>> IntersectingFacePairs(const TriangleMesh& mesh) {
   std::vector<Box> boxes;
   boxes.reserve(static_cast<size_t>(mesh.triangles.rows()));
-  for (int f = 0; f < static_cast<int>(mesh.triangles.rows()); ++f) boxes.push_back(BoxOf(mesh, f));
+  for (int f = 0; f < static_cast<int>(mesh.triangles.rows()); ++f) {
+    boxes.emplace_back(BboxOf(mesh, f), f);
+  }
   std::vector<std::pair<int, int>> pairs;
   // Closed boxes: triangles that only touch are candidates too.
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
@@ -87,26 +89,23 @@ std::vector<std::pair<int, int>> IntersectingFacePairs(const TriangleMesh& mesh)
 }
 
 bool AnyFaceIntersects(const TriangleMesh& mesh, const std::vector<int>& faces) {
+  if (faces.empty()) return false;
+  std::vector<CGAL::Bbox_3> boxes;
+  boxes.reserve(static_cast<size_t>(mesh.triangles.rows()));
+  for (int f = 0; f < static_cast<int>(mesh.triangles.rows()); ++f)
+    boxes.push_back(BboxOf(mesh, f));
   std::vector<Box> some, all;
-  for (const int f : faces) some.push_back(BoxOf(mesh, f));
-  if (some.empty()) return false;
+  CGAL::Bbox_3 around;
+  for (const int f : faces) {
+    some.emplace_back(boxes[static_cast<size_t>(f)], f);
+    around += boxes[static_cast<size_t>(f)];
+  }
   // Only faces that meet the box around all listed ones can meet one of them: the listed faces
   // of a cut piece lie along the cut, so this leaves box_intersection_d a fraction of the mesh.
-  std::array<double, 3> lo, hi;
-  for (int d = 0; d < 3; ++d) {
-    lo[d] = some.front().min_coord(d), hi[d] = some.front().max_coord(d);
-    for (const Box& b : some)
-      lo[d] = std::min(lo[d], b.min_coord(d)), hi[d] = std::max(hi[d], b.max_coord(d));
-  }
-  auto overlaps = [&](const Box& b) {
-    for (int d = 0; d < 3; ++d) {
-      if (b.min_coord(d) > hi[d] || lo[d] > b.max_coord(d)) return false;
+  for (int f = 0; f < static_cast<int>(boxes.size()); ++f) {
+    if (CGAL::do_overlap(around, boxes[static_cast<size_t>(f)])) {
+      all.emplace_back(boxes[static_cast<size_t>(f)], f);
     }
-    return true;
-  };
-  for (int f = 0; f < static_cast<int>(mesh.triangles.rows()); ++f) {
-    const Box b = BoxOf(mesh, f);
-    if (overlaps(b)) all.push_back(b);
   }
   std::vector<char> listed(static_cast<size_t>(mesh.triangles.rows()), 0);
   for (const int f : faces) listed[static_cast<size_t>(f)] = 1;
