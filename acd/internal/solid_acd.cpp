@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "acd/internal/cut_plane.h"
+#include "acd/internal/cut_topology.h"
 #include "acd/internal/exact_plane_split.h"
 #include "acd/internal/merge_components.h"
 #include "acd/internal/solid_concavity.h"
@@ -164,16 +165,19 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
       // self-intersects once its cut points are rounded, where a plane beside it does not.
       std::vector<CutPiece> fallback, sliver_fallback;
       Plane3d fallback_plane, sliver_plane;
-      // Cuts along `plane`; keeps the result in `parts` when it is the cut sought, else as a
-      // fallback.
-      auto try_plane = [&](const Plane3d& plane) {
+      size_t fallback_rank = 0, sliver_rank = 0;
+      // Cuts along `plane`, the `rank`-th tried in rank order; keeps the result in `parts` when
+      // it is the cut sought, else as a fallback (the best-ranked of each kind).
+      auto try_plane = [&](const Plane3d& plane, size_t rank) {
         bool sliver = false;
         std::vector<CutPiece> result = Cut(piece.exact, plane, &sliver);
         if (result.size() < 2) return;
         if (sliver) {
           // Last resort: a sliver component beats a piece left above tau (e.g. a repaired
           // solid whose every witness plane crosses a lens where two sheets crossed).
-          if (sliver_fallback.empty()) sliver_fallback = std::move(result), sliver_plane = plane;
+          if (sliver_fallback.empty() || rank < sliver_rank) {
+            sliver_fallback = std::move(result), sliver_plane = plane, sliver_rank = rank;
+          }
           return;
         }
         if (piece.topology.genus == 0 && piece.topology.shells == 1) {
@@ -192,7 +196,9 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
           chosen = plane;
           return;
         }
-        if (fallback.empty()) fallback = std::move(result), fallback_plane = plane;
+        if (fallback.empty() || rank < fallback_rank) {
+          fallback = std::move(result), fallback_plane = plane, fallback_rank = rank;
+        }
       };
       std::vector<Plane3d> caps;  // the cuts that made the piece
       for (int up = out->tree[static_cast<size_t>(piece.node)].parent; up >= 0;
@@ -200,19 +206,43 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
         caps.push_back(out->tree[static_cast<size_t>(up)].cut);
       }
       CutPlaneRanking ranking(piece.mesh, piece.concavity, tau, caps, feature_grouping);
-      std::vector<Plane3d> ranked;  // the planes tried, best first
-      while (parts.empty()) {
-        const std::optional<ScoredPlane> next = ranking.Next();
-        if (!next) break;
-        ranked.push_back(next->plane);
-        try_plane(next->plane);
+      std::vector<Plane3d> ranked;  // the ranked planes taken from `ranking`, best first
+      const int genus = piece.topology.genus;
+      if (genus == 0 || piece.topology.shells != 1) {
+        while (parts.empty()) {
+          const std::optional<ScoredPlane> next = ranking.Next();
+          if (!next) break;
+          ranked.push_back(next->plane);
+          try_plane(next->plane, ranked.size() - 1);
+        }
+      } else {
+        // A handle: the best-ranked plane that lowers the genus, else the best one that splits.
+        // Exact cuts are costly and most planes leave the handle whole, so those predicted to
+        // lower it are cut first, then the others in rank order up to the first that splits.
+        while (const std::optional<ScoredPlane> next = ranking.Next()) {
+          ranked.push_back(next->plane);
+        }
+        std::vector<char> tried(ranked.size(), 0);
+        for (size_t i = 0; i < ranked.size() && parts.empty(); ++i) {
+          const std::optional<CutTopology> predicted =
+              PredictCutTopology(piece.mesh, genus, ranked[i]);
+          if (!predicted || predicted->genus < genus) {
+            tried[i] = 1;
+            try_plane(ranked[i], i);
+          }
+        }
+        for (size_t i = 0; i < ranked.size() && parts.empty(); ++i) {
+          if (!fallback.empty() && fallback_rank < i) break;
+          if (!tried[i]) try_plane(ranked[i], i);
+        }
       }
       if (parts.empty() && fallback.empty()) {  // no unshifted plane splits it
+        size_t rank = ranked.size();
         for (const double shift : {kPlaneShift * tau, -kPlaneShift * tau}) {
           for (Plane3d plane : ranked) {
             if (!parts.empty()) break;
             plane.offset += shift;
-            try_plane(plane);
+            try_plane(plane, rank++);
           }
         }
       }
