@@ -6,6 +6,7 @@
 #include <numeric>
 #include <optional>
 #include <set>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -177,12 +178,11 @@ int MergeComponents(double tau, double max_growth, Decomposition3d* decompositio
     neighbours[static_cast<size_t>(o.component_a)].insert(o.component_b);
     neighbours[static_cast<size_t>(o.component_b)].insert(o.component_a);
   }
-  struct Merge {
-    double growth = 0;
-    TriangleMesh mesh;
-    SolidConcavity concavity;
-  };
-  std::map<std::pair<int, int>, Merge> ready;  // the pairs that may merge, a < b
+  // The pairs that pass the cheap tests, by growth (ties: the lower pair first). A pair is
+  // united and measured only when it comes first: most pairs lose a piece to an earlier merge
+  // before then, and the order is the same as with every pair united up front (a pair's
+  // outcome depends on its two pieces alone).
+  std::set<std::tuple<double, int, int>> candidates;
   auto consider = [&](int a, int b) {
     if (a > b) std::swap(a, b);
     const Component3d& x = d.components[static_cast<size_t>(a)];
@@ -207,11 +207,7 @@ int MergeComponents(double tau, double max_growth, Decomposition3d* decompositio
     for (const Eigen::Vector3d& p : points) {
       if ((planes.col(3) - planes.leftCols<3>() * p).minCoeff() > tau) return;
     }
-    std::optional<TriangleMesh> united = Unite(x.mesh, y.mesh);
-    if (!united) return;
-    SolidConcavity concavity = MeasureSolidConcavity(*united, tau);
-    if (!(concavity.value <= tau)) return;
-    ready[{a, b}] = Merge{growth, std::move(*united), std::move(concavity)};
+    candidates.emplace(growth, a, b);
   };
   for (int a = 0; a < count; ++a) {
     for (int b : neighbours[static_cast<size_t>(a)]) {
@@ -219,20 +215,20 @@ int MergeComponents(double tau, double max_growth, Decomposition3d* decompositio
     }
   }
   int merges = 0;
-  while (!ready.empty()) {
-    auto best = ready.begin();
-    for (auto it = ready.begin(); it != ready.end(); ++it) {
-      if (it->second.growth < best->second.growth) best = it;
-    }
-    const auto [a, b] = best->first;
-    Merge merge = std::move(best->second);
+  while (!candidates.empty()) {
+    const auto [growth, a, b] = *candidates.begin();
+    candidates.erase(candidates.begin());
     Component3d& kept = d.components[static_cast<size_t>(a)];
-    kept = SolidComponent(std::move(merge.mesh), merge.concavity, kept.source);
+    std::optional<TriangleMesh> united =
+        Unite(kept.mesh, d.components[static_cast<size_t>(b)].mesh);
+    if (!united) continue;
+    SolidConcavity concavity = MeasureSolidConcavity(*united, tau);
+    if (!(concavity.value <= tau)) continue;
+    kept = SolidComponent(std::move(*united), concavity, kept.source);
     d.components[static_cast<size_t>(b)] = Component3d{};
-    for (auto it = ready.begin(); it != ready.end();) {
-      const bool stale = it->first.first == a || it->first.first == b || it->first.second == a ||
-                         it->first.second == b;
-      it = stale ? ready.erase(it) : std::next(it);
+    for (auto it = candidates.begin(); it != candidates.end();) {
+      const int p = std::get<1>(*it), q = std::get<2>(*it);
+      it = (p == a || p == b || q == a || q == b) ? candidates.erase(it) : std::next(it);
     }
     ContractInto(a, b, &neighbours);
     for (HierarchyNode3d& node : d.tree) {
