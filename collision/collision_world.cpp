@@ -24,6 +24,7 @@
 #include "collision/internal/inner_polytope.h"
 #include "collision/internal/mesh_building.h"
 #include "collision/internal/solid_locator.h"
+#include "collision/internal/triangle_tree.h"
 
 namespace acdplan::collision {
 namespace {
@@ -117,6 +118,18 @@ double Distance(const fcl::CollisionGeometryd* a, const fcl::Transform3d& ta,
   return std::max(result.min_distance, 0.0);
 }
 
+/// The triangles of `mesh`.
+std::vector<internal::Triangle3> Triangles(const acd::TriangleMesh& mesh) {
+  std::vector<internal::Triangle3> out;
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    internal::Triangle3& t = out.emplace_back();
+    for (int k = 0; k < 3; ++k) {
+      t[static_cast<size_t>(k)] = mesh.vertices.row(mesh.triangles(f, k)).transpose();
+    }
+  }
+  return out;
+}
+
 /// `hull` (a closed convex mesh) as vertices and supporting face planes.
 internal::ConvexPolytope Polytope(const acd::TriangleMesh& hull) {
   internal::ConvexPolytope polytope;
@@ -180,6 +193,11 @@ struct CollisionWorld::Impl {
   // points of the robot, so one inside a hull is a contact with that hull.
   internal::ConvexPolytope robot_polytope;
   bool polytope_on_robot = false;
+  // A closed 3D robot that equals its hull (robot_polytope): kHullsExact confirms a hull hit by
+  // testing that polytope against the piece's triangles near it (piece_trees), with the hull's
+  // edge directions (body frame) for the separating axis test, instead of a BVH-BVH query.
+  bool robot_convex = false;
+  std::vector<Eigen::Vector3d> robot_edges;
   // Broadphase query objects of robot_hull / point_probe at the identity, built once. A query
   // copies one (RobotAt()) instead of constructing fcl::CollisionObject from the shared
   // geometry: that constructor recomputes the geometry's local AABB, i.e. writes to geometry
@@ -201,6 +219,7 @@ struct CollisionWorld::Impl {
   fcl::DynamicAABBTreeCollisionManagerd manager;
   std::vector<Geometry> piece_bvhs;  // kHullsExact confirmation (3D: the component's triangles
                                      // that may meet the piece's hull, input coordinates)
+  std::vector<internal::TriangleTree> piece_trees;  // the same triangles, when robot_convex
   std::vector<std::optional<internal::PolygonLocator2d>> piece_polygons;  // 2D containment
   internal::HullGrid hull_grid;  // point robot, kHulls / kHullsExact
   int dimension = 2;
@@ -344,6 +363,9 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
       const auto& closed = prepared.closed_parts;
       if (std::all_of(closed.begin(), closed.end(), [](bool c) { return c; })) {
         m.robot_locator.emplace(prepared.mesh);
+        m.robot_convex = m.polytope_on_robot && closed.size() == 1 &&
+                         internal::EqualsItsHull(prepared.mesh, hull);
+        if (m.robot_convex) m.robot_edges = internal::EdgeDirections(hull.vertices, hull.triangles);
       }
       break;
     }
@@ -378,6 +400,8 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
       const acd::TriangleMesh near = internal::SubMesh(
           set.components[static_cast<size_t>(piece.component)].mesh, piece.triangles);
       m.piece_bvhs.push_back(near.triangles.rows() > 0 ? MakeBvh({&near}) : nullptr);
+      m.piece_trees.emplace_back(m.robot_convex ? Triangles(near)
+                                                : std::vector<internal::Triangle3>{});
       m.piece_polygons.emplace_back();
     }
     planes.push_back(piece.planes);
@@ -389,7 +413,7 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
   }
   m.manager.registerObjects(objects);
   m.manager.setup();
-  m.hull_grid = internal::HullGrid(planes, boxes, m.margin);
+  m.hull_grid = internal::HullGrid(planes, boxes, m.margin, set.dimension == 2);
 }
 
 CollisionWorld::~CollisionWorld() = default;
@@ -455,9 +479,13 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
       bool exact;                      // kHullsExact
       internal::ConvexPolytope robot;  // m.robot_polytope at `pose`
       bool hit = false;
+      // robot_convex: the robot's edge directions and box at `pose`, set at the first
+      // confirmation.
+      std::vector<Eigen::Vector3d> robot_edges;
+      Eigen::AlignedBox3d robot_box;
       std::vector<int> components;  // 3D: components whose containment of witness decides
       std::uint64_t hull_tests = 0, confirmations = 0;
-    } q{&m, &set, pose, witness, mode == CollisionMode::kHullsExact, {}, false, {}, 0, 0};
+    } q{&m, &set, pose, witness, mode == CollisionMode::kHullsExact, {}, false, {}, {}, {}, 0, 0};
     m.robot_polytope.Transformed(pose, &q.robot);
     fcl::CollisionObjectd robot = RobotAt(*m.robot_hull_object, pose);
     m.manager.collide(
@@ -489,27 +517,48 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
           // A convex piece is its own hull, so the hull tests below are exact for it: only a
           // concave piece needs its own triangles to confirm a hull hit.
           if (!q.exact || (m.HullIsExact(*q.set, i) && contact == ConvexContact::kFound)) {
+            // Without robot_pieces, the robot's hull is the robot itself (a disc, a convex
+            // polygon, a convex mesh) or, for a concave mesh, a cover of it that only kHulls
+            // may take for it.
             if (m.robot_pieces.empty()) {
-              q.hit = true;
-              return true;
-            }
-            bool doubtful = false;
-            for (const Geometry& piece : m.robot_pieces) {
-              ++q.hull_tests;
-              const ConvexContact part =
-                  CollideConvex(piece.get(), q.pose, m.piece_hulls[i].get(), identity);
-              if (part == ConvexContact::kFound || (part != ConvexContact::kNone && !q.exact)) {
+              if (!q.exact || m.dimension == 2 || m.robot_convex) {
                 q.hit = true;
                 return true;
               }
-              doubtful = doubtful || part == ConvexContact::kDoubtful;
+            } else {
+              bool doubtful = false;
+              for (const Geometry& piece : m.robot_pieces) {
+                ++q.hull_tests;
+                const ConvexContact part =
+                    CollideConvex(piece.get(), q.pose, m.piece_hulls[i].get(), identity);
+                if (part == ConvexContact::kFound || (part != ConvexContact::kNone && !q.exact)) {
+                  q.hit = true;
+                  return true;
+                }
+                doubtful = doubtful || part == ConvexContact::kDoubtful;
+              }
+              if (!q.exact || !doubtful) return false;
             }
-            if (!q.exact || !doubtful) return false;
           }
           ++q.confirmations;
-          if ((m.piece_bvhs[i] &&
-               Collide(m.robot_exact.get(), q.pose, m.piece_bvhs[i].get(), identity)) ||
-              m.PieceInsideRobot(*q.set, i, q.pose)) {
+          bool touches = false;
+          if (m.robot_convex) {
+            if (q.robot_edges.empty()) {
+              for (const Eigen::Vector3d& e : m.robot_edges) {
+                q.robot_edges.push_back(q.pose.linear() * e);
+              }
+              for (const Eigen::Vector3d& v : q.robot.vertices) q.robot_box.extend(v);
+            }
+            touches = m.piece_trees[i].AnyNear(q.robot_box, [&q](const internal::Triangle3& t) {
+              return internal::TouchesTriangle(q.robot, q.robot_edges, t);
+            });
+          } else {
+            touches = m.piece_bvhs[i] &&
+                      Collide(m.robot_exact.get(), q.pose, m.piece_bvhs[i].get(), identity);
+          }
+          // A part inside a convex robot has its triangles inside the polytope, which touches
+          // them: only the BVH-BVH test, which sees surfaces, needs the containment test.
+          if (touches || (!m.robot_convex && m.PieceInsideRobot(*q.set, i, q.pose))) {
             q.hit = true;
             return true;
           }

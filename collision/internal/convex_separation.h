@@ -1,12 +1,17 @@
 #pragma once
-// A cheap, conservative separation test between two convex polytopes by their face planes: the
-// first filter of a hull test before GJK. Internal.
+// Separation tests on convex polytopes: a cheap, conservative one between two polytopes by their
+// face planes (the first filter of a hull test before GJK), and a complete one between a
+// polytope and a triangle. Internal.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <array>
 #include <vector>
 
 namespace acdplan::collision::internal {
+
+/// A triangle as its three corners.
+using Triangle3 = std::array<Eigen::Vector3d, 3>;
 
 /// A convex polytope as its vertices and its outward face planes (n, d), |n| = 1, with every
 /// vertex v satisfying n . v <= d (acd::HullPlanes() gives such planes).
@@ -34,5 +39,21 @@ bool InsideBy(const ConvexPolytope& polytope, const Eigen::Vector3d& p, double m
 /// True if some vertex of `a` lies inside `b` by more than `margin` (InsideBy()): the two then
 /// overlap.
 bool AVertexInside(const ConvexPolytope& a, const ConvexPolytope& b, double margin);
+
+/// The directions of the edges of the closed convex mesh `hull` (each edge once; the diagonals of
+/// coplanar triangles included, which only adds axes to try): the edge-edge axes of
+/// TouchesTriangle().
+std::vector<Eigen::Vector3d> EdgeDirections(const Eigen::MatrixX3d& vertices,
+                                            const Eigen::MatrixX3i& triangles);
+
+/// True if the convex polytope `a` (its planes and vertices) and the triangle `t` share a point
+/// (touching counts), by the separating axis theorem: they are disjoint iff the projections on
+/// one of a's face normals, t's normal, or a cross product of one of `a_edges` (the directions
+/// of a's edges) with an edge of t are disjoint. Decided in doubles: may differ from an exact
+/// answer only where the two touch up to rounding. A degenerate t (no normal) is tested on the
+/// other axes only, which never misses a contact. O(|planes| + |a_edges| x 3) axes, each
+/// O(|vertices|), stopping at the first that separates.
+bool TouchesTriangle(const ConvexPolytope& a, const std::vector<Eigen::Vector3d>& a_edges,
+                     const Triangle3& t);
 
 }  // namespace acdplan::collision::internal

@@ -74,8 +74,47 @@ struct HullSorter {
 
 }  // namespace
 
+Eigen::Vector3i HullGrid::CellsPerAxis(const Eigen::Vector3d& extent,
+                                       const Eigen::Vector3i& fixed) {
+  // Cubic cells of edge h, (extent / h) per axis and about kTargetCells in all, except on an
+  // axis where that gives fewer than kMinCellsPerAxis: a flat set of hulls (a wall, a plaque)
+  // would otherwise have a few layers of cells, nearly all crossed by its two large faces. Such
+  // an axis gets kMinCellsPerAxis and the others share what is left, cubically again. An
+  // extent of zero gets one cell.
+  Eigen::Vector3i cells;  // 0: not set yet
+  for (int k = 0; k < 3; ++k) cells[k] = fixed[k] > 0 ? fixed[k] : extent[k] > 0 ? 0 : 1;
+  for (;;) {
+    double budget = kTargetCells, free_volume = 1;
+    int free_axes = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (cells[k] > 0) {
+        budget /= cells[k];
+      } else {
+        free_volume *= extent[k];
+        ++free_axes;
+      }
+    }
+    if (free_axes == 0) return cells;
+    const double h = std::pow(free_volume / budget, 1.0 / free_axes);
+    bool flat = false;
+    for (int k = 0; k < 3; ++k) {
+      if (cells[k] == 0 && extent[k] / h < kMinCellsPerAxis) {
+        cells[k] = kMinCellsPerAxis;
+        flat = true;
+      }
+    }
+    if (flat) continue;
+    for (int k = 0; k < 3; ++k) {
+      if (cells[k] == 0) {
+        cells[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / h)), 1, kTargetCells);
+      }
+    }
+    return cells;
+  }
+}
+
 HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& planes,
-                   const std::vector<Eigen::AlignedBox3d>& boxes, double slack)
+                   const std::vector<Eigen::AlignedBox3d>& boxes, double slack, bool prisms_in_z)
     : hull_count_(static_cast<int>(planes.size())) {
   std::vector<Eigen::AlignedBox3d> loose = boxes;
   Eigen::AlignedBox3d bounds;
@@ -86,13 +125,10 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
   }
   if (loose.empty()) return;
 
-  // Cells about cubic: edge h with (extent / h) cells per axis, about kTargetCells in all; an
-  // extent of zero (a flat set of hulls) gets one cell on that axis.
+  // Inside the border.
+  const Eigen::Vector3i cells = CellsPerAxis(bounds.sizes(), {0, 0, prisms_in_z ? 3 : 0});
   const Eigen::Vector3d extent = bounds.sizes().cwiseMax(1e-300);
-  const double h = std::cbrt(extent.prod() / kTargetCells);
-  Eigen::Vector3i cells;  // per axis, inside the border
   for (int k = 0; k < 3; ++k) {
-    cells[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / h)), 1, kTargetCells);
     cell_size_[k] = extent[k] / cells[k];
     inverse_cell_size_[k] = 1 / cell_size_[k];
   }

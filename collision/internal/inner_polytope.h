@@ -4,16 +4,12 @@
 // hull hit (CollisionMode::kHullsExact) takes it as a shortcut. Internal.
 
 #include <Eigen/Core>
-#include <array>
 #include <functional>
 #include <vector>
 
 #include "collision/internal/convex_separation.h"
 
 namespace acdplan::collision::internal {
-
-/// A triangle as its three corners.
-using Triangle3 = std::array<Eigen::Vector3d, 3>;
 
 /// The polytope K = { x : n . x <= d - delta_n - margin for every hull plane (n, d) }: the part
 /// inside the hull of each triangle T of `surface` is assigned to the plane it lies least deep

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "base/input_error.h"
+#include "collision/internal/mesh_building.h"
 #include "envs/generators.h"
 #include "envs/mesh_loader.h"
 #include "test_worlds.h"
@@ -256,18 +257,28 @@ TEST_P(CollisionWorldVhacdMesh, HullsExactEqualsBvhAndHullsAreConservative) {
   workspace.bounds =
       Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
   auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));
-  const CollisionWorld world(set, envs::Robot::Mesh(testing::CubeMesh(0.05 * box.sizes().norm())));
-  int mismatches = 0, missed = 0, collisions = 0;
-  const int count = testing::kPosesPerWorld / 10;
-  for (const auto& pose : testing::RandomPoses3d(workspace.bounds, count, 99)) {
-    const bool bvh = world.IsValid(pose, CollisionMode::kBvh);
-    mismatches += bvh != world.IsValid(pose, CollisionMode::kHullsExact);
-    missed += world.IsValid(pose, CollisionMode::kHulls) && !bvh;
-    collisions += !bvh;
+  // A convex robot (hull hits confirmed on the triangles near it by the separating axis test)
+  // and an L-shaped one (confirmed by FCL's BVH-BVH test).
+  const double side = 0.05 * box.sizes().norm();
+  acd::Polygon2d l_shape;
+  l_shape.outer = {{0, 0},           {side, 0}, {side, side / 2}, {side / 2, side / 2},
+                   {side / 2, side}, {0, side}};
+  for (const acd::TriangleMesh& robot :
+       {testing::CubeMesh(side), internal::ExtrudePolygon(l_shape, 0, side / 2)}) {
+    SCOPED_TRACE(robot.vertices.rows());
+    const CollisionWorld world(set, envs::Robot::Mesh(robot));
+    int mismatches = 0, missed = 0, collisions = 0;
+    const int count = testing::kPosesPerWorld / 10;
+    for (const auto& pose : testing::RandomPoses3d(workspace.bounds, count, 99)) {
+      const bool bvh = world.IsValid(pose, CollisionMode::kBvh);
+      mismatches += bvh != world.IsValid(pose, CollisionMode::kHullsExact);
+      missed += world.IsValid(pose, CollisionMode::kHulls) && !bvh;
+      collisions += !bvh;
+    }
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_EQ(missed, 0);
+    EXPECT_GT(collisions, count / 100);
   }
-  EXPECT_EQ(mismatches, 0);
-  EXPECT_EQ(missed, 0);
-  EXPECT_GT(collisions, count / 100);
 }
 
 // The obstacles are decomposed (solid ACD; bunny after repair): sanitizer builds take the small

@@ -13,14 +13,14 @@ namespace {
 using Planes = Eigen::Matrix<double, Eigen::Dynamic, 4>;
 
 // Seeded random convex hulls (of 4-12 points in a cube of half-side 0.05-0.5, 1-2 for a single
-// hull) in [0, 4]^3, the second one flat, with their planes and boxes.
+// hull) in [0, 4]^3, the second one flat, with their planes and boxes; z scaled by `z_scale`.
 struct RandomHulls {
   std::vector<Planes> planes;
   std::vector<Eigen::AlignedBox3d> boxes;
   std::vector<acd::TriangleMesh> meshes;
 };
 
-RandomHulls MakeHulls(int count, std::uint64_t seed) {
+RandomHulls MakeHulls(int count, std::uint64_t seed, double z_scale = 1) {
   RandomEngine rng(seed);
   RandomHulls out;
   for (int h = 0; h < count; ++h) {
@@ -33,6 +33,7 @@ RandomHulls MakeHulls(int count, std::uint64_t seed) {
       Eigen::Vector3d p;
       for (int k = 0; k < 3; ++k) p[k] = centre[k] + UniformReal(rng, -radius, radius);
       if (h == 1) p.z() = 1.0;  // flat: thickened by ConvexHull3
+      p.z() *= z_scale;
       points.push_back(p);
     }
     const acd::TriangleMesh hull = acd::ConvexHull3(points, 1e-3);
@@ -66,25 +67,36 @@ std::vector<int> PlainHullsContaining(const RandomHulls& hulls, const Eigen::Vec
 
 TEST(HullGrid, AnswersAsThePlainTestOnEveryHull) {
   const double slack = 1e-12;
-  for (int count : {1, 7, 120}) {
-    SCOPED_TRACE(count);
-    const RandomHulls hulls = MakeHulls(count, 31 + static_cast<std::uint64_t>(count));
-    const HullGrid grid(hulls.planes, hulls.boxes, slack);
-    EXPECT_EQ(grid.size(), count);
-    RandomEngine rng(5);
-    int inside = 0;
-    for (int i = 0; i < 200000; ++i) {
-      Eigen::Vector3d p;
-      for (int k = 0; k < 3; ++k) p[k] = UniformReal(rng, -0.5, 4.5);
-      const std::vector<int> expected = PlainHullsContaining(hulls, p, slack);
-      std::vector<int> found;
-      grid.Candidates(p, &found);
-      ASSERT_EQ(found, expected) << p.transpose();
-      ASSERT_EQ(grid.AnyContains(p), !expected.empty()) << p.transpose();
-      inside += !expected.empty();
+  // Hulls in a cube, in a slab 50 times thinner (flattened cells), and in a cube gridded as if
+  // they were prisms along z (three layers of cells in z): the layout never changes an answer.
+  struct Scene {
+    double z_scale;
+    bool prisms_in_z;
+  };
+  for (const Scene scene : {Scene{1, false}, Scene{0.02, false}, Scene{1, true}})
+    for (int count : {1, 7, 120}) {
+      SCOPED_TRACE(count);
+      SCOPED_TRACE(scene.z_scale);
+      SCOPED_TRACE(scene.prisms_in_z);
+      const RandomHulls hulls =
+          MakeHulls(count, 31 + static_cast<std::uint64_t>(count), scene.z_scale);
+      const HullGrid grid(hulls.planes, hulls.boxes, slack, scene.prisms_in_z);
+      EXPECT_EQ(grid.size(), count);
+      RandomEngine rng(5);
+      int inside = 0;
+      for (int i = 0; i < 200000; ++i) {
+        Eigen::Vector3d p;
+        for (int k = 0; k < 3; ++k) p[k] = UniformReal(rng, -0.5, 4.5);
+        p.z() *= scene.z_scale;
+        const std::vector<int> expected = PlainHullsContaining(hulls, p, slack);
+        std::vector<int> found;
+        grid.Candidates(p, &found);
+        ASSERT_EQ(found, expected) << p.transpose();
+        ASSERT_EQ(grid.AnyContains(p), !expected.empty()) << p.transpose();
+        inside += !expected.empty();
+      }
+      EXPECT_GT(inside, 100);  // the test sees points inside as well as outside
     }
-    EXPECT_GT(inside, 100);  // the test sees points inside as well as outside
-  }
 }
 
 TEST(HullGrid, AnswersAsThePlainTestNearHullSurfaces) {
@@ -140,6 +152,32 @@ TEST(HullGrid, PointsOnAHullsBoundaryAndCornersAreInside) {
   EXPECT_TRUE(grid.AnyContains(Eigen::Vector3d(0.5, 0.5, 0.5)));
   EXPECT_FALSE(grid.AnyContains(Eigen::Vector3d(0.5, 0.5, 1 + 1e-9)));
   EXPECT_FALSE(grid.AnyContains(Eigen::Vector3d(-1e-9, 0.5, 0.5)));
+}
+
+TEST(HullGrid, CellsAreCubicExceptOnAThinAxis) {
+  const auto cells = [](const Eigen::Vector3d& extent, const Eigen::Vector3i& fixed) {
+    return HullGrid::CellsPerAxis(extent, fixed);
+  };
+  const auto about_target = [](const Eigen::Vector3i& c) {
+    const double n = static_cast<double>(c.x()) * c.y() * c.z();
+    return n >= HullGrid::kTargetCells && n <= 1.1 * HullGrid::kTargetCells;
+  };
+  const Eigen::Vector3i none = Eigen::Vector3i::Zero();
+  const Eigen::Vector3i cube = cells({2, 2, 2}, none);
+  EXPECT_EQ(cube, Eigen::Vector3i(41, 41, 41));
+  // A slab: kMinCellsPerAxis across it, the rest cubic.
+  const Eigen::Vector3i slab = cells({10, 10, 0.1}, none);
+  EXPECT_EQ(slab.z(), HullGrid::kMinCellsPerAxis);
+  EXPECT_EQ(slab.x(), slab.y());
+  EXPECT_TRUE(about_target(slab)) << slab.transpose();
+  // A rod: two thin axes.
+  const Eigen::Vector3i rod = cells({0.1, 10, 0.1}, none);
+  EXPECT_EQ(rod, Eigen::Vector3i(16, 256, 16));
+  // A fixed axis, and an axis without extent.
+  const Eigen::Vector3i prisms = cells({5, 5, 1}, Eigen::Vector3i(0, 0, 3));
+  EXPECT_EQ(prisms.z(), 3);
+  EXPECT_TRUE(about_target(prisms)) << prisms.transpose();
+  EXPECT_EQ(cells({5, 5, 0}, none).z(), 1);
 }
 
 TEST(HullGrid, EmptyGridContainsNothing) {
