@@ -24,11 +24,12 @@ struct ObstacleSetOptions {
   double extrusion_height = 1.0;
   /// 3D only: concavity tolerated per ACD component of an obstacle, relative to the
   /// acd::ReferenceRadius of each part of the obstacle (ObstacleComponent; tau = tau_rel_3d x
-  /// radius); > 0. The default is the tightest setting that builds in under a minute on every
-  /// V-HACD mesh: there hull point location errs on <= 1% of the points for 9 of 18 closed
-  /// meshes at 0.05 (1886 hulls in all), 4 of 19 at 0.2 (517 hulls, an earlier run); 0.02 takes
-  /// up to a minute per part (docs/bench/bench_collision.md, docs/bench/acd3d_bench.md).
-  double tau_rel_3d = 0.05;
+  /// radius); > 0. The default is the finest of the dissertation's settings (0.2, 0.05, 0.02):
+  /// hull point location errs on <= 1% of the points of every closed V-HACD mesh there (15 of 19
+  /// at 0.05, up to 2.9% on plaque), hulls+exact checks are as fast or faster, and every V-HACD
+  /// mesh builds in about a minute or less (mite, 39k triangles, the slowest;
+  /// docs/bench/bench_collision.md, docs/bench/acd3d_bench.md).
+  double tau_rel_3d = 0.02;
 };
 
 /// 3D: a part of an obstacle's surface as acd::PrepareMesh() finds it (without repair: a solid

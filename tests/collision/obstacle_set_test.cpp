@@ -97,7 +97,7 @@ TEST(ObstacleSet3d, EachConnectedComponentIsDecomposedAndSaysSo) {
   ASSERT_EQ(set.pieces.size(), 2u);
   EXPECT_TRUE(set.pieces[0].closed);
   EXPECT_NEAR(set.pieces[1].box.min().x(), 2.5, 1e-12);
-  EXPECT_EQ(set.hulls_source, "ACD (Decompose3d, tau_rel = 0.05: 2 solid, 0 surface)");
+  EXPECT_EQ(set.hulls_source, "ACD (Decompose3d, tau_rel = 0.02: 2 solid, 0 surface)");
   ASSERT_EQ(set.components.size(), 2u);
   EXPECT_EQ(set.pieces[1].component, 1);
 }
@@ -164,7 +164,7 @@ TEST(ObstacleSet3d, ACubeIsOneConvexSolidPiece) {
   EXPECT_TRUE(set.pieces[0].convex);
   EXPECT_EQ(set.pieces[0].component, 0);
   EXPECT_EQ(set.pieces[0].triangles.size(), 12u);  // Every face meets the hull's box.
-  EXPECT_EQ(set.hulls_source, "ACD (Decompose3d, tau_rel = 0.05: 1 solid, 0 surface)");
+  EXPECT_EQ(set.hulls_source, "ACD (Decompose3d, tau_rel = 0.02: 1 solid, 0 surface)");
   EXPECT_TRUE(set.notes.empty());
 }
 
