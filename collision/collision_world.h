@@ -47,9 +47,10 @@ struct CollisionCounters {
 ///    IsValid(pose, kBvh).
 ///  - kHullsExact: each hull hit is confirmed on that piece's own triangles (and the same
 ///    containment tests on that piece): the same answer as kBvh up to floating-point ties on
-///    a contact or on an ACD cut. A hit on a convex piece needs no confirmation, unless (3D)
-///    its obstacle has a cavity part (PointLocator's winding rule): there the hulls of the
-///    outer part cover the cavity.
+///    a contact or on an ACD cut. A closed convex mesh robot is tested as a solid polytope
+///    against the triangles near it (separating axes); any other robot by FCL's BVH-BVH test. A hit
+///    on a convex piece needs no confirmation, unless (3D) its obstacle has a cavity part
+///    (PointLocator's winding rule): there the hulls of the outer part cover the cavity.
 /// Queries are const and thread-safe; the counters are atomic.
 class CollisionWorld {
  public:

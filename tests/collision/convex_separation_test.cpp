@@ -21,6 +21,16 @@ ConvexPolytope PolytopeOf(const acd::TriangleMesh& hull) {
   return p;
 }
 
+// A uniform rotation (a normalised 4D Gaussian) and a translation in [-reach, reach]^3.
+Eigen::Isometry3d RandomPose(RandomEngine& rng, double reach) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  for (int k = 0; k < 3; ++k) pose.translation()[k] = UniformReal(rng, -reach, reach);
+  Eigen::Vector4d q;
+  for (int k = 0; k < 4; ++k) q[k] = StandardNormal(rng);
+  pose.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+  return pose;
+}
+
 // Distance between two convex polytopes' vertex sets is not their distance, but a point of one
 // inside the other (by the planes) proves overlap, and a separating plane proves the opposite:
 // on random pairs, compare with a brute-force check on a dense sample of each polytope.
@@ -29,11 +39,7 @@ TEST(ConvexSeparation, NeverSeparatesOverlappingCubes) {
   RandomEngine rng(11);
   int separated = 0, overlapping = 0;
   for (int i = 0; i < 20000; ++i) {
-    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-    for (int k = 0; k < 3; ++k) pose.translation()[k] = UniformReal(rng, -1.8, 1.8);
-    Eigen::Vector4d q;
-    for (int k = 0; k < 4; ++k) q[k] = StandardNormal(rng);
-    pose.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+    const Eigen::Isometry3d pose = RandomPose(rng, 1.8);
     ConvexPolytope moved;
     cube.Transformed(pose, &moved);
     // A sample of the moved cube (grid points of its volume) inside the fixed one: overlap.
@@ -121,11 +127,7 @@ TEST(TouchesTriangle, AgreesWithClippingOnRandomTrianglesAndPoses) {
       corner = center + size * Eigen::Vector3d(UniformReal(rng, -1, 1), UniformReal(rng, -1, 1),
                                                UniformReal(rng, -1, 1));
     }
-    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-    for (int k = 0; k < 3; ++k) pose.translation()[k] = UniformReal(rng, -5, 5);
-    Eigen::Vector4d q;
-    for (int k = 0; k < 4; ++k) q[k] = StandardNormal(rng);
-    pose.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+    const Eigen::Isometry3d pose = RandomPose(rng, 5);
     ConvexPolytope moved;
     cube.Transformed(pose, &moved);
     std::vector<Eigen::Vector3d> moved_edges;
