@@ -23,6 +23,7 @@
 #include "collision/internal/hull_grid.h"
 #include "collision/internal/inner_polytope.h"
 #include "collision/internal/mesh_building.h"
+#include "collision/internal/outer_polytope.h"
 #include "collision/internal/solid_locator.h"
 #include "collision/internal/triangle_tree.h"
 
@@ -173,6 +174,10 @@ internal::ConvexPolytope InnerPolytopeOf(const ObstacleSet& set, const ObstacleP
     return exact.InsideAmong(parts, p);
   });
 }
+
+/// Face planes (besides the six axis-aligned ones) of the polytope a concave 3D piece's hull
+/// tests take when its hull has more (internal::OuterPolytope()).
+constexpr int kMaxTestedHullPlanes = 58;
 
 /// The sides of the regular polygon that stands in for a disc robot in the face-plane pre-test:
 /// circumscribed, so it contains the disc and a separation it finds is one of the disc.
@@ -383,8 +388,14 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
                       set.bounds.min().cwiseAbs().maxCoeff());
   for (size_t i = 0; i < set.pieces.size(); ++i) {
     const ObstaclePiece& piece = set.pieces[i];
-    m.piece_hulls.push_back(MakeConvex(piece.hull));
-    m.piece_polytopes.push_back(Polytope(piece.hull));
+    // A concave piece's hit is confirmed on its triangles anyway: its hull tests may take a
+    // polytope with few faces around a hull with many (2,318 faces on teapot's body patch), which
+    // the face-plane pre-test and GJK read face by face and vertex by vertex.
+    const acd::TriangleMesh tested = set.dimension == 3 && !m.HullIsExact(set, i)
+                                         ? internal::OuterPolytope(piece.hull, kMaxTestedHullPlanes)
+                                         : piece.hull;
+    m.piece_hulls.push_back(MakeConvex(tested));
+    m.piece_polytopes.push_back(Polytope(tested));
     m.piece_inner.push_back(set.dimension == 3 && piece.closed && !m.HullIsExact(set, i)
                                 ? InnerPolytopeOf(set, piece, *m.exact_locator, m.margin)
                                 : internal::ConvexPolytope{});
