@@ -43,8 +43,9 @@ struct CollisionCounters {
 ///    robot by locating one of its vertices in the robot. 3D obstacle pieces that are open
 ///    meshes have no inside: only surface contact is seen there.
 ///  - kHulls: the robot's convex hull (its exact convex pieces for a non-convex polygon robot)
-///    against the hulls of the obstacle pieces: conservative, IsValid(pose, kHulls) implies
-///    IsValid(pose, kBvh).
+///    against the hulls of the obstacle pieces (for a concave 3D piece whose hull has many
+///    faces, a polytope of few faces around it, internal/outer_polytope.h): conservative,
+///    IsValid(pose, kHulls) implies IsValid(pose, kBvh).
 ///  - kHullsExact: each hull hit is confirmed on that piece's own triangles (and the same
 ///    containment tests on that piece): the same answer as kBvh up to floating-point ties on
 ///    a contact or on an ACD cut. A closed convex mesh robot is tested as a solid polytope
