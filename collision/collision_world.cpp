@@ -158,15 +158,8 @@ internal::ConvexPolytope InnerPolytopeOf(const ObstacleSet& set, const ObstacleP
     if (part.obstacle != piece.obstacle || !part.closed) continue;
     if (own_part_only && static_cast<int>(c) != piece.component) continue;
     parts.push_back(static_cast<int>(c));
-    const acd::TriangleMesh& mesh = part.mesh;
-    for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-      internal::Triangle3 t;
-      Eigen::AlignedBox3d triangle_box;
-      for (int k = 0; k < 3; ++k) {
-        t[static_cast<size_t>(k)] = mesh.vertices.row(mesh.triangles(f, k)).transpose();
-        triangle_box.extend(t[static_cast<size_t>(k)]);
-      }
-      if (triangle_box.intersects(box)) near.push_back(t);
+    for (const internal::Triangle3& t : Triangles(part.mesh)) {
+      if (Eigen::AlignedBox3d(t[0]).extend(t[1]).extend(t[2]).intersects(box)) near.push_back(t);
     }
   }
   const Eigen::Vector3d center = piece.solid.vertices.colwise().mean().transpose();
@@ -391,9 +384,10 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const ObstacleSet> obstacles,
     // A concave piece's hit is confirmed on its triangles anyway: its hull tests may take a
     // polytope with few faces around a hull with many (2,318 faces on teapot's body patch), which
     // the face-plane pre-test and GJK read face by face and vertex by vertex.
-    const acd::TriangleMesh tested = set.dimension == 3 && !m.HullIsExact(set, i)
-                                         ? internal::OuterPolytope(piece.hull, kMaxTestedHullPlanes)
-                                         : piece.hull;
+    const acd::TriangleMesh tested =
+        set.dimension == 3 && !m.HullIsExact(set, i)
+            ? internal::OuterPolytope(piece.hull, piece.planes, kMaxTestedHullPlanes)
+            : piece.hull;
     m.piece_hulls.push_back(MakeConvex(tested));
     m.piece_polytopes.push_back(Polytope(tested));
     m.piece_inner.push_back(set.dimension == 3 && piece.closed && !m.HullIsExact(set, i)

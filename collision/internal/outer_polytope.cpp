@@ -1,7 +1,6 @@
 #include "collision/internal/outer_polytope.h"
 
 #include <algorithm>
-#include <limits>
 #include <vector>
 
 #include "acd/convex_hull3d.h"
@@ -14,12 +13,13 @@ constexpr double kSameDirection = 0.9999;
 
 }  // namespace
 
-acd::TriangleMesh OuterPolytope(const acd::TriangleMesh& hull, int max_planes) {
-  const Eigen::Matrix<double, Eigen::Dynamic, 4> planes = acd::HullPlanes(hull);
+acd::TriangleMesh OuterPolytope(const acd::TriangleMesh& hull,
+                                const Eigen::Matrix<double, Eigen::Dynamic, 4>& planes,
+                                int max_planes) {
   if (planes.rows() <= max_planes + 6 || hull.vertices.rows() == 0) return hull;
 
   // The directions: the six axes (the result is bounded), then farthest-point sampling of the
-  // face normals on the sphere, from the largest face.
+  // face normals on the sphere.
   std::vector<Eigen::Vector3d> directions;
   for (int k = 0; k < 3; ++k) {
     directions.push_back(Eigen::Vector3d::Unit(k));

@@ -18,50 +18,51 @@ TriangleTree::TriangleTree(std::vector<Triangle3> triangles) : triangles_(std::m
 }
 
 void TriangleTree::Build() {
-  // Each task fills one node for the triangles [begin, end), reordering them; a split node's two
-  // children are appended together, so they sit at first and first + 1.
+  // Each task fills one node for the triangles order[begin, end), partitioning that range at its
+  // median centroid; a split node's two children are appended together, so they sit at first and
+  // first + 1. The triangles take the final order once, at the end.
   struct Task {
     int node, begin, end;
   };
+  std::vector<int> order(triangles_.size());
+  std::iota(order.begin(), order.end(), 0);
   nodes_.emplace_back();
   std::vector<Task> tasks = {{0, 0, static_cast<int>(triangles_.size())}};
   while (!tasks.empty()) {
     const Task task = tasks.back();
     tasks.pop_back();
-    Eigen::AlignedBox3d box;
-    for (int i = task.begin; i < task.end; ++i) box.extend(boxes_[static_cast<size_t>(i)]);
-    nodes_[static_cast<size_t>(task.node)].box = box;
+    Node& node = nodes_[static_cast<size_t>(task.node)];
+    for (int i = task.begin; i < task.end; ++i) {
+      node.box.extend(boxes_[static_cast<size_t>(order[static_cast<size_t>(i)])]);
+    }
     if (task.end - task.begin <= kLeafSize) {
-      nodes_[static_cast<size_t>(task.node)].first = task.begin;
-      nodes_[static_cast<size_t>(task.node)].count = task.end - task.begin;
+      node.first = task.begin;
+      node.count = task.end - task.begin;
       continue;
     }
     int axis = 0;
-    box.sizes().maxCoeff(&axis);
-    // Sort the index range by centroid on the axis (ties by index: the same tree everywhere),
-    // then permute the triangles and their boxes.
-    std::vector<int> order(static_cast<size_t>(task.end - task.begin));
-    std::iota(order.begin(), order.end(), task.begin);
-    const int mid = task.begin + (task.end - task.begin) / 2;
+    node.box.sizes().maxCoeff(&axis);
     auto center = [&](int i) { return boxes_[static_cast<size_t>(i)].center()[axis]; };
+    const int mid = task.begin + (task.end - task.begin) / 2;
+    // Ties by index: the same tree with any standard library.
     std::nth_element(
-        order.begin(), order.begin() + (mid - task.begin), order.end(),
+        order.begin() + task.begin, order.begin() + mid, order.begin() + task.end,
         [&](int a, int b) { return center(a) < center(b) || (center(a) == center(b) && a < b); });
-    std::vector<Triangle3> t;
-    std::vector<Eigen::AlignedBox3d> b;
-    for (const int i : order) {
-      t.push_back(triangles_[static_cast<size_t>(i)]);
-      b.push_back(boxes_[static_cast<size_t>(i)]);
-    }
-    std::copy(t.begin(), t.end(), triangles_.begin() + task.begin);
-    std::copy(b.begin(), b.end(), boxes_.begin() + task.begin);
     const int children = static_cast<int>(nodes_.size());
+    node.first = children;  // before emplace_back, which may move `node`
     nodes_.emplace_back();
     nodes_.emplace_back();
-    nodes_[static_cast<size_t>(task.node)].first = children;
     tasks.push_back({children, task.begin, mid});
     tasks.push_back({children + 1, mid, task.end});
   }
+  std::vector<Triangle3> triangles;
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (const int i : order) {
+    triangles.push_back(triangles_[static_cast<size_t>(i)]);
+    boxes.push_back(boxes_[static_cast<size_t>(i)]);
+  }
+  triangles_ = std::move(triangles);
+  boxes_ = std::move(boxes);
 }
 
 }  // namespace acdplan::collision::internal

@@ -28,7 +28,7 @@ TEST(OuterPolytope, HasFewFacesAndContainsTheHull) {
   ASSERT_GT(acd::HullPlanes(hull).rows(), 1000);
   for (const int max_planes : {8, 58}) {
     SCOPED_TRACE(max_planes);
-    const acd::TriangleMesh outer = OuterPolytope(hull, max_planes);
+    const acd::TriangleMesh outer = OuterPolytope(hull, acd::HullPlanes(hull), max_planes);
     const Eigen::Matrix<double, Eigen::Dynamic, 4> planes = acd::HullPlanes(outer);
     EXPECT_LE(planes.rows(), max_planes + 6);
     for (Eigen::Index v = 0; v < hull.vertices.rows(); ++v) {
@@ -39,13 +39,14 @@ TEST(OuterPolytope, HasFewFacesAndContainsTheHull) {
     const double ratio = acd::MeshVolume(outer) / acd::MeshVolume(hull);
     EXPECT_GE(ratio, 1.0);
     EXPECT_LE(ratio, max_planes == 8 ? 2.0 : 1.25) << ratio;
-    EXPECT_EQ(OuterPolytope(hull, max_planes).vertices, outer.vertices);  // deterministic
+    EXPECT_EQ(OuterPolytope(hull, acd::HullPlanes(hull), max_planes).vertices,
+              outer.vertices);  // deterministic
   }
 }
 
 TEST(OuterPolytope, AHullWithFewFacesIsKept) {
   const acd::TriangleMesh cube = acd::Cube(2.0);
-  const acd::TriangleMesh outer = OuterPolytope(cube, 8);
+  const acd::TriangleMesh outer = OuterPolytope(cube, acd::HullPlanes(cube), 8);
   EXPECT_EQ(outer.vertices, cube.vertices);
   EXPECT_EQ(outer.triangles, cube.triangles);
 }
