@@ -24,7 +24,8 @@
 // with MeshVolume / MeshCentroid; the concavity re-measure (below) is at most tau unless a
 // max_hulls cap merged components; every opening lies in the boundaries of both of its
 // components (solid: its vertices within the tolerance of both surfaces, its area and normal
-// those of its polygon; surface: each of its segments an edge of both patches); the tree, the
+// those of its polygon less its holes, each hole clockwise; surface: each of its segments an
+// edge of both patches, no holes); the tree, the
 // roots and the stats are consistent.
 //
 // Concavity re-measure: the largest distance of a component vertex or face centroid to the
@@ -621,6 +622,7 @@ class Checker {
         if (opening.area != 0.0 || !opening.normal.isZero(0.0)) {
           problems_.Add(label + "a surface opening has area 0 and a zero normal");
         }
+        if (!opening.holes.empty()) problems_.Add(label + "a surface opening has no holes");
         for (size_t k = 0; k + 1 < opening.polygon.size(); ++k) {
           Key p = KeyOf(opening.polygon[k]), q = KeyOf(opening.polygon[k + 1]);
           if (q < p) std::swap(p, q);
@@ -640,15 +642,28 @@ class Checker {
         problems_.Add(label + "a polygon needs >= 3 vertices");
         continue;
       }
-      const Eigen::Vector3d newell = NewellNormal(opening.polygon);
-      const double area = 0.5 * newell.norm();
-      // The polygon's vertices are rounded to doubles: each may lie up to tol off, which moves
-      // the area by up to tol x the perimeter (it matters for slivers of 1e-11 units^2).
+      // The region's rings: the outline, then the holes (clockwise, so their Newell normals
+      // subtract).
+      std::vector<const std::vector<Eigen::Vector3d>*> rings = {&opening.polygon};
+      for (const std::vector<Eigen::Vector3d>& hole : opening.holes) rings.push_back(&hole);
+      const Eigen::Vector3d outline_newell = NewellNormal(opening.polygon);
+      Eigen::Vector3d newell = Eigen::Vector3d::Zero();
+      // The vertices are rounded to doubles: each may lie up to tol off, which moves the area
+      // by up to tol x the perimeter (it matters for slivers of 1e-11 units^2).
       double perimeter = 0;
-      for (size_t k = 0; k < opening.polygon.size(); ++k) {
-        perimeter +=
-            (opening.polygon[(k + 1) % opening.polygon.size()] - opening.polygon[k]).norm();
+      for (size_t r = 0; r < rings.size(); ++r) {
+        const std::vector<Eigen::Vector3d>& ring = *rings[r];
+        const Eigen::Vector3d ring_newell = NewellNormal(ring);
+        newell += ring_newell;
+        for (size_t k = 0; k < ring.size(); ++k) {
+          perimeter += (ring[(k + 1) % ring.size()] - ring[k]).norm();
+        }
+        if (r > 0 && (ring.size() < 3 || !(ring_newell.dot(outline_newell) < 0))) {
+          problems_.Add(label + "hole " + std::to_string(r - 1) +
+                        " is not a clockwise polygon about the normal");
+        }
       }
+      const double area = 0.5 * newell.norm();
       if (!Near(opening.area, area, 1e-6, tol * perimeter)) {
         problems_.Add(label + "area " + Num(opening.area) + " != polygon area " + Num(area));
       }
@@ -663,13 +678,17 @@ class Checker {
           info.tree =
               std::make_unique<Tree>(faces(*info.mesh).first, faces(*info.mesh).second, *info.mesh);
         }
-        for (const Eigen::Vector3d& x : opening.polygon) {
-          const double distance =
-              std::sqrt(info.tree->squared_distance(Point3(x.x(), x.y(), x.z())));
-          if (distance > tol) {
-            problems_.Add(label + "vertex " + Pt(x) + " is not on the boundary of component " +
-                          std::to_string(side) + " (distance " + Num(distance) + ")");
-            break;
+        bool off = false;
+        for (size_t r = 0; r < rings.size() && !off; ++r) {
+          for (const Eigen::Vector3d& x : *rings[r]) {
+            const double distance =
+                std::sqrt(info.tree->squared_distance(Point3(x.x(), x.y(), x.z())));
+            if (distance > tol) {
+              problems_.Add(label + "vertex " + Pt(x) + " is not on the boundary of component " +
+                            std::to_string(side) + " (distance " + Num(distance) + ")");
+              off = true;
+              break;
+            }
           }
         }
       }

@@ -320,8 +320,8 @@ int CountNotches(const Polygon2d& polygon) {
   int count = 0;
   auto count_ring = [&count](const Ring2d& ring) {
     const size_t n = ring.size();
-    for (size_t i = 0; i < n; ++i) {
-      if (internal::IsNotchInline(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n])) ++count;
+    for (size_t i = 0, before = n - 1; i < n; before = i++) {  // No division per vertex.
+      if (internal::IsNotchInline(ring[before], ring[i], ring[i + 1 == n ? 0 : i + 1])) ++count;
     }
   };
   count_ring(polygon.outer);

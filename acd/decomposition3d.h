@@ -22,13 +22,17 @@ struct Component3d {
   int source = 0;            ///< Index of the PreparedMesh part this component came from.
 };
 
-/// A planar polygon shared by two leaf components (solid ACD): an opening between them, where a
-/// cut went through. Surface ACD: the polyline two patches share (`area` 0, `normal` zero).
+/// A planar region shared by two leaf components (solid ACD): an opening between them, where a
+/// cut went through; one connected region, possibly with holes. Surface ACD: the polyline two
+/// patches share (`area` 0, `normal` zero, no holes).
 struct Opening3d {
-  /// Vertices in order; counter-clockwise seen from the tip of `normal` (solid ACD).
+  /// The region's outline, vertices in order; counter-clockwise seen from the tip of `normal`
+  /// (solid ACD).
   std::vector<Eigen::Vector3d> polygon;
+  /// Holes of the region, each clockwise seen from the tip of `normal`; usually none.
+  std::vector<std::vector<Eigen::Vector3d>> holes;
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  ///< Unit, from component_a into component_b.
-  double area = 0.0;                                 ///< [units^2].
+  double area = 0.0;  ///< Of the region: the polygon's less its holes' [units^2].
   int component_a = -1, component_b = -1;  ///< Indices into Decomposition3d::components, a < b.
 };
 

@@ -287,8 +287,14 @@ class InteriorFaces {
       // An orthonormal basis of the plane, for the 2D point-in-polygon test.
       flat.u = flat.normal.unitOrthogonal();
       flat.v = flat.normal.cross(flat.u);
-      for (const Eigen::Vector3d& p : opening.polygon) {
-        flat.ring.emplace_back(p.dot(flat.u), p.dot(flat.v));
+      auto in_plane = [&flat](const std::vector<Eigen::Vector3d>& ring) {
+        std::vector<Eigen::Vector2d> points;
+        for (const Eigen::Vector3d& p : ring) points.emplace_back(p.dot(flat.u), p.dot(flat.v));
+        return points;
+      };
+      flat.rings.push_back(in_plane(opening.polygon));
+      for (const std::vector<Eigen::Vector3d>& hole : opening.holes) {
+        flat.rings.push_back(in_plane(hole));
       }
       const int index = static_cast<int>(flats_.size());
       flats_.push_back(std::move(flat));
@@ -309,7 +315,7 @@ class InteriorFaces {
       }
       if (!on_plane) continue;
       const Eigen::Vector3d centroid = (p[0] + p[1] + p[2]) / 3.0;
-      if (Inside(flat.ring, Eigen::Vector2d(centroid.dot(flat.u), centroid.dot(flat.v)))) {
+      if (Inside(flat.rings, Eigen::Vector2d(centroid.dot(flat.u), centroid.dot(flat.v)))) {
         return true;
       }
     }
@@ -320,19 +326,23 @@ class InteriorFaces {
   struct Flat {
     Eigen::Vector3d normal, u, v;
     double offset = 0.0;
-    std::vector<Eigen::Vector2d> ring;
+    std::vector<std::vector<Eigen::Vector2d>> rings;  // The outline, then the holes.
   };
 
-  /// Crossing-number test; a centroid is never on the ring's boundary for a non-degenerate
-  /// triangle inside it, so the boundary convention does not matter here.
-  static bool Inside(const std::vector<Eigen::Vector2d>& ring, const Eigen::Vector2d& q) {
+  /// Crossing-number test over all rings (even-odd: inside the outline, in no hole); a
+  /// centroid is never on a ring for a non-degenerate triangle inside the region, so the
+  /// boundary convention does not matter here.
+  static bool Inside(const std::vector<std::vector<Eigen::Vector2d>>& rings,
+                     const Eigen::Vector2d& q) {
     bool inside = false;
-    for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-      const Eigen::Vector2d& a = ring[i];
-      const Eigen::Vector2d& b = ring[j];
-      if ((a.y() > q.y()) != (b.y() > q.y()) &&
-          q.x() < a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y())) {
-        inside = !inside;
+    for (const std::vector<Eigen::Vector2d>& ring : rings) {
+      for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+        const Eigen::Vector2d& a = ring[i];
+        const Eigen::Vector2d& b = ring[j];
+        if ((a.y() > q.y()) != (b.y() > q.y()) &&
+            q.x() < a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y())) {
+          inside = !inside;
+        }
       }
     }
     return inside;
@@ -475,9 +485,15 @@ std::string Decomposition3dToJson(const Decomposition3d& decomposition,
   Json openings = Json::array();
   for (const Opening3d& opening : decomposition.openings) {
     Json o;
-    Json polygon = Json::array();
-    for (const Eigen::Vector3d& p : opening.polygon) polygon.push_back(VectorToJson(p));
-    o["polygon"] = std::move(polygon);
+    auto ring_json = [](const std::vector<Eigen::Vector3d>& ring) {
+      Json points = Json::array();
+      for (const Eigen::Vector3d& p : ring) points.push_back(VectorToJson(p));
+      return points;
+    };
+    o["polygon"] = ring_json(opening.polygon);
+    Json holes = Json::array();
+    for (const std::vector<Eigen::Vector3d>& hole : opening.holes) holes.push_back(ring_json(hole));
+    o["holes"] = std::move(holes);
     o["normal"] = VectorToJson(opening.normal);
     o["area"] = opening.area;
     o["components"] = Json::array({opening.component_a, opening.component_b});

@@ -19,13 +19,12 @@ struct RepairedPolygon {
 /// change. Otherwise:
 ///  1. each ring that cleans to fewer than 3 distinct, non-collinear vertices (e.g. a hole with
 ///     two vertices) is dropped: "hole 2 has 2 distinct, non-collinear vertices: dropped";
-///  2. if the rest is still invalid, all ring edges go into one exact arrangement (CGAL
-///     Arrangement_2 with history, Epeck: crossing points are exact), each face is inside when
-///     an odd number of ring edges separates it from the unbounded face (the even-odd rule, as
-///     GEOS's "linework" make-valid: a bow tie gives its two triangles, a hole crossing the
-///     outer ring gives the symmetric difference), edges with inside on both sides vanish, and
-///     the inside is returned as polygons with holes: "<the rule broken>: rebuilt by the
-///     even-odd rule into N polygon(s) with H hole(s), area A";
+///  2. if the rest is still invalid, the rings' even-odd region (internal::EvenOddRegions():
+///     an exact arrangement of all ring edges; a face is inside when an odd number of ring
+///     edges separates it from the unbounded face, as GEOS's "linework" make-valid: a bow tie
+///     gives its two triangles, a hole crossing the outer ring gives the symmetric difference)
+///     is returned as polygons with holes: "<the rule broken>: rebuilt by the even-odd rule
+///     into N polygon(s) with H hole(s), area A";
 ///  3. the result goes through PreparePolygons() (points where parts touch are handled there).
 /// Crossing points are rounded to doubles at the end; a rounding that makes rings cross is
 /// reported as an InputError ("repair failed: ..."), not hidden.

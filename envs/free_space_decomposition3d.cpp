@@ -86,18 +86,27 @@ Eigen::Matrix<double, Eigen::Dynamic, 4> HullPlanes(const acd::TriangleMesh& hul
   return planes;
 }
 
-Eigen::Vector3d PolygonCentroid(const std::vector<Eigen::Vector3d>& polygon) {
+// The area centroid of an opening's region, its holes subtracted: fan triangles of every ring,
+// with their areas signed about the normal (holes run clockwise).
+Eigen::Vector3d RegionCentroid(const acd::Opening3d& opening) {
+  const Eigen::Vector3d n = opening.normal.normalized();
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   double total = 0;
-  for (size_t i = 1; i + 1 < polygon.size(); ++i) {
-    const double area = 0.5 * (polygon[i] - polygon[0]).cross(polygon[i + 1] - polygon[0]).norm();
-    sum += area * (polygon[0] + polygon[i] + polygon[i + 1]) / 3.0;
-    total += area;
-  }
+  auto add = [&](const std::vector<Eigen::Vector3d>& ring) {
+    for (size_t i = 1; i + 1 < ring.size(); ++i) {
+      const double area = 0.5 * n.dot((ring[i] - ring[0]).cross(ring[i + 1] - ring[0]));
+      sum += area * (ring[0] + ring[i] + ring[i + 1]) / 3.0;
+      total += area;
+    }
+  };
+  add(opening.polygon);
+  for (const std::vector<Eigen::Vector3d>& hole : opening.holes) add(hole);
   if (total > 0) return sum / total;
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& p : polygon) mean += p;
-  return polygon.empty() ? mean : Eigen::Vector3d(mean / static_cast<double>(polygon.size()));
+  for (const Eigen::Vector3d& p : opening.polygon) mean += p;
+  return opening.polygon.empty()
+             ? mean
+             : Eigen::Vector3d(mean / static_cast<double>(opening.polygon.size()));
 }
 
 // An orthonormal basis (u, v) of the planes of unit normal n, with u x v = n.
@@ -343,10 +352,10 @@ FreeSpaceDecomposition3d Compute(const Workspace3d& workspace, double tau) {
     component.planes = HullPlanes(c.hull);
     d.components.push_back(std::move(component));
   }
-  // The solid ACD leaves a cut face as several polygons when it was split further (a later
-  // cut, or triangles of the cut face): pieces between the same two components in the same
-  // plane are one passage, so they become one opening -- area and centroid summed over the
-  // pieces, polygon and width those of the convex hull of their vertices.
+  // The solid ACD leaves a cut face as several regions when a later cut split it: pieces
+  // between the same two components in the same plane are one passage, so they become one
+  // opening -- area and centroid summed over the pieces, polygon and width those of the convex
+  // hull of their outlines (a region with holes or a non-convex outline gets its hull too).
   const double tolerance = 1e-9 * (workspace.bounds.sizes().norm() + 1.0);
   std::vector<std::vector<const acd::Opening3d*>> groups;
   for (const acd::Opening3d& o : acd.openings) {
@@ -375,11 +384,11 @@ FreeSpaceDecomposition3d Compute(const Workspace3d& workspace, double tau) {
     Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
     for (const acd::Opening3d* piece : group) {
       opening.area += piece->area;
-      weighted += piece->area * PolygonCentroid(piece->polygon);
+      weighted += piece->area * RegionCentroid(*piece);
       points.insert(points.end(), piece->polygon.begin(), piece->polygon.end());
     }
     opening.centroid = weighted / opening.area;
-    opening.polygon = group.size() == 1 ? first.polygon : PlanarHull(points, opening.normal);
+    opening.polygon = PlanarHull(points, opening.normal);
     opening.width = NarrowestWidth(opening.polygon, opening.normal);
     d.openings.push_back(std::move(opening));
   }

@@ -21,12 +21,13 @@ struct FreeComponent3d {
   Eigen::Matrix<double, Eigen::Dynamic, 4> planes;
 };
 
-/// The planar polygon two adjacent components share: a passage between them.
+/// The planar region two adjacent components share: a passage between them.
 struct FreeOpening3d {
-  std::vector<Eigen::Vector3d> polygon;  ///< Vertices in order, CCW seen from `normal`'s tip.
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< Area centroid [units].
+  /// The convex hull of the region, vertices in order, CCW seen from `normal`'s tip.
+  std::vector<Eigen::Vector3d> polygon;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< Area centroid of the region [units].
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   ///< Unit, from component_a into _b.
-  double area = 0.0;                                   ///< [units^2].
+  double area = 0.0;                                   ///< Of the region [units^2].
   /// The passage's bottleneck: the minimum width of the polygon in its plane (rotating
   /// calipers on its convex hull) [units]. A square window of side s has width s.
   double width = 0.0;

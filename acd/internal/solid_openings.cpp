@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "acd/internal/box_sweep.h"
+#include "acd/internal/even_odd_regions.h"
 #include "acd/internal/exact_rounding.h"
 #include "acd/internal/subtree.h"
+#include "acd/polygon2d.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -23,16 +25,6 @@ using Polygon2 = std::vector<Point2>;
 
 double Cross(const Point2& a, const Point2& b, const Point2& c) {
   return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
-}
-
-double Area(const Polygon2& p) {
-  double a = 0;
-  for (size_t i = 0; i < p.size(); ++i) {
-    const Point2& u = p[i];
-    const Point2& v = p[(i + 1) % p.size()];
-    a += u.x() * v.y() - u.y() * v.x();
-  }
-  return a / 2;
 }
 
 // Sutherland-Hodgman: the part of convex `subject` inside the counter-clockwise convex `clip`,
@@ -112,6 +104,36 @@ Polygon2 ConvexHull2(Polygon2 pts) {
   return hull;
 }
 
+// The region that both the triangles `below[s]` and `above[t]` of the pairs (., ., s, t) in
+// [first, last) cover (EvenOddRegions(); the triangles of one side tile their part of the
+// plane), without pieces and holes of at most `sliver` area: rounding in projecting the faces
+// to the plane leaves such specks where they should meet exactly.
+std::vector<Polygon2d> SharedRegions(const std::vector<Polygon2>& below,
+                                     const std::vector<Polygon2>& above,
+                                     std::vector<std::array<int, 4>>::const_iterator first,
+                                     std::vector<std::array<int, 4>>::const_iterator last,
+                                     double sliver) {
+  // The triangles of one side in some pair, each once.
+  auto layer = [first, last](int side, const std::vector<Polygon2>& triangles) {
+    std::vector<int> indices;
+    for (auto pair = first; pair != last; ++pair) indices.push_back((*pair)[side]);
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    std::vector<Ring2d> rings;
+    for (const int i : indices) rings.push_back(triangles[static_cast<size_t>(i)]);
+    return rings;
+  };
+  std::vector<Polygon2d> regions;
+  for (Polygon2d& region : EvenOddRegions({layer(2, below), layer(3, above)})) {
+    region.holes.erase(
+        std::remove_if(region.holes.begin(), region.holes.end(),
+                       [sliver](const Ring2d& hole) { return -SignedArea(hole) <= sliver; }),
+        region.holes.end());
+    if (acd::Area(region) > sliver) regions.push_back(std::move(region));
+  }
+  return regions;
+}
+
 struct PlaneFaces {
   std::vector<Polygon2> below, above;  // counter-clockwise triangles in plane coordinates
 };
@@ -127,6 +149,7 @@ void ComputeOpenings(Decomposition3d* decomposition) {
     if (c.mesh.vertices.rows() > 0) scale = std::max(scale, BoundingBox(c.mesh).diagonal().norm());
   }
   const double tol = 1e-9 * std::max(scale, 1e-300);
+  const double sliver = 1e-10 * scale * scale;  // Clipping slivers are no opening.
   std::vector<std::tuple<int, int, int, Opening3d>> found;
   for (int node = 0; node < nodes; ++node) {
     const HierarchyNode3d& cut_node = d.tree[static_cast<size_t>(node)];
@@ -160,7 +183,7 @@ void ComputeOpenings(Decomposition3d* decomposition) {
         if (std::abs(along) < 0.99) continue;
         Polygon2 tri;
         for (const auto& q : p) tri.emplace_back(u.dot(q), v.dot(q));
-        if (Area(tri) < 0) std::reverse(tri.begin(), tri.end());
+        if (SignedArea(tri) < 0) std::reverse(tri.begin(), tri.end());
         (along > 0 ? faces[leaf].below : faces[leaf].above).push_back(tri);
       }
     }
@@ -210,40 +233,45 @@ void ComputeOpenings(Decomposition3d* decomposition) {
           x = ClipConvexExact(s, t);
           if (x.size() < 3) continue;
         }
-        const double ax = Area(x);
-        if (ax > 1e-10 * scale * scale) {  // clipping slivers are no opening
+        const double ax = SignedArea(x);
+        if (ax > sliver) {
           area += ax;
           parts.push_back(std::move(x));
         }
       }
       if (!(area > tol * scale)) continue;
-      // One opening with the convex outline when the shared part is convex (its outline's
-      // area is the shared area); else one per convex part, so each polygon is exact.
-      std::vector<Polygon2> outlines;
+      // A convex shared region is one part, or parts whose hull has their area: its outline.
+      // Else the region is taken exactly, as the area that both sides' faces cover.
+      std::vector<Polygon2d> regions;
       if (parts.size() == 1) {
-        outlines = parts;
+        regions.push_back({std::move(parts.front()), {}});
       } else {
         Polygon2 all;
         for (const Polygon2& p : parts) all.insert(all.end(), p.begin(), p.end());
         Polygon2 hull = ConvexHull2(all);
-        if (std::abs(Area(hull) - area) <= 1e-9 * area) {
-          outlines.push_back(std::move(hull));
+        if (std::abs(SignedArea(hull) - area) <= 1e-9 * area) {
+          regions.push_back({std::move(hull), {}});
         } else {
-          outlines = parts;
+          regions = SharedRegions(faces.at(a).below, faces.at(b).above, pairs.begin() + first,
+                                  pairs.begin() + last, sliver);
         }
       }
-      for (Polygon2& outline : outlines) {
+      for (Polygon2d& region : regions) {
         // From the lower-indexed component into the other; counter-clockwise about the normal.
         Opening3d opening;
         opening.component_a = std::min(a, b);
         opening.component_b = std::max(a, b);
         const bool forward = a < b;  // a is below: the normal n points from a into b
         opening.normal = forward ? n : Eigen::Vector3d(-n);
-        opening.area = Area(outline);
-        if (!forward) std::reverse(outline.begin(), outline.end());
-        for (const Point2& q : outline) {
-          opening.polygon.push_back(u * q.x() + v * q.y() + n * offset);
-        }
+        opening.area = acd::Area(region);
+        auto lift = [&](Polygon2 ring) {
+          if (!forward) std::reverse(ring.begin(), ring.end());
+          std::vector<Eigen::Vector3d> lifted;
+          for (const Point2& q : ring) lifted.push_back(u * q.x() + v * q.y() + n * offset);
+          return lifted;
+        };
+        opening.polygon = lift(std::move(region.outer));
+        for (Polygon2& hole : region.holes) opening.holes.push_back(lift(std::move(hole)));
         found.emplace_back(opening.component_a, opening.component_b, node, std::move(opening));
       }
     }

@@ -9,9 +9,10 @@ namespace acdplan::acd::internal {
 /// of the tree's internal nodes: for each internal node, the faces of the leaves below it that
 /// lie in its plane (outward normal +n on the negative side, -n on the positive side) are
 /// intersected pairwise in the plane (an opening split by later cuts is only its shared
-/// parts). A convex shared part is one opening (its outline); a non-convex one is one opening
-/// per convex piece of it, so every polygon's area is its `area`. Ordered by (component_a,
-/// component_b, node), stable.
+/// parts). Each connected shared region is one opening: its outline and holes, exact up to
+/// the rounding of their vertices (EvenOddRegions(), where the region is not convex), without
+/// regions and holes below 1e-10 x the squared diagonal (rounding specks). Ordered by
+/// (component_a, component_b, node), then by position, stable.
 void ComputeOpenings(Decomposition3d* decomposition);
 
 }  // namespace acdplan::acd::internal

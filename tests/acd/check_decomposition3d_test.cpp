@@ -212,6 +212,24 @@ TEST(CheckDecomposition3dTest, ReportsAnOpeningOffTheBoundary) {
   ExpectProblem(CheckDecomposition3d(same.input, same.d), "are not two component indices a < b");
 }
 
+TEST(CheckDecomposition3dTest, OpeningHolesCountInTheAreaAndMustRunClockwise) {
+  // The square opening at x = 1 with a square hole of area 0.25: clockwise seen from +x.
+  const std::vector<Eigen::Vector3d> hole = {
+      {1, 0.25, 0.25}, {1, 0.25, 0.75}, {1, 0.75, 0.75}, {1, 0.75, 0.25}};
+  SplitBox holed;
+  holed.d.openings[0].holes = {hole};
+  holed.d.openings[0].area = 0.75;
+  EXPECT_TRUE(CheckDecomposition3d(holed.input, holed.d).ok());
+  SplitBox area;
+  area.d.openings[0].holes = {hole};  // Area still 1.
+  ExpectProblem(CheckDecomposition3d(area.input, area.d), "area 1 != polygon area 0.75");
+  SplitBox counter;
+  counter.d.openings[0].holes = {{hole.rbegin(), hole.rend()}};
+  counter.d.openings[0].area = 0.75;
+  ExpectProblem(CheckDecomposition3d(counter.input, counter.d),
+                "opening 0: hole 0 is not a clockwise polygon about the normal");
+}
+
 TEST(CheckDecomposition3dTest, ReportsConcavityAboveTau) {
   // An L-shaped solid stored as one component: its inner corner lies 0.5 deep in its hull.
   const TriangleMesh l_block = [] {
@@ -327,6 +345,9 @@ TEST(CheckDecomposition3dTest, ReportsSurfaceOpeningsThatAreNotSharedEdges) {
   area.d.openings[0].area = 1.0;
   ExpectProblem(CheckDecomposition3d(area.input, area.d),
                 "a surface opening has area 0 and a zero normal");
+  SplitSquare holes;
+  holes.d.openings[0].holes = {{{0.2, 0.2, 0}, {0.2, 0.4, 0}, {0.4, 0.2, 0}}};
+  ExpectProblem(CheckDecomposition3d(holes.input, holes.d), "a surface opening has no holes");
 }
 
 TEST(CheckDecomposition3dTest, ReportsTheSolidAcdOnANonSolidInput) {

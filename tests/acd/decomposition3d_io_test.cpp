@@ -167,6 +167,7 @@ TEST(Decomposition3dToJsonTest, FollowsTheContract) {
   EXPECT_EQ(openings[0].at("normal"), json::array({1.0, 0.0, 0.0}));
   EXPECT_EQ(openings[0].at("area").get<double>(), 1.0);
   EXPECT_EQ(openings[0].at("components"), json::array({0, 1}));
+  EXPECT_EQ(openings[0].at("holes"), json::array());
 
   const json& stats = j.at("stats");
   EXPECT_EQ(stats.size(), 8u);
@@ -194,6 +195,17 @@ TEST(Decomposition3dToJsonTest, SurfaceDecomposition) {
   EXPECT_EQ(edge.at("polygon").size(), 2u);
   EXPECT_EQ(edge.at("area").get<double>(), 0.0);
   EXPECT_EQ(edge.at("normal"), json::array({0.0, 0.0, 0.0}));
+  EXPECT_EQ(edge.at("holes"), json::array());
+}
+
+TEST(Decomposition3dToJsonTest, OpeningHolesAreListsOfPoints) {
+  Decomposition3d d = TwoCubes();
+  d.openings[0].holes = {{{1, 0.6, 0.4}, {1, 0.4, 0.4}, {1, 0.4, 0.6}}};
+  const json j = json::parse(Decomposition3dToJson(d, {"shapes/box.obj", 0.025}));
+  const json& holes = j.at("openings")[0].at("holes");
+  ASSERT_EQ(holes.size(), 1u);
+  ASSERT_EQ(holes[0].size(), 3u);
+  EXPECT_EQ(holes[0][1], json::array({1.0, 0.4, 0.4}));
 }
 
 TEST(Decomposition3dToJsonTest, NonFiniteNumbersAreNull) {

@@ -83,5 +83,65 @@ TEST(ComputeOpeningsTest, CrossingsNearASliversApexStayOnTheSliver) {
   }
 }
 
+// Below the cut, the square [0, 3]^2 in two triangles; above it, the frame around [1, 2]^2 (8
+// triangles) is one piece and the centre square another. The frame's shared region is a ring:
+// one opening, its outline and one clockwise hole, not one opening per clipped triangle.
+TEST(ComputeOpeningsTest, ARingShapedSharedRegionIsOneOpeningWithAHole) {
+  const std::vector<Eigen::Vector2d> points = {{0, 0}, {3, 0}, {3, 3}, {0, 3},
+                                               {1, 1}, {2, 1}, {2, 2}, {1, 2}};
+  std::vector<Eigen::Vector3i> frame;
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    frame.emplace_back(i, j, 4 + j);
+    frame.emplace_back(i, 4 + j, 4 + i);
+  }
+  const Decomposition3d d =
+      Pieces({Section(points, {{0, 1, 2}, {0, 2, 3}}, true), Section(points, frame, false),
+              Section(points, {{4, 5, 6}, {4, 6, 7}}, false)});
+  ASSERT_EQ(d.openings.size(), 2u);
+  auto in_plane = [](const std::vector<Eigen::Vector3d>& ring) {
+    Ring2d flat;
+    for (const Eigen::Vector3d& p : ring) {
+      EXPECT_EQ(p.z(), 0.0);
+      flat.emplace_back(p.x(), p.y());
+    }
+    return flat;
+  };
+  const Opening3d& ring = d.openings[0];
+  EXPECT_EQ(ring.component_a, 0);
+  EXPECT_EQ(ring.component_b, 1);
+  EXPECT_EQ(ring.normal, Eigen::Vector3d::UnitZ());  // From component 0, below, into 1.
+  EXPECT_NEAR(ring.area, 8.0, 1e-12);
+  const Ring2d outline = in_plane(ring.polygon);
+  EXPECT_EQ(outline.size(), 4u);
+  EXPECT_NEAR(SignedArea(outline), 9.0, 1e-12);
+  ASSERT_EQ(ring.holes.size(), 1u);
+  const Ring2d hole = in_plane(ring.holes[0]);
+  EXPECT_EQ(hole.size(), 4u);
+  EXPECT_NEAR(SignedArea(hole), -1.0, 1e-12);  // Clockwise seen from the normal's tip.
+
+  const Opening3d& centre = d.openings[1];
+  EXPECT_EQ(centre.component_b, 2);
+  EXPECT_NEAR(centre.area, 1.0, 1e-12);
+  EXPECT_TRUE(centre.holes.empty());
+  EXPECT_EQ(in_plane(centre.polygon).size(), 4u);
+}
+
+// An L-shaped shared region (not convex, no hole) is one opening too, its six corners only.
+TEST(ComputeOpeningsTest, ANonConvexSharedRegionIsOneOpening) {
+  const std::vector<Eigen::Vector2d> points = {{0, 0}, {2, 0}, {2, 1}, {1, 1},
+                                               {1, 2}, {0, 2}, {2, 2}};
+  // Below: the L as a fan around (1, 1)'s neighbours; above: the L plus the missing square,
+  // a different triangulation whose edges cross the first's.
+  const TriangleMesh below = Section(points, {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}}, true);
+  const TriangleMesh above =
+      Section(points, {{0, 1, 3}, {1, 2, 3}, {0, 3, 5}, {3, 4, 5}, {2, 6, 4}, {2, 4, 3}}, false);
+  const Decomposition3d d = Pieces({below, above});
+  ASSERT_EQ(d.openings.size(), 1u);
+  EXPECT_EQ(d.openings[0].polygon.size(), 6u);
+  EXPECT_TRUE(d.openings[0].holes.empty());
+  EXPECT_NEAR(d.openings[0].area, 3.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace acdplan::acd::internal
