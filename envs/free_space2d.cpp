@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "acd/internal/split_at_repeats.h"
 #include "acd/prepare_polygon.h"
 #include "base/input_error.h"
 #include "envs/internal/exact_polygons.h"
@@ -44,30 +45,6 @@ PolygonWithHoles ToCgal(const acd::Polygon2d& polygon) {
   return result;
 }
 
-// Splits a closed vertex cycle that may pass through a point several times (CGAL's output
-// boundaries are only "relatively simple") into simple loops: whenever a vertex repeats, the
-// cycle walked since its first visit is a loop of its own. O(n log n).
-std::vector<Loop> SplitAtRepeats(const Loop& cycle) {
-  std::vector<Loop> loops;
-  Loop stack;
-  std::map<Point, size_t, PointLess> position;
-  for (const Point& p : cycle) {
-    const auto it = position.find(p);
-    if (it == position.end()) {
-      position.emplace(p, stack.size());
-      stack.push_back(p);
-      continue;
-    }
-    const size_t k = it->second;
-    Loop loop(stack.begin() + k, stack.end());
-    for (size_t i = k + 1; i < stack.size(); ++i) position.erase(stack[i]);
-    stack.resize(k + 1);
-    if (loop.size() >= 3) loops.push_back(std::move(loop));
-  }
-  if (stack.size() >= 3) loops.push_back(std::move(stack));
-  return loops;
-}
-
 CGAL::Sign AreaSign(const Loop& loop) {
   return CGAL::sign(CGAL::polygon_area_2(loop.begin(), loop.end(), Kernel()));
 }
@@ -81,7 +58,8 @@ struct SplitRegion {
 SplitRegion Split(const PolygonWithHoles& region) {
   SplitRegion split;
   auto add = [&split](const Polygon& ring) {
-    for (Loop& loop : SplitAtRepeats(Loop(ring.vertices_begin(), ring.vertices_end()))) {
+    for (Loop& loop : acd::internal::SplitAtRepeats<Point, PointLess>(
+             Loop(ring.vertices_begin(), ring.vertices_end()))) {
       const CGAL::Sign sign = AreaSign(loop);
       if (sign == CGAL::POSITIVE) split.outers.push_back(std::move(loop));
       if (sign == CGAL::NEGATIVE) split.holes.push_back(std::move(loop));

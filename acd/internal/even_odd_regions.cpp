@@ -5,8 +5,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <algorithm>
-#include <cstddef>
-#include <map>
+#include <array>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
@@ -14,6 +13,7 @@
 
 #include "acd/internal/disjoint_sets.h"
 #include "acd/internal/exact_rounding.h"
+#include "acd/internal/split_at_repeats.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -42,30 +42,7 @@ ExactRing Tidy(const ExactRing& ring) {
   return kept;
 }
 
-// `loop` split where it passes a vertex again into loops that pass each vertex once: a face's
-// boundary that touches itself at a point (a hole touching the outline there) is two rings.
-std::vector<ExactRing> SplitAtRepeats(const ExactRing& loop) {
-  std::vector<ExactRing> rings;
-  ExactRing stack;
-  std::map<ExactPoint, size_t> at;  // Where each vertex on the stack is.
-  for (const ExactPoint& p : loop) {
-    const auto seen = at.find(p);
-    if (seen == at.end()) {
-      at.emplace(p, stack.size());
-      stack.push_back(p);
-      continue;
-    }
-    // The stretch since p's first visit is a ring of its own; p stays for the rest.
-    const size_t first = seen->second;
-    for (size_t k = first + 1; k < stack.size(); ++k) at.erase(stack[k]);
-    rings.emplace_back(stack.begin() + static_cast<std::ptrdiff_t>(first), stack.end());
-    stack.resize(first + 1);
-  }
-  rings.push_back(std::move(stack));
-  return rings;
-}
-
-// Whether a Tidy() ring (it visits each vertex once, SplitAtRepeats()) runs counter-clockwise:
+// Whether a Tidy() ring (it visits each vertex once: SplitAtRepeats()) runs counter-clockwise:
 // its turn at its lowest vertex, where a simple ring is convex, is to the left. It is never
 // straight: both neighbours come after that vertex, so a straight turn would double back.
 bool CounterClockwise(const ExactRing& ring) {
@@ -84,23 +61,51 @@ Ring2d Rounded(const ExactRing& ring) {
 std::vector<Polygon2d> EvenOddRegions(const std::vector<std::vector<Ring2d>>& layers) {
   if (layers.size() > 32) throw std::invalid_argument("EvenOddRegions(): more than 32 layers");
   if (layers.empty()) return {};
-  // Layer by layer, so that the curves new after each insertion are that layer's.
-  Arrangement arrangement;
-  std::unordered_map<const Traits::Curve_2*, unsigned> layer_bit;
+  // Every edge once, ends in lexicographic order, with the layers whose parity it flips: those
+  // that list it an odd number of times (either way round). So the edges that two triangles of
+  // a triangulation share vanish, and an edge of several layers' outlines (two sides of a cut
+  // usually cover the same polygon) is one segment: the arrangement holds the outlines, once.
+  using Edge = std::array<double, 4>;
+  std::vector<std::pair<Edge, unsigned>> listed;
   for (size_t layer = 0; layer < layers.size(); ++layer) {
-    std::vector<Traits::Curve_2> segments;
     for (const Ring2d& ring : layers[layer]) {
       for (size_t i = 0; i < ring.size(); ++i) {
         const Point2d& a = ring[i];
         const Point2d& b = ring[i + 1 == ring.size() ? 0 : i + 1];
-        if (a != b) segments.emplace_back(ExactPoint(a.x(), a.y()), ExactPoint(b.x(), b.y()));
+        if (a == b) continue;
+        const bool forward = a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+        const Point2d& p = forward ? a : b;
+        const Point2d& q = forward ? b : a;
+        listed.push_back({{p.x(), p.y(), q.x(), q.y()}, 1u << layer});
       }
     }
-    CGAL::insert(arrangement, segments.begin(), segments.end());
-    for (auto c = arrangement.curves_begin(); c != arrangement.curves_end(); ++c) {
-      const Traits::Curve_2* curve = &*c;
-      layer_bit.emplace(curve, 1u << layer);  // Keeps the layer of curves inserted before.
+  }
+  std::sort(listed.begin(), listed.end());
+  std::vector<Traits::Curve_2> segments;
+  std::vector<unsigned> flips_of;  // Per segment.
+  for (size_t first = 0, last = 0; first < listed.size(); first = last) {
+    unsigned mask = 0;
+    for (; last < listed.size() && listed[last].first == listed[first].first; ++last) {
+      mask ^= listed[last].second;
     }
+    if (mask == 0) continue;
+    const Edge& e = listed[first].first;
+    segments.emplace_back(ExactPoint(e[0], e[1]), ExactPoint(e[2], e[3]));
+    flips_of.push_back(mask);
+  }
+  // The arrangement keeps its curves in insertion order, which ties each to its mask; checked,
+  // as CGAL does not document the order.
+  Arrangement arrangement;
+  CGAL::insert(arrangement, segments.begin(), segments.end());
+  std::unordered_map<const Traits::Curve_2*, unsigned> curve_flips;
+  size_t k = 0;
+  for (auto c = arrangement.curves_begin(); c != arrangement.curves_end(); ++c, ++k) {
+    if (k >= segments.size() || c->source() != segments[k].source() ||
+        c->target() != segments[k].target()) {
+      throw std::logic_error("EvenOddRegions(): the arrangement reordered its curves");
+    }
+    const Traits::Curve_2* curve = &*c;
+    curve_flips.emplace(curve, flips_of[k]);
   }
   // The layers whose parity flips across an edge.
   auto flips = [&](const Halfedge& h) {
@@ -109,7 +114,7 @@ std::vector<Polygon2d> EvenOddRegions(const std::vector<std::vector<Ring2d>>& la
     for (auto c = arrangement.originating_curves_begin(e);
          c != arrangement.originating_curves_end(e); ++c) {
       const Traits::Curve_2* curve = &*c;
-      mask ^= layer_bit.at(curve);
+      mask ^= curve_flips.at(curve);
     }
     return mask;
   };
@@ -173,6 +178,7 @@ std::vector<Polygon2d> EvenOddRegions(const std::vector<std::vector<Ring2d>>& la
       e = next;
     } while (e != Halfedge(h));
     const int part = parts.Find(index(h->face()));
+    // A face's boundary that touches itself (a hole touching the outline) is several rings.
     for (const ExactRing& ring : SplitAtRepeats(loop)) loops_of[part].push_back(Tidy(ring));
   }
 

@@ -30,8 +30,10 @@ namespace acdplan::acd::internal {
 ///    geometry alone.
 /// Rounding can make rings of the result touch or cross where they pass closer than rounding:
 /// callers that need valid polygons check them (PreparePolygons()). Edges of zero length are
-/// skipped; at most 32 layers.
-/// O((n + k) log n) for n edges crossing k times.
+/// skipped; an edge that a layer lists an even number of times (either way round) flips no
+/// parity and never reaches the arrangement (the edges a triangulation's triangles share cost
+/// nothing), and an edge of several layers is one segment there. At most 32 layers.
+/// O((n + k) log n) for n edges left crossing k times.
 std::vector<Polygon2d> EvenOddRegions(const std::vector<std::vector<Ring2d>>& layers);
 
 }  // namespace acdplan::acd::internal

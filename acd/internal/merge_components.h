@@ -25,8 +25,10 @@ Component3d SolidComponent(TriangleMesh mesh, const SolidConcavity& concavity, i
 /// out most pairs before any union is formed. A tree leaf of a merged component points to the
 /// union, so several leaves can share one component: unlike the surface ACD's patch merge, no
 /// leaf leaves the tree, because its internal nodes' cut planes are where ComputeOpenings()
-/// finds the openings. Components are renumbered by their first leaf in depth-first order, and
-/// the openings are recomputed. `max_growth` < 0: no merging.
+/// finds the openings. Neighbours are the components that `decomposition->openings` join (all
+/// it reads of them: ComputeOpenings() with OpeningDetail::kAdjacency suffices). After a merge,
+/// components are renumbered by their first leaf in depth-first order, and the openings are
+/// recomputed in full; without one, both stay as they were. `max_growth` < 0: no merging.
 /// Returns the number of merges.
 int MergeComponents(double tau, double max_growth, Decomposition3d* decomposition);
 

@@ -351,8 +351,10 @@ Decomposition3d DecomposeSolid(const PreparedMesh& prepared, double tau, int max
       }
     }
   }
-  ComputeOpenings(&out);
-  MergeComponents(tau, merge_growth, &out);
+  // The merge pass needs only which components touch, and recomputes the openings if it merged.
+  const bool merging = merge_growth >= 0;
+  ComputeOpenings(&out, merging ? OpeningDetail::kAdjacency : OpeningDetail::kFull);
+  if (MergeComponents(tau, merge_growth, &out) == 0 && merging) ComputeOpenings(&out);
   out.stats.vertices = static_cast<int>(prepared.mesh.vertices.rows());
   out.stats.triangles = static_cast<int>(prepared.mesh.triangles.rows());
   out.stats.components = static_cast<int>(out.components.size());

@@ -140,7 +140,7 @@ struct PlaneFaces {
 
 }  // namespace
 
-void ComputeOpenings(Decomposition3d* decomposition) {
+void ComputeOpenings(Decomposition3d* decomposition, OpeningDetail detail) {
   Decomposition3d& d = *decomposition;
   d.openings.clear();
   const int nodes = static_cast<int>(d.tree.size());
@@ -240,6 +240,16 @@ void ComputeOpenings(Decomposition3d* decomposition) {
         }
       }
       if (!(area > tol * scale)) continue;
+      const bool forward = a < b;  // a is below: the normal n points from a into b
+      if (detail == OpeningDetail::kAdjacency) {
+        Opening3d opening;
+        opening.component_a = std::min(a, b);
+        opening.component_b = std::max(a, b);
+        opening.normal = forward ? n : Eigen::Vector3d(-n);
+        opening.area = area;
+        found.emplace_back(opening.component_a, opening.component_b, node, std::move(opening));
+        continue;
+      }
       // A convex shared region is one part, or parts whose hull has their area: its outline.
       // Else the region is taken exactly, as the area that both sides' faces cover.
       std::vector<Polygon2d> regions;
@@ -261,7 +271,6 @@ void ComputeOpenings(Decomposition3d* decomposition) {
         Opening3d opening;
         opening.component_a = std::min(a, b);
         opening.component_b = std::max(a, b);
-        const bool forward = a < b;  // a is below: the normal n points from a into b
         opening.normal = forward ? n : Eigen::Vector3d(-n);
         opening.area = acd::Area(region);
         auto lift = [&](Polygon2 ring) {

@@ -13,6 +13,10 @@ namespace acdplan::acd::internal {
 /// the rounding of their vertices (EvenOddRegions(), where the region is not convex), without
 /// regions and holes below 1e-10 x the squared diagonal (rounding specks). Ordered by
 /// (component_a, component_b, node), then by position, stable.
-void ComputeOpenings(Decomposition3d* decomposition);
+/// `kAdjacency`: only which components share an opening, one Opening3d per shared set of parts
+/// with its components, normal and area but no polygon (the merge pass needs no more, and the
+/// exact regions are most of the cost).
+enum class OpeningDetail { kFull, kAdjacency };
+void ComputeOpenings(Decomposition3d* decomposition, OpeningDetail detail = OpeningDetail::kFull);
 
 }  // namespace acdplan::acd::internal

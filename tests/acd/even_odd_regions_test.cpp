@@ -80,6 +80,12 @@ TEST(EvenOddRegionsTest, OneLayerIsTheEvenOddRule) {
   ASSERT_EQ(regions.size(), 2u);
   EXPECT_EQ(regions[0].outer, Ring2d({{0, 0}, {1, 1}, {0, 2}}));
   EXPECT_EQ(regions[1].outer, Ring2d({{1, 1}, {2, 0}, {2, 2}}));
+  // A ring listed twice (once each way round) encloses nothing.
+  EXPECT_TRUE(EvenOddRegions({{Square(0, 0, 1), Reversed(Square(0, 0, 1))}}).empty());
+  // Two squares sharing an edge: one rectangle, the shared edge gone.
+  regions = EvenOddRegions({{Square(0, 0, 1), Square(1, 0, 1)}});
+  ASSERT_EQ(regions.size(), 1u);
+  EXPECT_EQ(regions[0].outer, Ring2d({{0, 0}, {2, 0}, {2, 1}, {0, 1}}));
   // Overlapping squares: the symmetric difference, two L-shapes touching at two points.
   regions = EvenOddRegions({{Square(0, 0, 2), Square(1, 1, 2)}});
   ASSERT_EQ(regions.size(), 2u);

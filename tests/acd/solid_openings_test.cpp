@@ -125,6 +125,19 @@ TEST(ComputeOpeningsTest, ARingShapedSharedRegionIsOneOpeningWithAHole) {
   EXPECT_NEAR(centre.area, 1.0, 1e-12);
   EXPECT_TRUE(centre.holes.empty());
   EXPECT_EQ(in_plane(centre.polygon).size(), 4u);
+
+  // For the merge pass: the same pairs, normals and areas, no polygons.
+  Decomposition3d adjacency = d;
+  ComputeOpenings(&adjacency, OpeningDetail::kAdjacency);
+  ASSERT_EQ(adjacency.openings.size(), 2u);
+  for (size_t k = 0; k < 2; ++k) {
+    const Opening3d& o = adjacency.openings[k];
+    EXPECT_EQ(o.component_a, d.openings[k].component_a);
+    EXPECT_EQ(o.component_b, d.openings[k].component_b);
+    EXPECT_EQ(o.normal, d.openings[k].normal);
+    EXPECT_NEAR(o.area, d.openings[k].area, 1e-12);
+    EXPECT_TRUE(o.polygon.empty());
+  }
 }
 
 // An L-shaped shared region (not convex, no hole) is one opening too, its six corners only.
