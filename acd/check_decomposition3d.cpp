@@ -25,8 +25,7 @@
 // max_hulls cap merged components; every opening lies in the boundaries of both of its
 // components (solid: its vertices within the tolerance of both surfaces, its area and normal
 // those of its polygon less its holes, each hole clockwise; surface: each of its segments an
-// edge of both patches, no holes); the tree, the
-// roots and the stats are consistent.
+// edge of both patches, no holes); the tree, the roots and the stats are consistent.
 //
 // Concavity re-measure: the largest distance of a component vertex or face centroid to the
 // boundary of the convex hull of the component's vertices (recomputed, not the stored hull).
