@@ -25,9 +25,9 @@ namespace acdplan::acd::internal {
 ///    holes;
 ///  - a vertex between two collinear edges is dropped (e.g. where another ring's edge ends on
 ///    the boundary);
-///  - each ring starts at its lowest vertex (exact lexicographic order), holes are ordered by
-///    it, and polygons by the lowest vertex of their outer ring, so the result depends on the
-///    geometry alone.
+///  - each ring starts at its lowest vertex (exact lexicographic order), and holes, and
+///    polygons by their outer ring, are in lexicographic order of their vertices, so the result
+///    depends on the geometry alone.
 /// Rounding can make rings of the result touch or cross where they pass closer than rounding:
 /// callers that need valid polygons check them (PreparePolygons()). Edges of zero length are
 /// skipped; an edge that a layer lists an even number of times (either way round) flips no

@@ -1,5 +1,5 @@
 #pragma once
-// The openings of a solid decomposition: the cut polygons two leaves share.
+// The openings of a solid decomposition: the regions of cuts that two leaves share.
 
 #include "acd/decomposition3d.h"
 
