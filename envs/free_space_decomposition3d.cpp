@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "acd/concavity.h"
 #include "acd/decompose3d.h"
 #include "acd/prepare_mesh.h"
 #include "base/file_io.h"
@@ -126,26 +127,6 @@ double Cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Ve
   return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
 }
 
-// Andrew's monotone chain: the convex hull of `points`, counter-clockwise, no collinear points.
-std::vector<Eigen::Vector2d> Hull2d(std::vector<Eigen::Vector2d> points) {
-  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  if (points.size() < 3) return points;
-  std::vector<Eigen::Vector2d> hull(2 * points.size());
-  size_t k = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    while (k >= 2 && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
-    hull[k++] = points[i];
-  }
-  for (size_t i = points.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(k > 1 ? k - 1 : k);
-  return hull;
-}
-
 // The convex hull of coplanar `points` in their plane (unit normal `normal`), counter-clockwise
 // seen from the normal's tip.
 std::vector<Eigen::Vector3d> PlanarHull(const std::vector<Eigen::Vector3d>& points,
@@ -159,7 +140,7 @@ std::vector<Eigen::Vector3d> PlanarHull(const std::vector<Eigen::Vector3d>& poin
   }
   offset /= static_cast<double>(std::max<size_t>(points.size(), 1));
   std::vector<Eigen::Vector3d> hull;
-  for (const Eigen::Vector2d& q : Hull2d(flat)) {
+  for (const Eigen::Vector2d& q : acd::ConvexHull(flat)) {
     hull.push_back(q.x() * basis.u + q.y() * basis.v + offset * basis.n);
   }
   return hull;
@@ -431,7 +412,7 @@ double NarrowestWidth(const std::vector<Eigen::Vector3d>& polygon, const Eigen::
   const PlaneBasis basis(normal);
   std::vector<Eigen::Vector2d> points;
   for (const Eigen::Vector3d& p : polygon) points.push_back(basis.In(p));
-  const std::vector<Eigen::Vector2d> hull = Hull2d(points);
+  const std::vector<Eigen::Vector2d> hull = acd::ConvexHull(points);
   const size_t h = hull.size();
   if (h < 3) return 0.0;
   // Rotating calipers: for each hull edge the farthest vertex (the antipodal pointer only

@@ -10,6 +10,7 @@
 #include <tuple>
 #include <vector>
 
+#include "acd/concavity.h"
 #include "acd/internal/box_sweep.h"
 #include "acd/internal/even_odd_regions.h"
 #include "acd/internal/exact_rounding.h"
@@ -82,26 +83,6 @@ bool NearConvex(const Polygon2& points, const Polygon2& polygon, double margin) 
     if (!inside && nearest > margin) return false;
   }
   return true;
-}
-
-// Andrew's monotone chain, counter-clockwise.
-Polygon2 ConvexHull2(Polygon2 pts) {
-  std::sort(pts.begin(), pts.end(), [](const Point2& a, const Point2& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  if (pts.size() < 3) return pts;
-  Polygon2 hull(2 * pts.size());
-  size_t k = 0;
-  for (size_t i = 0; i < pts.size(); ++i) {
-    while (k >= 2 && Cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
-    hull[k++] = pts[i];
-  }
-  for (size_t i = pts.size() - 1, t = k + 1; i > 0; --i) {
-    while (k >= t && Cross(hull[k - 2], hull[k - 1], pts[i - 1]) <= 0) --k;
-    hull[k++] = pts[i - 1];
-  }
-  hull.resize(k - 1);
-  return hull;
 }
 
 // The region that both the triangles `below[s]` and `above[t]` of the pairs (., ., s, t) in
@@ -258,7 +239,7 @@ void ComputeOpenings(Decomposition3d* decomposition, OpeningDetail detail) {
       } else {
         Polygon2 all;
         for (const Polygon2& p : parts) all.insert(all.end(), p.begin(), p.end());
-        Polygon2 hull = ConvexHull2(all);
+        Polygon2 hull = ConvexHull(all);
         if (std::abs(SignedArea(hull) - area) <= 1e-9 * area) {
           regions.push_back({std::move(hull), {}});
         } else {
