@@ -14,8 +14,8 @@
 #include "acd/internal/closed_shells.h"
 #include "acd/internal/disjoint_sets.h"
 #include "acd/internal/face_intersections.h"
+#include "acd/internal/fill_holes.h"
 #include "acd/internal/mesh_edges.h"
-#include "acd/internal/mesh_repair.h"
 #include "acd/internal/winding_union.h"
 #include "base/format.h"
 #include "base/input_error.h"
@@ -388,12 +388,15 @@ TriangleMesh CloseHoles(const Diagnosis& d, std::vector<std::string>* notes) {
   return MakeTriangleMesh(vertices, triangles);
 }
 
-// Replaces each group of closed shells that cross each other or themselves by their union:
-// CGAL's corefinement when none crosses itself (it requires that), else the positive-winding
-// solid of the group (UniteByWinding; CGAL 5.5's autorefinement is experimental and not safe
-// on untrusted input). Empty when nothing was united.
-std::optional<TriangleMesh> UniteCrossingShells(const Diagnosis& d,
-                                                std::vector<std::string>* notes) {
+// Why UniteByWinding() returned nothing.
+constexpr char kNoWindingSolid[] =
+    " (the winding rule left no surface, or no ray found a clear way out)";
+
+// Replaces each group of closed shells that cross each other or themselves by the solid they
+// bound by the positive winding rule (UniteByWinding), which is their union when none crosses
+// itself. One method for both: CGAL's corefinement requires shells that do not cross
+// themselves, and CGAL 5.5's autorefinement is experimental and not safe on untrusted input.
+TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* notes) {
   const int count = static_cast<int>(d.patches.size());
   std::vector<int> patch_of(static_cast<size_t>(d.mesh.triangles.rows()));
   for (int p = 0; p < count; ++p) {
@@ -427,25 +430,22 @@ std::optional<TriangleMesh> UniteCrossingShells(const Diagnosis& d,
     int self_crossing_here = 0;
     for (const int p : group) self_crossing_here += crosses_itself[static_cast<size_t>(p)];
     std::optional<TriangleMesh> united;
-    if (self_crossing_here > 0) {
+    if (self_crossing_here > 0 || group.size() >= 2) {
       std::vector<int> faces;
       for (const int p : group) {
         const auto& shell = d.patches[static_cast<size_t>(p)];
         faces.insert(faces.end(), shell.begin(), shell.end());
       }
-      if (auto solid = internal::UniteByWinding(d.mesh, faces, d.crossings)) {
+      std::optional<internal::WindingUnion> solid =
+          internal::UniteByWinding(d.mesh, faces, d.crossings);
+      if (solid) {
         united = std::move(solid->mesh);
-        self_crossing += self_crossing_here;
         pinches += solid->pinches;
         specks += solid->specks;
-      } else {
-        failed_self_crossing += self_crossing_here;
       }
-    } else if (group.size() >= 2) {
-      std::vector<std::vector<int>> shells;
-      for (const int p : group) shells.push_back(d.patches[static_cast<size_t>(p)]);
-      united = internal::UniteClosedShells(d.mesh, shells);
-      if (united) {
+      if (self_crossing_here > 0) {
+        (solid ? self_crossing : failed_self_crossing) += self_crossing_here;
+      } else if (solid) {
         ++united_groups;
         united_shells += static_cast<int>(group.size());
       } else {
@@ -475,24 +475,26 @@ std::optional<TriangleMesh> UniteCrossingShells(const Diagnosis& d,
   }
   if (failed_groups > 0) {
     notes->push_back("repair: could not unite " + Plural(failed_groups, "group") +
-                     " of crossing shells (the union would not be manifold)");
+                     " of crossing closed shells" + kNoWindingSolid);
   }
   if (self_crossing > 0) {
-    notes->push_back(
-        "repair: replaced " + Plural(self_crossing, "shell") +
-        (self_crossing == 1 ? " that crosses itself" : " that cross themselves") + first_self +
-        " by the solid inside them (positive winding)" +
-        (pinches > 0 ? ", separating the fans of " + Plural(pinches, "pinch vertex") +
-                           " by 1e-3 of their shortest edge"
-                     : std::string()) +
-        (specks > 0 ? ", dropping " + Plural(specks, "shell") + " of less than 1e-9 of its volume"
-                    : std::string()));
+    notes->push_back("repair: replaced " + Plural(self_crossing, "shell") +
+                     (self_crossing == 1 ? " that crosses itself" : " that cross themselves") +
+                     first_self + " by the solid inside them (positive winding)");
+  }
+  if (pinches > 0) {
+    notes->push_back("repair: separated the fans of " + Plural(pinches, "pinch vertex") +
+                     " of the united solids by 1e-3 of their shortest edge");
+  }
+  if (specks > 0) {
+    notes->push_back("repair: dropped " + Plural(specks, "shell") +
+                     " of less than 1e-9 of its solid's volume");
   }
   if (failed_self_crossing > 0) {
     notes->push_back(
         "repair: could not unite " + Plural(failed_self_crossing, "shell") +
         (failed_self_crossing == 1 ? " that crosses itself" : " that cross themselves") +
-        first_self + " (the winding rule left no surface, or no ray found a clear way out)");
+        first_self + kNoWindingSolid);
   }
   return MakeTriangleMesh(vertices, triangles);
 }
@@ -532,9 +534,7 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
     }
     if (d.defects.boundary_edges == 0 && d.defects.non_manifold_edges == 0 &&
         d.defects.self_intersections > 0) {
-      if (const auto united = UniteCrossingShells(d, &prepared.notes)) {
-        d = Recheck(*united, where, &prepared.notes);
-      }
+      d = Recheck(UniteCrossingShells(d, &prepared.notes), where, &prepared.notes);
     }
     if (!d.defects.none()) {
       prepared.notes.push_back("repair: still not a solid: " + d.defects.first);

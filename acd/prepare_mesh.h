@@ -75,11 +75,10 @@ struct PreparedMesh {
 /// Repair (options.repair, when there are defects): boundary loops are triangulated without
 /// new vertices (PMP::triangulate_hole_polyline, 2D constrained Delaunay when the loop is
 /// nearly planar); then, if the mesh is closed and manifold, each group of closed shells that
-/// cross each other is replaced by its union (PMP::corefine_and_compute_union on exact
-/// copies, rounded to doubles), and a group with a shell that crosses itself by the solid its
-/// shells bound by the nonzero winding rule (the same union where none crosses itself;
-/// internal::UniteByWinding, exact). The result is cleaned and diagnosed again; what repair
-/// could not mend stays in `defects`.
+/// cross each other or themselves is replaced by the solid they bound by the positive winding
+/// rule, their union when none crosses itself (internal::UniteByWinding, exact, rounded to
+/// doubles at the end). The result is cleaned and diagnosed again; what repair could not mend
+/// stays in `defects`.
 ///
 /// Complexity: O(F log F) for F triangles plus O(k) for k crossing candidate pairs (box
 /// intersection), O(S^2) bounding-box tests for S closed shells; repair adds the hole

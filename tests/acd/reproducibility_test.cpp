@@ -49,7 +49,7 @@ std::vector<std::unique_ptr<char[]>> Garbage(int run) {
 }
 
 TEST(ReproducibilityTest, RepairedTeapotIsTheSameEveryTime) {
-  // Holes filled, then 4 crossing shells united by exact corefinement.
+  // Holes filled, then 4 crossing shells united by the exact winding rule.
   const TriangleMesh teapot =
       envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/teapot.obj");
   const PreparedMesh first = Repaired(teapot);

@@ -1,8 +1,7 @@
 #pragma once
-// The two repairs PrepareMesh() offers: closing holes and uniting closed shells that cross.
+// Closing the holes of a mesh: the first of PrepareMesh()'s repairs.
 
 #include <Eigen/Core>
-#include <optional>
 #include <vector>
 
 #include "acd/triangle_mesh.h"
@@ -25,14 +24,5 @@ struct HoleFilling {
 /// of their lowest boundary edge, so the result is reproducible. The new triangles' orientation
 /// is not settled: the caller orients the whole mesh again.
 HoleFilling FillHoles(const TriangleMesh& mesh);
-
-/// The union of the closed shells `shells` (triangle lists of `mesh`), each outward-oriented and
-/// free of self-intersections, which may cross each other: PMP::corefine_and_compute_union on
-/// exact (Epeck) copies, taken in the given order, rounded to doubles at the end. The result
-/// depends on the input alone: its vertices in exact lexicographic (x, y, z) order, its
-/// triangles (lowest vertex first) sorted. Empty when CGAL cannot form the union (it would not
-/// be manifold).
-std::optional<TriangleMesh> UniteClosedShells(const TriangleMesh& mesh,
-                                              const std::vector<std::vector<int>>& shells);
 
 }  // namespace acdplan::acd::internal

@@ -1,25 +1,17 @@
-#include "acd/internal/mesh_repair.h"
+#include "acd/internal/fill_holes.h"
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/corefinement.h>
-#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
-#include <algorithm>
 #include <map>
 
-#include "acd/internal/cgal_surface_mesh.h"
-#include "acd/internal/exact_rounding.h"
 #include "acd/internal/mesh_edges.h"
 
 namespace acdplan::acd::internal {
 namespace {
 
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 namespace PMP = CGAL::Polygon_mesh_processing;
-using Mesh = CGAL::Surface_mesh<Epeck::Point_3>;
 
 // A boundary halfedge: from `from` to `to`, opposite to the edge of triangle `face` whose
 // third corner is `apex` (the hole's filling should not fold onto that triangle).
@@ -70,52 +62,6 @@ std::vector<std::vector<const BorderHalfedge*>> TraceLoops(
     }
   }
   return loops;
-}
-
-// UniteClosedShells() without its guard; no triangles when CGAL cannot form the union.
-TriangleMesh Unite(const TriangleMesh& mesh, const std::vector<std::vector<int>>& shells) {
-  Mesh united = ToSurfaceMesh<Epeck>(mesh, shells[0]);
-  if (!PMP::is_outward_oriented(united)) PMP::reverse_face_orientations(united);
-  for (size_t i = 1; i < shells.size(); ++i) {
-    Mesh next = ToSurfaceMesh<Epeck>(mesh, shells[i]);
-    if (!PMP::is_outward_oriented(next)) PMP::reverse_face_orientations(next);
-    Mesh result;
-    if (!PMP::corefine_and_compute_union(united, next, result)) return {};
-    united = std::move(result);
-  }
-  united.collect_garbage();
-  // CGAL numbers the union's vertices and faces in the order it meets the intersections, which
-  // follows heap addresses (its box intersection breaks ties by box address): renumber them
-  // canonically, vertices in exact lexicographic (x, y, z) order, triangles sorted after
-  // rotating their lowest vertex first, so that the result depends on the geometry alone.
-  std::vector<Mesh::Vertex_index> order(united.vertices().begin(), united.vertices().end());
-  std::sort(order.begin(), order.end(), [&united](Mesh::Vertex_index a, Mesh::Vertex_index b) {
-    return CGAL::compare_xyz(united.point(a), united.point(b)) == CGAL::SMALLER;
-  });
-  std::vector<Eigen::Vector3d> vertices;
-  std::map<Mesh::Vertex_index, int> index;
-  for (const Mesh::Vertex_index v : order) {
-    index[v] = static_cast<int>(vertices.size());
-    vertices.push_back(RoundToDouble(united.point(v)));  // See RoundToDouble() on why.
-  }
-  std::vector<Eigen::Vector3i> triangles;
-  for (const Mesh::Face_index f : united.faces()) {
-    Eigen::Vector3i t;
-    int k = 0;
-    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(united.halfedge(f), united)) {
-      if (k < 3) t(k) = index[v];
-      ++k;
-    }
-    if (k != 3) continue;
-    int lowest = 0;
-    for (int i = 1; i < 3; ++i) lowest = t(i) < t(lowest) ? i : lowest;
-    triangles.emplace_back(t(lowest), t((lowest + 1) % 3), t((lowest + 2) % 3));
-  }
-  std::sort(triangles.begin(), triangles.end(),
-            [](const Eigen::Vector3i& a, const Eigen::Vector3i& b) {
-              return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
-            });
-  return MakeTriangleMesh(vertices, triangles);
 }
 
 }  // namespace
@@ -169,18 +115,6 @@ HoleFilling FillHoles(const TriangleMesh& mesh) {
   }
   if (broken > 0) ++filling.failed;
   return filling;
-}
-
-std::optional<TriangleMesh> UniteClosedShells(const TriangleMesh& mesh,
-                                              const std::vector<std::vector<int>>& shells) {
-  if (shells.empty()) return std::nullopt;
-  try {
-    TriangleMesh united = Unite(mesh, shells);
-    if (united.triangles.rows() == 0) return std::nullopt;
-    return united;
-  } catch (const CGAL::Failure_exception&) {
-    return std::nullopt;  // CGAL refused the input (a precondition it checks): no union.
-  }
 }
 
 }  // namespace acdplan::acd::internal
