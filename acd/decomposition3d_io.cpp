@@ -613,8 +613,7 @@ std::string Decomposition3dToSvg(const Decomposition3d& decomposition,
   if (labels.tau_rel >= 0) line += " (tau_rel " + Short(labels.tau_rel) + ")";
   if (decomposition.max_hulls > 0) line += ", max hulls " + std::to_string(decomposition.max_hulls);
   line += ", " + std::string(stats.surface ? "surface" : "solid") + " ACD, " +
-          std::to_string(decomposition.components.size()) +
-          (decomposition.components.size() == 1 ? " component" : " components");
+          Plural(decomposition.components.size(), "component");
   if (!stats.surface && stats.volume > 0) {
     line += ", hull volume / volume " + Short(stats.hull_volume / stats.volume);
   }

@@ -32,19 +32,6 @@ std::string At(const Eigen::Vector3d& p) {
          FormatSignificant(p.z(), 15) + ")";
 }
 
-// "1 face", "2 faces"; nouns ending in -x, -ch or consonant + y take their English plural.
-std::string Plural(int count, const std::string& noun) {
-  std::string plural = noun + "s";
-  if (noun.size() >= 2 && noun.compare(noun.size() - 2, 2, "ex") == 0) {
-    plural = noun.substr(0, noun.size() - 2) + "ices";  // vertex
-  } else if (noun.size() >= 2 && noun.compare(noun.size() - 2, 2, "ch") == 0) {
-    plural = noun + "es";  // patch
-  } else if (noun.size() >= 2 && noun.back() == 'y' && noun[noun.size() - 2] != 'e') {
-    plural = noun.substr(0, noun.size() - 1) + "ies";  // cavity
-  }
-  return std::to_string(count) + " " + (count == 1 ? noun : plural);
-}
-
 using internal::DisjointSets;
 
 // The triangles `faces` of `mesh` (ascending) with their own compacted vertex list.
@@ -379,7 +366,7 @@ TriangleMesh CloseHoles(const Diagnosis& d, std::vector<std::string>* notes) {
   triangles.insert(triangles.end(), filling.triangles.begin(), filling.triangles.end());
   if (filling.filled > 0) {
     notes->push_back("repair: filled " + Plural(filling.filled, "hole") + " with " +
-                     Plural(static_cast<int>(filling.triangles.size()), "triangle"));
+                     Plural(filling.triangles.size(), "triangle"));
   }
   if (filling.failed > 0) {
     notes->push_back("repair: could not fill " + Plural(filling.failed, "hole") +
@@ -436,12 +423,13 @@ TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* n
         const auto& shell = d.patches[static_cast<size_t>(p)];
         faces.insert(faces.end(), shell.begin(), shell.end());
       }
-      std::optional<internal::WindingUnion> solid =
+      std::optional<internal::WindingUnion> winding =
           internal::UniteByWinding(d.mesh, faces, d.crossings);
+      const bool solid = winding.has_value();
       if (solid) {
-        united = std::move(solid->mesh);
-        pinches += solid->pinches;
-        specks += solid->specks;
+        united = std::move(winding->mesh);
+        pinches += winding->pinches;
+        specks += winding->specks;
       }
       if (self_crossing_here > 0) {
         (solid ? self_crossing : failed_self_crossing) += self_crossing_here;
@@ -519,7 +507,7 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
   const Cleaned cleaned = Clean(mesh);
   if (cleaned.mesh.triangles.rows() == 0) {
     throw InputError(where + ": mesh has no face of positive area (all " +
-                     Plural(static_cast<int>(mesh.triangles.rows()), "face") + " are degenerate)");
+                     Plural(mesh.triangles.rows(), "face") + " are degenerate)");
   }
   NoteCleaning(cleaned, "", true, &prepared.notes);
   Diagnosis d = Diagnose(cleaned.mesh);
@@ -541,11 +529,11 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
     }
   }
   if (d.defects.none()) {
-    prepared.notes.push_back("found " + Plural(static_cast<int>(d.parts.size()), "solid part") +
+    prepared.notes.push_back("found " + Plural(d.parts.size(), "solid part") +
                              (d.cavities > 0 ? " with " + Plural(d.cavities, "cavity") : ""));
   } else {
-    prepared.notes.push_back("found " + Plural(static_cast<int>(d.parts.size()), "surface patch") +
-                             ": " + Plural(d.defects.boundary_edges, "boundary edge") + ", " +
+    prepared.notes.push_back("found " + Plural(d.parts.size(), "surface patch") + ": " +
+                             Plural(d.defects.boundary_edges, "boundary edge") + ", " +
                              Plural(d.defects.non_manifold_edges, "non-manifold edge") + ", " +
                              Plural(d.defects.self_intersections, "self-intersection"));
   }

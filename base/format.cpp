@@ -23,4 +23,18 @@ std::string FormatShortest(double value) {
   return std::string(buffer, result.ptr);
 }
 
+std::string Plural(long long count, const std::string& noun) {
+  std::string plural = noun + "s";
+  if (noun.size() >= 2 && noun.compare(noun.size() - 2, 2, "ex") == 0) {
+    plural = noun.substr(0, noun.size() - 2) + "ices";  // vertex
+  } else if (noun.size() >= 2 && (noun.compare(noun.size() - 2, 2, "ch") == 0 ||
+                                  noun.compare(noun.size() - 2, 2, "sh") == 0 ||
+                                  noun.back() == 's' || noun.back() == 'x')) {
+    plural = noun + "es";  // patch, mesh, class, box
+  } else if (noun.size() >= 2 && noun.back() == 'y' && noun[noun.size() - 2] != 'e') {
+    plural = noun.substr(0, noun.size() - 1) + "ies";  // cavity
+  }
+  return std::to_string(count) + " " + (count == 1 ? noun : plural);
+}
+
 }  // namespace acdplan

@@ -1,6 +1,6 @@
 #pragma once
-// Numbers as text, one way for each use: messages and pictures, tables, files read back.
-// All three are locale independent.
+// Numbers as text, one way for each use: messages and pictures, tables, files read back, counts
+// of things. All are locale independent.
 
 #include <string>
 
@@ -17,5 +17,10 @@ std::string FormatFixed(double value, int decimals);
 /// The shortest text that reads back as the same double ("0.1", "1e+300"): for files that
 /// are read again, such as workspace YAML.
 std::string FormatShortest(double value);
+
+/// `count` and `noun`, in the plural unless `count` is 1: "1 face", "2 faces"; nouns ending in
+/// -ex, -ch, -sh, -s, -x or consonant + y take their English plural ("2 vertices", "2 patches",
+/// "2 meshes", "2 boxes", "2 cavities").
+std::string Plural(long long count, const std::string& noun);
 
 }  // namespace acdplan

@@ -176,8 +176,8 @@ Workspace3d MakeBentTube(std::uint64_t seed, const BentTubeOptions& o, Passages3
     return true;
   });
   w.description = "bent_tube: a square tube of side " + Format(s) + " with " +
-                  std::to_string(o.bends) + (o.bends == 1 ? " bend" : " bends") +
-                  " through solid material (seed " + std::to_string(seed) + ")";
+                  Plural(o.bends, "bend") + " through solid material (seed " +
+                  std::to_string(seed) + ")";
   if (passages) {
     passages->clear();
     for (size_t i = 0; i < legs.size(); ++i) passages->push_back({legs[i], i % 2 == 0 ? 0 : 1});

@@ -24,6 +24,7 @@
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
 #include "base/file_io.h"
+#include "base/format.h"
 #include "base/input_error.h"
 #include "base/stopwatch.h"
 #include "bench/collision_bench.h"
@@ -194,8 +195,9 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
   }
 
   const acd::DecompositionStats2d& stats = decomposition.stats;
-  std::printf("input          %s (%zu polygon%s, %d vertices)\n", args.input.c_str(),
-              polygons.size(), polygons.size() == 1 ? "" : "s", vertices);
+  std::printf("input          %s (%s, %s)\n", args.input.c_str(),
+              acdplan::Plural(polygons.size(), "polygon").c_str(),
+              acdplan::Plural(vertices, "vertex").c_str());
   std::printf("notches        %d\n", stats.notches);
   if (args.tau_rel >= 0) {
     std::printf("tau            %.6g (tau_rel %.6g x radius %.6g)\n", decomposition.tau,

@@ -33,11 +33,6 @@ std::string Lower(std::string text) {
 
 std::string Short(double x) { return FormatSignificant(x, 6); }
 
-// "1 part", "2 parts", "2 vertices".
-std::string Count(long long n, const std::string& noun, const std::string& plural = "") {
-  return std::to_string(n) + " " + (n == 1 ? noun : plural.empty() ? noun + "s" : plural);
-}
-
 // One "name  value" line of the report, aligned as the 2D decompose report.
 void Line(const char* name, const std::string& value) {
   std::printf("%-14s %s\n", name, value.c_str());
@@ -51,9 +46,9 @@ void CheckOutputPath(const std::string& option, const std::string& path) {
 }
 
 std::string DefectSummary(const acd::MeshDefects& defects) {
-  return Count(defects.boundary_edges, "boundary edge") + ", " +
-         Count(defects.non_manifold_edges, "non-manifold edge") + ", " +
-         Count(defects.self_intersections, "self-intersecting face pair");
+  return Plural(defects.boundary_edges, "boundary edge") + ", " +
+         Plural(defects.non_manifold_edges, "non-manifold edge") + ", " +
+         Plural(defects.self_intersections, "self-intersecting face pair");
 }
 
 }  // namespace
@@ -107,7 +102,7 @@ int RunDecompose3d(const Decompose3dArguments& args) {
   } else if (args.repair) {
     why = "surface ACD (--repair could not make a solid: " + prepared.defects.first + ")";
   } else if (prepared.defects.boundary_edges > 0) {
-    why = "surface ACD (open: " + Count(prepared.defects.boundary_edges, "boundary edge") +
+    why = "surface ACD (open: " + Plural(prepared.defects.boundary_edges, "boundary edge") +
           "; open meshes get the surface ACD)";
   } else {
     acd::RequireSolid(prepared, args.input);  // Throws, naming the defect and the way out.
@@ -159,11 +154,11 @@ int RunDecompose3d(const Decompose3dArguments& args) {
   }
 
   const acd::DecompositionStats3d& stats = decomposition.stats;
-  Line("input", args.input + " (" + Count(mesh.vertices.rows(), "vertex", "vertices") + ", " +
-                    Count(mesh.triangles.rows(), "triangle") + ")");
-  Line("prepared", Count(prepared.mesh.vertices.rows(), "vertex", "vertices") + ", " +
-                       Count(prepared.mesh.triangles.rows(), "triangle") + ", " +
-                       Count(static_cast<long long>(prepared.parts.size()), "part") + ", " +
+  Line("input", args.input + " (" + Plural(mesh.vertices.rows(), "vertex") + ", " +
+                    Plural(mesh.triangles.rows(), "triangle") + ")");
+  Line("prepared", Plural(prepared.mesh.vertices.rows(), "vertex") + ", " +
+                       Plural(prepared.mesh.triangles.rows(), "triangle") + ", " +
+                       Plural(prepared.parts.size(), "part") + ", " +
                        FormatSignificant(prepare_ms, 3) + " ms");
   for (const std::string& note : prepared.notes) Line("  changed", note);
   if (prepared.defects.none()) {

@@ -15,6 +15,7 @@
 #include "base/stopwatch.h"
 #include "collision/obstacle_set.h"
 #include "envs/free_space2d.h"
+#include "envs/free_space_decomposition3d.h"
 #include "envs/load_workspace.h"
 #include "envs/robot.h"
 #include "envs/world_svg.h"
@@ -43,11 +44,6 @@ bool IsScenarioFile(const std::string& path) {
 std::string Short(double x) { return FormatSignificant(x, 6); }
 
 std::string Milliseconds(double ms) { return FormatSignificant(ms, 3) + " ms"; }
-
-// "1 hole", "2 holes".
-std::string Count(size_t n, const std::string& noun, const std::string& plural = "") {
-  return std::to_string(n) + " " + (n == 1 ? noun : plural.empty() ? noun + "s" : plural);
-}
 
 void WriteOutput(const std::string& path, const std::string& text) {
   try {
@@ -78,11 +74,33 @@ Json ReportHeader(const EnvArguments& args, const std::string& kind, const std::
   return j;
 }
 
+// The tau of the free space's ACD, as a fraction of the bounds' diagonal: the option, else the
+// scenario's, else the default.
+double TauDiag(const EnvArguments& args, const planning::Scenario* scenario) {
+  return args.tau_diag >= 0 ? args.tau_diag : scenario ? scenario->tau_diag : kDefaultTauDiag;
+}
+
+// The robot and planner lines of a scenario's report.
+void ScenarioLines(const planning::Scenario& scenario) {
+  const envs::Robot& robot = scenario.robot;
+  std::string text = ToString(robot.shape);
+  if (robot.shape == envs::RobotShape::kDisc) text += ", radius " + Short(robot.radius);
+  if (robot.shape == envs::RobotShape::kPolygon) {
+    text += ", " + std::to_string(robot.polygon.outer.size()) + " vertices, bounding radius " +
+            Short(robot.BoundingRadius());
+  }
+  if (robot.shape == envs::RobotShape::kMesh) {
+    text += ", " + Plural(robot.mesh.triangles.rows(), "triangle") + ", bounding radius " +
+            Short(robot.BoundingRadius());
+  }
+  Line("robot", text);
+  Line("planner", planning::ToString(scenario.planner) + " with the " +
+                      planning::ToString(scenario.sampler) + " sampler");
+}
+
 int Report2d(const EnvArguments& args, const std::string& kind, const envs::Workspace2d& workspace,
              const planning::Scenario* scenario) {
-  const double tau_diag = args.tau_diag >= 0 ? args.tau_diag
-                          : scenario         ? scenario->tau_diag
-                                             : kDefaultTauDiag;
+  const double tau_diag = TauDiag(args, scenario);
   const acd::ConcavityMeasure measure = !args.measure.empty()
                                             ? acd::ParseConcavityMeasure(args.measure)
                                         : scenario ? scenario->measure
@@ -122,11 +140,11 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
   if (!workspace.description.empty()) Line("description", workspace.description);
   Line("bounds", "[" + Short(lo.x()) + ", " + Short(lo.y()) + "] to [" + Short(hi.x()) + ", " +
                      Short(hi.y()) + "]");
-  Line("obstacles", Count(workspace.obstacles.size(), "polygon") + ", " +
+  Line("obstacles", Plural(workspace.obstacles.size(), "polygon") + ", " +
                         std::to_string(obstacle_vertices) + " vertices, " +
-                        Count(obstacle_holes, "hole"));
-  Line("free space", Count(free_space.size(), "region") + ", " + Count(free_holes, "hole") + ", " +
-                         Short(100.0 * free_area / bounds_area) + "% of the bounds (" +
+                        Plural(obstacle_holes, "hole"));
+  Line("free space", Plural(free_space.size(), "region") + ", " + Plural(free_holes, "hole") +
+                         ", " + Short(100.0 * free_area / bounds_area) + "% of the bounds (" +
                          Milliseconds(free_space_ms) + ")");
   Line("decomposition", "tau " + Short(options.tau) + " (tau_diag " + Short(tau_diag) +
                             " x bounds diagonal " + Short(diagonal) + "), measure " +
@@ -137,18 +155,7 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
   if (!decomposition.openings.empty()) Line("narrowest gap", Short(narrowest));
   Line("obstacle hulls",
        std::to_string(obstacles.pieces.size()) + " from " + obstacles.hulls_source);
-  if (scenario) {
-    const envs::Robot& robot = scenario->robot;
-    std::string text = ToString(robot.shape);
-    if (robot.shape == envs::RobotShape::kDisc) text += ", radius " + Short(robot.radius);
-    if (robot.shape == envs::RobotShape::kPolygon) {
-      text += ", " + std::to_string(robot.polygon.outer.size()) + " vertices, bounding radius " +
-              Short(robot.BoundingRadius());
-    }
-    Line("robot", text);
-    Line("planner", planning::ToString(scenario->planner) + " with the " +
-                        planning::ToString(scenario->sampler) + " sampler");
-  }
+  if (scenario) ScenarioLines(*scenario);
 
   if (!args.svg_path.empty()) {
     const std::string caption =
@@ -179,12 +186,21 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
   return 0;
 }
 
-int Report3d(const EnvArguments& args, const std::string& kind,
-             const envs::Workspace3d& workspace) {
+int Report3d(const EnvArguments& args, const std::string& kind, const envs::Workspace3d& workspace,
+             const planning::Scenario* scenario) {
   if (!args.svg_path.empty()) {
     throw acdplan::InputError("--svg " + args.svg_path + ": " + args.input +
                               " is a 3D world; pictures are drawn for 2D worlds only");
   }
+  // The free space's ACD as the planner builds it (and from the same disk cache).
+  const double tau_diag = TauDiag(args, scenario);
+  const double diagonal = workspace.bounds.sizes().norm();
+  envs::FreeSpaceDecomposition3dOptions options;
+  options.tau = tau_diag * diagonal;
+  const envs::FreeSpaceDecomposition3d free = envs::DecomposeFreeSpace3d(workspace, options);
+  double narrowest = INFINITY;
+  for (const envs::FreeOpening3d& o : free.openings) narrowest = std::min(narrowest, o.width);
+
   const collision::ObstacleSet obstacles = collision::BuildObstacleSet(workspace);
   long vertices = 0;
   for (const acd::TriangleMesh& mesh : workspace.obstacles) vertices += mesh.vertices.rows();
@@ -200,18 +216,37 @@ int Report3d(const EnvArguments& args, const std::string& kind,
   if (!workspace.description.empty()) Line("description", workspace.description);
   Line("bounds", "[" + Short(lo.x()) + ", " + Short(lo.y()) + ", " + Short(lo.z()) + "] to [" +
                      Short(hi.x()) + ", " + Short(hi.y()) + ", " + Short(hi.z()) + "]");
-  Line("obstacles", Count(workspace.obstacles.size(), "mesh", "meshes") + ", " +
+  Line("obstacles", Plural(workspace.obstacles.size(), "mesh") + ", " +
                         std::to_string(collision::TriangleCount(obstacles)) + " triangles, " +
                         std::to_string(vertices) + " vertices");
   Line("obstacle hulls", std::to_string(obstacles.pieces.size()) + " from " +
                              obstacles.hulls_source + "; " + std::to_string(convex_pieces) +
                              " convex (their own hulls)");
-  Line("obstacle parts", Count(obstacles.components.size(), "part") + ", " +
+  Line("obstacle parts", Plural(obstacles.components.size(), "part") + ", " +
                              std::to_string(open_components) +
                              " open (no exact point location inside those)");
+  Line("free space",
+       Short(100.0 * free.free_volume / workspace.bounds.volume()) + "% of the bounds");
+  Line("decomposition", "tau " + Short(options.tau) + " (tau_diag " + Short(tau_diag) +
+                            " x bounds diagonal " + Short(diagonal) +
+                            "), solid ACD: " + Plural(free.components.size(), "component") + ", " +
+                            Plural(free.openings.size(), "opening") + " (" +
+                            (free.from_cache ? "from the cache; computed in " : "") +
+                            Milliseconds(free.compute_ms) + ")");
+  if (!free.openings.empty()) Line("narrowest gap", Short(narrowest));
+  for (const std::string& note : free.notes) Line("note", note);
+  if (scenario) ScenarioLines(*scenario);
   for (const std::string& note : obstacles.notes) Line("note", note);
   if (!args.json_path.empty()) {
     Json j = ReportHeader(args, kind, workspace.description, lo, hi);
+    j["free_volume"] = free.free_volume;
+    j["tau"] = options.tau;
+    j["tau_diag"] = tau_diag;
+    j["components"] = free.components.size();
+    j["openings"] = free.openings.size();
+    j["narrowest_opening"] = free.openings.empty() ? Json(nullptr) : Json(narrowest);
+    j["free_space_notes"] = free.notes;
+    if (scenario) j["robot"] = ToString(scenario->robot.shape);
     j["obstacles"] = workspace.obstacles.size();
     j["triangles"] = collision::TriangleCount(obstacles);
     j["obstacle_hulls"] = obstacles.pieces.size();
@@ -284,8 +319,9 @@ int RunEnv(const EnvArguments& given) {
                    "acdplan: warning: --repair does not apply to a scenario file; its `repair: "
                    "true` key does\n");
     }
-    return Report2d(args, "scenario; world " + scenario.workspace_label, scenario.workspace,
-                    &scenario);
+    const std::string kind = "scenario; world " + scenario.workspace_label;
+    if (scenario.dimension == 3) return Report3d(args, kind, scenario.workspace3d, &scenario);
+    return Report2d(args, kind, scenario.workspace, &scenario);
   }
   std::vector<std::string> notes;
   acd::ReadPolygonsOptions polygons;
@@ -293,7 +329,7 @@ int RunEnv(const EnvArguments& given) {
   polygons.notes = &notes;
   const envs::World world = envs::LoadWorld(args.input, polygons);
   for (const std::string& note : notes) std::fprintf(stderr, "acdplan: %s\n", note.c_str());
-  if (world.dimension == 3) return Report3d(args, world.kind, world.workspace3d);
+  if (world.dimension == 3) return Report3d(args, world.kind, world.workspace3d, nullptr);
   return Report2d(args, world.kind, world.workspace2d, nullptr);
 }
 

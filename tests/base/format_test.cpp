@@ -33,6 +33,17 @@ TEST(FormatShortest, ReadsBackExactly) {
   }
 }
 
+TEST(Plural, EnglishPluralsOfTheNounsWeCount) {
+  EXPECT_EQ(Plural(1, "face"), "1 face");
+  EXPECT_EQ(Plural(0, "face"), "0 faces");
+  EXPECT_EQ(Plural(2, "pinch vertex"), "2 pinch vertices");
+  EXPECT_EQ(Plural(3, "patch"), "3 patches");
+  EXPECT_EQ(Plural(2, "mesh"), "2 meshes");
+  EXPECT_EQ(Plural(2, "box"), "2 boxes");
+  EXPECT_EQ(Plural(2, "cavity"), "2 cavities");
+  EXPECT_EQ(Plural(2, "key"), "2 keys");  // A vowel before the y.
+}
+
 TEST(JsonNumber, NullUnlessFinite) {
   EXPECT_EQ(JsonNumber(1.5).dump(), "1.5");
   EXPECT_EQ(JsonNumber(std::numeric_limits<double>::quiet_NaN()).dump(), "null");

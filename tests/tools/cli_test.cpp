@@ -202,7 +202,9 @@ TEST_F(CliTest, EnvLoadsEveryKindOfWorld) {
       {kSource + "configs/wall_gap_se2.yaml", "(scenario", 2},
       {kMeshes + "box-thick.obj", "(mesh)", 3},
       {world3d.string(), "(3D workspace)", 3},
+      {kSource + "configs/window_wall_3d.yaml", "(scenario", 3},
   };
+  setenv("ACDPLAN_CACHE_DIR", (dir_ / "cache").c_str(), 1);  // Not the user's cache.
   for (const auto& world : worlds) {
     const fs::path json_path = dir_ / "report.json";
     const RunResult run =
@@ -213,10 +215,27 @@ TEST_F(CliTest, EnvLoadsEveryKindOfWorld) {
     EXPECT_EQ(j.at("dimension"), world.dimension) << world.file;
     EXPECT_GE(j.at("obstacles").get<int>(), 1) << world.file;
     EXPECT_GE(j.at("obstacle_hulls").get<int>(), 1) << world.file;
-    if (world.dimension == 2) {
-      EXPECT_GE(j.at("components").get<int>(), 1) << world.file;
-    }
+    EXPECT_GE(j.at("components").get<int>(), 1) << world.file;
   }
+  unsetenv("ACDPLAN_CACHE_DIR");
+}
+
+TEST_F(CliTest, EnvReportsThe3dFreeSpaceAcdOfAScenario) {
+  // The window is the one opening between the two sides of the wall (configs/README.md).
+  setenv("ACDPLAN_CACHE_DIR", (dir_ / "cache").c_str(), 1);
+  const fs::path json_path = dir_ / "report.json";
+  const RunResult run = Acdplan("env " + Quote(kSource + "configs/window_wall_3d.yaml") +
+                                " --json " + Quote(json_path.string()));
+  unsetenv("ACDPLAN_CACHE_DIR");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("solid ACD: 2 components, 1 opening"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("robot            mesh, 12 triangles"), std::string::npos) << run.out;
+  const nlohmann::json j = nlohmann::json::parse(Read(json_path));
+  EXPECT_EQ(j.at("dimension"), 3);
+  EXPECT_EQ(j.at("openings"), 1);
+  EXPECT_NEAR(j.at("narrowest_opening").get<double>(), 1.0, 1e-9);  // The window's side.
+  EXPECT_NEAR(j.at("free_volume").get<double>(), 1000.0 - 0.5 * (100 - 1), 1e-9);
+  EXPECT_EQ(j.at("robot"), "mesh");
 }
 
 TEST_F(CliTest, EnvErrorsNameTheFileAndTheRule) {
