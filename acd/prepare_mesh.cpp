@@ -416,24 +416,17 @@ TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* n
     const auto& group = members[static_cast<size_t>(root)];
     int self_crossing_here = 0;
     for (const int p : group) self_crossing_here += crosses_itself[static_cast<size_t>(p)];
-    std::optional<TriangleMesh> united;
+    std::optional<internal::WindingUnion> united;
     if (self_crossing_here > 0 || group.size() >= 2) {
       std::vector<int> faces;
       for (const int p : group) {
         const auto& shell = d.patches[static_cast<size_t>(p)];
         faces.insert(faces.end(), shell.begin(), shell.end());
       }
-      std::optional<internal::WindingUnion> winding =
-          internal::UniteByWinding(d.mesh, faces, d.crossings);
-      const bool solid = winding.has_value();
-      if (solid) {
-        united = std::move(winding->mesh);
-        pinches += winding->pinches;
-        specks += winding->specks;
-      }
+      united = internal::UniteByWinding(d.mesh, faces, d.crossings);
       if (self_crossing_here > 0) {
-        (solid ? self_crossing : failed_self_crossing) += self_crossing_here;
-      } else if (solid) {
+        (united ? self_crossing : failed_self_crossing) += self_crossing_here;
+      } else if (united) {
         ++united_groups;
         united_shells += static_cast<int>(group.size());
       } else {
@@ -441,13 +434,15 @@ TriangleMesh UniteCrossingShells(const Diagnosis& d, std::vector<std::string>* n
       }
     }
     if (united) {
+      pinches += united->pinches;
+      specks += united->specks;
+      const TriangleMesh& solid = united->mesh;
       const int offset = static_cast<int>(vertices.size());
-      for (Eigen::Index v = 0; v < united->vertices.rows(); ++v) {
-        vertices.push_back(united->vertices.row(v).transpose());
+      for (Eigen::Index v = 0; v < solid.vertices.rows(); ++v) {
+        vertices.push_back(solid.vertices.row(v).transpose());
       }
-      for (Eigen::Index f = 0; f < united->triangles.rows(); ++f) {
-        triangles.push_back(united->triangles.row(f).transpose() +
-                            Eigen::Vector3i::Constant(offset));
+      for (Eigen::Index f = 0; f < solid.triangles.rows(); ++f) {
+        triangles.push_back(solid.triangles.row(f).transpose() + Eigen::Vector3i::Constant(offset));
       }
       continue;
     }
