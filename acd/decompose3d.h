@@ -35,7 +35,8 @@ struct Decompose3dOptions {
 /// Splits every part of `prepared` into components whose concavity is at most `options.tau`,
 /// resolving the most concave feature first (Algorithm 1): solid ACD (Sec. V.B-C) when
 /// `prepared.solid()` and not `options.surface`, else surface ACD. The same input and options
-/// give the same output, bit for bit.
+/// give the same output, bit for bit; so does the same mesh numbered otherwise (each part is
+/// decomposed in its CanonicallyNumbered() form).
 /// @throws InputError if an option is out of range.
 Decomposition3d Decompose3d(const PreparedMesh& prepared, const Decompose3dOptions& options);
 

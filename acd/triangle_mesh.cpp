@@ -1,5 +1,10 @@
 #include "acd/triangle_mesh.h"
 
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <tuple>
+
 #include "base/input_error.h"
 
 namespace acdplan::acd {
@@ -24,6 +29,38 @@ Eigen::AlignedBox3d BoundingBox(const TriangleMesh& mesh) {
     box.extend(Eigen::Vector3d(mesh.vertices.row(i).transpose()));
   }
   return box;
+}
+
+TriangleMesh CanonicallyNumbered(const TriangleMesh& mesh) {
+  const Eigen::Index nv = mesh.vertices.rows(), nf = mesh.triangles.rows();
+  std::vector<int> order(static_cast<size_t>(nv));
+  std::iota(order.begin(), order.end(), 0);
+  auto position = [&](int v) {
+    return std::make_tuple(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2));
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return position(a) < position(b); });
+  TriangleMesh out;
+  out.vertices.resize(nv, 3);
+  std::vector<int> id(static_cast<size_t>(nv));
+  for (size_t i = 0; i < order.size(); ++i) {
+    out.vertices.row(static_cast<Eigen::Index>(i)) = mesh.vertices.row(order[i]);
+    id[static_cast<size_t>(order[i])] = static_cast<int>(i);
+  }
+  std::vector<std::array<int, 3>> triangles(static_cast<size_t>(nf));
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    std::array<int, 3>& t = triangles[static_cast<size_t>(f)];
+    for (int k = 0; k < 3; ++k)
+      t[static_cast<size_t>(k)] = id[static_cast<size_t>(mesh.triangles(f, k))];
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  }
+  std::sort(triangles.begin(), triangles.end());
+  out.triangles.resize(nf, 3);
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k)
+      out.triangles(f, k) = triangles[static_cast<size_t>(f)][static_cast<size_t>(k)];
+  }
+  return out;
 }
 
 TriangleMesh Cube(double side) {

@@ -22,6 +22,12 @@ TriangleMesh MakeTriangleMesh(const std::vector<Eigen::Vector3d>& vertices,
 /// Axis-aligned bounding box of the vertices (empty box for an empty mesh).
 Eigen::AlignedBox3d BoundingBox(const TriangleMesh& mesh);
 
+/// The same mesh numbered by its geometry alone: vertices in lexicographic (x, y, z) order
+/// (stable, so equal positions keep their order), each triangle rotated to start at its least
+/// vertex (its orientation kept), triangles in lexicographic order. Two numberings of one mesh
+/// give the same bytes, so what a computation settles by index no longer depends on the file.
+TriangleMesh CanonicallyNumbered(const TriangleMesh& mesh);
+
 /// A cube of side `side` [units] centred on the origin, axis-aligned, 8 vertices and 12
 /// triangles counter-clockwise seen from outside (a robot or obstacle for tests and benchmarks).
 TriangleMesh Cube(double side);

@@ -707,7 +707,8 @@ Decomposition3d DecomposeSurface(const PreparedMesh& prepared, double tau) {
   Decomposition3d out;
   out.tau = tau;
   for (int i = 0; i < static_cast<int>(prepared.parts.size()); ++i) {
-    DecomposePart(prepared.parts[static_cast<size_t>(i)], i, tau, &out);
+    // In canonical numbering, so that ties are not settled by the file's (as in the solid ACD).
+    DecomposePart(CanonicallyNumbered(prepared.parts[static_cast<size_t>(i)]), i, tau, &out);
   }
   out.stats.vertices = static_cast<int>(prepared.mesh.vertices.rows());
   out.stats.triangles = static_cast<int>(prepared.mesh.triangles.rows());

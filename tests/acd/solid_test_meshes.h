@@ -2,8 +2,10 @@
 // Small closed meshes with known decompositions for the solid ACD tests.
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -15,6 +17,7 @@
 #include "acd/internal/triangulate_ring.h"
 #include "acd/prepare_mesh.h"
 #include "acd/triangle_mesh.h"
+#include "base/random.h"
 
 namespace acdplan::acd::test {
 
@@ -112,6 +115,32 @@ inline bool IsClosed(const TriangleMesh& mesh) {
     if (it == directed.end() || it->second != 1) return false;
   }
   return true;
+}
+
+/// `mesh` renumbered at random from `seed`: vertices and triangles permuted, each triangle's
+/// corners rotated (its orientation kept). The same solid, numbered as another file might.
+inline TriangleMesh Renumbered(const TriangleMesh& mesh, std::uint64_t seed) {
+  RandomEngine rng(seed);
+  auto permutation = [&](Eigen::Index n) {
+    std::vector<int> p(static_cast<size_t>(n));
+    std::iota(p.begin(), p.end(), 0);
+    for (size_t i = p.size(); i > 1; --i) std::swap(p[i - 1], p[UniformIndex(rng, i)]);
+    return p;
+  };
+  const std::vector<int> vertex = permutation(mesh.vertices.rows());
+  const std::vector<int> face = permutation(mesh.triangles.rows());
+  TriangleMesh out = mesh;
+  for (size_t i = 0; i < vertex.size(); ++i) {
+    out.vertices.row(vertex[i]) = mesh.vertices.row(static_cast<Eigen::Index>(i));
+  }
+  for (size_t f = 0; f < face.size(); ++f) {
+    const int turn = static_cast<int>(UniformIndex(rng, 3));
+    for (int k = 0; k < 3; ++k) {
+      out.triangles(face[f], k) =
+          vertex[static_cast<size_t>(mesh.triangles(static_cast<Eigen::Index>(f), (k + turn) % 3))];
+    }
+  }
+  return out;
 }
 
 /// Every byte of the mesh: vertex coordinates, then triangle corners (for byte-for-byte
