@@ -39,6 +39,9 @@
 // Tolerances: distances are compared with tol = 1e-9 * S + 1e-12 * M, where S is the half
 // diagonal of the input part's bounding box and M its largest |coordinate|; volumes with 1e-6
 // relative (cut vertices are rounded to doubles), areas and stored figures with 1e-9 relative.
+// The concavity re-measure allows also 2 x internal::kInPlaneTolerance of the component's
+// bounding-box diagonal: the measure counts a point that close to a hull plane as in it (single
+// precision input is flat to no better), so it may store up to about that much less.
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -62,6 +65,7 @@
 #include <vector>
 
 #include "acd/convex_hull3d.h"
+#include "acd/internal/canonical_hull.h"
 #include "acd/internal/exact_rounding.h"
 #include "acd/internal/problem_list.h"
 #include "acd/mesh_measures.h"
@@ -400,7 +404,9 @@ class Checker {
 
       // Concavity: lower bound re-measured against tau and against the stored value.
       const double lower = ConcavityLowerBound(c.mesh);
-      if (!(c.concavity >= lower - tol - kRelative * lower)) {
+      const double in_plane =
+          2 * internal::kInPlaneTolerance * info.box.diagonal().norm();  // see the top
+      if (!(c.concavity >= lower - tol - in_plane - kRelative * lower)) {
         problems_.Add(Name(i) + "concavity " + Num(c.concavity) +
                       " is below its re-measured lower bound " + Num(lower));
       }
@@ -408,7 +414,7 @@ class Checker {
         const double limit = d_.tau * (1.0 + kRelative) + tol;
         if (!(c.concavity <= limit)) {
           problems_.Add(Name(i) + "concavity " + Num(c.concavity) + " > tau " + Num(d_.tau));
-        } else if (!(lower <= limit)) {
+        } else if (!(lower <= limit + in_plane)) {
           problems_.Add(Name(i) + "re-measured concavity " + Num(lower) + " > tau " + Num(d_.tau) +
                         " (distance of a vertex or face centroid to the hull boundary)");
         }

@@ -13,7 +13,8 @@ namespace acdplan::acd {
 ///    are disjoint (sampled points inside one component are inside no other); every component
 ///    lies inside the input;
 ///  - surface ACD: every input face belongs to exactly one patch (by area, 1e-9 relative);
-///  - every component's concavity, re-measured, is at most tau (+1e-9 relative) unless a
+///  - every component's concavity, re-measured, is at most tau (+1e-9 relative, + 2e-6 of the
+///    component's size: the measure's in-plane tolerance) unless a
 ///    max_hulls cap merged it; every hull contains its component's vertices, and the stored
 ///    volume, hull volume and centroid agree with the meshes;
 ///  - every opening lies in the boundaries of both of its components.

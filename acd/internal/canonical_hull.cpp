@@ -18,7 +18,7 @@ CanonicalHull MakeCanonicalHull(const std::vector<Eigen::Vector3d>& points) {
   if (v.size() < 4) return out;
   Eigen::Vector3d lo = v[0], hi = v[0];
   for (const auto& p : v) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  const double tol = 1e-9 * (hi - lo).norm();
+  const double tol = kInPlaneTolerance * (hi - lo).norm();
   // The plane through three of `ids`' vertices: the first, the farthest from it, the farthest
   // from their line (zero normal if they are collinear in doubles).
   auto plane_normal = [&v](const std::vector<int>& ids) {
@@ -76,7 +76,7 @@ CanonicalHull MakeCanonicalHull(const std::vector<Eigen::Vector3d>& points) {
     const Eigen::Vector3d& p0 = v[static_cast<size_t>(on[0])];
     double excess = 0;
     for (const Eigen::Vector3d& p : v) excess = std::max(excess, n.dot(p - p0));
-    if (excess > 1e3 * tol) continue;
+    if (excess > 10 * tol) continue;
     planes.emplace_back(n.x(), n.y(), n.z(), n.dot(p0));
   }
   out.planes.resize(static_cast<Eigen::Index>(planes.size()), 4);

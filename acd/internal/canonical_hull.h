@@ -14,13 +14,21 @@ struct CanonicalHull {
   Eigen::Matrix<double, Eigen::Dynamic, 4> planes;
 };
 
+/// How far from a plane, relative to a mesh's size, a point still counts as in it. Meshes are
+/// mostly stored in single precision (STL always; every format assimp reads), which rounds a
+/// coordinate by up to 6e-8 of its size: a planar face of a model turned off the axes is flat
+/// only to about 1e-7 of the mesh's size (measured: 1.4e-6 on wall.obj turned at random, size
+/// 19). At 1e-9 such a face was a dozen hull facets with pockets between them, and the turned
+/// wall fell into 23 components instead of 10.
+constexpr double kInPlaneTolerance = 1e-6;
+
 /// The convex hull of `points` (>= 1) with planes that are the same bytes in every run. The
 /// facets are ConvexHullFacets' (exactly coplanar triangles joined); each facet is regrouped as
-/// the hull vertices within 1e-9 of the hull's size of the plane through three of its own
-/// vertices (chosen by lexicographic order), its plane refitted the same way from the group and
-/// oriented by the facet's outward normal; a plane some hull vertex lies clearly outside of
-/// (1e-6 of the hull's size) is dropped. Planes are sorted by their vertex sets. A hull of fewer
-/// than 4 vertices keeps no planes; a flat one keeps its one plane.
+/// the hull vertices within kInPlaneTolerance of the hull's size of the plane through three of
+/// its own vertices (chosen by lexicographic order), its plane refitted the same way from the
+/// group and oriented by the facet's outward normal; a plane some hull vertex lies clearly
+/// outside of (10 x kInPlaneTolerance of the hull's size) is dropped. Planes are sorted by their
+/// vertex sets. A hull of fewer than 4 vertices keeps no planes; a flat one keeps its one plane.
 CanonicalHull MakeCanonicalHull(const std::vector<Eigen::Vector3d>& points);
 
 }  // namespace acdplan::acd::internal

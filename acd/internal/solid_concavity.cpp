@@ -44,7 +44,7 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
   out.hull = std::move(hull.mesh);
   out.hull_volume = MeshVolume(out.hull);
   const double scale = BoundingBox(mesh).diagonal().norm();
-  const double tol = 1e-9 * scale;
+  const double tol = kInPlaneTolerance * scale;  // the hull's planes are regrouped at this
   if (out.hull.triangles.rows() < 4 || !(out.hull_volume > tol * scale * scale)) return out;
   const Eigen::Matrix<double, Eigen::Dynamic, 4>& planes = hull.planes;
   const int m = static_cast<int>(planes.rows());
