@@ -43,7 +43,8 @@ struct SolidConcavity {
 ///    pocket without a bridge (a cavity shell) is measured against every hull plane;
 ///  - points are the pocket vertices plus deterministic face samples (centroids and a
 ///    barycentric grid spaced <= tau), because the depth is concave over a face and its
-///    maximum may lie inside one.
+///    maximum may lie inside one; the witness is the deepest vertex unless a sample is deeper
+///    by more than kInPlaneTolerance of the mesh's size (the value is the deepest point's).
 /// O((V + S) P) for V vertices, S samples and P hull planes.
 SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau);
 
