@@ -133,7 +133,13 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
   // floor as deep as the notch (a slot under a flat bridge) rounding decides which is deeper
   // once the model is turned off the axes (measured: cube-notch turned at random, 3 components
   // became 12 to 17, slivers cut along its floor's plane).
-  SolidConcavity deepest_vertex;
+  struct Deepest {
+    double value = 0.0;
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();
+    int vertex = -1, face = -1, pocket = -1;
+  };
+  Deepest deepest_vertex, deepest_sample;
+  std::vector<const std::vector<int>*> pocket_faces;  // by pocket id
   int pocket_id = -1;
   for (const auto& [root, faces] : pockets) {
     ++pocket_id;
@@ -195,18 +201,11 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
       }
       return std::max(facing < 1e300 ? facing : any, 0.0);
     };
-    const std::vector<int>& pocket = faces;  // C++17 lambdas cannot capture a structured binding.
+    pocket_faces.push_back(&faces);
     const int id = pocket_id;
     auto consider = [&](const Eigen::Vector3d& p, double d, int vertex, int face) {
-      SolidConcavity& best = vertex >= 0 ? deepest_vertex : out;
-      if (d > best.value) {
-        best.value = d;
-        best.witness_pocket = id;
-        best.witness = p;
-        best.witness_vertex = vertex;
-        best.witness_face = face;
-        best.pocket_faces = pocket;
-      }
+      Deepest& best = vertex >= 0 ? deepest_vertex : deepest_sample;
+      if (d > best.value) best = {d, p, vertex, face, id};
     };
     std::map<int, int> vertex_face;
     std::map<int, Eigen::Vector3d> vertex_normal;  // area-weighted, over the pocket's faces
@@ -250,14 +249,17 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
       }
     }
   }
-  if (deepest_vertex.witness_vertex >= 0 && deepest_vertex.value >= out.value - tol) {
-    const double value = std::max(out.value, deepest_vertex.value);
-    out.witness = deepest_vertex.witness;
-    out.witness_vertex = deepest_vertex.witness_vertex;
-    out.witness_face = deepest_vertex.witness_face;
-    out.witness_pocket = deepest_vertex.witness_pocket;
-    out.pocket_faces = std::move(deepest_vertex.pocket_faces);
-    out.value = value;
+  const Deepest& witness =
+      deepest_vertex.vertex >= 0 && deepest_vertex.value >= deepest_sample.value - tol
+          ? deepest_vertex
+          : deepest_sample;
+  out.value = std::max(deepest_vertex.value, deepest_sample.value);
+  if (witness.pocket >= 0) {
+    out.witness = witness.point;
+    out.witness_vertex = witness.vertex;
+    out.witness_face = witness.face;
+    out.witness_pocket = witness.pocket;
+    out.pocket_faces = *pocket_faces[static_cast<size_t>(witness.pocket)];
   }
   if (out.value <= tol) {
     out.value = 0.0;
