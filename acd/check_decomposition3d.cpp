@@ -41,7 +41,10 @@
 // relative (cut vertices are rounded to doubles), areas and stored figures with 1e-9 relative.
 // The concavity re-measure allows also 2 x internal::kInPlaneTolerance of the component's
 // bounding-box diagonal: the measure counts a point that close to a hull plane as in it (single
-// precision input is flat to no better), so it may store up to about that much less.
+// precision input is flat to no better), so it may store up to about that much less. Likewise an
+// opening's vertices may lie internal::kInPlaneTolerance of the part's bounding-box diagonal off
+// its components: the cut counts a vertex that close to its plane as on it and leaves it where
+// it is, so a cap is planar only to within that distance, and the opening is the planar polygon.
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -65,8 +68,8 @@
 #include <vector>
 
 #include "acd/convex_hull3d.h"
-#include "acd/internal/canonical_hull.h"
 #include "acd/internal/exact_rounding.h"
+#include "acd/internal/in_plane_tolerance.h"
 #include "acd/internal/problem_list.h"
 #include "acd/mesh_measures.h"
 #include "base/format.h"
@@ -617,8 +620,9 @@ class Checker {
         continue;
       }
       if (!info_[static_cast<size_t>(a)].usable || !info_[static_cast<size_t>(b)].usable) continue;
-      const double tol =
-          parts_[static_cast<size_t>(d_.components[static_cast<size_t>(a)].source)].tolerance;
+      const PartInfo& part =
+          parts_[static_cast<size_t>(d_.components[static_cast<size_t>(a)].source)];
+      const double tol = part.tolerance;
       if (surface_) {
         if (opening.polygon.size() < 2) {
           problems_.Add(label + "a polyline needs >= 2 vertices");
@@ -688,7 +692,7 @@ class Checker {
           for (const Eigen::Vector3d& x : *rings[r]) {
             const double distance =
                 std::sqrt(info.tree->squared_distance(Point3(x.x(), x.y(), x.z())));
-            if (distance > tol) {
+            if (distance > tol + 2 * internal::kInPlaneTolerance * part.scale) {  // see the top
               problems_.Add(label + "vertex " + Pt(x) + " is not on the boundary of component " +
                             std::to_string(side) + " (distance " + Num(distance) + ")");
               off = true;

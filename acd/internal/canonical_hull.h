@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "acd/internal/in_plane_tolerance.h"
 #include "acd/triangle_mesh.h"
 
 namespace acdplan::acd::internal {
@@ -13,14 +14,6 @@ struct CanonicalHull {
   TriangleMesh mesh;  ///< ConvexHull3's mesh: closed, its triangles from the points alone.
   Eigen::Matrix<double, Eigen::Dynamic, 4> planes;
 };
-
-/// How far from a plane, relative to a mesh's size, a point still counts as in it. Meshes are
-/// mostly stored in single precision (STL always; every format assimp reads), which rounds a
-/// coordinate by up to 6e-8 of its size: a planar face of a model turned off the axes is flat
-/// only to about 1e-7 of the mesh's size (measured: 1.4e-6 on wall.obj turned at random, size
-/// 19). At 1e-9 such a face was a dozen hull facets with pockets between them, and the turned
-/// wall fell into 23 components instead of 10.
-constexpr double kInPlaneTolerance = 1e-6;
 
 /// The convex hull of `points` (>= 1) with planes that are the same bytes in every run. The
 /// facets are ConvexHullFacets' (exactly coplanar triangles joined); each facet is regrouped as

@@ -11,6 +11,7 @@
 #include "acd/internal/canonical_hull.h"
 #include "acd/internal/feature_grouping.h"
 #include "acd/internal/hull_facets.h"
+#include "acd/internal/in_plane_tolerance.h"
 #include "acd/mesh_measures.h"
 
 namespace acdplan::acd::internal {
@@ -167,7 +168,7 @@ CutPlaneRanking::CutPlaneRanking(const TriangleMesh& mesh, const SolidConcavity&
     : mesh_(mesh), tau_(tau) {
   const Eigen::Vector3d w = concavity.witness;
   const double scale = BoundingBox(mesh).diagonal().norm();
-  tol_ = 1e-9 * scale;
+  tol_ = kInPlaneTolerance * scale;  // as the cut classifies vertices (SplitByPlane)
   for (const Plane3d& cap : caps) {
     VerticesInPlane in_plane;
     cap.normal.cwiseAbs().maxCoeff(&in_plane.axis);

@@ -18,6 +18,7 @@
 #include "acd/internal/disjoint_sets.h"
 #include "acd/internal/exact_rounding.h"
 #include "acd/internal/face_intersections.h"
+#include "acd/internal/in_plane_tolerance.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -334,16 +335,19 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
   std::vector<Point3> points = piece.points;
   std::vector<Eigen::Vector3d> rounded = piece.rounded;
   std::vector<int> side(points.size());
-  // A vertex within kSnap of the plane (relative to the piece's size) counts as on it: a plane
-  // through a vertex of a mesh whose "zero" coordinates are 6e-17 would otherwise shave off
-  // pieces of volume 1e-18. Each vertex is classified once, so both halves and the cap agree
-  // on the topology; the cap is then planar to within kSnap. The rest is exact.
-  constexpr double kSnap = 1e-12;
+  // A vertex within kInPlaneTolerance of the plane (relative to the piece's size) counts as on
+  // it. A cut along a face of a model stored in single precision passes a few 1e-9 from the
+  // face's other vertices, which rounding left off its plane; classified exactly, they gave
+  // edges of 1e-9 and slivers of 1e-10 (the cup turned off the axes fell into 63 components
+  // instead of 17). A cut along a cap of an earlier cut, along a plane rounded a little
+  // differently, did the same. Each vertex is classified once, so both halves and the cap agree
+  // on the topology, and no vertex moves: the cap is planar to within the tolerance, and the
+  // halves share it exactly. The rest is exact.
   Eigen::AlignedBox3d box;
   for (const auto& r : rounded) box.extend(r);
   const Eigen::Vector3d n(RoundToDouble(plane.a()), RoundToDouble(plane.b()),
                           RoundToDouble(plane.c()));
-  const double snap = kSnap * box.diagonal().norm() * n.norm();
+  const double snap = kInPlaneTolerance * box.diagonal().norm() * n.norm();
   const double offset = RoundToDouble(plane.d());
   for (size_t i = 0; i < points.size(); ++i) {
     side[i] = std::abs(n.dot(rounded[i]) + offset) <= snap

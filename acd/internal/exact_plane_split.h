@@ -34,10 +34,11 @@ TriangleMesh ToDouble(const ExactPiece& piece);
 
 /// The two closed halves of `piece` on either side of `plane`: `below` is the part on the
 /// negative side, `above` the part on the positive side; either may be empty. Vertices are
-/// classified with exact oriented_side, except that a vertex within 1e-12 of the piece's
-/// size of the plane counts as on it (no rounding-level slivers); crossing edges are split at their
-/// exact intersection points; faces lying in the plane go to the side their solid lies on. The
-/// section (one polygon with holes per loop nesting) is triangulated once by a constrained Delaunay
+/// classified with exact oriented_side, except that a vertex within kInPlaneTolerance of the
+/// piece's size of the plane counts as on it (no rounding-level slivers; no vertex moves, so the
+/// section is planar to within that tolerance); crossing edges are split at their exact
+/// intersection points; faces lying in the plane go to the side their solid lies on. The section
+/// (one polygon with holes per loop nesting) is triangulated once by a constrained Delaunay
 /// triangulation in the plane and given to both halves, reversed for `above`, so the halves
 /// share an identical interface. O(n log n) for n triangles.
 void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, ExactPiece* below,

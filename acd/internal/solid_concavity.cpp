@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "acd/internal/canonical_hull.h"
+#include "acd/internal/in_plane_tolerance.h"
 #include "acd/mesh_measures.h"
 
 namespace acdplan::acd::internal {

@@ -14,6 +14,7 @@
 #include "acd/internal/box_sweep.h"
 #include "acd/internal/even_odd_regions.h"
 #include "acd/internal/exact_rounding.h"
+#include "acd/internal/in_plane_tolerance.h"
 #include "acd/internal/subtree.h"
 #include "acd/polygon2d.h"
 
@@ -126,8 +127,10 @@ void ComputeOpenings(Decomposition3d* decomposition, OpeningDetail detail) {
   d.openings.clear();
   const int nodes = static_cast<int>(d.tree.size());
   double scale = 0;
+  std::vector<Eigen::AlignedBox3d> boxes;
   for (const Component3d& c : d.components) {
-    if (c.mesh.vertices.rows() > 0) scale = std::max(scale, BoundingBox(c.mesh).diagonal().norm());
+    boxes.push_back(BoundingBox(c.mesh));
+    if (c.mesh.vertices.rows() > 0) scale = std::max(scale, boxes.back().diagonal().norm());
   }
   const double tol = 1e-9 * std::max(scale, 1e-300);
   const double sliver = 1e-10 * scale * scale;  // Clipping slivers are no opening.
@@ -146,6 +149,12 @@ void ComputeOpenings(Decomposition3d* decomposition, OpeningDetail detail) {
     }
     std::sort(leaves.begin(), leaves.end());  // merged leaves share a component
     leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
+    // The cut piece was no larger than its leaves together, and its cap is planar to within
+    // kInPlaneTolerance of its size (SplitByPlane).
+    Eigen::AlignedBox3d piece_box;
+    for (const int leaf : leaves) piece_box.extend(boxes[static_cast<size_t>(leaf)]);
+    const double near_plane =
+        tol + (piece_box.isEmpty() ? 0.0 : kInPlaneTolerance * piece_box.diagonal().norm());
     std::map<int, PlaneFaces> faces;
     for (int leaf : leaves) {
       const TriangleMesh& mesh = d.components[static_cast<size_t>(leaf)].mesh;
@@ -154,7 +163,7 @@ void ComputeOpenings(Decomposition3d* decomposition, OpeningDetail detail) {
         bool in_plane = true;
         for (int k = 0; k < 3; ++k) {
           p[static_cast<size_t>(k)] = mesh.vertices.row(mesh.triangles(f, k));
-          in_plane = in_plane && std::abs(n.dot(p[static_cast<size_t>(k)]) - offset) <= tol;
+          in_plane = in_plane && std::abs(n.dot(p[static_cast<size_t>(k)]) - offset) <= near_plane;
         }
         if (!in_plane) continue;
         const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);

@@ -65,6 +65,29 @@ TEST(ExactPlaneSplitTest, CrossingsThatRoundToOnePositionAreOneVertex) {
 }
 
 // A piece with a triangle whose corners round onto one position is not a valid output.
+// Single-precision input leaves a wall flat only to ~1e-7 of the size: the plane extending the
+// L-block's notch wall x = 1 passes a few 1e-9 from the wall's vertices, which sit on both sides
+// of it. Classified exactly, the two vertices at x > 1 put a wedge of volume ~1e-9 into the upper
+// half, as a second solid; within kInPlaneTolerance they are on the plane, and the L falls into
+// its two blocks, their shared section planar to within the tolerance.
+TEST(ExactPlaneSplitTest, VerticesWithinTheInPlaneToleranceAreOnThePlane) {
+  TriangleMesh l = test::LBlock();
+  for (Eigen::Index i = 0; i < l.vertices.rows(); ++i) {
+    if (l.vertices(i, 0) == 1.0) l.vertices(i, 0) += l.vertices(i, 1) > 1.5 ? 3e-9 : -2e-9;
+  }
+  ExactPiece below, above;
+  SplitByPlane(ToExact(l), ExactKernel::Plane_3(1, 0, 0, -1), &below, &above);
+  const std::vector<ExactPiece> lower = ConnectedSolids(below), upper = ConnectedSolids(above);
+  ASSERT_EQ(lower.size(), 1u);
+  ASSERT_EQ(upper.size(), 1u);
+  EXPECT_NEAR(MeshVolume(ToDouble(lower[0])), 2.0, 1e-8);
+  EXPECT_NEAR(MeshVolume(ToDouble(upper[0])), 1.0, 1e-8);
+  for (const ExactPiece* half : {&below, &above}) {
+    EXPECT_TRUE(IsClosedSurface(half->triangles));
+    EXPECT_TRUE(RoundsToValidSolid(*half));
+  }
+}
+
 TEST(ExactPlaneSplitTest, RoundsToValidSolidRejectsTwoCornersAtOnePosition) {
   ExactPiece piece = ToExact(NeedleTetrahedron());
   piece.rounded[1] = piece.rounded[0];  // q rounded onto p

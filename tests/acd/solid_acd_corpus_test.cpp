@@ -139,13 +139,17 @@ TEST(Decompose3dMetamorphic, TransformsKeepTheComponentCount) {
 
 // Most meshes are stored in single precision (STL always, and whatever assimp reads), so a
 // model turned off the axes is flat only to ~1e-7 of its size. Measured at tau_rel 0.05, turned
-// by 0.7, 1.3 and 2.1 rad about (1, 2, 3) and rounded to floats: L-block 2, 2, 2 (before the
-// in-plane tolerance: 4, 3, 2); U-block 4, 3, 3 (10, 6, 6); cube-notch 3, 3, 4 (10, 3, 8). The
-// one extra part left is a cut along a face that rounding left off flat, which can still slice
-// a sliver from its neighbour.
+// by 0.7, 1.3 and 2.1 rad about (1, 2, 3) and rounded to floats: the L-block, the U-block and
+// cube-notch keep their 2, 3 and 3 parts (before the in-plane tolerance of the hull: 4, 3, 2;
+// 10, 6, 6; 10, 3, 8; before that of the cut: 2, 2, 2; 4, 3, 3; 3, 3, 4). The cup (17 parts
+// as modelled) gives 19, 19 and 17 (before the cut's tolerance: 63, 20, 21): a curved model's
+// cuts turn with it only up to the world's axes, which are candidate planes too.
 TEST(Decompose3dMetamorphic, TurnedSinglePrecisionModelsKeepTheirParts) {
   const std::vector<std::pair<std::string, TriangleMesh>> models = {
-      {"L-block", test::LBlock()}, {"U-block", test::UBlock()}, {"cube-notch", Load("cube-notch")}};
+      {"L-block", test::LBlock()},
+      {"U-block", test::UBlock()},
+      {"cube-notch", Load("cube-notch")},
+      {"cup", Load("cup")}};
   for (const auto& [name, mesh] : models) {
     const size_t count = Solve(mesh, 0.05 * ReferenceRadius(mesh)).components.size();
     for (double angle : {0.7, 1.3, 2.1}) {
@@ -156,10 +160,11 @@ TEST(Decompose3dMetamorphic, TurnedSinglePrecisionModelsKeepTheirParts) {
         turned.vertices.data()[i] = static_cast<float>(turned.vertices.data()[i]);
       }
       const size_t parts = Solve(turned, 0.05 * ReferenceRadius(turned)).components.size();
-      if (name == "L-block") {
-        EXPECT_EQ(parts, count) << name << " turned by " << angle;
+      if (name == "cup") {
+        EXPECT_LE(4 * parts, 5 * count) << name << " turned by " << angle;
+        EXPECT_GE(4 * parts, 3 * count) << name << " turned by " << angle;
       } else {
-        EXPECT_LE(parts, count + 1) << name << " turned by " << angle;
+        EXPECT_EQ(parts, count) << name << " turned by " << angle;
       }
     }
   }
