@@ -160,11 +160,83 @@ SideScore ScoreSide(const TriangleMesh& mesh, const Eigen::VectorXd& s, int sign
   return score;
 }
 
+// PartAxes(): a face whose normal is within about 1.4e-3 rad of a direction faces along it (a
+// flat face of a single-precision model is flat to ~1e-7), two directions within 1e-3 rad of a
+// right angle are orthogonal, the normals of the kAxisCandidates largest faces are the candidate
+// directions, and the part's own axes replace the world's when they face more area, by more
+// than kAxesMargin of the total (equal when a model is in its design frame).
+constexpr double kFacing = 1e-6;
+constexpr double kOrthogonal = 1e-3;
+constexpr int kAxisCandidates = 32;
+constexpr double kAxesMargin = 1e-3;
+
+// The area of the faces (normals `normals`, areas `areas`) that face along one of `axes`.
+double FacingArea(const std::vector<Eigen::Vector3d>& normals, const std::vector<double>& areas,
+                  const std::vector<Eigen::Vector3d>& axes) {
+  double sum = 0;
+  for (size_t f = 0; f < normals.size(); ++f) {
+    for (const Eigen::Vector3d& axis : axes) {
+      if (std::abs(normals[f].dot(axis)) >= 1 - kFacing) {
+        sum += areas[f];
+        break;
+      }
+    }
+  }
+  return sum;
+}
+
 }  // namespace
+
+std::array<Eigen::Vector3d, 3> PartAxes(const TriangleMesh& part) {
+  const std::array<Eigen::Vector3d, 3> world = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
+                                                Eigen::Vector3d::UnitZ()};
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<double> areas;
+  double total = 0;
+  for (Eigen::Index f = 0; f < part.triangles.rows(); ++f) {
+    const Eigen::Vector3d a = part.vertices.row(part.triangles(f, 0));
+    const Eigen::Vector3d n =
+        (Eigen::Vector3d(part.vertices.row(part.triangles(f, 1))) - a)
+            .cross(Eigen::Vector3d(part.vertices.row(part.triangles(f, 2))) - a);
+    const double len = n.norm();
+    if (!(len > 0)) continue;
+    normals.push_back(n / len);
+    areas.push_back(0.5 * len);
+    total += 0.5 * len;
+  }
+  // The largest faces, ties by index (the part is canonically numbered).
+  std::vector<size_t> order(normals.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  const size_t k = std::min(order.size(), static_cast<size_t>(kAxisCandidates));
+  std::partial_sort(
+      order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k), order.end(),
+      [&](size_t i, size_t j) { return areas[i] > areas[j] || (areas[i] == areas[j] && i < j); });
+  order.resize(k);
+  auto best_direction = [&](const Eigen::Vector3d* orthogonal_to, Eigen::Vector3d* out) {
+    double best = 0;
+    for (const size_t c : order) {
+      Eigen::Vector3d d = normals[c];
+      if (orthogonal_to != nullptr) {
+        if (std::abs(d.dot(*orthogonal_to)) > kOrthogonal) continue;
+        d = (d - d.dot(*orthogonal_to) * *orthogonal_to).normalized();
+      }
+      const double area = FacingArea(normals, areas, {d});
+      if (area > best) best = area, *out = d;
+    }
+    return best > 0;
+  };
+  Eigen::Vector3d d1, d2;
+  if (!best_direction(nullptr, &d1) || !best_direction(&d1, &d2)) return world;
+  const Eigen::Vector3d d3 = d1.cross(d2);
+  const double own = FacingArea(normals, areas, {d1, d2, d3});
+  const double on_world = FacingArea(normals, areas, {world[0], world[1], world[2]});
+  return own > on_world + kAxesMargin * total ? std::array<Eigen::Vector3d, 3>{d1, d2, d3} : world;
+}
 
 CutPlaneRanking::CutPlaneRanking(const TriangleMesh& mesh, const SolidConcavity& concavity,
                                  double tau, const std::vector<Plane3d>& caps,
-                                 bool feature_grouping, bool lazy)
+                                 bool feature_grouping, bool lazy,
+                                 const std::array<Eigen::Vector3d, 3>& axes)
     : mesh_(mesh), tau_(tau) {
   const Eigen::Vector3d w = concavity.witness;
   const double scale = BoundingBox(mesh).diagonal().norm();
@@ -241,7 +313,7 @@ CutPlaneRanking::CutPlaneRanking(const TriangleMesh& mesh, const SolidConcavity&
       listed.Add(cut.plane.normal, w, true, same);
     }
   }
-  for (int k = 0; k < 3; ++k) listed.Add(Eigen::Vector3d::Unit(k), w, true, same);
+  for (const Eigen::Vector3d& axis : axes) listed.Add(axis, w, true, same);
   for (const auto& n : pca) listed.Add(n, w, true, same);
   for (const auto& n : bisectors) listed.Add(n, w, true, same);
   bin_ = tau > 0 ? tau / 4 : scale * 1e-3;

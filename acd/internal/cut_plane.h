@@ -1,6 +1,7 @@
 #pragma once
 // The cut plane that resolves a piece's most concave feature (dissertation Sec. V.B.3).
 
+#include <array>
 #include <optional>
 #include <tuple>
 #include <vector>
@@ -25,6 +26,14 @@ struct ScoredPlane {
   double hull_volume = 0.0;
 };
 
+/// The directions of a part's axis-aligned candidate planes: the world's axes, unless three
+/// orthogonal directions of the part's own carry more of its area in faces facing along them
+/// (a model with flat faces, turned off the world's axes; else the world's axes keep the
+/// modeller's up). The directions are found among the normals of the part's largest faces:
+/// the first carries the most area, the second the most of those orthogonal to it. Turns
+/// with the part, except where directions tie. O(F) for F faces.
+std::array<Eigen::Vector3d, 3> PartAxes(const TriangleMesh& part);
+
 /// Candidate cut planes through the witness of `concavity`, best first. Candidates:
 ///  - the planes of the faces at the witness (extending a notch's walls, as the 2D Resolve
 ///    extends an edge of the notch);
@@ -33,7 +42,7 @@ struct ScoredPlane {
 ///    that they win ties: on a coarse block the edge-graph cycle crosses big faces on their
 ///    diagonals (an L-block's would cut it on the diagonal, an opening of area sqrt(2) where
 ///    its wall extended gives 1, both convex);
-///  - the three axis-aligned planes through the witness;
+///  - the three planes through the witness along `axes` (PartAxes());
 ///  - the principal planes of the witness's pocket (the PCA fit of Eq. 5.3 and the two
 ///    planes across it, which cut a pocket's walls or a handle open, Sec. V.C);
 ///  - the bisectors of the dihedral angles at the witness's edges.
@@ -55,8 +64,10 @@ class CutPlaneRanking {
  public:
   /// `caps`: the planes of the cuts that made the piece (its caps lie in them).
   CutPlaneRanking(const TriangleMesh& mesh, const SolidConcavity& concavity, double tau,
-                  const std::vector<Plane3d>& caps, bool feature_grouping = false,
-                  bool lazy = true);
+                  const std::vector<Plane3d>& caps, bool feature_grouping = false, bool lazy = true,
+                  const std::array<Eigen::Vector3d, 3>& axes = {Eigen::Vector3d::UnitX(),
+                                                                Eigen::Vector3d::UnitY(),
+                                                                Eigen::Vector3d::UnitZ()});
   /// The next plane in rank order; none once every candidate is returned or dropped.
   std::optional<ScoredPlane> Next();
   /// How many sides (of two per candidate) were hulled so far.

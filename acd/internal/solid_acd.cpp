@@ -130,6 +130,7 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
     pieces.push_back(std::move(piece));
     return static_cast<int>(pieces.size()) - 1;
   };
+  const std::array<Eigen::Vector3d, 3> axes = PartAxes(part);
   const int root = add_node(MakePiece(WholePart(part), tau), -1);
   out->roots.push_back(pieces[static_cast<size_t>(root)].node);
   if (!(tau > 0) && pieces[static_cast<size_t>(root)].concavity.value > 0) {
@@ -205,7 +206,8 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
            up = out->tree[static_cast<size_t>(up)].parent) {
         caps.push_back(out->tree[static_cast<size_t>(up)].cut);
       }
-      CutPlaneRanking ranking(piece.mesh, piece.concavity, tau, caps, feature_grouping);
+      CutPlaneRanking ranking(piece.mesh, piece.concavity, tau, caps, feature_grouping,
+                              /*lazy=*/true, axes);
       std::vector<Plane3d> ranked;  // the ranked planes taken from `ranking`, best first
       const int genus = piece.topology.genus;
       if (genus == 0 || piece.topology.shells != 1) {

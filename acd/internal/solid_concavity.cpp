@@ -46,12 +46,22 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
   out.hull_volume = MeshVolume(out.hull);
   const double scale = BoundingBox(mesh).diagonal().norm();
   const double tol = kInPlaneTolerance * scale;  // the hull's planes are regrouped at this
-  if (out.hull.triangles.rows() < 4 || !(out.hull_volume > tol * scale * scale)) return out;
+  if (out.hull.triangles.rows() < 4 || !(out.hull_volume > 0)) return out;
   const Eigen::Matrix<double, Eigen::Dynamic, 4>& planes = hull.planes;
   const int m = static_cast<int>(planes.rows());
+  if (m < 4) return out;  // flat
   auto depth = [&](const Eigen::Vector3d& p, int j) {
     return planes(j, 3) - planes.row(j).head<3>().dot(p);
   };
+  // A plate within tol of one of its hull's planes is flat: no point of it is deeper than tol.
+  // (Not a small hull volume: a needle's is as small, and its points can be far deeper.)
+  for (int j = 0; j < m; ++j) {
+    double width = 0;
+    for (Eigen::Index i = 0; i < out.hull.vertices.rows(); ++i) {
+      width = std::max(width, depth(out.hull.vertices.row(i).transpose(), j));
+    }
+    if (width <= tol) return out;
+  }
   // The hull planes each vertex lies in.
   std::vector<std::vector<int>> on(static_cast<size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i) {

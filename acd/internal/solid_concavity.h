@@ -27,6 +27,7 @@ struct SolidConcavity {
 };
 
 /// Measures `mesh` (closed, outward) against its convex hull:
+///  - a piece within kInPlaneTolerance of its size of one hull plane is flat: value 0;
 ///  - faces whose three vertices lie in one hull plane are on the hull; the others, grouped by
 ///    shared edges, are pockets (Fig. 37);
 ///  - a hull plane is a bridge plane unless the surface faces lying in it cover its hull

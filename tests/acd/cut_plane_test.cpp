@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -75,6 +77,34 @@ TriangleMesh Load(const std::string& name) {
 
 // The U-block's slot floor extended (y = 1) leaves the base and two posts, all convex; every
 // other candidate leaves an L-shaped side, 1 deep.
+// Whether `a` and `b` hold the same three directions, in any order and sign.
+bool SameAxes(const std::array<Eigen::Vector3d, 3>& a, const std::array<Eigen::Vector3d, 3>& b) {
+  for (const Eigen::Vector3d& u : a) {
+    bool found = false;
+    for (const Eigen::Vector3d& v : b) found = found || std::abs(u.dot(v)) > 1 - 1e-9;
+    if (!found) return false;
+  }
+  return true;
+}
+
+// The U-block's own axes are the world's; turned, its axes turn with it. A torus faces no three
+// directions with much area: it keeps the world's.
+TEST(PartAxes, TurnWithAModelsFlatFaces) {
+  const std::array<Eigen::Vector3d, 3> world = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
+                                                Eigen::Vector3d::UnitZ()};
+  const TriangleMesh u = test::UBlock();
+  const std::array<Eigen::Vector3d, 3> own = PartAxes(u);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(own[static_cast<size_t>(k)], world[static_cast<size_t>(k)]);
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  TriangleMesh turned = u;
+  for (Eigen::Index i = 0; i < turned.vertices.rows(); ++i) {
+    turned.vertices.row(i) = (r * u.vertices.row(i).transpose()).transpose();
+  }
+  EXPECT_TRUE(SameAxes(PartAxes(turned), {r.col(0), r.col(1), r.col(2)}));
+  EXPECT_TRUE(SameAxes(PartAxes(test::Torus(2.0, 1.0, 16, 8)), world));
+}
+
 TEST(CutPlaneRanking, RanksTheUBlockSlotFloorFirst) {
   const Ranked ranked = Rank(test::UBlock(), 0.1, true);
   ASSERT_FALSE(ranked.planes.empty());

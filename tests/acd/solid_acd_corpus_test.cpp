@@ -139,16 +139,19 @@ TEST(Decompose3dMetamorphic, TransformsKeepTheComponentCount) {
 
 // Most meshes are stored in single precision (STL always, and whatever assimp reads), so a
 // model turned off the axes is flat only to ~1e-7 of its size. Measured at tau_rel 0.05, turned
-// by 0.7, 1.3 and 2.1 rad about (1, 2, 3) and rounded to floats: the L-block, the U-block and
-// cube-notch keep their 2, 3 and 3 parts (before the in-plane tolerance of the hull: 4, 3, 2;
-// 10, 6, 6; 10, 3, 8; before that of the cut: 2, 2, 2; 4, 3, 3; 3, 3, 4). The cup (17 parts
-// as modelled) gives 19, 19 and 17 (before the cut's tolerance: 63, 20, 21): a curved model's
-// cuts turn with it only up to the world's axes, which are candidate planes too.
+// by 0.7, 1.3 and 2.1 rad about (1, 2, 3) and rounded to floats: the L-block, the U-block,
+// cube-notch, box-thick and the wall keep their 2, 3, 3, 5 and 10 parts (the U-block and
+// cube-notch gave 10, 6, 6 and 10, 3, 8 before the in-plane tolerance of the hull, 4, 3, 3 and
+// 3, 3, 4 before that of the cut, as box-thick gave 20, 5, 11; the wall gave 10, 10, 9 before
+// the part's own axes). The cup, 15 parts as modelled, gives 15, 17 and 15 (before the cut's
+// tolerance 63, 20 and 21 against 17, before its own axes 19, 19 and 17).
 TEST(Decompose3dMetamorphic, TurnedSinglePrecisionModelsKeepTheirParts) {
   const std::vector<std::pair<std::string, TriangleMesh>> models = {
       {"L-block", test::LBlock()},
       {"U-block", test::UBlock()},
       {"cube-notch", Load("cube-notch")},
+      {"box-thick", Load("box-thick")},
+      {"wall", Load("wall")},
       {"cup", Load("cup")}};
   for (const auto& [name, mesh] : models) {
     const size_t count = Solve(mesh, 0.05 * ReferenceRadius(mesh)).components.size();
