@@ -57,7 +57,7 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
   // (Not a small hull volume: a needle's is as small, and its points can be far deeper.)
   for (int j = 0; j < m; ++j) {
     double width = 0;
-    for (Eigen::Index i = 0; i < out.hull.vertices.rows(); ++i) {
+    for (Eigen::Index i = 0; i < out.hull.vertices.rows() && width <= tol; ++i) {
       width = std::max(width, depth(out.hull.vertices.row(i).transpose(), j));
     }
     if (width <= tol) return out;
