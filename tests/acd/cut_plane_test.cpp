@@ -75,8 +75,6 @@ TriangleMesh Load(const std::string& name) {
   return mesh;
 }
 
-// The U-block's slot floor extended (y = 1) leaves the base and two posts, all convex; every
-// other candidate leaves an L-shaped side, 1 deep.
 // Whether `a` and `b` hold the same three directions, in any order and sign.
 bool SameAxes(const std::array<Eigen::Vector3d, 3>& a, const std::array<Eigen::Vector3d, 3>& b) {
   for (const Eigen::Vector3d& u : a) {
@@ -105,6 +103,8 @@ TEST(PartAxes, TurnWithAModelsFlatFaces) {
   EXPECT_TRUE(SameAxes(PartAxes(test::Torus(2.0, 1.0, 16, 8)), world));
 }
 
+// The U-block's slot floor extended (y = 1) leaves the base and two posts, all convex; every
+// other candidate leaves an L-shaped side, 1 deep.
 TEST(CutPlaneRanking, RanksTheUBlockSlotFloorFirst) {
   const Ranked ranked = Rank(test::UBlock(), 0.1, true);
   ASSERT_FALSE(ranked.planes.empty());

@@ -64,7 +64,6 @@ TEST(ExactPlaneSplitTest, CrossingsThatRoundToOnePositionAreOneVertex) {
   EXPECT_NEAR(total, MeshVolume(NeedleTetrahedron()), 1e-12);
 }
 
-// A piece with a triangle whose corners round onto one position is not a valid output.
 // Single-precision input leaves a wall flat only to ~1e-7 of the size: the plane extending the
 // L-block's notch wall x = 1 passes a few 1e-9 from the wall's vertices, which sit on both sides
 // of it. Classified exactly, the two vertices at x > 1 put a wedge of volume ~1e-9 into the upper
@@ -88,6 +87,7 @@ TEST(ExactPlaneSplitTest, VerticesWithinTheInPlaneToleranceAreOnThePlane) {
   }
 }
 
+// A piece with a triangle whose corners round onto one position is not a valid output.
 TEST(ExactPlaneSplitTest, RoundsToValidSolidRejectsTwoCornersAtOnePosition) {
   ExactPiece piece = ToExact(NeedleTetrahedron());
   piece.rounded[1] = piece.rounded[0];  // q rounded onto p
