@@ -170,6 +170,13 @@ constexpr double kOrthogonal = 1e-3;
 constexpr int kAxisCandidates = 32;
 constexpr double kAxesMargin = 1e-3;
 
+// Twice the area vector of face `f` of `mesh`: (b - a) x (c - a).
+Eigen::Vector3d FaceCross(const TriangleMesh& mesh, Eigen::Index f) {
+  const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0));
+  return (Eigen::Vector3d(mesh.vertices.row(mesh.triangles(f, 1))) - a)
+      .cross(Eigen::Vector3d(mesh.vertices.row(mesh.triangles(f, 2))) - a);
+}
+
 // The area of the faces (normals `normals`, areas `areas`) that face along one of `axes`.
 double FacingArea(const std::vector<Eigen::Vector3d>& normals, const std::vector<double>& areas,
                   const std::vector<Eigen::Vector3d>& axes) {
@@ -187,17 +194,17 @@ double FacingArea(const std::vector<Eigen::Vector3d>& normals, const std::vector
 
 }  // namespace
 
+std::array<Eigen::Vector3d, 3> WorldAxes() {
+  return {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()};
+}
+
 std::array<Eigen::Vector3d, 3> PartAxes(const TriangleMesh& part) {
-  const std::array<Eigen::Vector3d, 3> world = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
-                                                Eigen::Vector3d::UnitZ()};
+  const std::array<Eigen::Vector3d, 3> world = WorldAxes();
   std::vector<Eigen::Vector3d> normals;
   std::vector<double> areas;
   double total = 0;
   for (Eigen::Index f = 0; f < part.triangles.rows(); ++f) {
-    const Eigen::Vector3d a = part.vertices.row(part.triangles(f, 0));
-    const Eigen::Vector3d n =
-        (Eigen::Vector3d(part.vertices.row(part.triangles(f, 1))) - a)
-            .cross(Eigen::Vector3d(part.vertices.row(part.triangles(f, 2))) - a);
+    const Eigen::Vector3d n = FaceCross(part, f);
     const double len = n.norm();
     if (!(len > 0)) continue;
     normals.push_back(n / len);
@@ -275,12 +282,7 @@ CutPlaneRanking::CutPlaneRanking(const TriangleMesh& mesh, const SolidConcavity&
     for (int k = 0; k < 3; ++k) pca.push_back(eig.eigenvectors().col(k));
   }
   // The faces at the witness and the dihedral bisectors of its edges.
-  auto face_normal = [&](int f) {
-    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0));
-    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1));
-    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2));
-    return Eigen::Vector3d((b - a).cross(c - a).normalized());
-  };
+  auto face_normal = [&](int f) { return Eigen::Vector3d(FaceCross(mesh, f).normalized()); };
   if (concavity.witness_vertex >= 0) {
     std::map<std::pair<int, int>, std::vector<int>> edges;  // edge at the witness -> faces
     for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {

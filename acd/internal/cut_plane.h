@@ -26,6 +26,9 @@ struct ScoredPlane {
   double hull_volume = 0.0;
 };
 
+/// The world's x, y and z axes.
+std::array<Eigen::Vector3d, 3> WorldAxes();
+
 /// The directions of a part's axis-aligned candidate planes: the world's axes, unless three
 /// orthogonal directions of the part's own carry more of its area in faces facing along them
 /// (a model with flat faces, turned off the world's axes; else the world's axes keep the
@@ -65,9 +68,7 @@ class CutPlaneRanking {
   /// `caps`: the planes of the cuts that made the piece (its caps lie in them).
   CutPlaneRanking(const TriangleMesh& mesh, const SolidConcavity& concavity, double tau,
                   const std::vector<Plane3d>& caps, bool feature_grouping = false, bool lazy = true,
-                  const std::array<Eigen::Vector3d, 3>& axes = {Eigen::Vector3d::UnitX(),
-                                                                Eigen::Vector3d::UnitY(),
-                                                                Eigen::Vector3d::UnitZ()});
+                  const std::array<Eigen::Vector3d, 3>& axes = WorldAxes());
   /// The next plane in rank order; none once every candidate is returned or dropped.
   std::optional<ScoredPlane> Next();
   /// How many sides (of two per candidate) were hulled so far.

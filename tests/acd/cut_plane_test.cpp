@@ -88,8 +88,7 @@ bool SameAxes(const std::array<Eigen::Vector3d, 3>& a, const std::array<Eigen::V
 // The U-block's own axes are the world's; turned, its axes turn with it. A torus faces no three
 // directions with much area: it keeps the world's.
 TEST(PartAxes, TurnWithAModelsFlatFaces) {
-  const std::array<Eigen::Vector3d, 3> world = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
-                                                Eigen::Vector3d::UnitZ()};
+  const std::array<Eigen::Vector3d, 3> world = WorldAxes();
   const TriangleMesh u = test::UBlock();
   const std::array<Eigen::Vector3d, 3> own = PartAxes(u);
   for (int k = 0; k < 3; ++k) EXPECT_EQ(own[static_cast<size_t>(k)], world[static_cast<size_t>(k)]);
