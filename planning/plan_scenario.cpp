@@ -32,6 +32,7 @@
 #include "planning/plan_scenario3d.h"
 #include "planning/registry.h"
 #include "planning/sample_budget_roadmap.h"
+#include "planning/tau_diag.h"
 
 namespace acdplan::planning {
 
@@ -56,7 +57,7 @@ Eigen::Isometry2d Pose(bool se2, const ob::State* state) {
 
 acd::Decompose2dOptions ScenarioAcdOptions(const Scenario& scenario) {
   acd::Decompose2dOptions options;
-  options.tau = scenario.tau_diag * scenario.workspace.bounds.sizes().norm();
+  options.tau = TauOfBounds(scenario.tau_diag, scenario.workspace.bounds);
   options.measure = scenario.measure;
   return options;
 }

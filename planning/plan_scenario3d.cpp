@@ -21,6 +21,7 @@
 #include "planning/internal/space_access3d.h"
 #include "planning/registry.h"
 #include "planning/sample_budget_roadmap.h"
+#include "planning/tau_diag.h"
 
 namespace acdplan::planning {
 
@@ -79,7 +80,7 @@ PlanResult PlanScenario3d(const Scenario& scenario) {
   // The free space's 3D ACD (cached on disk; decomposed for every sampler, as in 2D, so that
   // time_s compares like with like).
   envs::FreeSpaceDecomposition3dOptions acd_options;
-  acd_options.tau = scenario.tau_diag * workspace.bounds.sizes().norm();
+  acd_options.tau = TauOfBounds(scenario.tau_diag, workspace.bounds);
   auto decomposition = std::make_shared<const envs::FreeSpaceDecomposition3d>(
       envs::DecomposeFreeSpace3d(workspace, acd_options));
   result.decomposition3d = decomposition;

@@ -14,6 +14,7 @@
 #include "planning/acd_sampler_options.h"
 #include "planning/control/plan_car.h"
 #include "planning/registry.h"
+#include "planning/tau_diag.h"
 
 namespace acdplan::planning {
 
@@ -106,7 +107,7 @@ struct Scenario {
   /// 2 numbers (point, disc) or 3 (polygon: x, y, yaw); 3D: 3 (point: x, y, z) or 6 (mesh:
   /// x, y, z, roll, pitch, yaw).
   std::vector<double> start, goal;
-  double tau_diag = 0.02;  ///< ACD tolerance / the bounds' diagonal; >= 0.
+  double tau_diag = kDefaultTauDiag;  ///< ACD tolerance / the bounds' diagonal; >= 0.
   acd::ConcavityMeasure measure = acd::ConcavityMeasure::kShortestPath;
   PlannerType planner = PlannerType::kPrm;
   double time_limit = 5.0;  ///< [s]; used when samples == 0.

@@ -19,6 +19,7 @@
 #include "base/stopwatch.h"
 #include "envs/mesh_loader.h"
 #include "tools/check_report.h"
+#include "tools/report_lines.h"
 
 namespace acdplan::tools {
 namespace {
@@ -31,12 +32,8 @@ std::string Lower(std::string text) {
   return text;
 }
 
-std::string Short(double x) { return FormatSignificant(x, 6); }
-
-// One "name  value" line of the report, aligned as the 2D decompose report.
-void Line(const char* name, const std::string& value) {
-  std::printf("%-14s %s\n", name, value.c_str());
-}
+// The report's "name  value" lines, aligned as the 2D decompose report's.
+constexpr ReportLines Line(14);
 
 /// An output path that can never be written is a usage error, reported before any work.
 void CheckOutputPath(const std::string& option, const std::string& path) {
@@ -169,23 +166,26 @@ int RunDecompose3d(const Decompose3dArguments& args) {
   }
   Line("acd", why);
   if (tau_rel >= 0) {
-    Line("tau", Short(decomposition.tau) + " (tau_rel " + Short(tau_rel) + " x radius " +
-                    Short(radius) + (args.tau_rel < 0 ? ", the default)" : ")"));
+    Line("tau", ReportNumber(decomposition.tau) + " (tau_rel " + ReportNumber(tau_rel) +
+                    " x radius " + ReportNumber(radius) +
+                    (args.tau_rel < 0 ? ", the default)" : ")"));
   } else {
-    Line("tau", Short(decomposition.tau));
+    Line("tau", ReportNumber(decomposition.tau));
   }
   if (decomposition.max_hulls > 0) Line("max hulls", std::to_string(decomposition.max_hulls));
   if (decomposition.merge_growth >= 0) {
-    Line("merge", "tau-convex neighbours, hull growth <= " + Short(decomposition.merge_growth));
+    Line("merge",
+         "tau-convex neighbours, hull growth <= " + ReportNumber(decomposition.merge_growth));
   }
   Line("components", std::to_string(stats.components));
   if (stats.surface) {
-    Line("hull volume", Short(stats.hull_volume));
+    Line("hull volume", ReportNumber(stats.hull_volume));
   } else {
-    Line("hull volume", Short(stats.hull_volume) + " / volume " + Short(stats.volume) + " = " +
-                            (stats.volume > 0 ? Short(stats.hull_volume / stats.volume) : "n/a"));
+    Line("hull volume",
+         ReportNumber(stats.hull_volume) + " / volume " + ReportNumber(stats.volume) + " = " +
+             (stats.volume > 0 ? ReportNumber(stats.hull_volume / stats.volume) : "n/a"));
   }
-  Line("max concavity", Short(stats.max_concavity));
+  Line("max concavity", ReportNumber(stats.max_concavity));
   Line("time", FormatFixed(stats.time_ms, 3) + " ms");
   if (args.check) Line("check", "ok");
   for (const std::string& path : written) Line("wrote", path);

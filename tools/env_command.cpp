@@ -21,13 +21,13 @@
 #include "envs/world_svg.h"
 #include "planning/scenario.h"
 #include "planning/scenario_cfg.h"
+#include "planning/tau_diag.h"
+#include "tools/report_lines.h"
 
 namespace acdplan::tools {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-constexpr double kDefaultTauDiag = 0.02;  // As planning::Scenario's default.
 
 // A scenario names its world under `workspace`; world files never have that key.
 bool IsScenarioFile(const std::string& path) {
@@ -41,8 +41,6 @@ bool IsScenarioFile(const std::string& path) {
   }
 }
 
-std::string Short(double x) { return FormatSignificant(x, 6); }
-
 std::string Milliseconds(double ms) { return FormatSignificant(ms, 3) + " ms"; }
 
 void WriteOutput(const std::string& path, const std::string& text) {
@@ -53,10 +51,8 @@ void WriteOutput(const std::string& path, const std::string& text) {
   }
 }
 
-// One "name  value" line of the report.
-void Line(const char* name, const std::string& value) {
-  std::printf("%-16s %s\n", name, value.c_str());
-}
+// The report's "name  value" lines.
+constexpr ReportLines Line(16);
 
 // The report's first fields, common to 2D and 3D worlds: bounds as [min..., max...].
 Json ReportHeader(const EnvArguments& args, const std::string& kind, const std::string& description,
@@ -77,21 +73,23 @@ Json ReportHeader(const EnvArguments& args, const std::string& kind, const std::
 // The tau of the free space's ACD, as a fraction of the bounds' diagonal: the option, else the
 // scenario's, else the default.
 double TauDiag(const EnvArguments& args, const planning::Scenario* scenario) {
-  return args.tau_diag >= 0 ? args.tau_diag : scenario ? scenario->tau_diag : kDefaultTauDiag;
+  return args.tau_diag >= 0 ? args.tau_diag
+         : scenario         ? scenario->tau_diag
+                            : planning::kDefaultTauDiag;
 }
 
 // The robot and planner lines of a scenario's report.
 void ScenarioLines(const planning::Scenario& scenario) {
   const envs::Robot& robot = scenario.robot;
   std::string text = ToString(robot.shape);
-  if (robot.shape == envs::RobotShape::kDisc) text += ", radius " + Short(robot.radius);
+  if (robot.shape == envs::RobotShape::kDisc) text += ", radius " + ReportNumber(robot.radius);
   if (robot.shape == envs::RobotShape::kPolygon) {
     text += ", " + std::to_string(robot.polygon.outer.size()) + " vertices, bounding radius " +
-            Short(robot.BoundingRadius());
+            ReportNumber(robot.BoundingRadius());
   }
   if (robot.shape == envs::RobotShape::kMesh) {
     text += ", " + Plural(robot.mesh.triangles.rows(), "triangle") + ", bounding radius " +
-            Short(robot.BoundingRadius());
+            ReportNumber(robot.BoundingRadius());
   }
   Line("robot", text);
   Line("planner", planning::ToString(scenario.planner) + " with the " +
@@ -112,7 +110,7 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
   const double free_space_ms = stopwatch.Milliseconds();
   stopwatch.Restart();
   acd::Decompose2dOptions options;
-  options.tau = tau_diag * diagonal;
+  options.tau = planning::TauOfBounds(tau_diag, workspace.bounds);
   options.measure = measure;
   const acd::Decomposition2d decomposition = acd::Decompose2d(free_space, options);
   const double decomposition_ms = stopwatch.Milliseconds();
@@ -138,21 +136,21 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
   const Eigen::Vector2d lo = workspace.bounds.min(), hi = workspace.bounds.max();
   Line("world", args.input + " (" + kind + ")");
   if (!workspace.description.empty()) Line("description", workspace.description);
-  Line("bounds", "[" + Short(lo.x()) + ", " + Short(lo.y()) + "] to [" + Short(hi.x()) + ", " +
-                     Short(hi.y()) + "]");
+  Line("bounds", "[" + ReportNumber(lo.x()) + ", " + ReportNumber(lo.y()) + "] to [" +
+                     ReportNumber(hi.x()) + ", " + ReportNumber(hi.y()) + "]");
   Line("obstacles", Plural(workspace.obstacles.size(), "polygon") + ", " +
                         std::to_string(obstacle_vertices) + " vertices, " +
                         Plural(obstacle_holes, "hole"));
   Line("free space", Plural(free_space.size(), "region") + ", " + Plural(free_holes, "hole") +
-                         ", " + Short(100.0 * free_area / bounds_area) + "% of the bounds (" +
-                         Milliseconds(free_space_ms) + ")");
-  Line("decomposition", "tau " + Short(options.tau) + " (tau_diag " + Short(tau_diag) +
-                            " x bounds diagonal " + Short(diagonal) + "), measure " +
-                            acd::ToString(measure) + ": " +
+                         ", " + ReportNumber(100.0 * free_area / bounds_area) +
+                         "% of the bounds (" + Milliseconds(free_space_ms) + ")");
+  Line("decomposition", "tau " + ReportNumber(options.tau) + " (tau_diag " +
+                            ReportNumber(tau_diag) + " x bounds diagonal " +
+                            ReportNumber(diagonal) + "), measure " + acd::ToString(measure) + ": " +
                             std::to_string(decomposition.components.size()) + " components, " +
                             std::to_string(decomposition.openings.size()) + " openings (" +
                             Milliseconds(decomposition_ms) + ")");
-  if (!decomposition.openings.empty()) Line("narrowest gap", Short(narrowest));
+  if (!decomposition.openings.empty()) Line("narrowest gap", ReportNumber(narrowest));
   Line("obstacle hulls",
        std::to_string(obstacles.pieces.size()) + " from " + obstacles.hulls_source);
   if (scenario) ScenarioLines(*scenario);
@@ -161,7 +159,7 @@ int Report2d(const EnvArguments& args, const std::string& kind, const envs::Work
     const std::string caption =
         args.input + ": " + std::to_string(decomposition.components.size()) + " components, " +
         std::to_string(decomposition.openings.size()) + " openings (orange), tau_diag " +
-        Short(tau_diag) + ", " + acd::ToString(measure);
+        ReportNumber(tau_diag) + ", " + acd::ToString(measure);
     WriteOutput(args.svg_path, envs::WorldToSvg(workspace, decomposition, caption));
     Line("wrote", args.svg_path);
   }
@@ -196,7 +194,7 @@ int Report3d(const EnvArguments& args, const std::string& kind, const envs::Work
   const double tau_diag = TauDiag(args, scenario);
   const double diagonal = workspace.bounds.sizes().norm();
   envs::FreeSpaceDecomposition3dOptions options;
-  options.tau = tau_diag * diagonal;
+  options.tau = planning::TauOfBounds(tau_diag, workspace.bounds);
   const envs::FreeSpaceDecomposition3d free = envs::DecomposeFreeSpace3d(workspace, options);
   double narrowest = INFINITY;
   for (const envs::FreeOpening3d& o : free.openings) narrowest = std::min(narrowest, o.width);
@@ -214,8 +212,9 @@ int Report3d(const EnvArguments& args, const std::string& kind, const envs::Work
   const Eigen::Vector3d lo = workspace.bounds.min(), hi = workspace.bounds.max();
   Line("world", args.input + " (" + kind + ")");
   if (!workspace.description.empty()) Line("description", workspace.description);
-  Line("bounds", "[" + Short(lo.x()) + ", " + Short(lo.y()) + ", " + Short(lo.z()) + "] to [" +
-                     Short(hi.x()) + ", " + Short(hi.y()) + ", " + Short(hi.z()) + "]");
+  Line("bounds", "[" + ReportNumber(lo.x()) + ", " + ReportNumber(lo.y()) + ", " +
+                     ReportNumber(lo.z()) + "] to [" + ReportNumber(hi.x()) + ", " +
+                     ReportNumber(hi.y()) + ", " + ReportNumber(hi.z()) + "]");
   Line("obstacles", Plural(workspace.obstacles.size(), "mesh") + ", " +
                         std::to_string(collision::TriangleCount(obstacles)) + " triangles, " +
                         std::to_string(vertices) + " vertices");
@@ -226,14 +225,15 @@ int Report3d(const EnvArguments& args, const std::string& kind, const envs::Work
                              std::to_string(open_components) +
                              " open (no exact point location inside those)");
   Line("free space",
-       Short(100.0 * free.free_volume / workspace.bounds.volume()) + "% of the bounds");
-  Line("decomposition", "tau " + Short(options.tau) + " (tau_diag " + Short(tau_diag) +
-                            " x bounds diagonal " + Short(diagonal) +
+       ReportNumber(100.0 * free.free_volume / workspace.bounds.volume()) + "% of the bounds");
+  Line("decomposition", "tau " + ReportNumber(options.tau) + " (tau_diag " +
+                            ReportNumber(tau_diag) + " x bounds diagonal " +
+                            ReportNumber(diagonal) +
                             "), solid ACD: " + Plural(free.components.size(), "component") + ", " +
                             Plural(free.openings.size(), "opening") + " (" +
                             (free.from_cache ? "from the cache; computed in " : "") +
                             Milliseconds(free.compute_ms) + ")");
-  if (!free.openings.empty()) Line("narrowest gap", Short(narrowest));
+  if (!free.openings.empty()) Line("narrowest gap", ReportNumber(narrowest));
   for (const std::string& note : free.notes) Line("note", note);
   if (scenario) ScenarioLines(*scenario);
   for (const std::string& note : obstacles.notes) Line("note", note);

@@ -21,6 +21,7 @@
 #include "collision/obstacle_set.h"
 #include "planning/acd_decomposition.h"
 #include "planning/decomposition_cache.h"
+#include "planning/tau_diag.h"
 
 namespace acdplan::planning::control {
 
@@ -170,7 +171,7 @@ CarResult PlanCar(const CarQuery& query) {
   if (syclop) {
     if (query.decomposition == DecompositionKind::kAcd) {
       acd::Decompose2dOptions options;
-      options.tau = query.tau_diag * box.sizes().norm();
+      options.tau = TauOfBounds(query.tau_diag, box);
       options.measure = query.measure;
       const CachedDecomposition cached = DecomposeFreeSpaceCached(query.workspace, options);
       result.decomposition_ms = cached.compute_ms;

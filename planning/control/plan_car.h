@@ -13,6 +13,7 @@
 #include "envs/robot.h"
 #include "envs/workspace2d.h"
 #include "planning/control/car.h"
+#include "planning/tau_diag.h"
 
 namespace acdplan::planning::control {
 
@@ -46,7 +47,7 @@ struct CarQuery {
   ControlPlanner planner = ControlPlanner::kSyclopRrt;
   DecompositionKind decomposition = DecompositionKind::kAcd;  ///< Syclop planners only.
   int grid_cells = 10;                                        ///< kGrid: cells per side; >= 1.
-  double tau_diag = 0.02;  ///< ACD tolerance / bounds diagonal (as scenarios).
+  double tau_diag = kDefaultTauDiag;  ///< ACD tolerance / bounds diagonal (planning/tau_diag.h).
   acd::ConcavityMeasure measure = acd::ConcavityMeasure::kShortestPath;  ///< The ACD's measure.
   collision::CollisionMode collision_mode = collision::CollisionMode::kHullsExact;
   double time_limit = 5.0;  ///< [s], decomposition included.
