@@ -70,7 +70,7 @@ struct DecompositionStats3d {
 struct Decomposition3d {
   double tau = 0.0;                     ///< Absolute tolerance used [units].
   int max_hulls = 0;                    ///< The cap asked for; 0 = none.
-  double merge_growth = -1;             ///< Decompose3dOptions::merge_growth used; < 0: none.
+  double merge_growth = -1;             ///< The hull growth a merge was allowed; < 0: no merging.
   std::vector<Component3d> components;  ///< The leaves, in depth-first order of the tree.
   std::vector<Opening3d> openings;
   std::vector<HierarchyNode3d> tree;

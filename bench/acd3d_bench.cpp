@@ -434,9 +434,11 @@ std::string Acd3dBenchMarkdown(const Acd3dBenchResult& result, const Acd3dBenchO
          "others"
       << (options.surface_on_solids ? " and on the solids too" : ", and on repairable ones too")
       << (options.feature_grouping ? "; solid ACD with feature grouping" : "")
-      << (options.merge_growth >= 0
+      << (!options.merge_growth
+              ? "; tau-convex neighbours merged while their hull grows by <= tau_rel / 2"
+          : *options.merge_growth >= 0
               ? "; tau-convex neighbours merged while their hull grows by <= " +
-                    FormatSignificant(options.merge_growth, 6)
+                    FormatSignificant(*options.merge_growth, 6)
               : "; no merge pass")
       << ")";
   if (options.max_hulls > 0) {

@@ -36,8 +36,8 @@ struct Acd3dBenchOptions {
   /// Decompose3dOptions::feature_grouping for the solid ACD (the global cut's plane among the
   /// candidates), for before / after comparisons.
   bool feature_grouping = false;
-  /// Decompose3dOptions::merge_growth for the solid ACD (< 0: no merge pass).
-  double merge_growth = acd::Decompose3dOptions{}.merge_growth;
+  /// Decompose3dOptions::merge_growth for the solid ACD (unset: its default; < 0: no merge pass).
+  std::optional<double> merge_growth;
   /// > 0: one more solid ACD cell on every mesh that gets the solid ACD (solid as read or after
   /// repair), at
   /// `capped_tau_rel` with Decompose3dOptions::max_hulls = this: a fine tau whose components

@@ -77,8 +77,8 @@ int main(int argc, char** argv) {
                "Solid ACD: also try the global cut's plane (feature grouping, Sec. V.B.2)");
   app.add_option("--merge-growth", options.merge_growth,
                  "Solid ACD: merge tau-convex neighbours while their hull grows by at most this "
-                 "fraction (Decompose3dOptions::merge_growth); < 0: no merge pass")
-      ->capture_default_str();
+                 "fraction (Decompose3dOptions::merge_growth; default: tau_rel / 2); < 0: no merge "
+                 "pass");
   app.add_option("--max-hulls", options.max_hulls,
                  "One more solid ACD cell, at --capped-tau-rel, merged down to at "
                  "most N parts (Decompose3dOptions::max_hulls); 0: none")

@@ -63,7 +63,7 @@ struct DecomposeArguments {
   // Meshes only.
   bool surface = false;
   int max_hulls = 0;
-  double merge_growth = acdplan::tools::Decompose3dArguments{}.merge_growth;
+  double merge_growth = 0.0;  ///< Read only if given (InputKindOptions::merge_growth).
   std::string obj_path, glb_path;
 };
 
@@ -71,6 +71,7 @@ struct DecomposeArguments {
 struct InputKindOptions {
   std::vector<CLI::Option*> polygons_only, meshes_only;
   CLI::Option* tau = nullptr;
+  CLI::Option* merge_growth = nullptr;
 };
 
 /// `acdplan decompose MESH` (tools/decompose3d_command.h).
@@ -87,7 +88,7 @@ int RunDecomposeMesh(const DecomposeArguments& args, const InputKindOptions& kin
   mesh_args.tau_rel = args.tau_rel;
   mesh_args.surface = args.surface;
   mesh_args.max_hulls = args.max_hulls;
-  mesh_args.merge_growth = args.merge_growth;
+  if (kinds.merge_growth->count() > 0) mesh_args.merge_growth = args.merge_growth;
   mesh_args.repair = args.repair;
   mesh_args.check = args.check;
   mesh_args.json_path = args.json_path;
@@ -569,13 +570,12 @@ int main(int argc, char** argv) {
                        "Meshes: then merge the adjacent components whose merged hull adds the "
                        "least volume until at most N remain (they may exceed tau); 0: no cap")
           ->check(CLI::NonNegativeNumber));
-  kinds.meshes_only.push_back(
-      decompose
-          ->add_option("--merge-growth", args.merge_growth,
-                       "Meshes, solid ACD: after the cuts, merge neighbours whose union is still "
-                       "tau-convex while their hull grows by at most this fraction (a large value: "
-                       "fewest parts; < 0: no merging)")
-          ->capture_default_str());
+  kinds.merge_growth = decompose->add_option(
+      "--merge-growth", args.merge_growth,
+      "Meshes, solid ACD: after the cuts, merge neighbours whose union is still tau-convex while "
+      "their hull grows by at most this fraction (default: tau_rel / 2; a large value: fewest "
+      "parts; < 0: no merging)");
+  kinds.meshes_only.push_back(kinds.merge_growth);
   decompose->add_option("--json", args.json_path, "Write the decomposition JSON here");
   decompose->add_option("--svg", args.svg_path,
                         "Write an SVG picture here (meshes: a shaded oblique view)");

@@ -2,6 +2,7 @@
 // `acdplan decompose MESH`: the 3D approximate convex decomposition of a mesh file
 // (dissertation Ch. V), its report and its outputs.
 
+#include <optional>
 #include <string>
 
 #include "acd/decompose3d.h"
@@ -10,14 +11,14 @@ namespace acdplan::tools {
 
 /// What `acdplan decompose MESH` was asked.
 struct Decompose3dArguments {
-  std::string input;      ///< A mesh file (IsMeshFile()).
-  double tau = -1.0;      ///< Absolute tolerance [mesh units]; < 0: not given.
-  double tau_rel = -1.0;  ///< Relative to acd::ReferenceRadius(); < 0: not given.
-  bool surface = false;   ///< The surface ACD even for a solid.
-  int max_hulls = 0;      ///< Merge down to at most this many components; 0: no cap.
-  double merge_growth = acd::Decompose3dOptions{}.merge_growth;  ///< Solid ACD's merge pass.
-  bool repair = false;  ///< Close holes and remove self-intersections first.
-  bool check = false;   ///< acd::CheckDecomposition3d() before writing anything.
+  std::string input;                   ///< A mesh file (IsMeshFile()).
+  double tau = -1.0;                   ///< Absolute tolerance [mesh units]; < 0: not given.
+  double tau_rel = -1.0;               ///< Relative to acd::ReferenceRadius(); < 0: not given.
+  bool surface = false;                ///< The surface ACD even for a solid.
+  int max_hulls = 0;                   ///< Merge down to at most this many components; 0: no cap.
+  std::optional<double> merge_growth;  ///< Solid ACD's merge pass; unset: its default.
+  bool repair = false;                 ///< Close holes and remove self-intersections first.
+  bool check = false;                  ///< acd::CheckDecomposition3d() before writing anything.
   std::string json_path, obj_path, glb_path, svg_path;
 };
 

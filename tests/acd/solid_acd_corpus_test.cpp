@@ -94,6 +94,23 @@ TEST(Decompose3dMerge, GivesBackNeedlessCutsWithinTheHullGrowth) {
   }
 }
 
+// Unset, the merge's allowance is kMergeGrowthPerTauRel x tau_rel: the same decomposition as
+// with that growth given, on the cup at a coarse and a fine tau.
+TEST(Decompose3dMerge, DefaultGrowthIsHalfTheRelativeTolerance) {
+  const TriangleMesh mesh = Load("cup");
+  const PreparedMesh prepared = test::PreparedSolid(mesh);
+  for (const double tau_rel : {0.2, 0.02}) {
+    Decompose3dOptions options;
+    options.tau = tau_rel * ReferenceRadius(prepared.mesh);
+    const Decomposition3d by_default = Decompose3d(prepared, options);
+    EXPECT_NEAR(by_default.merge_growth, kMergeGrowthPerTauRel * tau_rel, 1e-12);
+    options.merge_growth = by_default.merge_growth;
+    const Decomposition3d given = Decompose3d(prepared, options);
+    EXPECT_EQ(given.components.size(), by_default.components.size()) << "tau_rel " << tau_rel;
+    EXPECT_EQ(given.stats.hull_volume, by_default.stats.hull_volume) << "tau_rel " << tau_rel;
+  }
+}
+
 // Metamorphic: rigid motions, scaling (tau scaled), mirroring and reordering keep the count.
 TriangleMesh Transformed(const TriangleMesh& mesh, const Eigen::Matrix3d& linear,
                          const Eigen::Vector3d& shift) {

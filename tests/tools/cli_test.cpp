@@ -489,8 +489,9 @@ TEST_F(CliTest, TauMaxHullsMergeGrowthAndTheirDefaults) {
   nlohmann::json j = nlohmann::json::parse(Read(a));
   EXPECT_EQ(j.at("tau_rel"), 0.05);
   EXPECT_EQ(j.at("max_hulls"), 0);
-  EXPECT_EQ(j.at("merge_growth"), 0.01);
-  EXPECT_NE(run.out.find("merge          tau-convex neighbours, hull growth <= 0.01"),
+  // The default allowance is half of tau_rel.
+  EXPECT_NEAR(j.at("merge_growth").get<double>(), 0.025, 1e-12);
+  EXPECT_NE(run.out.find("merge          tau-convex neighbours, hull growth <= 0.025"),
             std::string::npos)
       << run.out;
 
