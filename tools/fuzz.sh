@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (fuzz/, one per reader) with clang in build-fuzz/ (or
-# $ACDPLAN_FUZZ_BUILD_DIR) and runs each in turn, one process at a time.
+# Builds the libFuzzer targets (fuzz/, one per reader) in the sanitizer tree, build-asan/ (or
+# $ACDPLAN_ASAN_BUILD_DIR; clang, ASan + UBSan, configured as `tools/test.sh --sanitize` does,
+# which builds them too), and runs each in turn, one process at a time.
 #
 #   tools/fuzz.sh [SECONDS] [TARGET...]   SECONDS per target (default 20); TARGET e.g.
 #                                         poly_reader or fuzz_poly_reader (default: all)
@@ -29,7 +30,7 @@ list=0
 requested=()
 for arg in "$@"; do
   case "$arg" in
-    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     --list) list=1 ;;
     -*) echo "fuzz.sh: unknown option '$arg' (expected SECONDS, targets, --list or --help)" >&2
       exit 2 ;;
@@ -59,15 +60,16 @@ if ! command -v clang++ >/dev/null 2>&1; then
   exit 1
 fi
 
-build_dir=${ACDPLAN_FUZZ_BUILD_DIR:-build-fuzz}
+build_dir=${ACDPLAN_ASAN_BUILD_DIR:-build-asan}
 jobs=${ACDPLAN_JOBS:-$(nproc)}
 werror=OFF
 if [[ ${ACDPLAN_WERROR:-0} == 1 ]]; then werror=ON; fi
 
 start=$SECONDS
-CC=clang CXX=clang++ cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DACDPLAN_FUZZ=ON -DACDPLAN_BUILD_TESTS=OFF -DACDPLAN_BUILD_TOOLS=ON \
-  -DACDPLAN_WARNINGS_AS_ERRORS=$werror >/dev/null
+# The options of `tools/test.sh --sanitize`, so that the two share one tree without
+# reconfiguring it.
+cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DACDPLAN_SANITIZE=ON \
+  -DACDPLAN_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ -DACDPLAN_WARNINGS_AS_ERRORS=$werror >/dev/null
 if ! cmake --build "$build_dir" -j "$jobs" --target acdplan_fuzz; then
   echo "fuzz.sh: building the fuzz targets failed" >&2
   exit 1

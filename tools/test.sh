@@ -3,7 +3,8 @@
 #
 #   tools/test.sh             Release build in build/ (or $ACDPLAN_BUILD_DIR)
 #   tools/test.sh --sanitize  ASan+UBSan RelWithDebInfo build in build-asan/
-#                             (or $ACDPLAN_ASAN_BUILD_DIR)
+#                             (or $ACDPLAN_ASAN_BUILD_DIR); it builds the fuzz targets too,
+#                             which tools/fuzz.sh then runs from the same tree
 #   tools/test.sh --tsan      ThreadSanitizer RelWithDebInfo build in build-tsan/
 #                             (or $ACDPLAN_TSAN_BUILD_DIR); builds and runs only the tests
 #                             labelled `threads` (suppressions: tools/tsan.supp)
@@ -27,7 +28,7 @@ for arg in "$@"; do
   case "$arg" in
     --sanitize) sanitize=1 ;;
     --tsan) tsan=1 ;;
-    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "test.sh: unknown argument '$arg' (expected --sanitize or --tsan)" >&2; exit 2 ;;
   esac
 done
@@ -45,7 +46,8 @@ ctest_args=()
 
 if [[ $sanitize -eq 1 ]]; then
   build_dir=${ACDPLAN_ASAN_BUILD_DIR:-build-asan}
-  cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DACDPLAN_SANITIZE=ON "${clang_args[@]}")
+  cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DACDPLAN_SANITIZE=ON -DACDPLAN_FUZZ=ON
+    "${clang_args[@]}")
   # Options already in the environment come last, so they win.
   export ASAN_OPTIONS="detect_leaks=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
