@@ -56,9 +56,13 @@ struct SideScore {
 };
 
 // The cheap score of one side piece: the volume of the hull of `hulled` and the depth of each
-// of its `vertices` below that hull's planes.
+// of its `vertices` below that hull's planes, except the planes of the cap the cut `cut` makes:
+// the cap is surface, not a bridge (Sec. V.B: a point's concavity is its distance to its
+// pocket's bridge). Counted as a bridge, the cap's plane hid the depth of the points beside it:
+// a torus cut through its tube's equator kept half its measured depth, and was cut into washers.
 void ScorePiece(const std::vector<Eigen::Vector3d>& hulled,
-                const std::vector<Eigen::Vector3d>& vertices, SideScore* score) {
+                const std::vector<Eigen::Vector3d>& vertices, const Plane3d& cut, double tol,
+                SideScore* score) {
   if (hulled.size() < 4) return;
   const CanonicalHull hull = MakeCanonicalHull(hulled);
   if (hull.mesh.triangles.rows() < 4 || hull.planes.rows() < 4) return;
@@ -66,25 +70,59 @@ void ScorePiece(const std::vector<Eigen::Vector3d>& hulled,
   if (!(volume > 0)) return;
   score->hull_volume += volume;
   const Eigen::Matrix<double, Eigen::Dynamic, 4>& planes = hull.planes;
+  // A hull plane is the cap's when every hull vertex on it is in the cut's plane: so also the
+  // narrow facets that rounding tilts off the cap along its rim (a model stored in floats and
+  // turned off the axes has them), which a test of the planes' equations would keep as bridges.
+  // Only the planes of hull triangles with three corners in the cut's plane can be.
+  const auto& corners = hull.mesh.vertices;
+  auto on = [&](Eigen::Index j, Eigen::Index v) {
+    return std::abs(planes(j, 3) - planes.row(j).head<3>().dot(corners.row(v).transpose())) <= tol;
+  };
+  std::vector<char> in_cut(static_cast<size_t>(corners.rows()));
+  for (Eigen::Index v = 0; v < corners.rows(); ++v) {
+    in_cut[static_cast<size_t>(v)] =
+        std::abs(cut.normal.dot(corners.row(v).transpose()) - cut.offset) <= tol;
+  }
+  std::vector<char> cap(static_cast<size_t>(planes.rows()), 0), tried(cap.size(), 0);
+  for (Eigen::Index t = 0; t < hull.mesh.triangles.rows(); ++t) {
+    const Eigen::Vector3i tri = hull.mesh.triangles.row(t).transpose();
+    if (!in_cut[static_cast<size_t>(tri(0))] || !in_cut[static_cast<size_t>(tri(1))] ||
+        !in_cut[static_cast<size_t>(tri(2))]) {
+      continue;
+    }
+    for (Eigen::Index j = 0; j < planes.rows(); ++j) {
+      if (tried[static_cast<size_t>(j)] || !on(j, tri(0)) || !on(j, tri(1)) || !on(j, tri(2))) {
+        continue;
+      }
+      tried[static_cast<size_t>(j)] = 1;
+      bool only_cut = true;
+      for (Eigen::Index v = 0; v < corners.rows() && only_cut; ++v) {
+        only_cut = in_cut[static_cast<size_t>(v)] || !on(j, v);
+      }
+      cap[static_cast<size_t>(j)] = only_cut;
+    }
+  }
   for (const Eigen::Vector3d& p : vertices) {
     double d = 1e300;
     for (Eigen::Index j = 0; j < planes.rows(); ++j) {
-      d = std::min(d, planes(j, 3) - planes.row(j).head<3>().dot(p));
+      if (!cap[static_cast<size_t>(j)])
+        d = std::min(d, planes(j, 3) - planes.row(j).head<3>().dot(p));
     }
     score->concavity = std::max(score->concavity, d);
   }
 }
 
-// The side `sign` (-1 below, +1 above) of `mesh` cut where the vertices have signed heights
-// `s`: its pieces (vertices joined by edges that do not run in the plane, so two posts of a U
-// cut at their base are two pieces), each hulled with the points where its edges cross. Of those
+// The side `sign` (-1 below, +1 above) of `mesh` cut by `plane`, where the vertices have signed
+// heights `s`: its pieces (vertices joined by edges that do not run in the plane, so two posts of a
+// U cut at their base are two pieces), each hulled with the points where its edges cross. Of those
 // section points (in the plane, up to rounding) only the corners of their convex polygon seen
 // along `plane_axis` (the normal's largest coordinate) are hulled: the others are inside the
 // hull, and in the plane of its cap facet, where each of them would cost convex_hull_3 an exact
 // orientation test per cap triangle (measured: 15% of mite at tau_rel 0.05). Likewise the
 // vertices of each of `caps` (the earlier cuts' caps) on this side: only their corners are hulled.
-SideScore ScoreSide(const TriangleMesh& mesh, const Eigen::VectorXd& s, int sign, double tol,
-                    int plane_axis, const std::vector<VerticesInPlane>& caps) {
+SideScore ScoreSide(const TriangleMesh& mesh, const Plane3d& plane, const Eigen::VectorXd& s,
+                    int sign, double tol, int plane_axis,
+                    const std::vector<VerticesInPlane>& caps) {
   const Eigen::Index n = mesh.vertices.rows();
   auto side = [&](Eigen::Index i) { return s(i) > tol ? 1 : (s(i) < -tol ? -1 : 0); };
   std::vector<int> parent(static_cast<size_t>(n));
@@ -147,14 +185,17 @@ SideScore ScoreSide(const TriangleMesh& mesh, const Eigen::VectorXd& s, int sign
   for (const auto& [v, p] : crossings) section[find(v)].push_back(p);
   SideScore score;
   if (vertices.empty()) return score;
-  for (const auto& [root, measured] : vertices) {
+  for (auto& [root, measured] : vertices) {
     std::vector<Eigen::Vector3d>& pts = hulled[root];
     const auto it = section.find(root);
     if (it != section.end()) {
       for (int i : ConvexCornersAlongAxis(it->second, plane_axis))
         pts.push_back(it->second[static_cast<size_t>(i)]);
+      // The section's rim is on the surface: measured too (the deepest point of a piece cut
+      // along a ring of its vertices often lies on that ring).
+      measured.insert(measured.end(), it->second.begin(), it->second.end());
     }
-    ScorePiece(pts, measured, &score);
+    ScorePiece(pts, measured, plane, tol, &score);
   }
   score.valid = score.hull_volume > 0;
   return score;
@@ -344,7 +385,7 @@ void CutPlaneRanking::ScoreNextSide(Candidate* candidate) {
     candidate->first_side = above > below ? 1 : -1;
   }
   const int sign = candidate->sides_scored == 0 ? candidate->first_side : -candidate->first_side;
-  const SideScore side = ScoreSide(mesh_, s, sign, tol_, axis, caps_);
+  const SideScore side = ScoreSide(mesh_, plane, s, sign, tol_, axis, caps_);
   ++candidate->sides_scored;
   if (!side.valid) {
     candidate->done = true;  // dropped

@@ -53,7 +53,8 @@ std::array<Eigen::Vector3d, 3> PartAxes(const TriangleMesh& part);
 /// side plus the points where edges cross the plane are hulled (of the crossing points, and of
 /// the vertices in one of `caps`, only their polygon's corners: the others are no hull vertices
 /// but cost convex_hull_3 exact tests, being in the plane of a hull facet), and a side's
-/// concavity is estimated as the largest distance of its vertices to its hull's planes. Ranked
+/// concavity is estimated as the largest distance of its vertices and of the section's points
+/// to its hull's planes other than the cut's own (the cap is surface, not a bridge). Ranked
 /// by that estimate of the worse side, in bins of tau / 4 above tau (all sides within tau are
 /// equal), then by the sum of the two hulls' volumes, then by the order above. Planes that
 /// leave a side without a vertex strictly on it are dropped.
