@@ -112,6 +112,23 @@ TEST(CutPlaneRanking, RanksTheUBlockSlotFloorFirst) {
   EXPECT_LE(ranked.planes.front().concavity, 0.1);
 }
 
+// The torus is deepest on its tube's inner equator, a ring of vertices 0.5 under the bridge over
+// its hole. A cut along that ring leaves the depth on both halves, and the ranking must say so:
+// the cap the cut makes is surface, not a bridge. Counted as one, it hid the ring and all but
+// the next ring's 0.25, and such cuts won (torus2 in the corpus fell into 204 washers).
+TEST(CutPlaneRanking, ACutAlongTheDeepestRingKeepsItsDepth) {
+  const Ranked ranked = Rank(test::Torus(2.0, 0.5, 24, 12), 0.05, false);
+  int found = 0;
+  for (const ScoredPlane& p : ranked.planes) {
+    if (std::abs(std::abs(p.plane.normal.z()) - 1) > 1e-12 || std::abs(p.plane.offset) > 1e-9) {
+      continue;
+    }
+    ++found;
+    EXPECT_NEAR(p.concavity, 0.5, 1e-9);
+  }
+  EXPECT_EQ(found, 1);
+}
+
 // A candidate's second side is scored only when its first cannot rank it last; the order must
 // be the one with every side scored.
 TEST(CutPlaneRanking, LazyScoringKeepsTheOrder) {
