@@ -53,7 +53,8 @@ struct BenchCollisionRow {
 /// `options.mesh_dir` as the one obstacle of a 3D world (its box grown 10% per side) with a cube
 /// robot of side 5% of the mesh's box diagonal. Each mode is timed on one thread over the same
 /// poses (after 100 ms of untimed warm-up passes, bench/time_runs.h); point location over the same
-/// random points in the bounds. Progress lines go to `progress` when not null.
+/// random points in the bounds, all of them in one call per pass (PointLocator's batch Inside()).
+/// Progress lines go to `progress` when not null.
 /// @throws InputError for out-of-range options or an unreadable mesh folder.
 std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& options,
                                               std::ostream* progress = nullptr);

@@ -57,4 +57,16 @@ bool PointLocator::Inside(const Eigen::Vector3d& p) const {
   return impl_->hulls.AnyContains(p);
 }
 
+void PointLocator::Inside(const std::vector<Eigen::Vector3d>& points,
+                          std::vector<char>* inside) const {
+  inside->resize(points.size());
+  char* out = inside->data();
+  if (method_ == LocateMethod::kExact) {
+    for (size_t i = 0; i < points.size(); ++i) out[i] = impl_->exact->Inside(points[i]);
+    return;
+  }
+  const internal::HullGrid& grid = impl_->hulls;
+  for (size_t i = 0; i < points.size(); ++i) out[i] = grid.AnyContains(points[i]);
+}
+
 }  // namespace acdplan::collision

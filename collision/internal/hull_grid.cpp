@@ -196,7 +196,7 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
   int mixed = 0;
   for (const std::uint64_t word : kinds_) {
     mixed_before_.push_back(mixed);
-    mixed += __builtin_popcountll(word & kMixedBits);
+    mixed += BitCount(word & kMixedBits);
   }
   mixed_subcells_.reserve(static_cast<size_t>(mixed));
   const Eigen::Vector3d sub_size = cell_size_ / kSubcells;
@@ -247,16 +247,6 @@ HullGrid::Kind HullGrid::ClassifyBox(int cell, const Eigen::Vector3d& lo, const 
   return reached ? kMixed : kEmpty;
 }
 
-int HullGrid::SubcellOf(const Location& at) {
-  // Only asked of cells some hull reaches, which are inside the border: scaled >= 1.
-  int s = 0;
-  for (int k = 2; k >= 0; --k) {
-    const double fraction = at.scaled[k] - static_cast<int>(at.scaled[k]);
-    s = s * kSubcells + std::clamp(static_cast<int>(fraction * kSubcells), 0, kSubcells - 1);
-  }
-  return s;
-}
-
 bool HullGrid::EntryContains(const Entry& entry, const Eigen::Vector3d& p) const {
   const Eigen::Vector4d q(p.x(), p.y(), p.z(), -1.0);
   for (int k = entry.plane_begin; k < entry.plane_end; ++k) {
@@ -265,10 +255,8 @@ bool HullGrid::EntryContains(const Entry& entry, const Eigen::Vector3d& p) const
   return true;
 }
 
-bool HullGrid::MixedContains(const Location& at, const Eigen::Vector3d& p) const {
-  const Kind sub = SubcellKindOf(at);
-  if (sub != kMixed) return sub == kCovered;
-  const size_t c = static_cast<size_t>(at.cell);
+bool HullGrid::PlanesContain(int cell, const Eigen::Vector3d& p) const {
+  const size_t c = static_cast<size_t>(cell);
   for (int k = cell_begin_[c]; k < cell_begin_[c + 1]; ++k) {
     if (EntryContains(entries_[static_cast<size_t>(k)], p)) return true;
   }

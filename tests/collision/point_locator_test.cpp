@@ -272,13 +272,23 @@ TEST_P(PointLocatorVhacdMesh, HullsNeverSayOutsideWhereExactSaysInside) {
       envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + GetParam() + ".obj"));
   auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));
   const PointLocator exact(set, LocateMethod::kExact), hulls(set, LocateMethod::kHulls);
-  int missed = 0, inside = 0;
+  std::vector<Eigen::Vector3d> points;
   for (const auto& pose :
        testing::RandomPoses3d(workspace.bounds, testing::kPosesPerWorld / 10, 12)) {
-    const Eigen::Vector3d p = pose.translation();
-    const bool e = exact.Inside(p);
-    missed += e && !hulls.Inside(p);
-    inside += e;
+    points.push_back(pose.translation());
+  }
+  std::vector<char> exact_inside, hulls_inside;
+  exact.Inside(points, &exact_inside);
+  hulls.Inside(points, &hulls_inside);
+  ASSERT_EQ(exact_inside.size(), points.size());
+  ASSERT_EQ(hulls_inside.size(), points.size());
+  int missed = 0, inside = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    // The batch answers are the single-point ones.
+    ASSERT_EQ(exact_inside[i], exact.Inside(points[i]) ? 1 : 0) << i;
+    ASSERT_EQ(hulls_inside[i], hulls.Inside(points[i]) ? 1 : 0) << i;
+    missed += exact_inside[i] && !hulls_inside[i];
+    inside += exact_inside[i];
   }
   EXPECT_EQ(missed, 0);
   EXPECT_GT(inside, 0);
