@@ -7,6 +7,7 @@
 
 #include "acd/convex_hull3d.h"
 #include "acd/mesh_measures.h"
+#include "tests/acd/problem_lines.h"
 
 namespace acdplan::acd {
 namespace {
@@ -96,23 +97,17 @@ struct SplitBox {
   }
 };
 
-std::string Joined(const DecompositionCheck& check) {
-  std::string all;
-  for (const std::string& p : check.problems) all += p + "\n";
-  return all;
-}
-
 // The check reports a problem containing `needle`.
 void ExpectProblem(const DecompositionCheck& check, const std::string& needle) {
-  EXPECT_NE(Joined(check).find(needle), std::string::npos)
+  EXPECT_NE(acdplan::test::ProblemLines(check).find(needle), std::string::npos)
       << "expected a problem with '" << needle << "', got:\n"
-      << Joined(check);
+      << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecomposition3dTest, BoxSplitIntoTwoBoxesIsValid) {
   const SplitBox box;
   const DecompositionCheck check = CheckDecomposition3d(box.input, box.d);
-  EXPECT_TRUE(check.ok()) << Joined(check);
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecomposition3dTest, ReportsAGap) {
@@ -132,7 +127,7 @@ TEST(CheckDecomposition3dTest, ReportsAnOverlapTheVolumesHide) {
   FillStats(&box.d);
   const DecompositionCheck check = CheckDecomposition3d(box.input, box.d);
   ExpectProblem(check, "components 0 and 1 overlap");
-  EXPECT_EQ(Joined(check).find("(a gap)"), std::string::npos);
+  EXPECT_EQ(acdplan::test::ProblemLines(check).find("(a gap)"), std::string::npos);
 }
 
 TEST(CheckDecomposition3dTest, ReportsAComponentOutsideTheInput) {
@@ -262,10 +257,12 @@ TEST(CheckDecomposition3dTest, ReportsConcavityAboveTau) {
   FillStats(&d);
   ExpectProblem(CheckDecomposition3d(input, d), "component 0: concavity 0.5 > tau 0.1");
   d.tau = 0.5;
-  EXPECT_TRUE(CheckDecomposition3d(input, d).ok()) << Joined(CheckDecomposition3d(input, d));
+  EXPECT_TRUE(CheckDecomposition3d(input, d).ok())
+      << acdplan::test::ProblemLines(CheckDecomposition3d(input, d));
   d.tau = 0.1;
   d.max_hulls = 1;  // A cap merged it: tau no longer binds.
-  EXPECT_TRUE(CheckDecomposition3d(input, d).ok()) << Joined(CheckDecomposition3d(input, d));
+  EXPECT_TRUE(CheckDecomposition3d(input, d).ok())
+      << acdplan::test::ProblemLines(CheckDecomposition3d(input, d));
 }
 
 TEST(CheckDecomposition3dTest, ReportsBrokenTrees) {
@@ -317,7 +314,7 @@ struct SplitSquare {
 TEST(CheckDecomposition3dTest, SurfacePatchesThatPartitionTheFacesAreValid) {
   const SplitSquare square;
   const DecompositionCheck check = CheckDecomposition3d(square.input, square.d);
-  EXPECT_TRUE(check.ok()) << Joined(check);
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecomposition3dTest, ReportsSurfaceFacesMissingOrTwice) {

@@ -8,6 +8,7 @@
 
 #include "acd/decompose2d.h"
 #include "acd/read_polygons.h"
+#include "tests/acd/problem_lines.h"
 
 namespace acdplan::acd {
 namespace {
@@ -48,12 +49,6 @@ Decomposition2d TwoTriangles() {
   return d;
 }
 
-std::string Joined(const DecompositionCheck& check) {
-  std::string all;
-  for (const std::string& line : check.problems) all += line + "\n";
-  return all;
-}
-
 // True if some problem line contains every one of `words`.
 bool HasProblem(const DecompositionCheck& check, const std::vector<std::string>& words) {
   for (const std::string& line : check.problems) {
@@ -66,7 +61,7 @@ bool HasProblem(const DecompositionCheck& check, const std::vector<std::string>&
 
 TEST(CheckDecompositionTest, SquareSplitIntoTwoTrianglesIsOk) {
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), TwoTriangles());
-  EXPECT_TRUE(check.ok()) << Joined(check);
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, SteinerPointOnASharedCutIsOk) {
@@ -78,7 +73,7 @@ TEST(CheckDecompositionTest, SteinerPointOnASharedCutIsOk) {
   d.components.push_back(MakeComponent({{0.5, 0.5}, {1, 0.5}, {1, 1}, {0.5, 1}}));
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
-  EXPECT_TRUE(check.ok()) << Joined(check);
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, ShiftedTriangleOverlaps) {
@@ -88,8 +83,10 @@ TEST(CheckDecompositionTest, ShiftedTriangleOverlaps) {
   d.components[1].centroid = Centroid(d.components[1].polygon);
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
-  EXPECT_TRUE(HasProblem(check, {"components 0 and 1 overlap"})) << Joined(check);
-  EXPECT_TRUE(HasProblem(check, {"component 1:", "outside input polygon 0"})) << Joined(check);
+  EXPECT_TRUE(HasProblem(check, {"components 0 and 1 overlap"}))
+      << acdplan::test::ProblemLines(check);
+  EXPECT_TRUE(HasProblem(check, {"component 1:", "outside input polygon 0"}))
+      << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, DuplicatedComponentOverlaps) {
@@ -98,7 +95,8 @@ TEST(CheckDecompositionTest, DuplicatedComponentOverlaps) {
   d.openings.clear();
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
-  EXPECT_TRUE(HasProblem(check, {"components 0 and 1 overlap"})) << Joined(check);
+  EXPECT_TRUE(HasProblem(check, {"components 0 and 1 overlap"}))
+      << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, OverlapThroughVerticesOnlyIsFound) {
@@ -111,7 +109,8 @@ TEST(CheckDecompositionTest, OverlapThroughVerticesOnlyIsFound) {
   d.components.back().hull = {{1, -1}, {1, 1}, {0, 1}, {0, -1}};
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition(input, d);
-  EXPECT_TRUE(HasProblem(check, {"components 0 and 1 overlap"})) << Joined(check);
+  EXPECT_TRUE(HasProblem(check, {"components 0 and 1 overlap"}))
+      << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, MissingPieceBreaksTheAreaSum) {
@@ -121,7 +120,7 @@ TEST(CheckDecompositionTest, MissingPieceBreaksTheAreaSum) {
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
   EXPECT_TRUE(HasProblem(check, {"area of components 0.5 != input area 1 (polygon 0)"}))
-      << Joined(check);
+      << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, ClockwiseComponent) {
@@ -129,7 +128,8 @@ TEST(CheckDecompositionTest, ClockwiseComponent) {
   d.components[1].polygon.outer = Reversed(d.components[1].polygon.outer);
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
-  EXPECT_TRUE(HasProblem(check, {"component 1:", "clockwise"})) << Joined(check);
+  EXPECT_TRUE(HasProblem(check, {"component 1:", "clockwise"}))
+      << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, TooFewVertices) {
@@ -137,7 +137,8 @@ TEST(CheckDecompositionTest, TooFewVertices) {
   d.components[1].polygon.outer.pop_back();
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
-  EXPECT_TRUE(HasProblem(check, {"component 1:", "2 vertices", ">= 3"})) << Joined(check);
+  EXPECT_TRUE(HasProblem(check, {"component 1:", "2 vertices", ">= 3"}))
+      << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, BowTieIsNotSimple) {
@@ -149,14 +150,14 @@ TEST(CheckDecompositionTest, BowTieIsNotSimple) {
   const DecompositionCheck check = CheckDecomposition(input, d);
   EXPECT_TRUE(
       HasProblem(check, {"component 0: not simple: edges (0,1) and (2,3) cross at (0.5, 0.5)"}))
-      << Joined(check);
+      << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, SpikeIsNotSimple) {
   Decomposition2d d;
   d.components.push_back(MakeComponent({{0, 0}, {1, 0}, {1, 1}, {1, 0.5}, {1, 1}, {0, 1}}));
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
-  EXPECT_TRUE(HasProblem(check, {"component 0: not simple"})) << Joined(check);
+  EXPECT_TRUE(HasProblem(check, {"component 0: not simple"})) << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, ComponentOutsideTheInput) {
@@ -164,8 +165,9 @@ TEST(CheckDecompositionTest, ComponentOutsideTheInput) {
   d.components.push_back(MakeComponent({{2, 0}, {3, 0}, {3, 1}}));
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
-  EXPECT_TRUE(HasProblem(check, {"component 2:", "lies outside input polygon 0"})) << Joined(check);
-  EXPECT_TRUE(HasProblem(check, {"area of components"})) << Joined(check);
+  EXPECT_TRUE(HasProblem(check, {"component 2:", "lies outside input polygon 0"}))
+      << acdplan::test::ProblemLines(check);
+  EXPECT_TRUE(HasProblem(check, {"area of components"})) << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, ComponentCoveringAnInputHole) {
@@ -177,14 +179,15 @@ TEST(CheckDecompositionTest, ComponentCoveringAnInputHole) {
   // Its deepest interior point is the hole's centre.
   EXPECT_TRUE(
       HasProblem(check, {"component 0: interior point (2, 2) lies outside input polygon 0"}))
-      << Joined(check);
-  EXPECT_TRUE(HasProblem(check, {"area of components 16 != input area 12"})) << Joined(check);
+      << acdplan::test::ProblemLines(check);
+  EXPECT_TRUE(HasProblem(check, {"area of components 16 != input area 12"}))
+      << acdplan::test::ProblemLines(check);
 
   // An off-centre hole: its boundary (or its inside sample) lies strictly inside the component.
   Polygon2d off_centre{square.outer, {{{0.5, 0.5}, {0.5, 1}, {1, 1}, {1, 0.5}}}};
   const DecompositionCheck covered = CheckDecomposition({off_centre}, d);
   EXPECT_TRUE(HasProblem(covered, {"component 0: covers a", "of input polygon 0"}))
-      << Joined(covered);
+      << acdplan::test::ProblemLines(covered);
 }
 
 TEST(CheckDecompositionTest, ComponentWithAHoleIsOkForLargeTau) {
@@ -196,11 +199,12 @@ TEST(CheckDecompositionTest, ComponentWithAHoleIsOkForLargeTau) {
   d.components[0].centroid = Centroid(square);
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition({square}, d);
-  EXPECT_TRUE(check.ok()) << Joined(check);
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
 
   d.tau = 0.0;
   const DecompositionCheck strict = CheckDecomposition({square}, d);
-  EXPECT_TRUE(HasProblem(strict, {"component 0: not convex: 1 holes left"})) << Joined(strict);
+  EXPECT_TRUE(HasProblem(strict, {"component 0: not convex: 1 holes left"}))
+      << acdplan::test::ProblemLines(strict);
 }
 
 TEST(CheckDecompositionTest, ConcaveComponentWithTauZeroIsNotConvex) {
@@ -211,9 +215,10 @@ TEST(CheckDecompositionTest, ConcaveComponentWithTauZeroIsNotConvex) {
   d.components[0].hull = {{0, 0}, {2, 0}, {2, 1}, {1, 2}, {0, 2}};
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition({Polygon2d{l_shape, {}}}, d);
-  EXPECT_TRUE(HasProblem(check, {"component 0: concavity", "> tau 0"})) << Joined(check);
+  EXPECT_TRUE(HasProblem(check, {"component 0: concavity", "> tau 0"}))
+      << acdplan::test::ProblemLines(check);
   EXPECT_TRUE(HasProblem(check, {"component 0: not convex: vertex 3 (1, 1) is a notch"}))
-      << Joined(check);
+      << acdplan::test::ProblemLines(check);
 
   d.tau = 1.0;  // Its concavity is about 0.7 under every measure.
   EXPECT_TRUE(CheckDecomposition({Polygon2d{l_shape, {}}}, d).ok());
@@ -233,21 +238,22 @@ TEST(CheckDecompositionTest, WrongHullAndCentroid) {
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
   EXPECT_TRUE(HasProblem(check, {"component 0: vertex 2 (1, 1) lies outside its hull"}))
-      << Joined(check);
+      << acdplan::test::ProblemLines(check);
   EXPECT_TRUE(HasProblem(check, {"component 1: centroid (0.5, 0.5) != Centroid(polygon)"}))
-      << Joined(check);
+      << acdplan::test::ProblemLines(check);
 
   d = TwoTriangles();
   d.components[0].hull = {{0, 0}, {1, 1}, {1, 0}};  // Clockwise.
   const DecompositionCheck clockwise = CheckDecomposition(UnitSquare(), d);
   EXPECT_TRUE(HasProblem(clockwise, {"component 0: hull is not convex counter-clockwise"}))
-      << Joined(clockwise);
+      << acdplan::test::ProblemLines(clockwise);
 
   d = TwoTriangles();
   d.components[0].hull = {{0, 0}, {2, 0}, {1, 1}};  // Contains the triangle but is too big.
   FillStats(&d);
   const DecompositionCheck loose = CheckDecomposition(UnitSquare(), d);
-  EXPECT_TRUE(HasProblem(loose, {"component 0: hull area 1 exceeds"})) << Joined(loose);
+  EXPECT_TRUE(HasProblem(loose, {"component 0: hull area 1 exceeds"}))
+      << acdplan::test::ProblemLines(loose);
 }
 
 TEST(CheckDecompositionTest, LargeConvexComponentAndItsHull) {
@@ -260,12 +266,12 @@ TEST(CheckDecompositionTest, LargeConvexComponentAndItsHull) {
   d.components.push_back(MakeComponent(circle));
   FillStats(&d);
   const DecompositionCheck check = CheckDecomposition({Polygon2d{circle, {}}}, d);
-  EXPECT_TRUE(check.ok()) << Joined(check);
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
 
   d.components[0].hull.erase(d.components[0].hull.begin() + 700);  // Vertex 700 now sticks out.
   const DecompositionCheck missing = CheckDecomposition({Polygon2d{circle, {}}}, d);
   EXPECT_TRUE(HasProblem(missing, {"component 0: vertex 700", "lies outside its hull"}))
-      << Joined(missing);
+      << acdplan::test::ProblemLines(missing);
 }
 
 TEST(CheckDecompositionTest, OpeningNotOnTheBoundary) {
@@ -274,8 +280,9 @@ TEST(CheckDecompositionTest, OpeningNotOnTheBoundary) {
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
   EXPECT_TRUE(HasProblem(
       check, {"opening 0: end point b (0.5, 0.6) is not on the boundary of component 0"}))
-      << Joined(check);
-  EXPECT_TRUE(HasProblem(check, {"opening 0: end point b", "component 1"})) << Joined(check);
+      << acdplan::test::ProblemLines(check);
+  EXPECT_TRUE(HasProblem(check, {"opening 0: end point b", "component 1"}))
+      << acdplan::test::ProblemLines(check);
 
   d = TwoTriangles();
   d.openings[0].component_b = 0;
@@ -296,17 +303,19 @@ TEST(CheckDecompositionTest, WrongStats) {
   d.stats.max_concavity = 0.5;
   d.stats.convexity = 0.9;
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
-  EXPECT_TRUE(HasProblem(check, {"stats.components 3 != 2"})) << Joined(check);
+  EXPECT_TRUE(HasProblem(check, {"stats.components 3 != 2"})) << acdplan::test::ProblemLines(check);
   EXPECT_TRUE(HasProblem(check, {"stats.max_concavity 0.5 != largest component concavity 0"}))
-      << Joined(check);
-  EXPECT_TRUE(HasProblem(check, {"stats.convexity 0.9 !=", "Eqn. 4.4"})) << Joined(check);
+      << acdplan::test::ProblemLines(check);
+  EXPECT_TRUE(HasProblem(check, {"stats.convexity 0.9 !=", "Eqn. 4.4"}))
+      << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, BadSourceIndex) {
   Decomposition2d d = TwoTriangles();
   d.components[1].source = 4;
   const DecompositionCheck check = CheckDecomposition(UnitSquare(), d);
-  EXPECT_TRUE(HasProblem(check, {"component 1: source 4 is not an input index"})) << Joined(check);
+  EXPECT_TRUE(HasProblem(check, {"component 1: source 4 is not an input index"}))
+      << acdplan::test::ProblemLines(check);
 }
 
 TEST(CheckDecompositionTest, ProblemListIsCapped) {
@@ -324,7 +333,7 @@ TEST(CheckDecompositionTest, NazcaMonkeyConvexDecomposition) {
   Decomposition2d d = Decompose2d(input, Decompose2dOptions{});
   ASSERT_GT(d.components.size(), 1u);
   const DecompositionCheck check = CheckDecomposition(input, d);
-  EXPECT_TRUE(check.ok()) << Joined(check);
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
 
   // Move one vertex of a component outward (away from its centroid) by 1% of the radius: the
   // component now overlaps a neighbour or leaves the input, and the areas no longer add up.
@@ -333,7 +342,7 @@ TEST(CheckDecompositionTest, NazcaMonkeyConvexDecomposition) {
   v += (v - c.centroid).normalized() * 0.01 * ReferenceRadius(input[0]);
   const DecompositionCheck broken = CheckDecomposition(input, d);
   EXPECT_FALSE(broken.ok());
-  EXPECT_TRUE(HasProblem(broken, {"area of components"})) << Joined(broken);
+  EXPECT_TRUE(HasProblem(broken, {"area of components"})) << acdplan::test::ProblemLines(broken);
 }
 
 }  // namespace

@@ -24,13 +24,14 @@
 #include "acd/decompose2d.h"
 #include "acd/prepare_polygon.h"
 #include "acd/read_polygons.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kAcd2d = fs::path(ACDPLAN_DATA_DIR) / "polygons" / "acd2d";
+using acdplan::test::kAcd2d;
 constexpr double kPi = 3.14159265358979323846;
 
 // A transform of the plane p -> scale * R(angle) * M p + offset, M = diag(-1, 1) if mirrored,
@@ -102,7 +103,7 @@ void PrintTo(const MetamorphicCase& c, std::ostream* os) {
       << Transforms()[c.transform].name;
 }
 
-std::vector<MetamorphicCase> Cases() {
+std::vector<MetamorphicCase> MetamorphicCases() {
   const char* files[] = {"nazca/nazca_monkey.poly", "neuron/neuron.poly", "hole3.poly",
                          "star/star3.poly",         "simple3.poly",       "fisheye.poly"};
   std::vector<MetamorphicCase> cases;
@@ -119,7 +120,7 @@ std::vector<MetamorphicCase> Cases() {
   return cases;
 }
 
-std::string CaseName(const ::testing::TestParamInfo<MetamorphicCase>& info) {
+std::string MetamorphicCaseName(const ::testing::TestParamInfo<MetamorphicCase>& info) {
   const MetamorphicCase& c = info.param;
   std::string name = fs::path(c.file).stem().string() + "_" + ToString(c.measure) + "_tau" +
                      (c.tau_rel == 0.0 ? "0" : "0_01") + "_" + Transforms()[c.transform].name;
@@ -242,7 +243,7 @@ TEST(Decompose2dMetamorphic, DefaultScoreIsScaleInvariant) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RepresentativeSet, Decompose2dMetamorphicTest,
-                         ::testing::ValuesIn(Cases()), CaseName);
+                         ::testing::ValuesIn(MetamorphicCases()), MetamorphicCaseName);
 
 }  // namespace
 }  // namespace acdplan::acd

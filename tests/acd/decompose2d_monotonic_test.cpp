@@ -16,13 +16,14 @@
 
 #include "acd/decompose2d.h"
 #include "acd/read_polygons.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kAcd2d = fs::path(ACDPLAN_DATA_DIR) / "polygons" / "acd2d";
+using acdplan::test::kAcd2d;
 
 struct MonotonicCase {
   std::string file;  // Under acd2d.
@@ -49,7 +50,7 @@ std::vector<std::string> Files() {
   return files;
 }
 
-std::vector<MonotonicCase> Cases() {
+std::vector<MonotonicCase> MonotonicCases() {
   std::vector<MonotonicCase> cases;
   for (const std::string& file : Files()) {
     for (ConcavityMeasure measure : {ConcavityMeasure::kShortestPath, ConcavityMeasure::kHybrid1,
@@ -60,7 +61,7 @@ std::vector<MonotonicCase> Cases() {
   return cases;
 }
 
-std::string CaseName(const ::testing::TestParamInfo<MonotonicCase>& info) {
+std::string MonotonicCaseName(const ::testing::TestParamInfo<MonotonicCase>& info) {
   const MonotonicCase& c = info.param;
   std::string name = fs::path(c.file).stem().string() + "_" + ToString(c.measure) + "_tau" +
                      (c.tau_rel == 0.0 ? "0" : "0_01");
@@ -116,8 +117,8 @@ TEST_P(Decompose2dMonotonicTest, ChildConcavityAtMostParents) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(HoleFree, Decompose2dMonotonicTest, ::testing::ValuesIn(Cases()),
-                         CaseName);
+INSTANTIATE_TEST_SUITE_P(HoleFree, Decompose2dMonotonicTest, ::testing::ValuesIn(MonotonicCases()),
+                         MonotonicCaseName);
 
 }  // namespace
 }  // namespace acdplan::acd

@@ -26,6 +26,7 @@
 #include "acd/prepare_polygon.h"
 #include "acd/read_polygons.h"
 #include "base/input_error.h"
+#include "tests/data_paths.h"
 #include "tests/input_error_of.h"
 
 namespace acdplan::acd {
@@ -34,7 +35,7 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-const fs::path kAcd2d = fs::path(ACDPLAN_DATA_DIR) / "polygons" / "acd2d";
+using acdplan::test::kAcd2d;
 
 constexpr double kTauRel[] = {0.0, 0.005, 0.01, 0.05, 0.1};
 constexpr ConcavityMeasure kMeasures[] = {ConcavityMeasure::kStraightLine,
@@ -56,7 +57,7 @@ void PrintTo(const PropertyCase& c, std::ostream* os) {
   *os << c.relative << " " << ToString(c.measure) << " tau_rel " << c.tau_rel;
 }
 
-std::vector<std::string> CorpusFiles() {
+std::vector<std::string> PolygonCorpusFiles() {
   std::vector<std::string> files;
   for (const fs::directory_entry& entry : fs::recursive_directory_iterator(kAcd2d)) {
     if (entry.is_regular_file() && entry.path().extension() == ".poly") {
@@ -70,9 +71,9 @@ std::vector<std::string> CorpusFiles() {
 // Every corpus file (but the two broken ones) x measure x tau_rel: 52 x 4 x 5 = 1040 cases.
 // All of them run under the sanitizers too: the 28 slowest (the 5,000-10,000-vertex files at
 // tau_rel 0) take 35 s together with ASan+UBSan, the whole suite about 2.5 minutes.
-std::vector<PropertyCase> Cases() {
+std::vector<PropertyCase> PropertyCases() {
   std::vector<PropertyCase> cases;
-  for (const std::string& path : CorpusFiles()) {
+  for (const std::string& path : PolygonCorpusFiles()) {
     if (IsKnownBroken(fs::path(path).filename().string())) continue;
     for (ConcavityMeasure measure : kMeasures) {
       for (double tau_rel : kTauRel) {
@@ -84,7 +85,7 @@ std::vector<PropertyCase> Cases() {
 }
 
 // "nazca_nazca_monkey_sp_tau0_005": letters, digits and '_' only (GoogleTest's rule).
-std::string CaseName(const ::testing::TestParamInfo<PropertyCase>& info) {
+std::string PropertyCaseName(const ::testing::TestParamInfo<PropertyCase>& info) {
   std::string name = info.param.relative;
   name = name.substr(0, name.size() - std::string(".poly").size());
   char tau[32];
@@ -131,22 +132,22 @@ TEST_P(Decompose2dPropertyTest, SucceedsAndPassesCheckDecomposition) {
   EXPECT_TRUE(check.ok()) << check.problems.size() << " problem(s):" << problems;
 }
 
-INSTANTIATE_TEST_SUITE_P(Acd2dCorpus, Decompose2dPropertyTest, ::testing::ValuesIn(Cases()),
-                         CaseName);
+INSTANTIATE_TEST_SUITE_P(Acd2dCorpus, Decompose2dPropertyTest, ::testing::ValuesIn(PropertyCases()),
+                         PropertyCaseName);
 
 TEST(Decompose2dCorpusTest, CorpusIsComplete) {
   // 54 files, bird.poly broken: 53 x 4 measures x 5 tau values = 1060 property cases.
-  EXPECT_EQ(CorpusFiles().size(), 54u);
-  EXPECT_EQ(Cases().size(), 1060u);
+  EXPECT_EQ(PolygonCorpusFiles().size(), 54u);
+  EXPECT_EQ(PropertyCases().size(), 1060u);
 }
 
-std::string ErrorOf(const std::string& path) {
-  return test::InputErrorOf([&] { ReadPolygons(path); });
+std::string CorpusErrorOf(const std::string& path) {
+  return acdplan::test::InputErrorOf([&] { ReadPolygons(path); });
 }
 
 TEST(Decompose2dCorpusTest, BirdIsRejectedAtLine47) {
   // Line 47 holds "-6.64248.788605": two numbers run together.
-  EXPECT_THAT(ErrorOf((kAcd2d / "bird.poly").string()),
+  EXPECT_THAT(CorpusErrorOf((kAcd2d / "bird.poly").string()),
               HasSubstr("bird.poly:47: malformed number '-6.64248.788605'"));
 }
 

@@ -26,6 +26,7 @@
 #include "acd/prepare_mesh.h"
 #include "base/stopwatch.h"
 #include "envs/mesh_loader.h"
+#include "tests/acd/problem_lines.h"
 #include "tests/asan_build.h"
 
 namespace acdplan::acd {
@@ -41,7 +42,7 @@ const std::set<std::string> kSanitizerSubset = {"cube-notch.obj", "torus1.obj", 
 // reason when a mesh is known to fail.
 const std::set<std::string> kSolidNotYet = {};
 
-std::vector<std::filesystem::path> CorpusFiles() {
+std::vector<std::filesystem::path> MeshCorpusFiles() {
   std::vector<std::filesystem::path> files;
   for (const auto& entry :
        std::filesystem::directory_iterator(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd")) {
@@ -49,12 +50,6 @@ std::vector<std::filesystem::path> CorpusFiles() {
   }
   std::sort(files.begin(), files.end());
   return files;
-}
-
-std::string Problems(const DecompositionCheck& check) {
-  std::string all;
-  for (const std::string& p : check.problems) all += p + "\n";
-  return all;
 }
 
 // Decomposes, checks and (with ACDPLAN_CORPUS_TABLE set) prints one table row.
@@ -74,16 +69,17 @@ void DecomposeAndCheck(const std::string& name, bool repair, const PreparedMesh&
   }
   const std::string label = name + (repair ? " repaired" : "") + " tau_rel " +
                             std::to_string(tau_rel) + (surface ? " surface" : "");
-  EXPECT_TRUE(check.ok()) << label << ":\n" << Problems(check);
+  EXPECT_TRUE(check.ok()) << label << ":\n" << acdplan::test::ProblemLines(check);
   EXPECT_EQ(d.stats.surface, surface || !prepared.solid()) << label;
   EXPECT_LE(d.stats.max_concavity, tau) << label;
 }
 
-TEST(Decompose3dCorpusTest, HoldsTheWholeVhacdSet) { EXPECT_EQ(CorpusFiles().size(), 31u); }
+TEST(Decompose3dCorpusTest, HoldsTheWholeVhacdSet) { EXPECT_EQ(MeshCorpusFiles().size(), 31u); }
 
 TEST(Decompose3dCorpusTest, SanitizerSubsetNamesCorpusMeshes) {
   std::set<std::string> names;
-  for (const std::filesystem::path& file : CorpusFiles()) names.insert(file.filename().string());
+  for (const std::filesystem::path& file : MeshCorpusFiles())
+    names.insert(file.filename().string());
   for (const std::string& name : kSanitizerSubset) EXPECT_TRUE(names.count(name)) << name;
 }
 
@@ -111,7 +107,7 @@ TEST_P(Decompose3dCorpusMesh, DecomposesAndPassesTheCheck) {
 }
 
 std::vector<std::filesystem::path> TestedFiles() {
-  const std::vector<std::filesystem::path> files = CorpusFiles();
+  const std::vector<std::filesystem::path> files = MeshCorpusFiles();
   std::vector<std::filesystem::path> tested;
   for (const std::filesystem::path& file : files) {
     if (!ACDPLAN_ASAN_BUILD || kSanitizerSubset.count(file.filename().string())) {

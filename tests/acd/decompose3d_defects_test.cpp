@@ -11,15 +11,10 @@
 #include "acd/decompose3d.h"
 #include "acd/prepare_mesh.h"
 #include "envs/mesh_loader.h"
+#include "tests/acd/problem_lines.h"
 
 namespace acdplan::acd {
 namespace {
-
-std::string Problems(const DecompositionCheck& check) {
-  std::string all;
-  for (const std::string& p : check.problems) all += p + "\n";
-  return all;
-}
 
 // Decomposes the corpus mesh `name` at tau_rel (repaired first when `repair`) and expects the
 // check to pass and every component to be within tau.
@@ -38,7 +33,8 @@ void ExpectPasses(const std::string& name, double tau_rel, bool repair) {
   EXPECT_GT(d.components.size(), 1u);
   EXPECT_LE(d.stats.max_concavity, tau);
   const DecompositionCheck check = CheckDecomposition3d(prepared, d);
-  EXPECT_TRUE(check.ok()) << name << " tau_rel " << tau_rel << ":\n" << Problems(check);
+  EXPECT_TRUE(check.ok()) << name << " tau_rel " << tau_rel << ":\n"
+                          << acdplan::test::ProblemLines(check);
 }
 
 // Cut points 1e-17 apart on a needle triangle rounded onto one position: pieces with a
@@ -74,7 +70,7 @@ TEST(Decompose3dDefectsTest, BunnySurfaceHasNoMorePatchesThanTable5) {
     EXPECT_LE(d.components.size(), table5) << "tau_rel " << tau_rel;
     EXPECT_LE(d.stats.max_concavity, tau);
     const DecompositionCheck check = CheckDecomposition3d(prepared, d);
-    EXPECT_TRUE(check.ok()) << "tau_rel " << tau_rel << ":\n" << Problems(check);
+    EXPECT_TRUE(check.ok()) << "tau_rel " << tau_rel << ":\n" << acdplan::test::ProblemLines(check);
   }
 }
 

@@ -13,6 +13,7 @@
 #include "acd/mesh_measures.h"
 #include "base/input_error.h"
 #include "solid_test_meshes.h"
+#include "tests/acd/problem_lines.h"
 #include "tests/asan_build.h"
 
 namespace acdplan::acd {
@@ -69,9 +70,7 @@ void ExpectValid(const TriangleMesh& input, const Decomposition3d& d, bool cappe
   EXPECT_EQ(seen.size(), d.components.size());
   // The independent checker agrees (closed, disjoint, inside, concavity re-measured, openings).
   const DecompositionCheck check = CheckDecomposition3d(PreparedSolid(input), d);
-  std::string problems;
-  for (const std::string& p : check.problems) problems += p + "\n";
-  EXPECT_TRUE(check.ok()) << problems;
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
   for (const Opening3d& o : d.openings) {
     EXPECT_LT(o.component_a, o.component_b);
     EXPECT_GT(o.area, 0);

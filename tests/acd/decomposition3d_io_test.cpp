@@ -16,6 +16,7 @@
 
 #include "acd/decomposition3d.h"
 #include "acd/triangle_mesh.h"
+#include "tests/occurrences.h"
 
 namespace acdplan::acd {
 namespace {
@@ -541,12 +542,6 @@ TEST(Decomposition3dToGlbTest, EmptyMeshesAreLeftOut) {
 
 // ---- SVG ----------------------------------------------------------------------------------
 
-int Count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 /// Every element is closed in order, attribute values are quoted and no '&' is left
 /// unescaped: a well-formedness check sufficient for what the writer emits.
 void ExpectWellFormed(const std::string& svg) {
@@ -557,7 +552,7 @@ void ExpectWellFormed(const std::string& svg) {
     ASSERT_NE(end, std::string::npos);
     const std::string tag = svg.substr(at + 1, end - at - 1);
     ASSERT_FALSE(tag.empty());
-    ASSERT_EQ(Count(tag, "\"") % 2, 0) << tag;
+    ASSERT_EQ(acdplan::test::Occurrences(tag, "\"") % 2, 0) << tag;
     if (tag[0] == '/') {
       ASSERT_FALSE(open.empty()) << tag;
       EXPECT_EQ(open.back(), tag.substr(1));
@@ -613,7 +608,7 @@ TEST(Decomposition3dToSvgTest, OnePolygonPerVisibleTriangleAndACaption) {
   // Back faces dropped: each cube faces the viewer with its +x, +y and +z sides, two
   // triangles each; the first cube's +x side is the opening, inside the box, dropped too.
   EXPECT_EQ(FrontFacing(d), 12);
-  EXPECT_EQ(Count(svg, "<polygon"), 10);
+  EXPECT_EQ(acdplan::test::Occurrences(svg, "<polygon"), 10);
   // Flat shading: the visible sides of a cube get different shades (the first cube shows
   // two, the second three).
   const std::vector<std::string> painted = PolygonFills(svg);
@@ -639,17 +634,17 @@ TEST(Decomposition3dToSvgTest, OnePolygonPerVisibleTriangleAndACaption) {
 TEST(Decomposition3dToSvgTest, OnlyFacesInsideAnOpeningAreInterior) {
   Decomposition3d d = TwoCubes();
   d.openings.clear();
-  EXPECT_EQ(Count(Decomposition3dToSvg(d, {"box.obj", -1.0}), "<polygon"), 12);
+  EXPECT_EQ(acdplan::test::Occurrences(Decomposition3dToSvg(d, {"box.obj", -1.0}), "<polygon"), 12);
   // An opening covering only the half y <= 0.5 of the shared side: of the first cube's two
   // triangles there (acd::Cube), the one with its centroid at y = 1/3 is interior, the one
   // at y = 2/3 is not.
   d = TwoCubes();
   d.openings[0].polygon = {{1, 0, 0}, {1, 0.5, 0}, {1, 0.5, 1}, {1, 0, 1}};
-  EXPECT_EQ(Count(Decomposition3dToSvg(d, {"box.obj", -1.0}), "<polygon"), 11);
+  EXPECT_EQ(acdplan::test::Occurrences(Decomposition3dToSvg(d, {"box.obj", -1.0}), "<polygon"), 11);
   // A plane off by more than the tolerance: nothing is interior.
   d = TwoCubes();
   for (Eigen::Vector3d& p : d.openings[0].polygon) p.x() += 1e-3;
-  EXPECT_EQ(Count(Decomposition3dToSvg(d, {"box.obj", -1.0}), "<polygon"), 12);
+  EXPECT_EQ(acdplan::test::Occurrences(Decomposition3dToSvg(d, {"box.obj", -1.0}), "<polygon"), 12);
 }
 
 TEST(Decomposition3dToSvgTest, SurfacePatchesShowBothSides) {
@@ -657,7 +652,7 @@ TEST(Decomposition3dToSvgTest, SurfacePatchesShowBothSides) {
   const std::string svg = Decomposition3dToSvg(d, {"l.obj", -1.0});
   ExpectWellFormed(svg);
   EXPECT_EQ(FrontFacing(d), 2);
-  EXPECT_EQ(Count(svg, "<polygon"), 4);
+  EXPECT_EQ(acdplan::test::Occurrences(svg, "<polygon"), 4);
   EXPECT_NE(svg.find("surface ACD, 2 components"), std::string::npos);
   EXPECT_NE(svg.find("max hulls 4"), std::string::npos);
   EXPECT_EQ(svg.find("tau_rel"), std::string::npos);
@@ -687,7 +682,7 @@ TEST(Decomposition3dToSvgTest, PaintsFarTrianglesFirst) {
 TEST(Decomposition3dToSvgTest, EmptyDecompositionStillRenders) {
   const std::string svg = Decomposition3dToSvg(Decomposition3d{}, {});
   ExpectWellFormed(svg);
-  EXPECT_EQ(Count(svg, "<polygon"), 0);
+  EXPECT_EQ(acdplan::test::Occurrences(svg, "<polygon"), 0);
   EXPECT_EQ(svg.find("nan"), std::string::npos);
   EXPECT_EQ(svg.find("inf"), std::string::npos);
 }

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "acd/decomposition2d.h"
+#include "tests/occurrences.h"
 
 namespace acdplan::acd {
 namespace {
@@ -180,22 +181,17 @@ TEST(DecompositionToJsonTest, EmptyDecompositionIsValid) {
   EXPECT_EQ(j.at("measure"), "sp");
 }
 
-int Count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 TEST(DecompositionToSvgTest, DrawsComponentsOpeningsNotchesAndCaption) {
   const std::string svg = DecompositionToSvg(HandBuilt(), {"shapes/l&r.poly", 0.025});
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_NE(svg.find("viewBox=\""), std::string::npos);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
-  EXPECT_EQ(Count(svg, "<path class=\"component\""), 3);
-  EXPECT_EQ(Count(svg, "<path"), 3);
-  EXPECT_EQ(Count(svg, "<line"), 1);                         // the opening
-  EXPECT_EQ(Count(svg, "class=\"most-concave-notch\""), 1);  // root 0 (root 1 is not split)
-  EXPECT_EQ(Count(svg, "class=\"resolved-notch\""), 1);
+  EXPECT_EQ(acdplan::test::Occurrences(svg, "<path class=\"component\""), 3);
+  EXPECT_EQ(acdplan::test::Occurrences(svg, "<path"), 3);
+  EXPECT_EQ(acdplan::test::Occurrences(svg, "<line"), 1);  // the opening
+  EXPECT_EQ(acdplan::test::Occurrences(svg, "class=\"most-concave-notch\""),
+            1);  // root 0 (root 1 is not split)
+  EXPECT_EQ(acdplan::test::Occurrences(svg, "class=\"resolved-notch\""), 1);
   // The hole is its own subpath, left open by the even-odd rule.
   EXPECT_NE(svg.find("fill-rule=\"evenodd\""), std::string::npos);
   // Distinct fills.

@@ -42,7 +42,7 @@ TEST(EdgeGridTest, AnyNearReportsEveryNearEdgeOnce) {
     // Plain copies, not structured bindings: C++17 lambdas cannot capture those.
     const Point2d origin = frames[trial % frames.size()].first;
     const double step = frames[trial % frames.size()].second;
-    const Polygon2d polygon = test::RandomRings(rng, origin, step, false);
+    const Polygon2d polygon = acdplan::test::RandomRings(rng, origin, step, false);
     const EdgeGrid grid(polygon);
     for (int q = 0; q < 10; ++q) {
       auto anywhere = [&]() {
@@ -88,7 +88,7 @@ TEST(EdgeGridTest, AnyNearReportsEveryNearEdgeOnce) {
 TEST(EdgeGridTest, AnyNearStopsAtTheFirstEdgeTaken) {
   RandomEngine rng(22);
   for (int trial = 0; trial < 100; ++trial) {
-    const Polygon2d polygon = test::RandomRings(rng, Point2d(2.0, 7.0), 3.0, false);
+    const Polygon2d polygon = acdplan::test::RandomRings(rng, Point2d(2.0, 7.0), 3.0, false);
     const EdgeGrid grid(polygon);
     const Point2d a = polygon.outer.front();
     const Point2d b = polygon.outer[polygon.outer.size() / 2];

@@ -15,13 +15,13 @@ namespace {
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-std::vector<Polygon2d> Read(const std::string& text) {
+std::vector<Polygon2d> GeoJsonOf(const std::string& text) {
   std::istringstream in(text);
   return ReadGeoJson(in, "shape.geojson");
 }
 
-std::string ErrorOf(const std::string& text) {
-  return test::InputErrorOf([&] { Read(text); });
+std::string GeoJsonErrorOf(const std::string& text) {
+  return acdplan::test::InputErrorOf([&] { GeoJsonOf(text); });
 }
 
 const char* const kSquareWithHole =
@@ -29,7 +29,7 @@ const char* const kSquareWithHole =
                                            [[1,1],[1,2],[2,2],[2,1],[1,1]]]})";
 
 TEST(GeoJsonReaderTest, ReadsPolygonWithHoleDroppingClosingPositions) {
-  const std::vector<Polygon2d> polygons = Read(kSquareWithHole);
+  const std::vector<Polygon2d> polygons = GeoJsonOf(kSquareWithHole);
   ASSERT_EQ(polygons.size(), 1u);
   EXPECT_EQ(polygons[0].outer, Ring2d({{0, 0}, {4, 0}, {4, 4}, {0, 4}}));
   ASSERT_EQ(polygons[0].holes.size(), 1u);
@@ -45,7 +45,7 @@ TEST(GeoJsonReaderTest, ReadsFeatureCollectionMultiPolygonAndGeometryCollection)
       {"type": "Feature", "geometry": null},
       {"type": "Feature", "geometry": {"type": "GeometryCollection", "geometries": [
         {"type": "Polygon", "coordinates": [[[0,0],[2,0],[2,2],[0,0]]]}]}}]})";
-  const std::vector<Polygon2d> polygons = Read(text);
+  const std::vector<Polygon2d> polygons = GeoJsonOf(text);
   ASSERT_EQ(polygons.size(), 4u);
   EXPECT_EQ(polygons[0].holes.size(), 1u);
   EXPECT_EQ(polygons[1].outer, Ring2d({{0, 0}, {1, 0}, {1, 1}}));  // z ignored
@@ -54,43 +54,47 @@ TEST(GeoJsonReaderTest, ReadsFeatureCollectionMultiPolygonAndGeometryCollection)
 }
 
 TEST(GeoJsonReaderTest, UnsupportedTypeNamesElementPath) {
-  EXPECT_EQ(ErrorOf(R"({"type": "FeatureCollection", "features": [
+  EXPECT_EQ(GeoJsonErrorOf(R"({"type": "FeatureCollection", "features": [
       {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,0]]]}},
       {"type": "Feature", "geometry": null},
       {"type": "Feature", "geometry": {"type": "LineString", "coordinates": [[0,0],[1,1]]}}]})"),
             "shape.geojson: features[2].geometry: unsupported type 'LineString' (expected "
             "Polygon, MultiPolygon or GeometryCollection)");
-  EXPECT_THAT(ErrorOf(R"({"type": "Point", "coordinates": [0, 0]})"),
+  EXPECT_THAT(GeoJsonErrorOf(R"({"type": "Point", "coordinates": [0, 0]})"),
               HasSubstr("shape.geojson: root: unsupported type 'Point'"));
 }
 
 TEST(GeoJsonReaderTest, StructureErrorsNameElementPath) {
-  EXPECT_THAT(ErrorOf(R"({"coordinates": []})"),
+  EXPECT_THAT(GeoJsonErrorOf(R"({"coordinates": []})"),
               HasSubstr("shape.geojson: root: missing member 'type'"));
-  EXPECT_THAT(ErrorOf(R"({"type": "Polygon", "coordinates": [[[0,0],[1,0],["a",1],[0,0]]]})"),
-              HasSubstr("shape.geojson: coordinates[0][2][0]: expected a number, found string"));
-  EXPECT_THAT(ErrorOf(R"({"type": "Polygon", "coordinates": [[[0,0],[1],[1,1],[0,0]]]})"),
+  EXPECT_THAT(
+      GeoJsonErrorOf(R"({"type": "Polygon", "coordinates": [[[0,0],[1,0],["a",1],[0,0]]]})"),
+      HasSubstr("shape.geojson: coordinates[0][2][0]: expected a number, found string"));
+  EXPECT_THAT(GeoJsonErrorOf(R"({"type": "Polygon", "coordinates": [[[0,0],[1],[1,1],[0,0]]]})"),
               HasSubstr("shape.geojson: coordinates[0][1]: expected a position [x, y]"));
-  EXPECT_THAT(ErrorOf(R"({"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[1,1],[0,0]]],
+  EXPECT_THAT(
+      GeoJsonErrorOf(R"({"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[1,1],[0,0]]],
                                                                 [[[0,0],[1,0],[1,1]]]]})"),
-              HasSubstr("shape.geojson: coordinates[1][0]: ring is not closed"));
+      HasSubstr("shape.geojson: coordinates[1][0]: ring is not closed"));
   // nlohmann::json rejects numbers that overflow a double while parsing.
-  EXPECT_THAT(ErrorOf(R"({"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1e999],[0,0]]]})"),
-              AllOf(HasSubstr("shape.geojson: invalid JSON"), HasSubstr("1e999")));
-  EXPECT_THAT(ErrorOf(R"({"type": "FeatureCollection", "features": [{"type": "Polygon"}]})"),
+  EXPECT_THAT(
+      GeoJsonErrorOf(R"({"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1e999],[0,0]]]})"),
+      AllOf(HasSubstr("shape.geojson: invalid JSON"), HasSubstr("1e999")));
+  EXPECT_THAT(GeoJsonErrorOf(R"({"type": "FeatureCollection", "features": [{"type": "Polygon"}]})"),
               HasSubstr("shape.geojson: features[0]: expected a Feature"));
   // A feature whose "type" is not a string (found by fuzz/fuzz_geojson_reader, which stopped on
   // nlohmann::json's own type_error; fuzz/corpus/geojson_reader/regression-feature-type-object).
   for (const char* type : {R"({"name": "a"})", "[]", "1", "null", "true"}) {
-    EXPECT_EQ(ErrorOf(std::string(R"({"type": "FeatureCollection", "features": [{"type": )") +
-                      type + R"(, "geometry": null}]})"),
-              "shape.geojson: features[0]: expected a Feature")
+    EXPECT_EQ(
+        GeoJsonErrorOf(std::string(R"({"type": "FeatureCollection", "features": [{"type": )") +
+                       type + R"(, "geometry": null}]})"),
+        "shape.geojson: features[0]: expected a Feature")
         << type;
   }
 }
 
 TEST(GeoJsonReaderTest, InvalidJsonNamesPosition) {
-  EXPECT_THAT(ErrorOf("{\"type\": \"Polygon\",\n \"coordinates\": [[[0,0],]]}"),
+  EXPECT_THAT(GeoJsonErrorOf("{\"type\": \"Polygon\",\n \"coordinates\": [[[0,0],]]}"),
               HasSubstr("shape.geojson: invalid JSON: parse error at line 2"));
 }
 

@@ -65,7 +65,7 @@ TEST(NearestBoundaryTest, OffersEveryPointInTheOrderOfASort) {
                                                           {Point2d(0.25, 0.0), 1e-9}};
   for (int trial = 0; trial < 300; ++trial) {
     const auto& [origin, step] = frames[trial % frames.size()];
-    const Polygon2d polygon = test::RandomRings(rng, origin, step, true);
+    const Polygon2d polygon = acdplan::test::RandomRings(rng, origin, step, true);
     const EdgeGrid grid(polygon);
     std::vector<char> skip(polygon.holes.size());
     for (char& s : skip) s = UniformIndex(rng, 3) == 0 ? 1 : 0;
@@ -104,7 +104,7 @@ TEST(NearestBoundaryTest, ReturnsTheFirstPointAccepted) {
   RandomEngine rng(12);
   for (int trial = 0; trial < 200; ++trial) {
     const Polygon2d polygon =
-        test::RandomRings(rng, Point2d(3.0, -2.0), trial % 2 == 0 ? 1.0 : 1e4, true);
+        acdplan::test::RandomRings(rng, Point2d(3.0, -2.0), trial % 2 == 0 ? 1.0 : 1e4, true);
     const EdgeGrid grid(polygon);
     const std::vector<char> skip(polygon.holes.size(), 0);
     const Point2d p = polygon.outer[UniformIndex(rng, polygon.outer.size())];

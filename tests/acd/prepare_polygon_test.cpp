@@ -15,13 +15,13 @@
 namespace acdplan::acd {
 namespace {
 
-using test::SquareRing;
+using acdplan::test::SquareRing;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
 // The message of the acdplan::InputError PreparePolygon() throws, or "" if it does not throw.
-std::string ErrorOf(const Polygon2d& raw) {
-  return test::InputErrorOf([&] { PreparePolygon(raw, "test.poly: polygon 0"); });
+std::string PreparePolygonErrorOf(const Polygon2d& raw) {
+  return acdplan::test::InputErrorOf([&] { PreparePolygon(raw, "test.poly: polygon 0"); });
 }
 
 TEST(PreparePolygonTest, KeepsCleanCounterClockwiseSquare) {
@@ -69,11 +69,12 @@ TEST(PreparePolygonTest, AcceptsLargeAndSmallScales) {
 TEST(PreparePolygonTest, RejectsNonFiniteCoordinate) {
   Polygon2d raw{SquareRing(0, 0, 1), {SquareRing(0.2, 0.2, 0.1)}};
   raw.holes[0][2].y() = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THAT(ErrorOf(raw),
+  EXPECT_THAT(PreparePolygonErrorOf(raw),
               AllOf(HasSubstr("test.poly: polygon 0: hole 0: vertex 2"), HasSubstr("not finite")));
   raw.holes[0][2].y() = 0.25;
   raw.outer[1].x() = std::numeric_limits<double>::infinity();
-  EXPECT_THAT(ErrorOf(raw), AllOf(HasSubstr("outer ring: vertex 1"), HasSubstr("not finite")));
+  EXPECT_THAT(PreparePolygonErrorOf(raw),
+              AllOf(HasSubstr("outer ring: vertex 1"), HasSubstr("not finite")));
 }
 
 // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-overflowing-coordinate.wkt):
@@ -82,27 +83,28 @@ TEST(PreparePolygonTest, RejectsNonFiniteCoordinate) {
 // polygon is prepared.
 TEST(PreparePolygonTest, RejectsCoordinatesWhoseProductsOverflow) {
   Polygon2d raw{{{0, 0}, {1, 4}, {1, 2}, {5e185, 199}, {0, 4}}, {}};
-  EXPECT_THAT(ErrorOf(raw), AllOf(HasSubstr("test.poly: polygon 0: outer ring: vertex 3"),
-                                  HasSubstr("is too far from the origin (|coordinate| > 1e100")));
+  EXPECT_THAT(PreparePolygonErrorOf(raw),
+              AllOf(HasSubstr("test.poly: polygon 0: outer ring: vertex 3"),
+                    HasSubstr("is too far from the origin (|coordinate| > 1e100")));
   raw.outer[3] = {0.5, -1e101};
-  EXPECT_THAT(ErrorOf(raw), HasSubstr("outer ring: vertex 3"));
+  EXPECT_THAT(PreparePolygonErrorOf(raw), HasSubstr("outer ring: vertex 3"));
   raw.outer[3] = {1e100, 199};
   EXPECT_NO_THROW(PreparePolygon(raw, "w"));  // Decompose2dTest decomposes it.
 }
 
 TEST(PreparePolygonTest, RejectsTooFewVertices) {
-  EXPECT_THAT(ErrorOf({{{0, 0}, {1, 1}}, {}}),
+  EXPECT_THAT(PreparePolygonErrorOf({{{0, 0}, {1, 1}}, {}}),
               AllOf(HasSubstr("test.poly: polygon 0: outer ring"), HasSubstr("fewer than 3")));
   // Collinear points clean down to a segment.
-  EXPECT_THAT(ErrorOf({{{0, 0}, {1, 1}, {2, 2}, {3, 3}}, {}}),
+  EXPECT_THAT(PreparePolygonErrorOf({{{0, 0}, {1, 1}, {2, 2}, {3, 3}}, {}}),
               AllOf(HasSubstr("outer ring"), HasSubstr("fewer than 3")));
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {{{1, 1}, {1, 1}, {2, 2}}}}),
+  EXPECT_THAT(PreparePolygonErrorOf({SquareRing(0, 0, 4), {{{1, 1}, {1, 1}, {2, 2}}}}),
               AllOf(HasSubstr("hole 0"), HasSubstr("fewer than 3")));
 }
 
 TEST(PreparePolygonTest, RejectsSelfIntersectingOuterRingNamingEdgesAndPoint) {
   // A bow tie: edges (0,1) and (2,3) cross at (1.5, 1.5).
-  EXPECT_THAT(ErrorOf({{{0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}),
+  EXPECT_THAT(PreparePolygonErrorOf({{{0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}),
               AllOf(HasSubstr("test.poly: polygon 0: outer ring is not simple"),
                     HasSubstr("edges (0,1) and (2,3) intersect at (1.5, 1.5)")));
 }
@@ -115,48 +117,50 @@ TEST(PreparePolygonTest, RejectsCrossingAtAPointThatIsNotADouble) {
   Ring2d ring = {{0, 0}, {1, 0}, {1, 2}, {5, 4}};
   for (int reversed = 0; reversed < 2; ++reversed) {
     for (int rotation = 0; rotation < 4; ++rotation) {
-      EXPECT_THAT(ErrorOf({ring, {}}), AllOf(HasSubstr("test.poly: polygon 0: outer ring is not "
-                                                       "simple: edges"),
-                                             HasSubstr("intersect at (1, 0.8)")))
+      EXPECT_THAT(PreparePolygonErrorOf({ring, {}}),
+                  AllOf(HasSubstr("test.poly: polygon 0: outer ring is not "
+                                  "simple: edges"),
+                        HasSubstr("intersect at (1, 0.8)")))
           << "rotation " << rotation << ", reversed " << reversed;
       std::rotate(ring.begin(), ring.begin() + 1, ring.end());
     }
     ring = Reversed(ring);
   }
   // The WKT the fuzzer found: "5 4\v 0 4" is x y z m, then (0 0) twice closes the ring.
-  EXPECT_EQ(ErrorOf({{{0, 0}, {1, 0}, {1, 2}, {5, 4}, {0, 0}, {0, 0}}, {}}),
+  EXPECT_EQ(PreparePolygonErrorOf({{{0, 0}, {1, 0}, {1, 2}, {5, 4}, {0, 0}, {0, 0}}, {}}),
             "test.poly: polygon 0: outer ring is not simple: edges (1,2) and (3,0) intersect at "
             "(1, 0.8)");
 }
 
 TEST(PreparePolygonTest, VertexIndicesAreThoseOfTheInput) {
   // The same crossing with a duplicate vertex: indices still refer to the input.
-  EXPECT_THAT(ErrorOf({{{0, 0}, {0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}),
+  EXPECT_THAT(PreparePolygonErrorOf({{{0, 0}, {0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}),
               HasSubstr("edges (0,2) and (3,4) intersect at (1.5, 1.5)"));
 }
 
 TEST(PreparePolygonTest, RejectsSelfIntersectingHole) {
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 10), {{{1, 1}, {3, 3}, {4, 1}, {1, 4}}}}),
+  EXPECT_THAT(PreparePolygonErrorOf({SquareRing(0, 0, 10), {{{1, 1}, {3, 3}, {4, 1}, {1, 4}}}}),
               AllOf(HasSubstr("hole 0 is not simple"), HasSubstr("intersect at (2.5, 2.5)")));
 }
 
 TEST(PreparePolygonTest, RejectsHoleCrossingOuterRing) {
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {SquareRing(3, 1, 2)}}),
+  EXPECT_THAT(PreparePolygonErrorOf({SquareRing(0, 0, 4), {SquareRing(3, 1, 2)}}),
               AllOf(HasSubstr("hole 0 touches or crosses the outer ring"),
                     HasSubstr("strictly inside"), HasSubstr("intersect at (4, 3)")));
 }
 
 TEST(PreparePolygonTest, RejectsHoleOutsideOuterRing) {
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {SquareRing(1, 1, 1), SquareRing(10, 10, 1)}}),
-              AllOf(HasSubstr("hole 1 is not inside the outer ring"), HasSubstr("is outside")));
+  EXPECT_THAT(
+      PreparePolygonErrorOf({SquareRing(0, 0, 4), {SquareRing(1, 1, 1), SquareRing(10, 10, 1)}}),
+      AllOf(HasSubstr("hole 1 is not inside the outer ring"), HasSubstr("is outside")));
   // A hole around the outer ring is not inside it either.
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {SquareRing(-1, -1, 6)}}),
+  EXPECT_THAT(PreparePolygonErrorOf({SquareRing(0, 0, 4), {SquareRing(-1, -1, 6)}}),
               HasSubstr("hole 0 is not inside the outer ring"));
 }
 
 TEST(PreparePolygonTest, RejectsOverlappingHoles) {
   EXPECT_THAT(
-      ErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 3), SquareRing(2, 2, 3)}}),
+      PreparePolygonErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 3), SquareRing(2, 2, 3)}}),
       AllOf(HasSubstr("hole 0 and hole 1 touch or overlap"), HasSubstr("holes must be disjoint")));
 }
 
@@ -165,16 +169,18 @@ TEST(PreparePolygonTest, RejectsOverlappingHoles) {
 // PreparePolygon(), which must return one polygon, says so.
 TEST(PreparePolygonTest, RejectsOverlappingHoleEdgesAndNamesTouchingAsSeveralPolygons) {
   // Sharing the edge x = 4 partly.
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 3), SquareRing(4, 2, 3)}}),
-              HasSubstr("hole 0 and hole 1 touch or overlap"));
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {{{2, 0}, {3, 1}, {1, 1}}}}),
+  EXPECT_THAT(
+      PreparePolygonErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 3), SquareRing(4, 2, 3)}}),
+      HasSubstr("hole 0 and hole 1 touch or overlap"));
+  EXPECT_THAT(PreparePolygonErrorOf({SquareRing(0, 0, 4), {{{2, 0}, {3, 1}, {1, 1}}}}),
               HasSubstr("test.poly: polygon 0: rings touch at points, which makes the polygon 2 "
                         "polygons where one is required"));
 }
 
 TEST(PreparePolygonTest, RejectsNestedHoles) {
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 6), SquareRing(2, 2, 1)}}),
-              AllOf(HasSubstr("hole 1 lies inside hole 0"), HasSubstr("nested")));
+  EXPECT_THAT(
+      PreparePolygonErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 6), SquareRing(2, 2, 1)}}),
+      AllOf(HasSubstr("hole 1 lies inside hole 0"), HasSubstr("nested")));
 }
 
 TEST(PreparePolygonTest, AcceptsManyDisjointHoles) {

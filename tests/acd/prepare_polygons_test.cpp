@@ -21,13 +21,13 @@
 namespace acdplan::acd {
 namespace {
 
-using test::SquareRing;
-using test::TotalArea;
+using acdplan::test::SquareRing;
+using acdplan::test::TotalArea;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-std::string ErrorOf(const Polygon2d& raw) {
-  return test::InputErrorOf([&] { PreparePolygons(raw, "test.poly: polygon 0"); });
+std::string PreparePolygonsErrorOf(const Polygon2d& raw) {
+  return acdplan::test::InputErrorOf([&] { PreparePolygons(raw, "test.poly: polygon 0"); });
 }
 
 // Prepares `raw`, checks that every piece is strictly valid (PreparePolygon() keeps it as it
@@ -100,28 +100,30 @@ TEST(PreparePolygonsTest, AcceptsHoleTouchingAtTwoPointsThatSplitNothing) {
 
 TEST(PreparePolygonsTest, RejectsWhatStaysInvalid) {
   // Crossing rings keep the strict messages.
-  EXPECT_THAT(ErrorOf({{{0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}),
+  EXPECT_THAT(PreparePolygonsErrorOf({{{0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}),
               AllOf(HasSubstr("test.poly: polygon 0: outer ring is not simple"),
                     HasSubstr("edges (0,1) and (2,3) intersect at (1.5, 1.5)")));
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {SquareRing(3, 1, 2)}}),
+  EXPECT_THAT(PreparePolygonsErrorOf({SquareRing(0, 0, 4), {SquareRing(3, 1, 2)}}),
               AllOf(HasSubstr("hole 0 touches or crosses the outer ring"),
                     HasSubstr("intersect at (4, 3)")));
   // Overlapping collinear edges (holes sharing part of the edge x = 4).
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 3), SquareRing(4, 2, 3)}}),
-              AllOf(HasSubstr("hole 0 and hole 1 touch or overlap"), HasSubstr("overlap from")));
+  EXPECT_THAT(
+      PreparePolygonsErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 3), SquareRing(4, 2, 3)}}),
+      AllOf(HasSubstr("hole 0 and hole 1 touch or overlap"), HasSubstr("overlap from")));
   // A hole outside, touching the outer ring at a vertex.
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {SquareRing(4, 4, 1)}}),
+  EXPECT_THAT(PreparePolygonsErrorOf({SquareRing(0, 0, 4), {SquareRing(4, 4, 1)}}),
               HasSubstr("test.poly: polygon 0: hole 0 is not inside the outer ring: its vertex 3 "
                         "(4, 5) is outside"));
   // A hole inside another, touching it.
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 10), {SquareRing(1, 1, 6), {{1, 1}, {2, 3}, {3, 2}}}}),
+  EXPECT_THAT(PreparePolygonsErrorOf(
+                  {SquareRing(0, 0, 10), {SquareRing(1, 1, 6), {{1, 1}, {2, 3}, {3, 2}}}}),
               HasSubstr("test.poly: polygon 0: hole 1 lies inside hole 0 (holes must not be "
                         "nested)"));
   // A hole touching the outer ring at two points cuts the interior in two.
-  EXPECT_THAT(ErrorOf({SquareRing(0, 0, 4), {{{0, 2}, {2, 1}, {4, 2}, {2, 3}}}}),
+  EXPECT_THAT(PreparePolygonsErrorOf({SquareRing(0, 0, 4), {{{0, 2}, {2, 1}, {4, 2}, {2, 3}}}}),
               HasSubstr("test.poly: polygon 0: hole 0 disconnects the interior"));
   // Two lobes that cross at their shared vertex (a bow tie through a vertex).
-  EXPECT_THAT(ErrorOf({{{2, 2}, {4, 0}, {4, 4}, {2, 2}, {0, 0}, {0, 5}}, {}}),
+  EXPECT_THAT(PreparePolygonsErrorOf({{{2, 2}, {4, 0}, {4, 4}, {2, 2}, {0, 0}, {0, 5}}, {}}),
               HasSubstr("test.poly: polygon 0: outer ring crosses itself at the shared vertex "
                         "(2, 2)"));
 }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "tests/data_paths.h"
 #include "tests/input_error_of.h"
 #include "tests/scratch_dir.h"
 
@@ -17,15 +18,15 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-const fs::path kAcd2d = fs::path(ACDPLAN_DATA_DIR) / "polygons" / "acd2d";
+using acdplan::test::kAcd2d;
 
-std::string ErrorOf(const std::string& path) {
-  return test::InputErrorOf([&] { ReadPolygons(path); });
+std::string ReadErrorOf(const std::string& path) {
+  return acdplan::test::InputErrorOf([&] { ReadPolygons(path); });
 }
 
 // A file in the process's scratch folder.
 std::string WriteTemp(const std::string& name, const std::string& text) {
-  static const test::ScratchDir dir("acdplan_read_polygons_test");  // Removed at exit.
+  static const acdplan::test::ScratchDir dir("acdplan_read_polygons_test");  // Removed at exit.
   return dir.Write(name, text);
 }
 
@@ -47,11 +48,12 @@ TEST(ReadPolygonsTest, DispatchesByExtensionCaseInsensitiveAndPrepares) {
 
 TEST(ReadPolygonsTest, FileErrors) {
   EXPECT_THAT(
-      ErrorOf("/nonexistent/shape.poly"),
+      ReadErrorOf("/nonexistent/shape.poly"),
       HasSubstr("/nonexistent/shape.poly: cannot read the file: No such file or directory"));
-  EXPECT_THAT(ErrorOf("shape.svg"), HasSubstr("shape.svg: unknown polygon file extension '.svg'"));
+  EXPECT_THAT(ReadErrorOf("shape.svg"),
+              HasSubstr("shape.svg: unknown polygon file extension '.svg'"));
   const std::string empty = WriteTemp("empty.wkt", "POLYGON EMPTY");
-  EXPECT_THAT(ErrorOf(empty), HasSubstr("empty.wkt: no polygon in file"));
+  EXPECT_THAT(ReadErrorOf(empty), HasSubstr("empty.wkt: no polygon in file"));
   fs::remove(empty);
 }
 
@@ -59,8 +61,8 @@ TEST(ReadPolygonsTest, GeometryErrorsNameFileAndPolygon) {
   // The second polygon is a bow tie.
   const std::string path =
       WriteTemp("bowtie.wkt", "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((0 0, 2 2, 3 0, 0 3, 0 0)))");
-  EXPECT_THAT(ErrorOf(path), HasSubstr("bowtie.wkt: polygon 1: outer ring is not simple: edges "
-                                       "(0,1) and (2,3) intersect at (1.5, 1.5)"));
+  EXPECT_THAT(ReadErrorOf(path), HasSubstr("bowtie.wkt: polygon 1: outer ring is not simple: edges "
+                                           "(0,1) and (2,3) intersect at (1.5, 1.5)"));
   fs::remove(path);
 }
 
@@ -72,9 +74,9 @@ TEST(ReadPolygonsTest, EveryAcd2dPolyFileValidatesExceptKnownDefects) {
     const std::string name = entry.path().filename().string();
     const std::string path = entry.path().string();
     if (name == "bird.poly") {
-      EXPECT_THAT(ErrorOf(path), HasSubstr("bird.poly:47: malformed number '-6.64248.788605'"));
+      EXPECT_THAT(ReadErrorOf(path), HasSubstr("bird.poly:47: malformed number '-6.64248.788605'"));
     } else {
-      EXPECT_EQ(ErrorOf(path), "") << name;
+      EXPECT_EQ(ReadErrorOf(path), "") << name;
     }
   }
   EXPECT_EQ(files, 54);
@@ -97,7 +99,7 @@ TEST(ReadPolygonsTest, Simple5ReadsAllItsChainsWithOneWarning) {
 
 TEST(ReadPolygonsTest, RepairOptionRepairsAndReportsChanges) {
   const std::string path = WriteTemp("tile.wkt", "POLYGON ((0 0, 2 2, 3 0, 0 3, 0 0))");
-  EXPECT_THAT(ErrorOf(path), HasSubstr("tile.wkt: polygon 0: outer ring is not simple"));
+  EXPECT_THAT(ReadErrorOf(path), HasSubstr("tile.wkt: polygon 0: outer ring is not simple"));
   std::vector<std::string> notes;
   ReadPolygonsOptions options;
   options.repair = true;

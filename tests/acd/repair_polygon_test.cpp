@@ -16,8 +16,8 @@
 namespace acdplan::acd {
 namespace {
 
-using test::SquareRing;
-using test::TotalArea;
+using acdplan::test::SquareRing;
+using acdplan::test::TotalArea;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "acd/check_decomposition3d.h"
+#include "tests/acd/problem_lines.h"
 
 namespace acdplan::acd {
 namespace {
@@ -42,17 +43,11 @@ PreparedMesh Prepared(const TriangleMesh& mesh, bool open) {
   return prepared;
 }
 
-std::string Problems(const DecompositionCheck& check) {
-  std::string all;
-  for (const std::string& p : check.problems) all += p + "\n";
-  return all;
-}
-
 // Decomposes, checks with CheckDecomposition3d and every component against tau.
 Decomposition3d DecomposeAndCheck(const PreparedMesh& input, double tau) {
   const Decomposition3d d = internal::DecomposeSurface(input, tau);
   const DecompositionCheck check = CheckDecomposition3d(input, d);
-  EXPECT_TRUE(check.ok()) << Problems(check);
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
   EXPECT_TRUE(d.stats.surface);
   EXPECT_EQ(d.roots.size(), input.parts.size());
   for (const Component3d& c : d.components) {

@@ -14,18 +14,18 @@ namespace {
 
 using ::testing::HasSubstr;
 
-std::vector<Polygon2d> Read(const std::string& text) {
+std::vector<Polygon2d> WktOf(const std::string& text) {
   std::istringstream in(text);
   return ReadWkt(in, "shape.wkt");
 }
 
-std::string ErrorOf(const std::string& text) {
-  return test::InputErrorOf([&] { Read(text); });
+std::string WktErrorOf(const std::string& text) {
+  return acdplan::test::InputErrorOf([&] { WktOf(text); });
 }
 
 TEST(WktReaderTest, ReadsPolygonWithHoleDroppingClosingPoints) {
   const std::vector<Polygon2d> polygons =
-      Read("POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1))");
+      WktOf("POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1))");
   ASSERT_EQ(polygons.size(), 1u);
   EXPECT_EQ(polygons[0].outer, Ring2d({{0, 0}, {4, 0}, {4, 4}, {0, 4}}));
   ASSERT_EQ(polygons[0].holes.size(), 1u);
@@ -33,7 +33,7 @@ TEST(WktReaderTest, ReadsPolygonWithHoleDroppingClosingPoints) {
 }
 
 TEST(WktReaderTest, ReadsMultiPolygonCollectionCaseAndZ) {
-  const std::vector<Polygon2d> polygons = Read(
+  const std::vector<Polygon2d> polygons = WktOf(
       "multipolygon (((0 0, 1 0, 1 1, 0 0)), ((5 5, 6 5, 6 6, 5 5), (5.2 5.1, 5.8 5.1, 5.8 5.7, "
       "5.2 5.1)))\n"
       "GEOMETRYCOLLECTION (POLYGON Z ((0 0 1, 1e1 0 1, 10 +10 1, 0 0 1)), POLYGON EMPTY)\n"
@@ -45,30 +45,30 @@ TEST(WktReaderTest, ReadsMultiPolygonCollectionCaseAndZ) {
 }
 
 TEST(WktReaderTest, SyntaxErrorsNameLineColumnAndRule) {
-  EXPECT_THAT(ErrorOf("POLYGON 0 0, 1 0"),
+  EXPECT_THAT(WktErrorOf("POLYGON 0 0, 1 0"),
               HasSubstr("shape.wkt: expected '(' at line 1, column 9, found '0'"));
-  EXPECT_THAT(ErrorOf("POLYGON ((0 0, 1 0, 1 1, 0 0)\n"),
+  EXPECT_THAT(WktErrorOf("POLYGON ((0 0, 1 0, 1 1, 0 0)\n"),
               HasSubstr("shape.wkt: expected ',' or ')' after a ring at line 2, column 1, "
                         "found end of input"));
-  EXPECT_THAT(ErrorOf("\nLINESTRING (0 0, 1 1)"),
+  EXPECT_THAT(WktErrorOf("\nLINESTRING (0 0, 1 1)"),
               HasSubstr("expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION (other geometry "
                         "types are not supported) at line 2, column 1, found 'LINESTRING'"));
-  EXPECT_THAT(ErrorOf(""), HasSubstr("shape.wkt: expected POLYGON"));
-  EXPECT_THAT(ErrorOf("POLYGON ((0 0 1 2 3, 1 0, 1 1, 0 0))"),
+  EXPECT_THAT(WktErrorOf(""), HasSubstr("shape.wkt: expected POLYGON"));
+  EXPECT_THAT(WktErrorOf("POLYGON ((0 0 1 2 3, 1 0, 1 1, 0 0))"),
               HasSubstr("more than 4 coordinates in a point at line 1, column 19"));
-  EXPECT_THAT(ErrorOf("POLYGON ((0 0, 1, 1 1, 0 0))"),
+  EXPECT_THAT(WktErrorOf("POLYGON ((0 0, 1, 1 1, 0 0))"),
               HasSubstr("expected a point: two numbers 'x y' at line 1, column 17"));
 }
 
 TEST(WktReaderTest, NumberErrorsNamePosition) {
-  EXPECT_THAT(ErrorOf("POLYGON ((0 0, 1 0.5.5, 1 1, 0 0))"),
+  EXPECT_THAT(WktErrorOf("POLYGON ((0 0, 1 0.5.5, 1 1, 0 0))"),
               HasSubstr("shape.wkt: malformed number '0.5.5' at line 1, column 18"));
-  EXPECT_THAT(ErrorOf("POLYGON ((0 0, 1 nan, 1 1, 0 0))"),
+  EXPECT_THAT(WktErrorOf("POLYGON ((0 0, 1 nan, 1 1, 0 0))"),
               HasSubstr("non-finite number 'nan' at line 1, column 18"));
 }
 
 TEST(WktReaderTest, UnclosedRingIsAnError) {
-  EXPECT_THAT(ErrorOf("POLYGON ((0 0, 1 0, 1 1))"),
+  EXPECT_THAT(WktErrorOf("POLYGON ((0 0, 1 0, 1 1))"),
               HasSubstr("ring is not closed (its last point must repeat its first point (0, 0)) "
                         "at line 1, column 11"));
 }

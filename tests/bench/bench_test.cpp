@@ -23,6 +23,7 @@
 #include "bench/runner.h"
 #include "bench/spec.h"
 #include "bench/stats.h"
+#include "tests/data_paths.h"
 #include "tests/input_error_of.h"
 #include "tests/scratch_dir.h"
 
@@ -31,7 +32,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kConfigs = std::string(ACDPLAN_SOURCE_DIR) + "/configs";
+using acdplan::test::kConfigs;
 
 fs::path Scratch(const std::string& name) {
   static const test::ScratchDir root("acdplan_bench_test");  // Removed when the process ends.
@@ -57,7 +58,7 @@ std::string ReadText(const fs::path& path) {
 }
 
 /// The message LoadBenchSpec() throws for `text`; "" if it does not throw.
-std::string ErrorOf(const std::string& text) {
+std::string SpecErrorOf(const std::string& text) {
   return test::InputErrorOf([&] { LoadBenchSpec(WriteBench("bad", text)); });
 }
 
@@ -75,49 +76,50 @@ const std::string kWorlds =
 TEST(BenchSpec, ErrorsNameTheFileAndKeyPath) {
   const std::string cases =
       "cases:\n  - {samplers: [acd], planners: [PRM], budgets: [{samples: 50}]}\n";
-  EXPECT_EQ(ErrorOf(kWorlds + cases), "");
-  EXPECT_HAS(ErrorOf(kWorlds), "bad.yaml: cases: required");
-  EXPECT_HAS(ErrorOf("name: t\n" + cases), "bad.yaml: worlds: required");
-  EXPECT_HAS(ErrorOf(kWorlds + cases + "colour: red\n"), "bad.yaml: colour: unknown key");
+  EXPECT_EQ(SpecErrorOf(kWorlds + cases), "");
+  EXPECT_HAS(SpecErrorOf(kWorlds), "bad.yaml: cases: required");
+  EXPECT_HAS(SpecErrorOf("name: t\n" + cases), "bad.yaml: worlds: required");
+  EXPECT_HAS(SpecErrorOf(kWorlds + cases + "colour: red\n"), "bad.yaml: colour: unknown key");
   // A list as a key (found by fuzz/fuzz_bench_yaml, which stopped on yaml-cpp's bad conversion;
   // fuzz/corpus/bench_yaml/regression-sequence-as-robot-key.yaml).
-  EXPECT_HAS(ErrorOf(kWorlds + cases + "robots:\n  - {name: bar, [a]: 1}\n"),
+  EXPECT_HAS(SpecErrorOf(kWorlds + cases + "robots:\n  - {name: bar, [a]: 1}\n"),
              "bad.yaml: robots[0]: expected a mapping with string keys, got a list as a key");
-  EXPECT_HAS(ErrorOf(kWorlds + cases + "runs: 0\n"),
+  EXPECT_HAS(SpecErrorOf(kWorlds + cases + "runs: 0\n"),
              "bad.yaml: runs: expected an integer >= 1, got '0'");
-  EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [PRM, PRN], budgets: "
-                               "[{samples: 5}]}\n"),
+  EXPECT_HAS(SpecErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [PRM, PRN], budgets: "
+                                   "[{samples: 5}]}\n"),
              "bad.yaml: cases[0].planners[1]: unknown planner 'PRN' (expected one of: PRM,");
-  EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [magic], planners: [PRM], budgets: "
-                               "[{samples: 5}]}\n"),
+  EXPECT_HAS(SpecErrorOf(kWorlds + "cases:\n  - {samplers: [magic], planners: [PRM], budgets: "
+                                   "[{samples: 5}]}\n"),
              "bad.yaml: cases[0].samplers[0]: unknown sampler 'magic'");
-  EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [RRTConnect], budgets: "
-                               "[{samples: 5}]}\n"),
+  EXPECT_HAS(SpecErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [RRTConnect], budgets: "
+                                   "[{samples: 5}]}\n"),
              "bad.yaml: cases[0].budgets[0].samples: a sample budget (the Figure-4 protocol) "
              "needs PRM, PRM_ACD or PRMstar, not RRTConnect");
-  EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [PRM], budgets: "
-                               "[{time_limit: -1}]}\n"),
+  EXPECT_HAS(SpecErrorOf(kWorlds + "cases:\n  - {samplers: [acd], planners: [PRM], budgets: "
+                                   "[{time_limit: -1}]}\n"),
              "bad.yaml: cases[0].budgets[0].time_limit: expected a positive number, got '-1'");
-  EXPECT_HAS(ErrorOf(kWorlds + "cases:\n  - {worlds: [nowhere], samplers: [acd], planners: "
-                               "[PRM], budgets: [{samples: 5}]}\n"),
+  EXPECT_HAS(SpecErrorOf(kWorlds + "cases:\n  - {worlds: [nowhere], samplers: [acd], planners: "
+                                   "[PRM], budgets: [{samples: 5}]}\n"),
              "bad.yaml: cases[0].worlds[0]: unknown name 'nowhere' (expected one of: gap)");
-  EXPECT_HAS(ErrorOf(kWorlds + "robots:\n  - {name: d, shape: disc}\n" + cases),
+  EXPECT_HAS(SpecErrorOf(kWorlds + "robots:\n  - {name: d, shape: disc}\n" + cases),
              "bad.yaml: robots[0].radius: required for shape disc");
-  EXPECT_HAS(ErrorOf(kWorlds + "robots:\n  - {name: d, shape: point, wheels: 4}\n" + cases),
+  EXPECT_HAS(SpecErrorOf(kWorlds + "robots:\n  - {name: d, shape: point, wheels: 4}\n" + cases),
              "bad.yaml: robots[0].wheels: unknown key");
-  EXPECT_HAS(ErrorOf("name: t\nworlds:\n  - {name: w, workspace: {generator: wall_gap, "
-                     "passage_width: -1}, start: [1, 1], goal: [2, 2]}\n" +
-                     cases),
+  EXPECT_HAS(SpecErrorOf("name: t\nworlds:\n  - {name: w, workspace: {generator: wall_gap, "
+                         "passage_width: -1}, start: [1, 1], goal: [2, 2]}\n" +
+                         cases),
              "bad.yaml: worlds[0].workspace.passage_width: expected a positive number, got '-1'");
-  EXPECT_HAS(ErrorOf("name: t\nworlds:\n  - {scenario: missing.yaml}\n" + cases),
+  EXPECT_HAS(SpecErrorOf("name: t\nworlds:\n  - {scenario: missing.yaml}\n" + cases),
              "bad.yaml: worlds[0].scenario: ");
-  EXPECT_HAS(ErrorOf("name: t\nworlds:\n  - {name: w, workspace: {generator: wall_gap}, "
-                     "start: [1, 1]}\n" +
-                     cases),
+  EXPECT_HAS(SpecErrorOf("name: t\nworlds:\n  - {name: w, workspace: {generator: wall_gap}, "
+                         "start: [1, 1]}\n" +
+                         cases),
              "bad.yaml: worlds[0].goal: required");
-  EXPECT_HAS(ErrorOf(kWorlds + "  - name: gap\n    scenario: " + kConfigs + "/demo.yaml\n" + cases),
-             "bad.yaml: worlds[1].name: duplicate world name 'gap'");
-  EXPECT_HAS(ErrorOf(kWorlds + "cases: [\n"), "bad.yaml:");  // Syntax error with a line.
+  EXPECT_HAS(
+      SpecErrorOf(kWorlds + "  - name: gap\n    scenario: " + kConfigs + "/demo.yaml\n" + cases),
+      "bad.yaml: worlds[1].name: duplicate world name 'gap'");
+  EXPECT_HAS(SpecErrorOf(kWorlds + "cases: [\n"), "bad.yaml:");  // Syntax error with a line.
 }
 
 TEST(BenchSpec, ExpandsCasesSweepsAndShards) {
@@ -182,31 +184,31 @@ TEST(BenchSpec, CarCasesExpandDecompositionsAndCheckTheirKeys) {
   EXPECT_DOUBLE_EQ(spec.robots[1].car->options.max_steer_rate, 0.5);
 
   const std::string syclop = "cases:\n  - {planners: [SyclopRRT], budgets: [{time_limit: 1}]}\n";
-  EXPECT_EQ(ErrorOf(kCarWorld + kCars + syclop), "");
-  EXPECT_HAS(ErrorOf(kCarWorld + kCars + "  - {name: p}\n" + syclop),
+  EXPECT_EQ(SpecErrorOf(kCarWorld + kCars + syclop), "");
+  EXPECT_HAS(SpecErrorOf(kCarWorld + kCars + "  - {name: p}\n" + syclop),
              "bad.yaml: cases[0].robots: mixes cars (control planners) and rigid robots");
-  EXPECT_HAS(ErrorOf(kCarWorld + kCars +
-                     "cases:\n  - {samplers: [acd], planners: [RRT], budgets: [{time_limit: "
-                     "1}]}\n"),
+  EXPECT_HAS(SpecErrorOf(kCarWorld + kCars +
+                         "cases:\n  - {samplers: [acd], planners: [RRT], budgets: [{time_limit: "
+                         "1}]}\n"),
              "bad.yaml: cases[0].samplers: a car is planned by control planners");
-  EXPECT_HAS(
-      ErrorOf(kCarWorld + kCars + "cases:\n  - {planners: [PRM], budgets: [{time_limit: 1}]}\n"),
-      "bad.yaml: cases[0].planners[0]: unknown control planner 'PRM'");
-  EXPECT_HAS(ErrorOf(kCarWorld + kCars +
-                     "cases:\n  - {planners: [SyclopEST], decompositions: [grid0], budgets: "
-                     "[{time_limit: 1}]}\n"),
+  EXPECT_HAS(SpecErrorOf(kCarWorld + kCars +
+                         "cases:\n  - {planners: [PRM], budgets: [{time_limit: 1}]}\n"),
+             "bad.yaml: cases[0].planners[0]: unknown control planner 'PRM'");
+  EXPECT_HAS(SpecErrorOf(kCarWorld + kCars +
+                         "cases:\n  - {planners: [SyclopEST], decompositions: [grid0], budgets: "
+                         "[{time_limit: 1}]}\n"),
              "bad.yaml: cases[0].decompositions[0]: unknown decomposition 'grid0' (expected acd "
              "or grid<cells per side, 1-1000>, e.g. grid20)");
-  EXPECT_HAS(ErrorOf(kCarWorld + kCars +
-                     "cases:\n  - {planners: [SyclopEST], budgets: [{samples: 100}]}\n"),
+  EXPECT_HAS(SpecErrorOf(kCarWorld + kCars +
+                         "cases:\n  - {planners: [SyclopEST], budgets: [{samples: 100}]}\n"),
              "bad.yaml: cases[0].budgets[0]: a car's control planner takes a time_limit");
-  EXPECT_HAS(
-      ErrorOf(kCarWorld + "cases:\n  - {samplers: [acd], planners: [PRM], decompositions: [acd], "
-                          "budgets: [{samples: 10}]}\n"),
-      "bad.yaml: cases[0].decompositions: only for car robots");
-  EXPECT_HAS(
-      ErrorOf(kCarWorld + "robots:\n  - {name: c, type: kinematic_car, max_accel: 1}\n" + syclop),
-      "bad.yaml: robots[0].max_accel: only for type dynamic_car");
+  EXPECT_HAS(SpecErrorOf(kCarWorld +
+                         "cases:\n  - {samplers: [acd], planners: [PRM], decompositions: [acd], "
+                         "budgets: [{samples: 10}]}\n"),
+             "bad.yaml: cases[0].decompositions: only for car robots");
+  EXPECT_HAS(SpecErrorOf(kCarWorld + "robots:\n  - {name: c, type: kinematic_car, max_accel: 1}\n" +
+                         syclop),
+             "bad.yaml: robots[0].max_accel: only for type dynamic_car");
 }
 
 TEST(BenchRunner, RunsCarCasesWithTheirDecompositionInTheSamplerColumn) {
@@ -431,10 +433,11 @@ TEST(BenchRunner, RunsAnOmplAppProblemWithItsOwnRobot) {
     EXPECT_TRUE(r.solved) << "run " << r.run;
   }
   // `shape: scenario` takes no shape keys of its own.
-  EXPECT_HAS(ErrorOf("name: cfg\nworlds:\n  - scenario: " + cfg +
-                     "\nrobots:\n  - {name: own, shape: scenario, radius: 1}\n"
-                     "cases:\n  - {samplers: [acd], planners: [PRM], budgets: [{samples: 9}]}\n"),
-             "robots[0].radius: not with shape: scenario");
+  EXPECT_HAS(
+      SpecErrorOf("name: cfg\nworlds:\n  - scenario: " + cfg +
+                  "\nrobots:\n  - {name: own, shape: scenario, radius: 1}\n"
+                  "cases:\n  - {samplers: [acd], planners: [PRM], budgets: [{samples: 9}]}\n"),
+      "robots[0].radius: not with shape: scenario");
 }
 
 // A 3D world runs (its ACD decomposed in the parent into the disk cache; the in-process 2D

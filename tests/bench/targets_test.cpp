@@ -31,7 +31,7 @@ std::string WriteFile(const std::string& name, const std::string& text) {
 }
 
 /// The message LoadTargetsFile() throws for `text` with the planning vocabulary; "" if none.
-std::string ErrorOf(const std::string& text) {
+std::string TargetsErrorOf(const std::string& text) {
   return test::InputErrorOf(
       [&] { LoadTargetsFile(WriteFile("t.yaml", text), PlanningTargetVocabulary()); });
 }
@@ -67,39 +67,44 @@ TEST(Targets, ReadsTheFormat) {
 
 TEST(Targets, ErrorsNameTheFileAndKeyPath) {
   const std::string ok = "{metric: acd.success_rate, compare: '>=', value: 1}";
-  EXPECT_EQ(ErrorOf("targets: [" + ok + "]\n"), "");
-  EXPECT_HAS(ErrorOf("goals: []\n"), "t.yaml: goals: unknown key (expected one of: targets)");
-  EXPECT_HAS(ErrorOf("targets: 3\n"), "t.yaml: targets: expected a list of targets");
+  EXPECT_EQ(TargetsErrorOf("targets: [" + ok + "]\n"), "");
+  EXPECT_HAS(TargetsErrorOf("goals: []\n"),
+             "t.yaml: goals: unknown key (expected one of: targets)");
+  EXPECT_HAS(TargetsErrorOf("targets: 3\n"), "t.yaml: targets: expected a list of targets");
   // A list as a key (the where: twin of fuzz_bench_yaml's finding in robots:).
-  EXPECT_HAS(ErrorOf("targets: [{where: {[a]: PRM}, metric: acd.success_rate, compare: '>=', "
+  EXPECT_HAS(
+      TargetsErrorOf("targets: [{where: {[a]: PRM}, metric: acd.success_rate, compare: '>=', "
                      "value: 1}]\n"),
-             "t.yaml: targets[0].where: expected a mapping with string keys, got a list as a key");
-  EXPECT_HAS(ErrorOf("targets: [" + ok + ", {metric: acd.success_rate, value: 1}]\n"),
+      "t.yaml: targets[0].where: expected a mapping with string keys, got a list as a key");
+  EXPECT_HAS(TargetsErrorOf("targets: [" + ok + ", {metric: acd.success_rate, value: 1}]\n"),
              "t.yaml: targets[1].compare: required");
-  EXPECT_HAS(ErrorOf("targets: [{metric: acd.success_rate, compare: '=>', value: 1}]\n"),
+  EXPECT_HAS(TargetsErrorOf("targets: [{metric: acd.success_rate, compare: '=>', value: 1}]\n"),
              "t.yaml: targets[0].compare: unknown comparison '=>' (expected one of: <, <=, >, >=, "
              "==, !=)");
-  EXPECT_HAS(ErrorOf("targets: [{metric: acd.success_rate, compare: '>=', value: high}]\n"),
+  EXPECT_HAS(TargetsErrorOf("targets: [{metric: acd.success_rate, compare: '>=', value: high}]\n"),
              "t.yaml: targets[0].value: expected a finite number, got 'high'");
-  EXPECT_HAS(ErrorOf("targets: [{metric: acd.speed, compare: '>=', value: 1}]\n"),
+  EXPECT_HAS(TargetsErrorOf("targets: [{metric: acd.speed, compare: '>=', value: 1}]\n"),
              "t.yaml: targets[0].metric: expected samplers or [planner/]sampler.statistic");
-  EXPECT_HAS(ErrorOf("targets: [{metric: magic.success_rate, compare: '>=', value: 1}]\n"),
+  EXPECT_HAS(TargetsErrorOf("targets: [{metric: magic.success_rate, compare: '>=', value: 1}]\n"),
              "t.yaml: targets[0].metric: unknown sampler 'magic'");
-  EXPECT_HAS(ErrorOf("targets: [{metric: PRN/acd.success_rate, compare: '>=', value: 1}]\n"),
+  EXPECT_HAS(TargetsErrorOf("targets: [{metric: PRN/acd.success_rate, compare: '>=', value: 1}]\n"),
              "t.yaml: targets[0].metric: unknown planner 'PRN'");
-  EXPECT_HAS(ErrorOf("targets: [{metric: acd.success_rate, over: x, compare: '>=', value: 1}]\n"),
-             "t.yaml: targets[0].over: expected samplers or");
-  EXPECT_HAS(ErrorOf("targets: [{where: {colour: red}, metric: acd.success_rate, compare: '>=', "
+  EXPECT_HAS(
+      TargetsErrorOf("targets: [{metric: acd.success_rate, over: x, compare: '>=', value: 1}]\n"),
+      "t.yaml: targets[0].over: expected samplers or");
+  EXPECT_HAS(
+      TargetsErrorOf("targets: [{where: {colour: red}, metric: acd.success_rate, compare: '>=', "
                      "value: 1}]\n"),
-             "t.yaml: targets[0].where.colour: unknown label 'colour' (expected one of: world, "
-             "family, robot, "
-             "planner, budget, budget_type)");
-  EXPECT_HAS(ErrorOf("targets: [{if: [{metric: acd.runs, compare: '>'}], metric: "
-                     "acd.success_rate, compare: '>=', value: 1}]\n"),
+      "t.yaml: targets[0].where.colour: unknown label 'colour' (expected one of: world, "
+      "family, robot, "
+      "planner, budget, budget_type)");
+  EXPECT_HAS(TargetsErrorOf("targets: [{if: [{metric: acd.runs, compare: '>'}], metric: "
+                            "acd.success_rate, compare: '>=', value: 1}]\n"),
              "t.yaml: targets[0].if[0].value: required");
-  EXPECT_HAS(ErrorOf("targets: [{metric: acd.success_rate, compare: '>=', value: 1, by: me}]\n"),
-             "t.yaml: targets[0].by: unknown key");
-  EXPECT_HAS(ErrorOf("targets: [\n"), "t.yaml:");  // Syntax error with its line.
+  EXPECT_HAS(
+      TargetsErrorOf("targets: [{metric: acd.success_rate, compare: '>=', value: 1, by: me}]\n"),
+      "t.yaml: targets[0].by: unknown key");
+  EXPECT_HAS(TargetsErrorOf("targets: [\n"), "t.yaml:");  // Syntax error with its line.
 }
 
 TEST(Targets, ChecksRowsWithFiltersConditionsAndRatios) {

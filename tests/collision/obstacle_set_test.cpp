@@ -139,14 +139,6 @@ TEST(ObstacleSet3d, FlatComponentGetsAThinSolidHull) {
   EXPECT_GE(set.pieces[0].planes.rows(), 6);
 }
 
-envs::Workspace3d MeshWorld(const acd::TriangleMesh& mesh) {
-  envs::Workspace3d world;
-  const Eigen::AlignedBox3d box = acd::BoundingBox(mesh);
-  world.bounds = Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
-  world.obstacles.push_back(mesh);
-  return world;
-}
-
 std::vector<Eigen::Vector3d> Points(const acd::TriangleMesh& mesh) {
   std::vector<Eigen::Vector3d> points;
   for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
@@ -156,7 +148,7 @@ std::vector<Eigen::Vector3d> Points(const acd::TriangleMesh& mesh) {
 }
 
 TEST(ObstacleSet3d, ACubeIsOneConvexSolidPiece) {
-  const ObstacleSet set = BuildObstacleSet(MeshWorld(testing::CubeMesh(2)));
+  const ObstacleSet set = BuildObstacleSet(testing::MeshWorld(testing::CubeMesh(2)));
   ASSERT_EQ(set.components.size(), 1u);
   EXPECT_TRUE(set.components[0].closed);
   ASSERT_EQ(set.pieces.size(), 1u);
@@ -174,8 +166,8 @@ TEST(ObstacleSet3d, ConvexPiecesLieInsideTheObstacle) {
   if (!testing::kSanitizerBuild) names.push_back("torus1");
   for (const std::string& name : names) {
     SCOPED_TRACE(name);
-    const envs::Workspace3d world =
-        MeshWorld(envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name + ".obj"));
+    const envs::Workspace3d world = testing::MeshWorld(
+        envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name + ".obj"));
     auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(world));
     const PointLocator exact(set, LocateMethod::kExact);
     EXPECT_FALSE(set->pieces.empty());
@@ -250,7 +242,7 @@ TEST(ObstacleSet3d, EqualsItsHullIsExact) {
 TEST(ObstacleSet3d, AnOpenMeshGetsSurfacePatchesWithVolume) {
   acd::TriangleMesh open = testing::CubeMesh(2);
   open.triangles.conservativeResize(10, 3);  // No x+ face.
-  const ObstacleSet set = BuildObstacleSet(MeshWorld(open));
+  const ObstacleSet set = BuildObstacleSet(testing::MeshWorld(open));
   ASSERT_EQ(set.components.size(), 1u);
   EXPECT_FALSE(set.components[0].closed);
   ASSERT_FALSE(set.pieces.empty());
@@ -265,7 +257,7 @@ TEST(ObstacleSet3d, AnOpenMeshGetsSurfacePatchesWithVolume) {
 TEST(ObstacleSet3d, RejectsABadTauRel) {
   ObstacleSetOptions options;
   options.tau_rel_3d = 0;
-  EXPECT_EQ(ErrorOf([&] { BuildObstacleSet(MeshWorld(testing::CubeMesh(1)), options); }),
+  EXPECT_EQ(ErrorOf([&] { BuildObstacleSet(testing::MeshWorld(testing::CubeMesh(1)), options); }),
             "BuildObstacleSet(): tau_rel_3d must be finite and > 0, got 0.000000");
 }
 

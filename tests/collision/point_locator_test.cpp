@@ -98,16 +98,9 @@ TEST(PointLocator2d, ExactMatchesAPlainCrossingTestOnAMaze) {
   }
 }
 
-envs::Workspace3d MeshWorld(const acd::TriangleMesh& mesh) {
-  envs::Workspace3d w;
-  w.obstacles.push_back(mesh);
-  const Eigen::AlignedBox3d box = acd::BoundingBox(mesh);
-  w.bounds = Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
-  return w;
-}
-
 TEST(PointLocator3d, ExactOnACube) {
-  auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(MeshWorld(testing::CubeMesh(2))));
+  auto set = std::make_shared<const ObstacleSet>(
+      BuildObstacleSet(testing::MeshWorld(testing::CubeMesh(2))));
   const PointLocator exact(set, LocateMethod::kExact);
   EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0.2, 0.3, -0.9)));
   EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1, 0, 0)));  // on a face
@@ -117,7 +110,7 @@ TEST(PointLocator3d, ExactOnACube) {
 TEST(PointLocator3d, ExactRefusesAnOpenMesh) {
   acd::TriangleMesh open = testing::CubeMesh(2);
   open.triangles.conservativeResize(10, 3);  // drop the x+ face
-  auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(MeshWorld(open)));
+  auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(testing::MeshWorld(open)));
   try {
     PointLocator exact(set, LocateMethod::kExact);
     FAIL() << "no error";
@@ -140,7 +133,7 @@ TEST(PointLocator3d, NestedShellsBoundACavity) {
   both.vertices.bottomRows(8) = inner.vertices;
   both.triangles.conservativeResize(24, 3);
   both.triangles.bottomRows(12) = inner.triangles.array() + 8;
-  auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(MeshWorld(both)));
+  auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(testing::MeshWorld(both)));
   const PointLocator exact(set, LocateMethod::kExact), hulls(set, LocateMethod::kHulls);
   EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1.5, 0, 0)));
   EXPECT_FALSE(exact.Inside(Eigen::Vector3d(0, 0, 0)));
@@ -159,8 +152,8 @@ TEST(PointLocator3d, OverlappingShellsMeanTheirUnion) {
        {Eigen::Vector3d(1, 0.5, 0.25), Eigen::Vector3d(-1, -0.5, -0.25)}) {
     SCOPED_TRACE(offset.transpose());
     const acd::TriangleMesh a = testing::CubeMesh(2), b = testing::Translated(a, offset);
-    auto set =
-        std::make_shared<const ObstacleSet>(BuildObstacleSet(MeshWorld(testing::Combined({a, b}))));
+    auto set = std::make_shared<const ObstacleSet>(
+        BuildObstacleSet(testing::MeshWorld(testing::Combined({a, b}))));
     ASSERT_EQ(set->components.size(), 2u);  // not a solid: two closed patches
     const PointLocator exact(set, LocateMethod::kExact), hulls(set, LocateMethod::kHulls);
     const Eigen::Vector3d in_both = 0.5 * offset;
@@ -186,7 +179,7 @@ TEST(PointLocator3d, ACubePokingOutOfAnotherIsNoCavity) {
     const acd::TriangleMesh big = testing::CubeMesh(2);
     const acd::TriangleMesh small = testing::Translated(testing::CubeMesh(1), {x, 0, 0});
     auto set = std::make_shared<const ObstacleSet>(
-        BuildObstacleSet(MeshWorld(testing::Combined({big, small}))));
+        BuildObstacleSet(testing::MeshWorld(testing::Combined({big, small}))));
     const PointLocator exact(set, LocateMethod::kExact);
     EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0.7 * x, 0, 0)));  // in both
     EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1.3 * x, 0, 0)));  // in the small one only
@@ -205,7 +198,7 @@ TEST(PointLocator3d, ACavityShellStaysOutsideInAMeshThatIsNotASolid) {
     const acd::TriangleMesh mesh = testing::Combined(
         {testing::CubeMesh(4), cavity, testing::CubeMesh(0.5), testing::Translated(c, {10, 0, 0}),
          testing::Translated(c, {11, 0.5, 0.5})});
-    auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(MeshWorld(mesh)));
+    auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(testing::MeshWorld(mesh)));
     ASSERT_EQ(set->components.size(), 5u);
     const PointLocator exact(set, LocateMethod::kExact), hulls(set, LocateMethod::kHulls);
     EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1.5, 0, 0)));   // the wall
@@ -226,8 +219,8 @@ TEST(PointLocator3d, NestedShellsBoundACavityWhicheverWayTheyFace) {
     for (const bool flip_inner : {false, true}) {
       SCOPED_TRACE(std::to_string(flip_outer) + std::to_string(flip_inner));
       auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(
-          MeshWorld(testing::Combined({flip_outer ? testing::InsideOut(outer) : outer,
-                                       flip_inner ? testing::InsideOut(inner) : inner}))));
+          testing::MeshWorld(testing::Combined({flip_outer ? testing::InsideOut(outer) : outer,
+                                                flip_inner ? testing::InsideOut(inner) : inner}))));
       const PointLocator exact(set, LocateMethod::kExact);
       EXPECT_TRUE(exact.Inside(Eigen::Vector3d(1.5, 0, 0)));
       EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0, 1, 0)));
@@ -244,7 +237,7 @@ TEST(PointLocator3d, AnInsideOutCubeStillHasAnInside) {
   for (const acd::TriangleMesh& mesh :
        {flipped, testing::Combined({flipped, testing::Translated(c, {10, 0, 0}),
                                     testing::Translated(c, {11, 0.5, 0.5})})}) {
-    auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(MeshWorld(mesh)));
+    auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(testing::MeshWorld(mesh)));
     const PointLocator exact(set, LocateMethod::kExact);
     EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0, 0, 0)));
     EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0.2, -0.3, 0.9)));
@@ -255,8 +248,8 @@ TEST(PointLocator3d, AnInsideOutCubeStillHasAnInside) {
 
 TEST(PointLocator3d, TwoDisjointCubes) {
   const acd::TriangleMesh c = testing::CubeMesh(2);
-  auto set = std::make_shared<const ObstacleSet>(
-      BuildObstacleSet(MeshWorld(testing::Combined({c, testing::Translated(c, {5, 0, 0})}))));
+  auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(
+      testing::MeshWorld(testing::Combined({c, testing::Translated(c, {5, 0, 0})}))));
   const PointLocator exact(set, LocateMethod::kExact);
   EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0, 0, 0)));
   EXPECT_TRUE(exact.Inside(Eigen::Vector3d(5, 0.5, 0)));
@@ -268,7 +261,7 @@ TEST(PointLocator3d, TwoDisjointCubes) {
 class PointLocatorVhacdMesh : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PointLocatorVhacdMesh, HullsNeverSayOutsideWhereExactSaysInside) {
-  const envs::Workspace3d workspace = MeshWorld(
+  const envs::Workspace3d workspace = testing::MeshWorld(
       envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + GetParam() + ".obj"));
   auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));
   const PointLocator exact(set, LocateMethod::kExact), hulls(set, LocateMethod::kHulls);

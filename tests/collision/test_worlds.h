@@ -10,6 +10,7 @@
 #include "base/random.h"
 #include "envs/generators.h"
 #include "envs/robot.h"
+#include "envs/workspace3d.h"
 #include "tests/asan_build.h"
 
 namespace acdplan::collision::testing {
@@ -107,6 +108,15 @@ inline std::vector<Eigen::Isometry3d> RandomPoses3d(const Eigen::AlignedBox3d& b
     poses.push_back(pose);
   }
   return poses;
+}
+
+/// A 3D world with `mesh` as its one obstacle, the bounds its box grown by 10% per side.
+inline envs::Workspace3d MeshWorld(const acd::TriangleMesh& mesh) {
+  envs::Workspace3d world;
+  const Eigen::AlignedBox3d box = acd::BoundingBox(mesh);
+  world.bounds = Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());
+  world.obstacles.push_back(mesh);
+  return world;
 }
 
 }  // namespace acdplan::collision::testing

@@ -19,7 +19,7 @@ acd::Polygon2d Box(double x0, double y0, double x1, double y1) {
   return acd::Polygon2d{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
 }
 
-Workspace2d World(std::vector<acd::Polygon2d> obstacles) {
+Workspace2d WorkspaceWith(std::vector<acd::Polygon2d> obstacles) {
   Workspace2d w;
   w.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(10, 10));
   w.obstacles = std::move(obstacles);
@@ -34,14 +34,14 @@ const double kPinchArea = [] {
 }();
 
 TEST(FreeSpace2dTest, NoObstaclesIsTheBounds) {
-  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({}));
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(WorkspaceWith({}));
   ASSERT_EQ(free.size(), 1u);
   EXPECT_NEAR(acd::Area(free[0]), 100.0, 1e-9);
   EXPECT_EQ(free[0].outer.size(), 4u);
 }
 
 TEST(FreeSpace2dTest, InteriorObstacleIsAHole) {
-  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({Box(2, 2, 4, 4)}));
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(WorkspaceWith({Box(2, 2, 4, 4)}));
   ASSERT_EQ(free.size(), 1u);
   ASSERT_EQ(free[0].holes.size(), 1u);
   EXPECT_NEAR(acd::Area(free[0]), 96.0, 1e-9);
@@ -53,7 +53,7 @@ TEST(FreeSpace2dTest, OverlappingObstaclesAreUnited) {
   acd::Polygon2d inner = Box(2.5, 2.5, 3, 3);
   std::reverse(inner.outer.begin(), inner.outer.end());
   const std::vector<acd::Polygon2d> free =
-      FreeSpace2d(World({Box(2, 2, 5, 5), Box(4, 4, 7, 7), inner}));
+      FreeSpace2d(WorkspaceWith({Box(2, 2, 5, 5), Box(4, 4, 7, 7), inner}));
   ASSERT_EQ(free.size(), 1u);
   ASSERT_EQ(free[0].holes.size(), 1u);
   EXPECT_EQ(free[0].holes[0].size(), 8u);
@@ -63,7 +63,7 @@ TEST(FreeSpace2dTest, OverlappingObstaclesAreUnited) {
 
 TEST(FreeSpace2dTest, ObstaclesCrossingOrOutsideTheBounds) {
   const std::vector<acd::Polygon2d> free =
-      FreeSpace2d(World({Box(-1, -1, 3, 3), Box(8, 4, 12, 6), Box(20, 20, 21, 21)}));
+      FreeSpace2d(WorkspaceWith({Box(-1, -1, 3, 3), Box(8, 4, 12, 6), Box(20, 20, 21, 21)}));
   ASSERT_EQ(free.size(), 1u);
   EXPECT_TRUE(free[0].holes.empty());
   EXPECT_NEAR(acd::Area(free[0]), 100.0 - 9.0 - 4.0, 1e-9);
@@ -72,7 +72,7 @@ TEST(FreeSpace2dTest, ObstaclesCrossingOrOutsideTheBounds) {
 
 TEST(FreeSpace2dTest, ObstacleAlongTheBoundsEdge) {
   // Shares part of the bottom edge of the bounds: a notch, not a hole.
-  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({Box(3, 0, 5, 2)}));
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(WorkspaceWith({Box(3, 0, 5, 2)}));
   ASSERT_EQ(free.size(), 1u);
   EXPECT_TRUE(free[0].holes.empty());
   EXPECT_EQ(free[0].outer.size(), 8u);
@@ -81,7 +81,7 @@ TEST(FreeSpace2dTest, ObstacleAlongTheBoundsEdge) {
 
 TEST(FreeSpace2dTest, WallSplitsTheFreeSpace) {
   const std::vector<acd::Polygon2d> free =
-      FreeSpace2d(World({Box(4, -1, 6, 11), Box(1, 1, 2, 2), Box(8, 8, 9, 9)}));
+      FreeSpace2d(WorkspaceWith({Box(4, -1, 6, 11), Box(1, 1, 2, 2), Box(8, 8, 9, 9)}));
   ASSERT_EQ(free.size(), 2u);
   // Sorted by lowest-leftmost vertex: the left region first.
   EXPECT_NEAR(acd::Area(free[0]), 39.0, 1e-9);
@@ -95,7 +95,7 @@ TEST(FreeSpace2dTest, WallSplitsTheFreeSpace) {
 TEST(FreeSpace2dTest, ObstacleWithAHoleEnclosesAFreeRegion) {
   acd::Polygon2d ring = Box(2, 2, 8, 8);
   ring.holes.push_back(Box(4, 4, 6, 6).outer);
-  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({ring}));
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(WorkspaceWith({ring}));
   ASSERT_EQ(free.size(), 2u);
   EXPECT_NEAR(acd::Area(free[0]), 64.0, 1e-9);
   EXPECT_NEAR(acd::Area(free[1]), 4.0, 1e-9);
@@ -103,7 +103,8 @@ TEST(FreeSpace2dTest, ObstacleWithAHoleEnclosesAFreeRegion) {
 }
 
 TEST(FreeSpace2dTest, ObstaclesTouchingAlongAnEdge) {
-  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({Box(2, 2, 4, 4), Box(4, 2, 6, 4)}));
+  const std::vector<acd::Polygon2d> free =
+      FreeSpace2d(WorkspaceWith({Box(2, 2, 4, 4), Box(4, 2, 6, 4)}));
   ASSERT_EQ(free.size(), 1u);
   ASSERT_EQ(free[0].holes.size(), 1u);
   EXPECT_EQ(free[0].holes[0].size(), 4u);  // One 4x2 hole, the shared edge gone.
@@ -112,7 +113,8 @@ TEST(FreeSpace2dTest, ObstaclesTouchingAlongAnEdge) {
 
 TEST(FreeSpace2dTest, ObstaclesTouchingAtAPointAreClosedByADiamond) {
   // The two holes would touch at (4, 4): the pinch is closed, the holes become one.
-  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({Box(2, 2, 4, 4), Box(4, 4, 6, 6)}));
+  const std::vector<acd::Polygon2d> free =
+      FreeSpace2d(WorkspaceWith({Box(2, 2, 4, 4), Box(4, 4, 6, 6)}));
   ASSERT_EQ(free.size(), 1u);
   ASSERT_EQ(free[0].holes.size(), 1u);
   EXPECT_NEAR(acd::Area(free[0]), 92.0 - kPinchArea, 1e-9);
@@ -123,7 +125,7 @@ TEST(FreeSpace2dTest, ObstaclesTouchingAtAPointAreClosedByADiamond) {
 TEST(FreeSpace2dTest, ObstacleTouchingTheBoundsAtAPoint) {
   // A triangle standing on its tip at (5, 0) on the bounds' bottom edge.
   const acd::Polygon2d tip{{{5, 0}, {6, 2}, {4, 2}}, {}};
-  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({tip}));
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(WorkspaceWith({tip}));
   ASSERT_EQ(free.size(), 1u);
   EXPECT_TRUE(free[0].holes.empty());  // The hole merged into the outer ring at the pinch.
   EXPECT_NEAR(acd::Area(free[0]), 98.0, 1e-9);
@@ -132,7 +134,8 @@ TEST(FreeSpace2dTest, ObstacleTouchingTheBoundsAtAPoint) {
 
 TEST(FreeSpace2dTest, LobesMeetingAtAPointBecomeTwoPolygonsExactly) {
   // Free space: the bottom-left and top-right quarters, meeting at (5, 5).
-  const std::vector<acd::Polygon2d> free = FreeSpace2d(World({Box(0, 5, 5, 10), Box(5, 0, 10, 5)}));
+  const std::vector<acd::Polygon2d> free =
+      FreeSpace2d(WorkspaceWith({Box(0, 5, 5, 10), Box(5, 0, 10, 5)}));
   ASSERT_EQ(free.size(), 2u);
   EXPECT_DOUBLE_EQ(acd::Area(free[0]), 25.0);
   EXPECT_DOUBLE_EQ(acd::Area(free[1]), 25.0);
@@ -141,8 +144,8 @@ TEST(FreeSpace2dTest, LobesMeetingAtAPointBecomeTwoPolygonsExactly) {
 }
 
 TEST(FreeSpace2dTest, LobesWithHolesKeepTheirHoles) {
-  const std::vector<acd::Polygon2d> free =
-      FreeSpace2d(World({Box(0, 5, 5, 10), Box(5, 0, 10, 5), Box(1, 1, 2, 2), Box(7, 7, 8, 8)}));
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(
+      WorkspaceWith({Box(0, 5, 5, 10), Box(5, 0, 10, 5), Box(1, 1, 2, 2), Box(7, 7, 8, 8)}));
   ASSERT_EQ(free.size(), 2u);
   EXPECT_EQ(free[0].holes.size(), 1u);
   EXPECT_EQ(free[1].holes.size(), 1u);
@@ -150,12 +153,12 @@ TEST(FreeSpace2dTest, LobesWithHolesKeepTheirHoles) {
 }
 
 TEST(FreeSpace2dTest, ObstaclesCoveringTheBoundsLeaveNothing) {
-  EXPECT_TRUE(FreeSpace2d(World({Box(-1, -1, 11, 11)})).empty());
-  EXPECT_TRUE(FreeSpace2d(World({Box(0, 0, 5, 10), Box(5, 0, 10, 10)})).empty());
+  EXPECT_TRUE(FreeSpace2d(WorkspaceWith({Box(-1, -1, 11, 11)})).empty());
+  EXPECT_TRUE(FreeSpace2d(WorkspaceWith({Box(0, 0, 5, 10), Box(5, 0, 10, 10)})).empty());
 }
 
 TEST(FreeSpace2dTest, TranslatingTheWorldTranslatesTheFreeSpace) {
-  Workspace2d w = World({Box(2, 2, 4, 4), Box(4, 4, 6, 6), Box(4, -1, 5, 1)});
+  Workspace2d w = WorkspaceWith({Box(2, 2, 4, 4), Box(4, 4, 6, 6), Box(4, -1, 5, 1)});
   const std::vector<acd::Polygon2d> a = FreeSpace2d(w);
   const Eigen::Vector2d shift(100.25, -37.5);
   w.bounds.translate(shift);
@@ -195,16 +198,16 @@ TEST(FreeSpace2dTest, RandomGridsGiveValidFreeSpace) {
 }
 
 TEST(FreeSpace2dTest, Errors) {
-  Workspace2d empty_bounds = World({});
+  Workspace2d empty_bounds = WorkspaceWith({});
   empty_bounds.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(1, 1), Eigen::Vector2d(1, 5));
   EXPECT_THAT(testing::ErrorOf([&] { FreeSpace2d(empty_bounds); }),
               HasSubstr("FreeSpace2d(): bounds: expected finite xmin < xmax and ymin < ymax"));
   const acd::Polygon2d bowtie{{{0, 0}, {2, 2}, {2, 0}, {0, 1}}, {}};
   EXPECT_THAT(testing::ErrorOf([&] {
-                FreeSpace2d(World({Box(1, 1, 2, 2), bowtie}));
+                FreeSpace2d(WorkspaceWith({Box(1, 1, 2, 2), bowtie}));
               }),
               HasSubstr("FreeSpace2d(): obstacle 1: outer ring is not simple"));
-  EXPECT_THAT(testing::ErrorOf([&] { FreeSpace2d(World({}), {0.0}); }),
+  EXPECT_THAT(testing::ErrorOf([&] { FreeSpace2d(WorkspaceWith({}), {0.0}); }),
               HasSubstr("FreeSpace2d(): pinch_gap must be finite and > 0"));
 }
 

@@ -17,13 +17,14 @@
 #include "planning/plan_scenario.h"
 #include "planning/registry.h"
 #include "planning/scenario.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::planning {
 namespace {
 
 namespace ob = ompl::base;
 
-const std::string kConfigs = std::string(ACDPLAN_SOURCE_DIR) + "/configs";
+using acdplan::test::kConfigs;
 
 std::shared_ptr<ob::SpaceInformation> Plane(const envs::Workspace2d& workspace) {
   auto space = std::make_shared<ob::RealVectorStateSpace>(2);

@@ -14,13 +14,14 @@
 #include "collision/obstacle_set.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
+#include "tests/data_paths.h"
 #include "tests/input_error_of.h"
 #include "tests/scratch_dir.h"
 
 namespace acdplan::planning {
 namespace {
 
-const std::string kConfigs = std::string(ACDPLAN_SOURCE_DIR) + "/configs";
+using acdplan::test::kConfigs;
 
 /// Writes `text` to a scenario file in the process's scratch folder and returns its path.
 std::string Write(const std::string& name, const std::string& text) {
