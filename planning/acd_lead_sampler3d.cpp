@@ -13,26 +13,12 @@
 
 namespace acdplan::planning {
 
-namespace {
-
-internal::SpaceKind Classify3d(const ompl::base::StateSpace* space) {
-  const internal::SpaceKind kind = internal::Classify(space);
-  if (kind != internal::SpaceKind::kRealVector3 && kind != internal::SpaceKind::kSE3) {
-    throw std::invalid_argument("3D acd_lead: unsupported state space '" + space->getName() +
-                                "' (supported: RealVectorStateSpace of dimension 3, "
-                                "SE3StateSpace)");
-  }
-  return kind;
-}
-
-}  // namespace
-
 AcdLeadStateSampler3d::AcdLeadStateSampler3d(
     const ompl::base::StateSpace* space, std::shared_ptr<const internal::LeadDistribution3d> lead,
     std::uint64_t seed)
     : ompl::base::StateSampler(space),
       lead_(std::move(lead)),
-      kind_(Classify3d(space)),
+      kind_(internal::Classify3d(space, "3D acd_lead")),
       rng_engine_(seed),
       phase_(UniformReal(rng_engine_, 0.0, 1.0)) {}
 
@@ -79,7 +65,8 @@ void InstallAcdLeadSamplers3d(const std::shared_ptr<ompl::base::SpaceInformation
     throw InputError("acd_lead: narrow_penalty: expected a number >= 1");
   }
   CheckAcdSamplerOptions(options);
-  Classify3d(si->getStateSpace().get());  // Fail now, not inside the planner.
+  internal::Classify3d(si->getStateSpace().get(),
+                       "3D acd_lead");  // Fail now, not inside the planner.
   internal::LeadQuery3d lead_query;
   lead_query.start = query.start;
   lead_query.goal = query.goal;

@@ -11,26 +11,12 @@
 
 namespace acdplan::planning {
 
-namespace {
-
-internal::SpaceKind Classify3d(const ompl::base::StateSpace* space) {
-  const internal::SpaceKind kind = internal::Classify(space);
-  if (kind != internal::SpaceKind::kRealVector3 && kind != internal::SpaceKind::kSE3) {
-    throw std::invalid_argument("3D ACD samplers: unsupported state space '" + space->getName() +
-                                "' (supported: RealVectorStateSpace of dimension 3, "
-                                "SE3StateSpace)");
-  }
-  return kind;
-}
-
-}  // namespace
-
 AcdStateSampler3d::AcdStateSampler3d(const ompl::base::StateSpace* space,
                                      std::shared_ptr<const internal::AcdTargets3d> targets,
                                      std::uint64_t seed)
     : ompl::base::StateSampler(space),
       targets_(std::move(targets)),
-      kind_(Classify3d(space)),
+      kind_(internal::Classify3d(space, "3D ACD samplers")),
       rng_engine_(seed) {}
 
 AcdStateSampler3d::~AcdStateSampler3d() = default;
@@ -62,7 +48,8 @@ AcdValidStateSampler3d::AcdValidStateSampler3d(
 void InstallAcdSamplers3d(const std::shared_ptr<ompl::base::SpaceInformation>& si,
                           const envs::FreeSpaceDecomposition3d& decomposition,
                           const AcdSamplerOptions& options, const acd::TriangleMesh* robot) {
-  Classify3d(si->getStateSpace().get());  // Fail now, not inside the planner.
+  internal::Classify3d(si->getStateSpace().get(),
+                       "3D ACD samplers");  // Fail now, not inside the planner.
   internal::LongAxis3d axis;
   if (robot) axis = internal::PrincipalAxis(robot->vertices);
   auto targets = std::make_shared<const internal::AcdTargets3d>(decomposition, options, axis);

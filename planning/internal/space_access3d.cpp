@@ -3,7 +3,20 @@
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
 
+#include <stdexcept>
+
 namespace acdplan::planning::internal {
+
+SpaceKind Classify3d(const ompl::base::StateSpace* space, const std::string& user) {
+  const SpaceKind kind = Classify(space);
+  if (kind != SpaceKind::kRealVector3 && kind != SpaceKind::kSE3) {
+    throw std::invalid_argument(user + ": unsupported state space '" + space->getName() +
+                                "' (supported: RealVectorStateSpace of dimension 3, "
+                                "SE3StateSpace)");
+  }
+  return kind;
+}
+
 namespace ob = ompl::base;
 
 bool SetFromDraw3d(SpaceKind kind, const ob::StateSpace* space, const AcdDraw3d& draw,

@@ -4,12 +4,17 @@
 #include <ompl/base/StateSpace.h>
 
 #include <Eigen/Geometry>
+#include <string>
 
 #include "base/random.h"
 #include "planning/internal/acd_targets3d.h"
 #include "planning/internal/space_access.h"
 
 namespace acdplan::planning::internal {
+
+/// Classify(space), which must be kRealVector3 or kSE3. @throws std::invalid_argument naming
+/// `user` (e.g. "3D ACD samplers") and the space otherwise.
+SpaceKind Classify3d(const ompl::base::StateSpace* space, const std::string& user);
 
 /// Writes `draw` into `state` (kRealVector3 or kSE3): the position, and for SE(3) the draw's
 /// rotation if it has one, else a uniform one. @returns false (state unspecified) if the
