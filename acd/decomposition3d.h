@@ -40,6 +40,8 @@ struct Opening3d {
 struct Plane3d {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< Unit.
   double offset = 0.0;
+  /// The signed distance of `p` from the plane, positive on the side the normal points to.
+  double SignedDistance(const Eigen::Vector3d& p) const { return normal.dot(p) - offset; }
 };
 
 /// A node of the hierarchy tree (Ch. III, Fig. 9(b)), as in 2D.

@@ -44,7 +44,8 @@ PointLocator::PointLocator(std::shared_ptr<const ObstacleSet> obstacles, LocateM
     const double slack = 1e-12 * (1 + obstacles_->bounds.sizes().norm() +
                                   obstacles_->bounds.max().cwiseAbs().maxCoeff() +
                                   obstacles_->bounds.min().cwiseAbs().maxCoeff());
-    impl_->hulls = internal::HullGrid(planes, boxes, slack, obstacles_->dimension == 2);
+    impl_->hulls = internal::HullGrid(planes, boxes, slack, obstacles_->dimension == 2,
+                                      internal::HullGrid::kFineCells);
   }
 }
 

@@ -81,7 +81,7 @@ void ScorePiece(const std::vector<Eigen::Vector3d>& hulled,
   std::vector<char> in_cut(static_cast<size_t>(corners.rows()));
   for (Eigen::Index v = 0; v < corners.rows(); ++v) {
     in_cut[static_cast<size_t>(v)] =
-        std::abs(cut.normal.dot(corners.row(v).transpose()) - cut.offset) <= tol;
+        std::abs(cut.SignedDistance(corners.row(v).transpose())) <= tol;
   }
   std::vector<char> cap(static_cast<size_t>(planes.rows()), 0), tried(cap.size(), 0);
   for (Eigen::Index t = 0; t < hull.mesh.triangles.rows(); ++t) {
@@ -293,7 +293,7 @@ CutPlaneRanking::CutPlaneRanking(const TriangleMesh& mesh, const SolidConcavity&
     VerticesInPlane in_plane;
     cap.normal.cwiseAbs().maxCoeff(&in_plane.axis);
     for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i) {
-      if (std::abs(cap.normal.dot(mesh.vertices.row(i).transpose()) - cap.offset) <= tol_)
+      if (std::abs(cap.SignedDistance(mesh.vertices.row(i).transpose())) <= tol_)
         in_plane.vertices.push_back(static_cast<int>(i));
     }
     if (in_plane.vertices.size() > 3) caps_.push_back(std::move(in_plane));
@@ -374,7 +374,7 @@ void CutPlaneRanking::ScoreNextSide(Candidate* candidate) {
   const Eigen::Index n = mesh_.vertices.rows();
   Eigen::VectorXd s(n);
   for (Eigen::Index i = 0; i < n; ++i)
-    s(i) = plane.normal.dot(mesh_.vertices.row(i).transpose()) - plane.offset;
+    s(i) = plane.SignedDistance(mesh_.vertices.row(i).transpose());
   int axis = 0;
   plane.normal.cwiseAbs().maxCoeff(&axis);
   if (candidate->sides_scored == 0) {

@@ -74,9 +74,9 @@ struct HullSorter {
 
 }  // namespace
 
-Eigen::Vector3i HullGrid::CellsPerAxis(const Eigen::Vector3d& extent,
-                                       const Eigen::Vector3i& fixed) {
-  // Cubic cells of edge h, (extent / h) per axis and about kTargetCells in all, except on an
+Eigen::Vector3i HullGrid::CellsPerAxis(const Eigen::Vector3d& extent, const Eigen::Vector3i& fixed,
+                                       int target_cells) {
+  // Cubic cells of edge h, (extent / h) per axis and about target_cells in all, except on an
   // axis where that gives fewer than kMinCellsPerAxis: a flat set of hulls (a wall, a plaque)
   // would otherwise have a few layers of cells, nearly all crossed by its two large faces. Such
   // an axis gets kMinCellsPerAxis and the others share what is left, cubically again. An
@@ -84,7 +84,7 @@ Eigen::Vector3i HullGrid::CellsPerAxis(const Eigen::Vector3d& extent,
   Eigen::Vector3i cells;  // 0: not set yet
   for (int k = 0; k < 3; ++k) cells[k] = fixed[k] > 0 ? fixed[k] : extent[k] > 0 ? 0 : 1;
   for (;;) {
-    double budget = kTargetCells, free_volume = 1;
+    double budget = target_cells, free_volume = 1;
     int free_axes = 0;
     for (int k = 0; k < 3; ++k) {
       if (cells[k] > 0) {
@@ -106,7 +106,7 @@ Eigen::Vector3i HullGrid::CellsPerAxis(const Eigen::Vector3d& extent,
     if (flat) continue;
     for (int k = 0; k < 3; ++k) {
       if (cells[k] == 0) {
-        cells[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / h)), 1, kTargetCells);
+        cells[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / h)), 1, target_cells);
       }
     }
     return cells;
@@ -114,7 +114,8 @@ Eigen::Vector3i HullGrid::CellsPerAxis(const Eigen::Vector3d& extent,
 }
 
 HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& planes,
-                   const std::vector<Eigen::AlignedBox3d>& boxes, double slack, bool prisms_in_z)
+                   const std::vector<Eigen::AlignedBox3d>& boxes, double slack, bool prisms_in_z,
+                   int target_cells)
     : hull_count_(static_cast<int>(planes.size())) {
   std::vector<Eigen::AlignedBox3d> loose = boxes;
   Eigen::AlignedBox3d bounds;
@@ -126,7 +127,8 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
   if (loose.empty()) return;
 
   // Inside the border.
-  const Eigen::Vector3i cells = CellsPerAxis(bounds.sizes(), {0, 0, prisms_in_z ? 3 : 0});
+  const Eigen::Vector3i cells =
+      CellsPerAxis(bounds.sizes(), {0, 0, prisms_in_z ? 3 : 0}, target_cells);
   const Eigen::Vector3d extent = bounds.sizes().cwiseMax(1e-300);
   for (int k = 0; k < 3; ++k) {
     cell_size_[k] = extent[k] / cells[k];

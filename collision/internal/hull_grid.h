@@ -11,18 +11,18 @@
 namespace acdplan::collision::internal {
 
 /// Point queries on a set of convex hulls. The hulls' common box is cut into about
-/// `kTargetCells` near-cubic cells (flattened on a thin axis, CellsPerAxis()); each cell lists the
+/// `target_cells` near-cubic cells (flattened on a thin axis, CellsPerAxis()); each cell lists the
 /// hulls that may contain a point of it (no plane of theirs has the whole cell outside), each with
 /// only the planes that cross the cell (the others hold on all of it). A cell inside one hull is
-/// *covered* and a cell no hull reaches is *empty*: one lookup in a 2-bit-per-cell array (about 70
-/// KiB with the grid's border, read from the L1 and L2 caches under random queries) answers their
-/// points. The other, *mixed* cells (where hull surfaces pass) are cut again into 4 x 4 x 4
-/// subcells, each empty, covered or mixed in a 128-bit mask, so that most of their points are
-/// answered without a plane test too; only a point of a mixed subcell tests a few planes of a few
-/// hulls. The answers equal the plain test "n . p <= d + slack for every plane of some hull", up to
-/// rounding at that boundary. Build O(planes x cells met by each hull's surface), by halving blocks
-/// of cells that a plane crosses; a query O(listed planes of its cell). Immutable after
-/// construction; queries are thread-safe.
+/// *covered* and a cell no hull reaches is *empty*: one lookup in a 2-bit-per-cell array (about 18
+/// KiB with the grid's border at kTargetCells, 70 KiB at kFineCells: read from the L1 and L2
+/// caches under random queries) answers their points. The other, *mixed* cells (where hull surfaces
+/// pass) are cut again into 4 x 4 x 4 subcells, each empty, covered or mixed in a 128-bit mask, so
+/// that most of their points are answered without a plane test too; only a point of a mixed subcell
+/// tests a few planes of a few hulls. The answers equal the plain test "n . p <= d + slack for
+/// every plane of some hull", up to rounding at that boundary. Build O(planes x cells met by each
+/// hull's surface), by halving blocks of cells that a plane crosses; a query O(listed planes of its
+/// cell). Immutable after construction; queries are thread-safe.
 class HullGrid {
  public:
   HullGrid() = default;
@@ -31,8 +31,10 @@ class HullGrid {
   /// point of a hull outside it (the test is conservative). `prisms_in_z`: the hulls are prisms
   /// along z queried at mid-height (a 2D world's): three layers of cells in z, so that the middle
   /// one, where the queries fall, is clear of the caps, and the other cells go to x and y.
+  /// `target_cells`: about how many cells (kTargetCells or kFineCells).
   HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& planes,
-           const std::vector<Eigen::AlignedBox3d>& boxes, double slack, bool prisms_in_z = false);
+           const std::vector<Eigen::AlignedBox3d>& boxes, double slack, bool prisms_in_z = false,
+           int target_cells = kTargetCells);
 
   /// True if some hull contains `p`. Inline: most points are answered by one lookup.
   bool AnyContains(const Eigen::Vector3d& p) const {
@@ -48,16 +50,19 @@ class HullGrid {
 
   int size() const { return hull_count_; }
 
-  /// Cells in the grid (about this many when there is at least one hull). Finer cells leave fewer
-  /// points to the mixed cells' slower path: on V-HACD's defsphere (29 hulls), 2^18 cells answered
-  /// about 10% more random points per second than 2^16 and took 2.7 times as long to build (133
-  /// against 49 ms).
-  static constexpr int kTargetCells = 1 << 18;
+  /// Cells in a grid by default (about this many when there is at least one hull).
+  static constexpr int kTargetCells = 1 << 16;
+  /// Cells in a grid made for point location alone (PointLocator): finer cells leave fewer points
+  /// to the mixed cells' slower path. On V-HACD's defsphere (29 hulls) 2^18 cells answered about
+  /// 10% more random points per second than 2^16, and took 2.7 times as long to build (133 against
+  /// 49 ms): too slow for the grid every CollisionWorld builds.
+  static constexpr int kFineCells = 1 << 18;
   /// Fewest cells on an axis of positive extent (CellsPerAxis()).
   static constexpr int kMinCellsPerAxis = 16;
-  /// Cells per axis for a box of `extent` (border excluded): see the definition. An axis whose
-  /// `fixed` entry is positive gets that many.
-  static Eigen::Vector3i CellsPerAxis(const Eigen::Vector3d& extent, const Eigen::Vector3i& fixed);
+  /// Cells per axis for a box of `extent` (border excluded), about `target_cells` in all: see the
+  /// definition. An axis whose `fixed` entry is positive gets that many.
+  static Eigen::Vector3i CellsPerAxis(const Eigen::Vector3d& extent, const Eigen::Vector3i& fixed,
+                                      int target_cells = kTargetCells);
 
  private:
   /// A hull listed in a cell, with the planes of it that cross the cell.

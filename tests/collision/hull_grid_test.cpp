@@ -164,7 +164,9 @@ TEST(HullGrid, CellsAreCubicExceptOnAThinAxis) {
   };
   const Eigen::Vector3i none = Eigen::Vector3i::Zero();
   const Eigen::Vector3i cube = cells({2, 2, 2}, none);
-  EXPECT_EQ(cube, Eigen::Vector3i(64, 64, 64));  // 64^3 = 2^18
+  EXPECT_EQ(cube, Eigen::Vector3i(41, 41, 41));
+  EXPECT_EQ(HullGrid::CellsPerAxis({2, 2, 2}, none, HullGrid::kFineCells),
+            Eigen::Vector3i(64, 64, 64));  // 64^3 = 2^18
   // A slab: kMinCellsPerAxis across it, the rest cubic.
   const Eigen::Vector3i slab = cells({10, 10, 0.1}, none);
   EXPECT_EQ(slab.z(), HullGrid::kMinCellsPerAxis);
@@ -172,7 +174,7 @@ TEST(HullGrid, CellsAreCubicExceptOnAThinAxis) {
   EXPECT_TRUE(about_target(slab)) << slab.transpose();
   // A rod: two thin axes.
   const Eigen::Vector3i rod = cells({0.1, 10, 0.1}, none);
-  EXPECT_EQ(rod, Eigen::Vector3i(16, 1024, 16));
+  EXPECT_EQ(rod, Eigen::Vector3i(16, 256, 16));
   // A fixed axis, and an axis without extent.
   const Eigen::Vector3i prisms = cells({5, 5, 1}, Eigen::Vector3i(0, 0, 3));
   EXPECT_EQ(prisms.z(), 3);
