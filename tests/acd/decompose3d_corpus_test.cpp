@@ -106,6 +106,8 @@ TEST_P(Decompose3dCorpusMesh, DecomposesAndPassesTheCheck) {
   }
 }
 
+// Largest file first: ctest starts these tests in this order (tests/CMakeLists.txt, PER_TEST), and
+// the largest mesh takes the longest, so it should not be the last one left running.
 std::vector<std::filesystem::path> TestedFiles() {
   const std::vector<std::filesystem::path> files = MeshCorpusFiles();
   std::vector<std::filesystem::path> tested;
@@ -114,6 +116,10 @@ std::vector<std::filesystem::path> TestedFiles() {
       tested.push_back(file);
     }
   }
+  std::stable_sort(tested.begin(), tested.end(),
+                   [](const std::filesystem::path& a, const std::filesystem::path& b) {
+                     return std::filesystem::file_size(a) > std::filesystem::file_size(b);
+                   });
   return tested;
 }
 
