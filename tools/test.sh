@@ -77,7 +77,7 @@ else
 fi
 
 # Each test executable runs as a few gtest shards, not one process per test
-# (tests/CMakeLists.txt): the per-process start-up was a third of the Release suite's CPU time.
+# (tests/CMakeLists.txt): the per-process start-up was a quarter of the Release suite's CPU time.
 if ! cmake -S "$root" -B "$build_dir" "${cmake_args[@]}" -DACDPLAN_BUILD_TESTS=ON \
   -DACDPLAN_TEST_SHARDS=ON; then
   echo "$label: 0 passed, 0 failed (configure failed, no tests ran)"
