@@ -14,11 +14,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "acd/check_decomposition3d.h"
@@ -116,10 +118,13 @@ std::vector<std::filesystem::path> TestedFiles() {
       tested.push_back(file);
     }
   }
-  std::stable_sort(tested.begin(), tested.end(),
-                   [](const std::filesystem::path& a, const std::filesystem::path& b) {
-                     return std::filesystem::file_size(a) > std::filesystem::file_size(b);
-                   });
+  std::vector<std::pair<std::uintmax_t, std::filesystem::path>> by_size;
+  for (const std::filesystem::path& file : tested) {
+    by_size.emplace_back(std::filesystem::file_size(file), file);
+  }
+  std::stable_sort(by_size.begin(), by_size.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (size_t i = 0; i < by_size.size(); ++i) tested[i] = by_size[i].second;
   return tested;
 }
 
