@@ -1,15 +1,22 @@
 #pragma once
-// Where the tests find the repository's data and configuration files.
+// Where the tests find the repository's data and configuration files and the acdplan binary.
 
 #include <filesystem>
 #include <string>
 
 namespace acdplan::test {
 
+/// The repository's root folder (this checkout). Defined in a file tests/CMakeLists.txt
+/// generates, so that no compiled test unit names the checkout's folder.
+std::string SourceDir();
+/// The repository's data/ folder.
+std::string DataDir();
+/// The built `acdplan` command line; empty in a build without tools (ACDPLAN_BUILD_TOOLS=OFF).
+std::string AcdplanBinary();
+
 /// data/polygons/acd2d: the polygons of Lien's ACD code.
-inline const std::filesystem::path kAcd2d =
-    std::filesystem::path(ACDPLAN_DATA_DIR) / "polygons" / "acd2d";
+inline const std::filesystem::path kAcd2d = std::filesystem::path(DataDir()) / "polygons" / "acd2d";
 /// configs/ (scenarios, benchmark specifications), without a trailing slash.
-inline const std::string kConfigs = std::string(ACDPLAN_SOURCE_DIR) + "/configs";
+inline const std::string kConfigs = SourceDir() + "/configs";
 
 }  // namespace acdplan::test

@@ -9,6 +9,7 @@
 #include "acd/decompose2d.h"
 #include "acd/read_polygons.h"
 #include "tests/acd/problem_lines.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd {
 namespace {
@@ -328,7 +329,7 @@ TEST(CheckDecompositionTest, ProblemListIsCapped) {
 
 TEST(CheckDecompositionTest, NazcaMonkeyConvexDecomposition) {
   const std::vector<Polygon2d> input =
-      ReadPolygons(std::string(ACDPLAN_DATA_DIR) + "/polygons/acd2d/nazca/nazca_monkey.poly");
+      ReadPolygons(acdplan::test::DataDir() + "/polygons/acd2d/nazca/nazca_monkey.poly");
   ASSERT_FALSE(input.empty());
   Decomposition2d d = Decompose2d(input, Decompose2dOptions{});
   ASSERT_GT(d.components.size(), 1u);

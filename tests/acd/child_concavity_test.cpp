@@ -10,6 +10,7 @@
 #include "acd/internal/resolve.h"
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd {
 namespace {
@@ -65,7 +66,7 @@ int CompareAlongDecomposition(const Polygon2d& polygon, const ConcavityOptions& 
 }
 
 TEST(ChildConcavityTest, EqualsAFullMeasureOnEveryPieceOfRealPolygons) {
-  const std::string dir = std::string(ACDPLAN_DATA_DIR) + "/polygons/acd2d/";
+  const std::string dir = acdplan::test::DataDir() + "/polygons/acd2d/";
   for (const char* file : {"nazca/nazca_monkey.poly", "neuron/neuron.poly", "hole3.poly",
                            "star/star4_noise.poly", "mammoth.poly"}) {
     std::vector<double> radii;

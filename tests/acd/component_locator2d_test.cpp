@@ -9,6 +9,7 @@
 #include "acd/decompose2d.h"
 #include "acd/read_polygons.h"
 #include "base/random.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd {
 namespace {
@@ -45,7 +46,7 @@ double DistanceToBoundary(const Polygon2d& polygon, const Point2d& p) {
 
 TEST(ComponentLocator2d, AgreesWithABruteForceScanAwayFromTheCuts) {
   const std::vector<Polygon2d> input =
-      ReadPolygons(std::string(ACDPLAN_DATA_DIR) + "/polygons/acd2d/neuron/neuron.poly");
+      ReadPolygons(acdplan::test::DataDir() + "/polygons/acd2d/neuron/neuron.poly");
   Decompose2dOptions options;
   options.tau = 0.02 * ReferenceRadius(input[0]);
   const Decomposition2d d = Decompose2d(input, options);

@@ -9,6 +9,7 @@
 
 #include "acd/mesh_measures.h"
 #include "solid_test_meshes.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -70,7 +71,7 @@ TriangleMesh SplitFacesAt(const TriangleMesh& mesh, double z, int rounds) {
 
 TriangleMesh Load(const std::string& name) {
   TriangleMesh mesh =
-      test::ReadObjForTest(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name + ".obj");
+      test::ReadObjForTest(acdplan::test::DataDir() + "/meshes/vhacd/" + name + ".obj");
   if (MeshVolume(mesh) < 0) mesh.triangles.col(1).swap(mesh.triangles.col(2));
   return mesh;
 }

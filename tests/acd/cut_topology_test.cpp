@@ -9,6 +9,7 @@
 #include "acd/internal/exact_plane_split.h"
 #include "base/random.h"
 #include "solid_test_meshes.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -69,7 +70,7 @@ TEST(PredictCutTopology, NoPredictionForAPlaneThroughAFace) {
 // Every prediction made equals the exact cut, for planes at random and planes through a vertex
 // (whose height rounds to about 0: the uncertain case), on a cup and meshes with handles.
 TEST(PredictCutTopology, EqualsTheExactCutWheneverItPredicts) {
-  const std::string dir = std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/";
+  const std::string dir = acdplan::test::DataDir() + "/meshes/vhacd/";
   const std::vector<std::pair<std::string, TriangleMesh>> meshes = {
       {"torus", test::Torus(2, 0.5, 24, 12)},
       {"torus1", test::ReadObjForTest(dir + "torus1.obj")},

@@ -1,5 +1,5 @@
 // Property tests of Decompose2d() on the whole acd2d corpus: every .poly file under
-// ACDPLAN_DATA_DIR/polygons/acd2d (found at run time) x the four concavity measures x
+// data/polygons/acd2d (found at run time) x the four concavity measures x
 // tau_rel in {0, 0.005, 0.01, 0.05, 0.1}; each decomposition must pass CheckDecomposition()
 // (components tile the input, are simple, and are tau-convex under the measure used).
 // bird.poly, shipped broken, must be rejected with its documented message; simple5.poly, which
@@ -499,7 +499,7 @@ TEST(Decompose2dTest, VerticesFarOutsideTheReflexVerticesBox) {
 // must now decompose both validly, with the exact input area. Coordinates above 1e100 are
 // rejected by PreparePolygons() (regression-overflowing-coordinate.wkt).
 TEST(Decompose2dTest, HugeCoordinatesWhoseAreaTermsCancel) {
-  const fs::path corpus = fs::path(ACDPLAN_SOURCE_DIR) / "fuzz" / "corpus" / "decompose2d";
+  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
   // The last: the wedge at the largest magnitude PreparePolygons() accepts (1e100).
   const std::pair<std::string, double> cases[] = {{"regression-huge-spike-area.poly", 2191.5},
                                                   {"regression-zero-area-component.wkt", 5e58},
@@ -534,7 +534,7 @@ TEST(Decompose2dTest, HugeCoordinatesWhoseAreaTermsCancel) {
 // the cone ("could not resolve a piece"). The hit now snaps only within rounding noise, and is
 // constructed from the nearer edge end. The same wedge at other lengths and mirrored, too.
 TEST(Decompose2dTest, BisectorHitNearTheEndOfAVeryLongEdge) {
-  const fs::path corpus = fs::path(ACDPLAN_SOURCE_DIR) / "fuzz" / "corpus" / "decompose2d";
+  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
   std::vector<std::vector<Polygon2d>> inputs = {
       ReadPolygons((corpus / "regression-long-edge-bisector-snap.wkt").string())};
   for (const double far : {1e3, 1e6, 64526540.0, 1e9, 1e12}) {

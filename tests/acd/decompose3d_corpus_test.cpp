@@ -30,6 +30,7 @@
 #include "envs/mesh_loader.h"
 #include "tests/acd/problem_lines.h"
 #include "tests/asan_build.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd {
 namespace {
@@ -47,7 +48,7 @@ const std::set<std::string> kSolidNotYet = {};
 std::vector<std::filesystem::path> MeshCorpusFiles() {
   std::vector<std::filesystem::path> files;
   for (const auto& entry :
-       std::filesystem::directory_iterator(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd")) {
+       std::filesystem::directory_iterator(acdplan::test::DataDir() + "/meshes/vhacd")) {
     if (entry.path().extension() == ".obj") files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());

@@ -12,6 +12,7 @@
 #include "acd/prepare_mesh.h"
 #include "envs/mesh_loader.h"
 #include "tests/acd/problem_lines.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd {
 namespace {
@@ -22,7 +23,7 @@ void ExpectPasses(const std::string& name, double tau_rel, bool repair) {
 #ifndef NDEBUG
   GTEST_SKIP() << "Release only";
 #endif
-  const std::string path = std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name;
+  const std::string path = acdplan::test::DataDir() + "/meshes/vhacd/" + name;
   PrepareMeshOptions options;
   options.repair = repair;
   const PreparedMesh prepared = PrepareMesh(envs::ReadMesh(path), options, path);
@@ -61,7 +62,7 @@ TEST(Decompose3dDefectsTest, BunnySurfaceHasNoMorePatchesThanTable5) {
 #ifndef NDEBUG
   GTEST_SKIP() << "Release only";
 #endif
-  const std::string path = std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/bunny.obj";
+  const std::string path = acdplan::test::DataDir() + "/meshes/vhacd/bunny.obj";
   const PreparedMesh prepared = PrepareMesh(envs::ReadMesh(path), {}, path);
   for (const auto& [tau_rel, table5] : {std::pair<double, size_t>{0.2, 6}, {0.02, 97}}) {
     const double tau = tau_rel * ReferenceRadius(prepared.mesh);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "tests/data_paths.h"
 #include "tests/input_error_of.h"
 
 namespace acdplan::acd {
@@ -57,7 +58,7 @@ TEST(PolyReaderTest, MalformedNumberNamesFileLineAndToken) {
 }
 
 TEST(PolyReaderTest, BirdPolyLine47IsAMalformedNumber) {
-  const std::string path = std::string(ACDPLAN_DATA_DIR) + "/polygons/acd2d/bird.poly";
+  const std::string path = acdplan::test::DataDir() + "/polygons/acd2d/bird.poly";
   std::ifstream in(path);
   ASSERT_TRUE(in) << path;
   try {

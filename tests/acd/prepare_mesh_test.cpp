@@ -17,6 +17,7 @@
 #include "envs/mesh_loader.h"
 #include "solid_test_meshes.h"
 #include "tests/asan_build.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd {
 namespace {
@@ -382,8 +383,7 @@ TEST(PrepareMeshTest, AMoebiusBandIsAnOpenPatchAndRepairDoesNotCrash) {
 TEST(PrepareMeshTest, RepairReplacesAShellThatCrossesItselfByItsSolid) {
   // teddy.obj is closed and manifold, but one shell crosses itself in 6 pairs of faces: repair
   // replaces it by the solid it winds around (UniteByWinding), where the overlap counts once.
-  const TriangleMesh teddy =
-      envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/teddy.obj");
+  const TriangleMesh teddy = envs::ReadMesh(acdplan::test::DataDir() + "/meshes/vhacd/teddy.obj");
   const PreparedMesh as_read = PrepareMesh(teddy, {}, "teddy.obj");
   EXPECT_FALSE(as_read.solid());
   EXPECT_EQ(as_read.defects.self_intersections, 6);
@@ -409,7 +409,7 @@ TEST(ReferenceRadiusTest, CubeOfSideTwoHasRadiusSqrtThree) {
 TEST(PrepareMeshCorpusTest, EveryVhacdMeshPreparesAndRepairsIntoPositiveParts) {
   std::vector<std::filesystem::path> files;
   for (const auto& entry :
-       std::filesystem::directory_iterator(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd")) {
+       std::filesystem::directory_iterator(acdplan::test::DataDir() + "/meshes/vhacd")) {
     if (entry.path().extension() == ".obj") files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());

@@ -18,6 +18,7 @@
 #include "acd/prepare_mesh.h"
 #include "envs/mesh_loader.h"
 #include "solid_test_meshes.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd {
 namespace {
@@ -50,8 +51,7 @@ std::vector<std::unique_ptr<char[]>> Garbage(int run) {
 
 TEST(ReproducibilityTest, RepairedTeapotIsTheSameEveryTime) {
   // Holes filled, then 4 crossing shells united by the exact winding rule.
-  const TriangleMesh teapot =
-      envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/teapot.obj");
+  const TriangleMesh teapot = envs::ReadMesh(acdplan::test::DataDir() + "/meshes/vhacd/teapot.obj");
   const PreparedMesh first = Repaired(teapot);
   ASSERT_TRUE(first.solid()) << first.defects.first;
   const std::string expected = Bytes(first);

@@ -14,6 +14,7 @@
 #include "acd/mesh_measures.h"
 #include "acd/prepare_mesh.h"
 #include "solid_test_meshes.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::acd {
 namespace {
@@ -22,7 +23,7 @@ using test::IsClosed;
 
 TriangleMesh Load(const std::string& name) {
   TriangleMesh mesh =
-      test::ReadObjForTest(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name + ".obj");
+      test::ReadObjForTest(acdplan::test::DataDir() + "/meshes/vhacd/" + name + ".obj");
   if (MeshVolume(mesh) < 0) mesh.triangles.col(1).swap(mesh.triangles.col(2));
   return mesh;
 }

@@ -10,6 +10,7 @@
 
 #include "base/input_error.h"
 #include "bench/vhacd_peer.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::bench {
 namespace {
@@ -18,7 +19,7 @@ namespace {
   EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << (haystack)
 
 std::string Mesh(const std::string& name) {
-  return std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name;
+  return acdplan::test::DataDir() + "/meshes/vhacd/" + name;
 }
 
 TEST(Acd3dBench, ACubeIsOneConvexPartPerTau) {
@@ -28,7 +29,7 @@ TEST(Acd3dBench, ACubeIsOneConvexPartPerTau) {
   options.methods = {kAcdSolid};
   options.repeats = 1;
   options.check = true;
-  options.data_dir = std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd";
+  options.data_dir = acdplan::test::DataDir() + "/meshes/vhacd";
   options.max_hulls = 3;  // A closed mesh: one more cell, capped, at capped_tau_rel.
   options.capped_tau_rel = 0.1;
   const Acd3dBenchResult result = RunAcd3dBench(options);

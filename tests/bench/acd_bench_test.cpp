@@ -8,11 +8,13 @@
 #include <cmath>
 #include <string>
 
+#include "tests/data_paths.h"
+
 namespace acdplan::bench {
 namespace {
 
 std::string Polygon(const std::string& name) {
-  return std::string(ACDPLAN_DATA_DIR) + "/polygons/acd2d/" + name;
+  return acdplan::test::DataDir() + "/polygons/acd2d/" + name;
 }
 
 const TargetRow* Find(const std::vector<TargetRow>& rows, const std::string& method,

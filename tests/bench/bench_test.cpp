@@ -419,7 +419,7 @@ TEST(BenchRunner, AcdBeatsUniformOnFigure4) {
 }
 
 TEST(BenchRunner, RunsAnOmplAppProblemWithItsOwnRobot) {
-  const std::string cfg = std::string(ACDPLAN_SOURCE_DIR) + "/tests/data/ompl_app/planar.cfg";
+  const std::string cfg = acdplan::test::SourceDir() + "/tests/data/ompl_app/planar.cfg";
   const BenchSpec spec = LoadBenchSpec(WriteBench(
       "cfg", "name: cfg\nseed: 3\nruns: 2\nworlds:\n  - scenario: " + cfg +
                  "\nrobots:\n  - {name: own, shape: scenario}\n"
@@ -447,7 +447,7 @@ TEST(BenchRunner, RunsAnOmplAppProblemWithItsOwnRobot) {
 TEST(BenchRunner, RunsA3dWorldWithTheLead) {
   const fs::path cache = Scratch("3d_cache");
   setenv("ACDPLAN_CACHE_DIR", cache.c_str(), 1);
-  const std::string scenario = std::string(ACDPLAN_SOURCE_DIR) + "/configs/window_wall_3d.yaml";
+  const std::string scenario = acdplan::test::SourceDir() + "/configs/window_wall_3d.yaml";
   const BenchSpec spec = LoadBenchSpec(
       WriteBench("world3d", "name: world3d\nseed: 2\nruns: 1\nworlds:\n  - scenario: " + scenario +
                                 "\nrobots:\n  - {name: own, shape: scenario}\n"
@@ -576,7 +576,7 @@ TEST(BenchReport, OmplLogLoadsInOmplBenchmarkStatistics) {
 /// Runs the acdplan binary; its exit status.
 int Acdplan(const std::string& arguments, const fs::path& output) {
   const std::string command =
-      std::string(ACDPLAN_BINARY) + " " + arguments + " > '" + output.string() + "' 2>&1";
+      acdplan::test::AcdplanBinary() + " " + arguments + " > '" + output.string() + "' 2>&1";
   const int raw = std::system(command.c_str());
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
@@ -611,7 +611,7 @@ TEST(BenchCli, BenchCollisionNamesTheFlagOfABadPath) {
 
 TEST(BenchCli, BenchCollisionRunsOnlyTheMeshesOfMeshes) {
   const fs::path dir = Scratch("cli_collision_meshes");
-  const std::string meshes = std::string(ACDPLAN_SOURCE_DIR) + "/data/meshes/vhacd";
+  const std::string meshes = acdplan::test::SourceDir() + "/data/meshes/vhacd";
   EXPECT_EQ(Acdplan("bench-collision --poses 2 --points 2 --mesh-dir '" + meshes +
                         "' --meshes cube.obj,cube-notch.obj",
                     dir / "o.txt"),
@@ -630,6 +630,7 @@ TEST(BenchCli, CtrlCWritesTheFinishedRunsAndExits130) {
       "cli_sigint", "name: sigint\nruns: 40\nworlds:\n  - scenario: " + kConfigs +
                         "/demo.yaml\ncases:\n  - {samplers: [bridge], planners: [RRT], budgets: "
                         "[{time_limit: 0.5}]}\n");
+  const std::string binary = acdplan::test::AcdplanBinary();
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
@@ -637,7 +638,7 @@ TEST(BenchCli, CtrlCWritesTheFinishedRunsAndExits130) {
     const std::string log = (dir / "log.txt").string();
     freopen(log.c_str(), "w", stderr);
     freopen(log.c_str(), "a", stdout);
-    execl(ACDPLAN_BINARY, ACDPLAN_BINARY, "bench", spec.c_str(), "--out", out.c_str(), "--no-plots",
+    execl(binary.c_str(), binary.c_str(), "bench", spec.c_str(), "--out", out.c_str(), "--no-plots",
           static_cast<char*>(nullptr));
     _exit(127);
   }

@@ -12,6 +12,7 @@
 #include "envs/generators.h"
 #include "envs/mesh_loader.h"
 #include "test_worlds.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::collision {
 namespace {
@@ -252,7 +253,7 @@ class CollisionWorldVhacdMesh : public ::testing::TestWithParam<std::string> {};
 TEST_P(CollisionWorldVhacdMesh, HullsExactEqualsBvhAndHullsAreConservative) {
   envs::Workspace3d workspace;
   workspace.obstacles.push_back(
-      envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + GetParam() + ".obj"));
+      envs::ReadMesh(acdplan::test::DataDir() + "/meshes/vhacd/" + GetParam() + ".obj"));
   const Eigen::AlignedBox3d box = acd::BoundingBox(workspace.obstacles[0]);
   workspace.bounds =
       Eigen::AlignedBox3d(box.min() - 0.1 * box.sizes(), box.max() + 0.1 * box.sizes());

@@ -16,6 +16,7 @@
 #include "envs/generators.h"
 #include "envs/mesh_loader.h"
 #include "test_worlds.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::collision {
 namespace {
@@ -167,7 +168,7 @@ TEST(ObstacleSet3d, ConvexPiecesLieInsideTheObstacle) {
   for (const std::string& name : names) {
     SCOPED_TRACE(name);
     const envs::Workspace3d world = testing::MeshWorld(
-        envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + name + ".obj"));
+        envs::ReadMesh(acdplan::test::DataDir() + "/meshes/vhacd/" + name + ".obj"));
     auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(world));
     const PointLocator exact(set, LocateMethod::kExact);
     EXPECT_FALSE(set->pieces.empty());

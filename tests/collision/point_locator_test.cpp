@@ -12,6 +12,7 @@
 #include "envs/generators.h"
 #include "envs/mesh_loader.h"
 #include "test_worlds.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::collision {
 namespace {
@@ -262,7 +263,7 @@ class PointLocatorVhacdMesh : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PointLocatorVhacdMesh, HullsNeverSayOutsideWhereExactSaysInside) {
   const envs::Workspace3d workspace = testing::MeshWorld(
-      envs::ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/" + GetParam() + ".obj"));
+      envs::ReadMesh(acdplan::test::DataDir() + "/meshes/vhacd/" + GetParam() + ".obj"));
   auto set = std::make_shared<const ObstacleSet>(BuildObstacleSet(workspace));
   const PointLocator exact(set, LocateMethod::kExact), hulls(set, LocateMethod::kHulls);
   std::vector<Eigen::Vector3d> points;

@@ -14,6 +14,7 @@
 #include "envs/load_workspace.h"
 #include "envs/mesh_loader.h"
 #include "envs/workspace_yaml.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::envs {
 namespace {
@@ -231,7 +232,7 @@ TEST(Generators3d, ShippedWorldsMatchTheGenerators) {
   for (const std::string& name : Generator3dNames()) {
     SCOPED_TRACE(name);
     const Workspace3d expected = GenerateWorkspace3d(name, 1);
-    const std::string path = std::string(ACDPLAN_SOURCE_DIR) + "/envs/3d/" + name + ".yaml";
+    const std::string path = acdplan::test::SourceDir() + "/envs/3d/" + name + ".yaml";
     const Workspace3d shipped = LoadWorkspace3dYaml(path);
     EXPECT_EQ(shipped.description, expected.description);
     EXPECT_TRUE(shipped.bounds.isApprox(expected.bounds));
@@ -251,7 +252,7 @@ TEST(Generators3d, ShippedWorldsMatchTheGenerators) {
 }
 
 TEST(Generators3d, RobotMeshesAreClosedSolids) {
-  const std::string robots = std::string(ACDPLAN_SOURCE_DIR) + "/data/robots/";
+  const std::string robots = acdplan::test::SourceDir() + "/data/robots/";
   const acd::TriangleMesh rod = ReadMesh(robots + "rod.obj");
   EXPECT_TRUE(acd::PrepareMesh(rod).solid());
   EXPECT_NEAR(acd::MeshVolume(rod), 3 * 0.5 * 0.5, 1e-6);  // assimp reads floats

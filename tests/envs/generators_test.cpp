@@ -6,6 +6,7 @@
 #include "envs/free_space2d.h"
 #include "envs/workspace_yaml.h"
 #include "test_util.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::envs {
 namespace {
@@ -55,7 +56,7 @@ TEST_P(GeneratorTest, SameSeedSameWorldOtherSeedOtherWorld) {
 TEST_P(GeneratorTest, CommittedFileMatchesTheGenerator) {
   // envs/2d/<name>.yaml is the default instance with seed 1 (envs/tools/generate_envs.cpp).
   const Workspace2d file =
-      LoadWorkspace2dYaml(std::string(ACDPLAN_SOURCE_DIR) + "/envs/2d/" + GetParam() + ".yaml");
+      LoadWorkspace2dYaml(acdplan::test::SourceDir() + "/envs/2d/" + GetParam() + ".yaml");
   const Workspace2d generated = GenerateWorkspace2d(GetParam(), 1);
   EXPECT_TRUE(SameWorld(file, generated)) << "regenerate with acdplan_generate_envs envs/2d";
   EXPECT_EQ(file.description, generated.description);

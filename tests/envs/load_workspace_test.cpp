@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "test_util.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::envs {
 namespace {
@@ -38,7 +39,7 @@ TEST(LoadWorkspace2dTest, DispatchesByExtensionAndContent) {
 
 TEST(LoadWorkspace2dTest, LoadsEveryBuiltInWorld) {
   for (const auto& entry :
-       std::filesystem::directory_iterator(std::string(ACDPLAN_SOURCE_DIR) + "/envs/2d")) {
+       std::filesystem::directory_iterator(acdplan::test::SourceDir() + "/envs/2d")) {
     if (entry.path().extension() != ".yaml") continue;
     const Workspace2d w = LoadWorkspace2d(entry.path().string());
     EXPECT_FALSE(w.obstacles.empty()) << entry.path();

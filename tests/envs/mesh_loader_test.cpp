@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "test_util.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::envs {
 namespace {
@@ -83,7 +84,7 @@ TEST(ReadMeshTest, ReadsGltfAndCollada) {
 }
 
 TEST(ReadMeshTest, ReadsSharedMeshes) {
-  const acd::TriangleMesh cup = ReadMesh(std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/cup.obj");
+  const acd::TriangleMesh cup = ReadMesh(acdplan::test::DataDir() + "/meshes/vhacd/cup.obj");
   EXPECT_GT(cup.triangles.rows(), 100);
   CheckTriangleMesh(cup, "cup.obj");
 }

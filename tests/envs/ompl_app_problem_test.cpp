@@ -8,6 +8,7 @@
 #include "acd/polygon2d.h"
 #include "base/input_error.h"
 #include "envs/mesh_footprint.h"
+#include "tests/data_paths.h"
 #include "tests/envs/test_util.h"
 #include "tests/input_error_of.h"
 
@@ -16,7 +17,7 @@ namespace {
 
 using testing::TempDir;
 
-const std::string kData = std::string(ACDPLAN_SOURCE_DIR) + "/tests/data/ompl_app/";
+const std::string kData = acdplan::test::SourceDir() + "/tests/data/ompl_app/";
 
 /// The message of the InputError that ReadOmplAppProblem(path) throws ("" if none).
 std::string ErrorOf(const std::string& path) {

@@ -20,6 +20,7 @@
 #include "planning/plan_scenario3d.h"
 #include "planning/scenario.h"
 #include "tests/asan_build.h"
+#include "tests/data_paths.h"
 #include "tests/envs/test_worlds3d.h"
 #include "tests/scratch_dir.h"
 
@@ -341,12 +342,12 @@ TEST_F(Plan3d, Shipped3dConfigsLoad) {
   for (const char* name :
        {"window_wall_3d.yaml", "bug_trap_3d.yaml", "cubicles_3d.yaml", "bent_tube_3d.yaml"}) {
     SCOPED_TRACE(name);
-    const Scenario s = LoadScenario(std::string(ACDPLAN_SOURCE_DIR) + "/configs/" + name);
+    const Scenario s = LoadScenario(acdplan::test::SourceDir() + "/configs/" + name);
     EXPECT_EQ(s.dimension, 3);
     EXPECT_FALSE(s.workspace3d.obstacles.empty());
   }
   // The window wall's one opening is the window (side 1), and acd solves it at seed 1.
-  Scenario s = LoadScenario(std::string(ACDPLAN_SOURCE_DIR) + "/configs/window_wall_3d.yaml");
+  Scenario s = LoadScenario(acdplan::test::SourceDir() + "/configs/window_wall_3d.yaml");
   EXPECT_EQ(s.robot.shape, envs::RobotShape::kMesh);
   const PlanResult r = PlanScenario(s);
   EXPECT_TRUE(r.solved);

@@ -13,11 +13,12 @@
 #include "envs/ompl_app_problem.h"
 #include "planning/plan_scenario.h"
 #include "planning/plan_scenario3d.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::planning {
 namespace {
 
-const std::string kData = std::string(ACDPLAN_SOURCE_DIR) + "/tests/data/ompl_app/";
+const std::string kData = acdplan::test::SourceDir() + "/tests/data/ompl_app/";
 constexpr double kPi = 3.14159265358979323846;
 
 TEST(ScenarioFromOmplApp, Turns2dMeshesIntoFootprints) {
@@ -135,7 +136,7 @@ TEST(ScenarioFromOmplApp, ControlProblemsBecomeCarScenarios) {
 }
 
 TEST(LoadScenarioFile, ReadsYamlScenariosAsBefore) {
-  const Scenario s = LoadScenarioFile(std::string(ACDPLAN_SOURCE_DIR) + "/configs/demo.yaml");
+  const Scenario s = LoadScenarioFile(acdplan::test::SourceDir() + "/configs/demo.yaml");
   EXPECT_FALSE(s.workspace.obstacles.empty());
   EXPECT_FALSE(IsOmplAppProblemFile("configs/demo.yaml"));
   EXPECT_TRUE(IsOmplAppProblemFile("x/Twistycool.CFG"));

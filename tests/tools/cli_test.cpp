@@ -1,4 +1,4 @@
-// Runs the built `acdplan` binary (ACDPLAN_BINARY) and checks exit statuses, messages and
+// Runs the built `acdplan` binary (test::AcdplanBinary()) and checks exit statuses, messages and
 // outputs of `acdplan decompose` (polygons and meshes) and `acdplan env`.
 
 #include <gtest/gtest.h>
@@ -15,15 +15,16 @@
 #include <utility>
 #include <vector>
 
+#include "tests/data_paths.h"
 #include "tests/scratch_dir.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kPolygons = std::string(ACDPLAN_DATA_DIR) + "/polygons/acd2d/";
-const std::string kMeshes = std::string(ACDPLAN_DATA_DIR) + "/meshes/vhacd/";
-const std::string kSource = std::string(ACDPLAN_SOURCE_DIR) + "/";
+const std::string kPolygons = acdplan::test::DataDir() + "/polygons/acd2d/";
+const std::string kMeshes = acdplan::test::DataDir() + "/meshes/vhacd/";
+const std::string kSource = acdplan::test::SourceDir() + "/";
 
 struct RunResult {
   int status = -1;
@@ -47,7 +48,7 @@ class CliTest : public ::testing::Test {
  protected:
   RunResult Acdplan(const std::string& arguments) const {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = Quote(ACDPLAN_BINARY) + " " + arguments + " >" +
+    const std::string command = Quote(acdplan::test::AcdplanBinary()) + " " + arguments + " >" +
                                 Quote(out.string()) + " 2>" + Quote(err.string());
     const int raw = std::system(command.c_str());
     RunResult run;

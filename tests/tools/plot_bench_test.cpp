@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "tests/data_paths.h"
 #include "tests/scratch_dir.h"
 
 namespace acdplan::tools {
@@ -39,8 +40,8 @@ TEST(PlotBench, FindsTheScriptNextToTheExecutableThenInShare) {
 }
 
 TEST(PlotBench, TheBuildPutsTheScriptNextToAcdplan) {
-  EXPECT_EQ(FindPlotBenchScript(ACDPLAN_BINARY, ""),
-            (fs::path(ACDPLAN_BINARY).parent_path() / "plot_bench.py").string());
+  EXPECT_EQ(FindPlotBenchScript(acdplan::test::AcdplanBinary(), ""),
+            (fs::path(acdplan::test::AcdplanBinary()).parent_path() / "plot_bench.py").string());
   EXPECT_FALSE(SelfExecutable().empty());
 }
 
