@@ -38,6 +38,9 @@ if [[ $sanitize -eq 1 && $tsan -eq 1 ]]; then
 fi
 
 jobs=${ACDPLAN_JOBS:-$(nproc)}
+# ccache (CMakeLists.txt uses it when installed) shares its objects between checkouts: paths
+# relative to this one, and the debug-info builds' working folder left out of the hash.
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root} CCACHE_NOHASHDIR=${CCACHE_NOHASHDIR:-1}
 # Given on every configure, so a tree first configured with another compiler is reconfigured.
 clang_args=(-DCMAKE_CXX_COMPILER=clang++)
 label="acdplan tests"
