@@ -10,7 +10,7 @@ namespace acdplan::test {
 /// generates, so that no compiled test unit names the checkout's folder.
 std::string SourceDir();
 /// The repository's data/ folder.
-std::string DataDir();
+inline std::string DataDir() { return SourceDir() + "/data"; }
 /// The built `acdplan` command line; empty in a build without tools (ACDPLAN_BUILD_TOOLS=OFF).
 std::string AcdplanBinary();
 

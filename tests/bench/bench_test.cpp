@@ -611,7 +611,7 @@ TEST(BenchCli, BenchCollisionNamesTheFlagOfABadPath) {
 
 TEST(BenchCli, BenchCollisionRunsOnlyTheMeshesOfMeshes) {
   const fs::path dir = Scratch("cli_collision_meshes");
-  const std::string meshes = acdplan::test::SourceDir() + "/data/meshes/vhacd";
+  const std::string meshes = acdplan::test::DataDir() + "/meshes/vhacd";
   EXPECT_EQ(Acdplan("bench-collision --poses 2 --points 2 --mesh-dir '" + meshes +
                         "' --meshes cube.obj,cube-notch.obj",
                     dir / "o.txt"),

@@ -252,7 +252,7 @@ TEST(Generators3d, ShippedWorldsMatchTheGenerators) {
 }
 
 TEST(Generators3d, RobotMeshesAreClosedSolids) {
-  const std::string robots = acdplan::test::SourceDir() + "/data/robots/";
+  const std::string robots = acdplan::test::DataDir() + "/robots/";
   const acd::TriangleMesh rod = ReadMesh(robots + "rod.obj");
   EXPECT_TRUE(acd::PrepareMesh(rod).solid());
   EXPECT_NEAR(acd::MeshVolume(rod), 3 * 0.5 * 0.5, 1e-6);  // assimp reads floats
