@@ -71,6 +71,11 @@ bool InsideMesh(const Vector3d& p, const acd::TriangleMesh& mesh) {
 
 bool Free(const Workspace3d& w, const Vector3d& p) {
   for (const acd::TriangleMesh& o : w.obstacles) {
+    // Outside an obstacle's box is outside it: the ray test only for points in the box (the
+    // grid of FreeSpaceIsConnected is mostly outside every box).
+    const Eigen::Vector3d low = o.vertices.colwise().minCoeff(),
+                          high = o.vertices.colwise().maxCoeff();
+    if ((p.array() < low.array()).any() || (p.array() > high.array()).any()) continue;
     if (InsideMesh(p, o)) return false;
   }
   return true;
