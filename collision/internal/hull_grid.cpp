@@ -20,55 +20,75 @@ double MaxOver(const Eigen::Vector3d& n, const Eigen::Vector3d& lo, const Eigen:
 
 using Planes = std::vector<Eigen::Vector4d, Eigen::aligned_allocator<Eigen::Vector4d>>;
 
+/// A cell a hull reaches, with the planes of the hull that cross it: crossing[begin, end), indices
+/// into the planes of every hull (HullGrid's constructor).
+struct ReachedCell {
+  int cell;
+  int begin, end;  // into HullSorter::crossing
+};
+
 /// One hull being sorted into the cells.
 struct HullSorter {
   const Planes& planes;  // the hull's planes, d + slack
   Eigen::AlignedBox3d box;
   double slack;
-  Eigen::Vector3d origin, cell_size;
-  Eigen::Vector3i cells;
-  // Per cell: the planes (indices into `planes`) that cross it, for the cells the hull reaches.
-  std::vector<std::pair<int, std::vector<int>>>* reached;
+  Eigen::Vector3d origin, cell_size;  // of the cells inside the border
+  Eigen::Vector3i dims;               // cells per axis, border included
+  // The cells the hull reaches (padded indices); the planes of each are ranges of `crossing`.
+  std::vector<ReachedCell>* reached;
+  std::vector<int>* crossing;
+  // The planes that may cross the block being sorted, a stack of ranges (no allocation per
+  // block: a 2D world's grid sorts tens of thousands of blocks).
+  std::vector<int> stack;
 
-  // Sorts the block of cells [lo, hi] (inclusive), given the planes that may cross it. Cell
-  // boxes are grown by the slack, so that a point rounded into a neighbouring cell still lies in
-  // the box its cell was sorted by. A plane with the whole block beyond it by another slack
-  // excludes the block (the plain test says "outside" for all of it, even after rounding); one
-  // with the whole block inside it by a slack holds for every point of it and is dropped; the
-  // others cross the block, which is halved until it is one cell.
-  void Sort(const Eigen::Vector3i& lo, const Eigen::Vector3i& hi,
-            const std::vector<int>& crossing) {
+  // Sorts the block of cells [lo, hi] (inclusive), given the planes stack[begin, end) that may
+  // cross it. Cell boxes are grown by the slack, so that a point rounded into a neighbouring cell
+  // still lies in the box its cell was sorted by. A plane with the whole block beyond it by
+  // another slack excludes the block (the plain test says "outside" for all of it, even after
+  // rounding); one with the whole block inside it by a slack holds for every point of it and is
+  // dropped; the others cross the block, which is halved until it is one cell.
+  void Sort(const Eigen::Vector3i& lo, const Eigen::Vector3i& hi, size_t begin, size_t end) {
     const Eigen::Vector3d bmin =
         origin + lo.cast<double>().cwiseProduct(cell_size) - Eigen::Vector3d::Constant(slack);
     const Eigen::Vector3d bmax =
         origin + (hi + Eigen::Vector3i::Ones()).cast<double>().cwiseProduct(cell_size) +
         Eigen::Vector3d::Constant(slack);
     if (!Eigen::AlignedBox3d(bmin, bmax).intersects(box)) return;
-    std::vector<int> still;
-    for (const int k : crossing) {
+    const size_t still = stack.size();
+    for (size_t i = begin; i < end; ++i) {
+      const int k = stack[i];
       const Eigen::Vector3d n = planes[static_cast<size_t>(k)].head<3>();
       const double d = planes[static_cast<size_t>(k)](3);
-      if (MinOver(n, bmin, bmax) > d + slack) return;
-      if (MaxOver(n, bmin, bmax) > d - slack) still.push_back(k);
+      if (MinOver(n, bmin, bmax) > d + slack) {
+        stack.resize(still);
+        return;
+      }
+      if (MaxOver(n, bmin, bmax) > d - slack) stack.push_back(k);
     }
+    const size_t still_end = stack.size();
     int axis = 0;
     (hi - lo).maxCoeff(&axis);
-    if (still.empty() || lo == hi) {
+    if (still == still_end || lo == hi) {
+      const int first = static_cast<int>(crossing->size());
+      crossing->insert(crossing->end(), stack.begin() + static_cast<std::ptrdiff_t>(still),
+                       stack.end());
+      const int last = static_cast<int>(crossing->size());
       for (int z = lo.z(); z <= hi.z(); ++z) {
         for (int y = lo.y(); y <= hi.y(); ++y) {
           for (int x = lo.x(); x <= hi.x(); ++x) {
-            reached->emplace_back((z * cells.y() + y) * cells.x() + x, still);
+            reached->push_back({((z + 1) * dims.y() + y + 1) * dims.x() + x + 1, first, last});
           }
         }
       }
-      return;
+    } else {
+      const int mid = (lo[axis] + hi[axis]) / 2;
+      Eigen::Vector3i left_hi = hi, right_lo = lo;
+      left_hi[axis] = mid;
+      right_lo[axis] = mid + 1;
+      Sort(lo, left_hi, still, still_end);
+      Sort(right_lo, hi, still, still_end);
     }
-    const int mid = (lo[axis] + hi[axis]) / 2;
-    Eigen::Vector3i left_hi = hi, right_lo = lo;
-    left_hi[axis] = mid;
-    right_lo[axis] = mid + 1;
-    Sort(lo, left_hi, still);
-    Sort(right_lo, hi, still);
+    stack.resize(still);
   }
 };
 
@@ -137,60 +157,57 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
   origin_ = bounds.min() - cell_size_;
   dims_ = cells + Eigen::Vector3i::Constant(2);
   last_cell_ = (dims_ - Eigen::Vector3i::Ones()).cast<double>();
-  const size_t cell_count = static_cast<size_t>(cells.prod());
-  std::vector<std::uint8_t> covered(cell_count, 0);
-  std::vector<std::vector<Entry>> lists(cell_count);
-  std::vector<Planes> list_planes(cell_count);
-
+  // Every hull's loosened planes, one after the other, and the cells each hull reaches.
+  Planes all_planes;
+  std::vector<int> crossing;                         // indices into all_planes
+  std::vector<std::pair<int, ReachedCell>> reached;  // (hull, cell), hull by hull
+  const size_t padded_count = static_cast<size_t>(dims_.prod());
+  std::vector<std::uint8_t> covered(padded_count, 0);
+  std::vector<ReachedCell> cells_of_hull;
   for (size_t i = 0; i < loose.size(); ++i) {
-    Planes hull;
+    const int first_plane = static_cast<int>(all_planes.size());
     for (Eigen::Index r = 0; r < planes[i].rows(); ++r) {
       Eigen::Vector4d plane = planes[i].row(r).transpose();
       plane(3) += slack;
-      hull.push_back(plane);
+      all_planes.push_back(plane);
     }
-    std::vector<std::pair<int, std::vector<int>>> reached;
-    HullSorter sorter{hull, loose[i], slack, bounds.min(), cell_size_, cells, &reached};
-    std::vector<int> all(hull.size());
-    for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-    sorter.Sort(Eigen::Vector3i::Zero(), cells - Eigen::Vector3i::Ones(), all);
-    for (const auto& [c, crossing] : reached) {
-      Planes& to = list_planes[static_cast<size_t>(c)];
-      Entry entry{static_cast<int>(i), static_cast<int>(to.size()), 0};
-      for (const int k : crossing) to.push_back(hull[static_cast<size_t>(k)]);
-      entry.plane_end = static_cast<int>(to.size());
-      lists[static_cast<size_t>(c)].push_back(entry);
-      if (crossing.empty() && !hull.empty()) covered[static_cast<size_t>(c)] = 1;
+    const Planes hull(all_planes.begin() + first_plane, all_planes.end());
+    cells_of_hull.clear();
+    const size_t first_crossing = crossing.size();
+    HullSorter sorter{hull,           loose[i],  slack, bounds.min(), cell_size_, dims_,
+                      &cells_of_hull, &crossing, {}};
+    for (int k = 0; k < static_cast<int>(hull.size()); ++k) sorter.stack.push_back(k);
+    sorter.Sort(Eigen::Vector3i::Zero(), cells - Eigen::Vector3i::Ones(), 0, hull.size());
+    for (size_t j = first_crossing; j < crossing.size(); ++j) crossing[j] += first_plane;
+    for (const ReachedCell& c : cells_of_hull) {
+      reached.emplace_back(static_cast<int>(i), c);
+      if (c.begin == c.end && !hull.empty()) covered[static_cast<size_t>(c.cell)] = 1;
     }
   }
 
-  // The padded grid: cell (x, y, z) inside the border is (x + 1, y + 1, z + 1).
-  const size_t padded_count = static_cast<size_t>(dims_.prod());
-  std::vector<size_t> inner_of(padded_count, cell_count);  // cell_count: a border cell
-  for (size_t c = 0; c < cell_count; ++c) {
-    const size_t x = c % static_cast<size_t>(cells.x());
-    const size_t y = c / static_cast<size_t>(cells.x()) % static_cast<size_t>(cells.y());
-    const size_t z = c / static_cast<size_t>(cells.x() * cells.y());
-    inner_of[((z + 1) * static_cast<size_t>(dims_.y()) + y + 1) * static_cast<size_t>(dims_.x()) +
-             x + 1] = c;
+  // The entries by cell (a counting sort, hulls in increasing order within a cell), each with
+  // its crossing planes copied next to each other.
+  cell_begin_.assign(padded_count + 1, 0);
+  for (const auto& [hull, c] : reached) ++cell_begin_[static_cast<size_t>(c.cell) + 1];
+  for (size_t c = 0; c < padded_count; ++c) cell_begin_[c + 1] += cell_begin_[c];
+  std::vector<int> next(cell_begin_.begin(), cell_begin_.end() - 1);
+  entries_.resize(reached.size());
+  for (const auto& [hull, c] : reached) {
+    entries_[static_cast<size_t>(next[static_cast<size_t>(c.cell)]++)] = {hull, c.begin, c.end};
+  }
+  cell_planes_.reserve(crossing.size());
+  for (Entry& entry : entries_) {
+    const int begin = static_cast<int>(cell_planes_.size());
+    for (int j = entry.plane_begin; j < entry.plane_end; ++j) {
+      cell_planes_.push_back(all_planes[static_cast<size_t>(crossing[static_cast<size_t>(j)])]);
+    }
+    entry.plane_begin = begin;
+    entry.plane_end = static_cast<int>(cell_planes_.size());
   }
   kinds_.assign((padded_count + 31) / 32, 0);
-  cell_begin_.reserve(padded_count + 1);
-  cell_begin_.push_back(0);
-  for (size_t padded = 0; padded < padded_count; ++padded) {
-    const size_t c = inner_of[padded];
-    if (c < cell_count) {
-      const Kind kind = covered[c] ? kCovered : lists[c].empty() ? kEmpty : kMixed;
-      kinds_[padded >> 5] |= static_cast<std::uint64_t>(kind) << (2 * (padded & 31));
-      const int offset = static_cast<int>(cell_planes_.size());
-      for (Entry entry : lists[c]) {
-        entry.plane_begin += offset;
-        entry.plane_end += offset;
-        entries_.push_back(entry);
-      }
-      cell_planes_.insert(cell_planes_.end(), list_planes[c].begin(), list_planes[c].end());
-    }
-    cell_begin_.push_back(static_cast<int>(entries_.size()));
+  for (size_t c = 0; c < padded_count; ++c) {
+    const Kind kind = covered[c] ? kCovered : cell_begin_[c + 1] > cell_begin_[c] ? kMixed : kEmpty;
+    kinds_[c >> 5] |= static_cast<std::uint64_t>(kind) << (2 * (c & 31));
   }
   // The subcells of the mixed cells, their boxes grown by the slack as the cells' were in
   // HullSorter::Sort.
@@ -201,10 +218,17 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
     mixed += BitCount(word & kMixedBits);
   }
   mixed_subcells_.reserve(static_cast<size_t>(mixed));
-  const Eigen::Vector3d sub_size = cell_size_ / kSubcells;
+  const size_t layer = static_cast<size_t>(dims_.x() * dims_.y());
   for (size_t padded = 0; padded < padded_count; ++padded) {
     if (KindOf(static_cast<int>(padded)) != kMixed) continue;
-    SubcellKinds& sub_kinds = mixed_subcells_.emplace_back();
+    if (prisms_in_z && padded / layer != 2) {
+      // A 2D world's points are at mid-height, in the middle layer (padded z = 2): the caps'
+      // layers are never queried, and their subcells are left mixed (the plane test, as exact)
+      // rather than classified. Most mixed cells of a 2D world are there, under every prism.
+      SubcellKinds& all_mixed = mixed_subcells_.emplace_back();
+      all_mixed.words[0] = all_mixed.words[1] = kMixedBits;
+      continue;
+    }
     const Eigen::Vector3d corner =
         origin_ +
         Eigen::Vector3i(static_cast<int>(padded % static_cast<size_t>(dims_.x())),
@@ -213,16 +237,37 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
                         static_cast<int>(padded / static_cast<size_t>(dims_.x() * dims_.y())))
             .cast<double>()
             .cwiseProduct(cell_size_);
-    for (int s = 0; s < kSubcells * kSubcells * kSubcells; ++s) {
-      const Eigen::Vector3d at =
-          Eigen::Vector3i(s % kSubcells, s / kSubcells % kSubcells, s / (kSubcells * kSubcells))
-              .cast<double>();
-      const Eigen::Vector3d lo =
-          corner + at.cwiseProduct(sub_size) - Eigen::Vector3d::Constant(slack);
-      const Eigen::Vector3d hi = corner + (at + Eigen::Vector3d::Ones()).cwiseProduct(sub_size) +
-                                 Eigen::Vector3d::Constant(slack);
-      const Kind sub_kind = ClassifyBox(static_cast<int>(padded), lo, hi, slack);
-      sub_kinds.words[s >> 5] |= static_cast<std::uint64_t>(sub_kind) << (2 * (s & 31));
+    ClassifySubcells(static_cast<int>(padded), corner, slack, Eigen::Vector3i::Zero(), kSubcells,
+                     &mixed_subcells_.emplace_back());
+  }
+}
+
+void HullGrid::ClassifySubcells(int cell, const Eigen::Vector3d& corner, double slack,
+                                const Eigen::Vector3i& at, int size, SubcellKinds* kinds) const {
+  // A block that is empty or covered as a whole is so in every subcell of it (ClassifyBox of a
+  // smaller box: no plane excludes less, none holds on less), so only mixed blocks are halved:
+  // the same kinds as classifying the 64 subcells one by one, for a fraction of the tests.
+  const Eigen::Vector3d sub_size = cell_size_ / kSubcells;
+  const Eigen::Vector3d lo =
+      corner + at.cast<double>().cwiseProduct(sub_size) - Eigen::Vector3d::Constant(slack);
+  const Eigen::Vector3d hi =
+      corner + (at + Eigen::Vector3i::Constant(size)).cast<double>().cwiseProduct(sub_size) +
+      Eigen::Vector3d::Constant(slack);
+  const Kind kind = ClassifyBox(cell, lo, hi, slack);
+  if (kind == kMixed && size > 1) {
+    const int half = size / 2;
+    for (int octant = 0; octant < 8; ++octant) {
+      const Eigen::Vector3i offset(octant & 1, (octant >> 1) & 1, (octant >> 2) & 1);
+      ClassifySubcells(cell, corner, slack, at + half * offset, half, kinds);
+    }
+    return;
+  }
+  for (int z = at.z(); z < at.z() + size; ++z) {
+    for (int y = at.y(); y < at.y() + size; ++y) {
+      for (int x = at.x(); x < at.x() + size; ++x) {
+        const int s = (z * kSubcells + y) * kSubcells + x;
+        kinds->words[s >> 5] |= static_cast<std::uint64_t>(kind) << (2 * (s & 31));
+      }
     }
   }
 }

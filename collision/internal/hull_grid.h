@@ -131,6 +131,10 @@ class HullGrid {
     const int s = SubcellOf(at);
     return static_cast<Kind>((mixed_subcells_[mixed_index].words[s >> 5] >> (2 * (s & 31))) & 3);
   }
+  // Sets the kinds of the size^3 subcells of mixed cell `cell` (lowest corner `corner`) from
+  // subcell `at` on.
+  void ClassifySubcells(int cell, const Eigen::Vector3d& corner, double slack,
+                        const Eigen::Vector3i& at, int size, SubcellKinds* kinds) const;
   // The kind of the box [lo, hi] (already grown by `slack`) for the hulls of cell `cell`.
   Kind ClassifyBox(int cell, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
                    double slack) const;
