@@ -12,6 +12,7 @@
 #include "acd/prepare_mesh.h"
 #include "envs/mesh_loader.h"
 #include "tests/acd/problem_lines.h"
+#include "tests/asan_build.h"
 #include "tests/data_paths.h"
 
 namespace acdplan::acd {
@@ -59,7 +60,9 @@ TEST(Decompose3dDefectsTest, RepairedBunnyAtTauRel005MeasuresEveryPieceFromTrueH
 // The surface ACD of the bunny against the dissertation's Table 5 (6 patches at tau_rel 0.2, 97
 // at 0.02): without merging adjacent patches whose union is within tau it gave 146 at 0.02.
 TEST(Decompose3dDefectsTest, BunnySurfaceHasNoMorePatchesThanTable5) {
-#ifndef NDEBUG
+#if !defined(NDEBUG) || ACDPLAN_ASAN_BUILD
+  // A patch count on a 5,000-triangle mesh (54 s under ASan): the surface ACD's code runs under
+  // the sanitizers on the corpus subset (tests/acd/decompose3d_corpus_test.cpp).
   GTEST_SKIP() << "Release only";
 #endif
   const std::string path = acdplan::test::DataDir() + "/meshes/vhacd/bunny.obj";
