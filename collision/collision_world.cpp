@@ -475,6 +475,7 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
       }
     }
   } else {
+    const bool exact_mode = mode == CollisionMode::kHullsExact;
     // State of this query through the broadphase callback.
     struct HitQuery {
       const Impl* m;
@@ -495,11 +496,13 @@ bool CollisionWorld::IsValid(const Eigen::Isometry3d& pose, CollisionMode mode) 
       // The robot's polytope at `pose`, moved at the first broadphase pair: most poses in free
       // space have none (15% of a window-wall plan's time went to moving it up front).
       const internal::ConvexPolytope& Robot() {
-        if (!robot_placed) m->robot_polytope.Transformed(pose, &robot), robot_placed = true;
+        if (!robot_placed) {
+          m->robot_polytope.Transformed(pose, &robot);
+          robot_placed = true;
+        }
         return robot;
       }
-    } q{&m, &set, pose, witness, mode == CollisionMode::kHullsExact, {}, false, false, {},
-        {}, {},   0,    0};
+    } q{&m, &set, pose, witness, exact_mode, {}, false, false, {}, {}, {}, 0, 0};
     fcl::CollisionObjectd robot = RobotAt(*m.robot_hull_object, pose);
     m.manager.collide(
         &robot, &q, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data) {
