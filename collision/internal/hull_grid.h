@@ -30,8 +30,10 @@ class HullGrid {
   /// box. `slack` [units] >= 0 loosens every half-space and box so that rounding never puts a
   /// point of a hull outside it (the test is conservative). `prisms_in_z`: the hulls are prisms
   /// along z queried at mid-height (a 2D world's): three layers of cells in z, so that the middle
-  /// one, where the queries fall, is clear of the caps, and the other cells go to x and y.
-  /// `target_cells`: about how many cells (kTargetCells or kFineCells).
+  /// one, where the queries fall, is clear of the caps, and the other cells go to x and y; the
+  /// caps' layers keep their mixed cells' subcells unclassified (a point there, which a 2D world
+  /// never asks for, gets the exact plane test). `target_cells`: about how many cells (kTargetCells
+  /// or kFineCells).
   HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& planes,
            const std::vector<Eigen::AlignedBox3d>& boxes, double slack, bool prisms_in_z = false,
            int target_cells = kTargetCells);
