@@ -23,18 +23,21 @@ using Planes = std::vector<Eigen::Vector4d, Eigen::aligned_allocator<Eigen::Vect
 /// A cell a hull reaches, with the planes of the hull that cross it: crossing[begin, end), indices
 /// into the planes of every hull (HullGrid's constructor).
 struct ReachedCell {
+  int hull;
   int cell;
   int begin, end;  // into HullSorter::crossing
 };
 
 /// One hull being sorted into the cells.
 struct HullSorter {
-  const Planes& planes;  // the hull's planes, d + slack
+  const Planes& planes;  // every hull's planes, d + slack
+  int hull;
   Eigen::AlignedBox3d box;
   double slack;
   Eigen::Vector3d origin, cell_size;  // of the cells inside the border
   Eigen::Vector3i dims;               // cells per axis, border included
-  // The cells the hull reaches (padded indices); the planes of each are ranges of `crossing`.
+  // The cells the hull reaches (padded indices) are appended; the planes of each are ranges of
+  // `crossing`.
   std::vector<ReachedCell>* reached;
   std::vector<int>* crossing;
   // The planes that may cross the block being sorted, a stack of ranges (no allocation per
@@ -76,7 +79,8 @@ struct HullSorter {
       for (int z = lo.z(); z <= hi.z(); ++z) {
         for (int y = lo.y(); y <= hi.y(); ++y) {
           for (int x = lo.x(); x <= hi.x(); ++x) {
-            reached->push_back({((z + 1) * dims.y() + y + 1) * dims.x() + x + 1, first, last});
+            reached->push_back(
+                {hull, ((z + 1) * dims.y() + y + 1) * dims.x() + x + 1, first, last});
           }
         }
       }
@@ -159,11 +163,8 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
   last_cell_ = (dims_ - Eigen::Vector3i::Ones()).cast<double>();
   // Every hull's loosened planes, one after the other, and the cells each hull reaches.
   Planes all_planes;
-  std::vector<int> crossing;                         // indices into all_planes
-  std::vector<std::pair<int, ReachedCell>> reached;  // (hull, cell), hull by hull
-  const size_t padded_count = static_cast<size_t>(dims_.prod());
-  std::vector<std::uint8_t> covered(padded_count, 0);
-  std::vector<ReachedCell> cells_of_hull;
+  std::vector<int> crossing;         // indices into all_planes
+  std::vector<ReachedCell> reached;  // hull by hull
   for (size_t i = 0; i < loose.size(); ++i) {
     const int first_plane = static_cast<int>(all_planes.size());
     for (Eigen::Index r = 0; r < planes[i].rows(); ++r) {
@@ -171,29 +172,31 @@ HullGrid::HullGrid(const std::vector<Eigen::Matrix<double, Eigen::Dynamic, 4>>& 
       plane(3) += slack;
       all_planes.push_back(plane);
     }
-    const Planes hull(all_planes.begin() + first_plane, all_planes.end());
-    cells_of_hull.clear();
-    const size_t first_crossing = crossing.size();
-    HullSorter sorter{hull,           loose[i],  slack, bounds.min(), cell_size_, dims_,
-                      &cells_of_hull, &crossing, {}};
-    for (int k = 0; k < static_cast<int>(hull.size()); ++k) sorter.stack.push_back(k);
-    sorter.Sort(Eigen::Vector3i::Zero(), cells - Eigen::Vector3i::Ones(), 0, hull.size());
-    for (size_t j = first_crossing; j < crossing.size(); ++j) crossing[j] += first_plane;
-    for (const ReachedCell& c : cells_of_hull) {
-      reached.emplace_back(static_cast<int>(i), c);
-      if (c.begin == c.end && !hull.empty()) covered[static_cast<size_t>(c.cell)] = 1;
+    HullSorter sorter{
+        all_planes, static_cast<int>(i), loose[i], slack, bounds.min(), cell_size_, dims_,
+        &reached,   &crossing,           {}};
+    for (int k = first_plane; k < static_cast<int>(all_planes.size()); ++k) {
+      sorter.stack.push_back(k);
+    }
+    sorter.Sort(Eigen::Vector3i::Zero(), cells - Eigen::Vector3i::Ones(), 0, sorter.stack.size());
+  }
+  const size_t padded_count = static_cast<size_t>(dims_.prod());
+  std::vector<std::uint8_t> covered(padded_count, 0);  // inside a hull with planes
+  for (const ReachedCell& c : reached) {
+    if (c.begin == c.end && planes[static_cast<size_t>(c.hull)].rows() > 0) {
+      covered[static_cast<size_t>(c.cell)] = 1;
     }
   }
 
   // The entries by cell (a counting sort, hulls in increasing order within a cell), each with
   // its crossing planes copied next to each other.
   cell_begin_.assign(padded_count + 1, 0);
-  for (const auto& [hull, c] : reached) ++cell_begin_[static_cast<size_t>(c.cell) + 1];
+  for (const ReachedCell& c : reached) ++cell_begin_[static_cast<size_t>(c.cell) + 1];
   for (size_t c = 0; c < padded_count; ++c) cell_begin_[c + 1] += cell_begin_[c];
   std::vector<int> next(cell_begin_.begin(), cell_begin_.end() - 1);
   entries_.resize(reached.size());
-  for (const auto& [hull, c] : reached) {
-    entries_[static_cast<size_t>(next[static_cast<size_t>(c.cell)]++)] = {hull, c.begin, c.end};
+  for (const ReachedCell& c : reached) {
+    entries_[static_cast<size_t>(next[static_cast<size_t>(c.cell)]++)] = {c.hull, c.begin, c.end};
   }
   cell_planes_.reserve(crossing.size());
   for (Entry& entry : entries_) {

@@ -7,9 +7,11 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "acd/mesh_measures.h"
 #include "acd/prepare_mesh.h"
+#include "acd/triangle_mesh.h"
 #include "base/input_error.h"
 #include "envs/load_workspace.h"
 #include "envs/mesh_loader.h"
@@ -69,17 +71,22 @@ bool InsideMesh(const Vector3d& p, const acd::TriangleMesh& mesh) {
   return votes >= 2;
 }
 
-bool Free(const Workspace3d& w, const Vector3d& p) {
-  for (const acd::TriangleMesh& o : w.obstacles) {
-    // Outside an obstacle's box is outside it: the ray test only for points in the box (the
-    // grid of FreeSpaceIsConnected is mostly outside every box).
-    const Eigen::Vector3d low = o.vertices.colwise().minCoeff(),
-                          high = o.vertices.colwise().maxCoeff();
-    if ((p.array() < low.array()).any() || (p.array() > high.array()).any()) continue;
-    if (InsideMesh(p, o)) return false;
+std::vector<Eigen::AlignedBox3d> ObstacleBoxes(const Workspace3d& w) {
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (const acd::TriangleMesh& o : w.obstacles) boxes.push_back(acd::BoundingBox(o));
+  return boxes;
+}
+
+/// Whether `p` is outside every obstacle, `boxes` their boxes (ObstacleBoxes()): the ray test
+/// only for an obstacle whose box holds p (FreeSpaceIsConnected's grid is mostly outside them).
+bool Free(const Workspace3d& w, const std::vector<Eigen::AlignedBox3d>& boxes, const Vector3d& p) {
+  for (size_t i = 0; i < w.obstacles.size(); ++i) {
+    if (boxes[i].contains(p) && InsideMesh(p, w.obstacles[i])) return false;
   }
   return true;
 }
+
+bool Free(const Workspace3d& w, const Vector3d& p) { return Free(w, ObstacleBoxes(w), p); }
 
 bool SegmentFree(const Workspace3d& w, const Vector3d& p, const Vector3d& q) {
   for (const acd::TriangleMesh& o : w.obstacles) {
@@ -151,12 +158,13 @@ TEST_P(Generator3dTest, FreeSpaceIsConnected) {
   for (int a = 0; a < 3; ++a) n[a] = static_cast<int>(std::floor(w.bounds.sizes()[a] / h));
   auto index = [&n](int i, int j, int k) { return (static_cast<size_t>(k) * n[1] + j) * n[0] + i; };
   std::vector<char> free(static_cast<size_t>(n.prod()), 0);
+  const std::vector<Eigen::AlignedBox3d> boxes = ObstacleBoxes(w);
   size_t free_count = 0, first = 0;
   for (int k = 0; k < n[2]; ++k) {
     for (int j = 0; j < n[1]; ++j) {
       for (int i = 0; i < n[0]; ++i) {
         const Vector3d p = w.bounds.min() + h * Vector3d(i + 0.5, j + 0.5, k + 0.5);
-        if (Free(w, p)) {
+        if (Free(w, boxes, p)) {
           if (free_count++ == 0) first = index(i, j, k);
           free[index(i, j, k)] = 1;
         }
