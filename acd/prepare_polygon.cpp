@@ -23,12 +23,14 @@
 #include <unordered_map>
 #include <vector>
 
+#include "acd/internal/ring_name.h"
 #include "acd/internal/text_parsing.h"
 #include "base/input_error.h"
 
 namespace acdplan::acd {
 namespace {
 
+using internal::RingName;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CgalPoint = Kernel::Point_2;
 using CgalSegment = Kernel::Segment_2;
@@ -42,10 +44,6 @@ struct IndexedRing {
   std::vector<int> input_index;
   size_t size() const { return points.size(); }
 };
-
-std::string RingName(int ring) {
-  return ring == 0 ? "outer ring" : "hole " + std::to_string(ring - 1);
-}
 
 [[noreturn]] void Fail(const std::string& where, const std::string& message) {
   throw InputError(where + ": " + message);
@@ -383,8 +381,7 @@ void RejectNestedHoles(const std::vector<IndexedRing>& rings, const std::string&
       }
       size_t vertex = 0;
       if (SideOfRing(rings[a], rings[b].points, &vertex) == CGAL::ON_BOUNDED_SIDE) {
-        Fail(where, RingName(static_cast<int>(a)) + " lies inside " +
-                        RingName(static_cast<int>(b)) + " (holes must not be nested)");
+        Fail(where, RingName(a) + " lies inside " + RingName(b) + " (holes must not be nested)");
       }
     }
   }
@@ -739,11 +736,11 @@ std::vector<Polygon2d> PreparePolygons(const Polygon2d& raw, const std::string& 
     const Ring2d& ring = raw_ring(r);
     for (size_t i = 0; i < ring.size(); ++i) {
       if (!std::isfinite(ring[i].x()) || !std::isfinite(ring[i].y())) {
-        Fail(where, RingName(static_cast<int>(r)) + ": vertex " + std::to_string(i) +
-                        " is not finite " + internal::FormatPoint(ring[i]));
+        Fail(where, RingName(r) + ": vertex " + std::to_string(i) + " is not finite " +
+                        internal::FormatPoint(ring[i]));
       }
       if (std::max(std::abs(ring[i].x()), std::abs(ring[i].y())) > kMaxCoordinate) {
-        Fail(where, RingName(static_cast<int>(r)) + ": vertex " + std::to_string(i) + " " +
+        Fail(where, RingName(r) + ": vertex " + std::to_string(i) + " " +
                         internal::FormatPoint(ring[i]) +
                         " is too far from the origin (|coordinate| > 1e100: products of "
                         "coordinates would overflow)");
@@ -757,7 +754,7 @@ std::vector<Polygon2d> PreparePolygons(const Polygon2d& raw, const std::string& 
   for (size_t r = 0; r < ring_count; ++r) {
     const Ring2d& input = raw_ring(r);
     IndexedRing ring = CleanRing(input);
-    const std::string name = RingName(static_cast<int>(r));
+    const std::string name = RingName(r);
     if (ring.size() < 3) {
       Fail(where, name + " has fewer than 3 distinct, non-collinear vertices (" +
                       std::to_string(ring.size()) + " distinct of " + std::to_string(input.size()) +

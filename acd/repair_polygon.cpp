@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "acd/internal/even_odd_regions.h"
+#include "acd/internal/ring_name.h"
 #include "acd/internal/text_parsing.h"
 #include "acd/prepare_polygon.h"
 #include "base/format.h"
@@ -16,9 +17,7 @@
 namespace acdplan::acd {
 namespace {
 
-std::string RingName(size_t ring) {
-  return ring == 0 ? "outer ring" : "hole " + std::to_string(ring - 1);
-}
+using internal::RingName;
 
 // Distinct vertices of `ring` and whether they span an area (not all collinear), exactly.
 int DistinctNonCollinear(const Ring2d& ring, bool* spans_area) {
