@@ -47,12 +47,16 @@ std::vector<Interval> IntervalsOnCut(const Decomposition2d& d, const std::vector
     }
     const Ring2d& ring = d.components[c].polygon.outer;
     const size_t n = ring.size();
-    for (size_t i = 0; i < n; ++i) {
-      const Point2d u = ring[i] - cut.from;
-      const Point2d w = ring[(i + 1) % n] - cut.from;
-      const double off_u = unit.x() * u.y() - unit.y() * u.x();
-      const double off_w = unit.x() * w.y() - unit.y() * w.x();
-      if (std::abs(off_u) > tolerance || std::abs(off_w) > tolerance) continue;
+    // Each vertex's offset from the cut's line is computed once, for both of its edges.
+    auto offset = [&unit](const Point2d& v) { return unit.x() * v.y() - unit.y() * v.x(); };
+    Point2d next = ring[0] - cut.from;
+    double off_next = offset(next);
+    for (size_t i = 0; i < n; ++i) {  // Edge u -> w, relative to the cut's start.
+      const Point2d u = next;
+      const bool u_on_line = std::abs(off_next) <= tolerance;
+      const Point2d w = next = ring[i + 1 == n ? 0 : i + 1] - cut.from;
+      off_next = offset(w);
+      if (!u_on_line || std::abs(off_next) > tolerance) continue;
       double t0 = u.dot(unit) / length, t1 = w.dot(unit) / length;
       if (t0 > t1) std::swap(t0, t1);
       t0 = std::max(t0, 0.0);

@@ -665,25 +665,64 @@ void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
   if (polygon.holes.size() <= skip.size()) return;
   const int tested = (*pieces)[0].outer.size() <= (*pieces)[1].outer.size() ? 0 : 1;
   const Ring2d& ring = (*pieces)[tested].outer;
-  const RingLocator locator(Polygon2d{ring, {}});
   double scale = 0.0;
   for (const Point2d& p : ring) scale = std::max(scale, MaxAbs(p));
   const double noise = kRoundingNoise * std::max(1.0, scale);
+  // Each hole is tested by its first vertex. A piece carries few holes, so one pass over the
+  // ring's edges serves them all (the points sorted by y; an edge visits those in its y-range),
+  // where indexing the ring first (a RingLocator) cost more than the queries it saved. Exact
+  // even-odd parity, as RingLocator::InsideParity(); a point within `noise` of an edge is
+  // decided by CGAL's exact bounded_side_2 instead.
+  struct Query {
+    Point2d point;
+    int hole;
+    bool near = false, inside = false;
+  };
+  std::vector<Query> queries;
+  queries.reserve(polygon.holes.size() - skip.size());
   for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
-    if (std::find(skip.begin(), skip.end(), k) != skip.end()) continue;
-    const Ring2d& hole = polygon.holes[k];
-    const Point2d& p = hole.front();
-    bool inside;
-    if (locator.NearBoundary(p, noise)) {
-      std::vector<Kernel::Point_2> boundary;
-      boundary.reserve(ring.size());
-      for (const Point2d& q : ring) boundary.push_back(ToCgal(q));
-      inside = CGAL::bounded_side_2(boundary.begin(), boundary.end(), ToCgal(p), Kernel()) ==
-               CGAL::ON_BOUNDED_SIDE;
-    } else {
-      inside = locator.InsideParity(p);
+    if (std::find(skip.begin(), skip.end(), k) == skip.end()) {
+      queries.push_back({polygon.holes[k].front(), k});
     }
-    (*pieces)[inside ? tested : 1 - tested].holes.push_back(hole);
+  }
+  std::sort(queries.begin(), queries.end(), [](const Query& a, const Query& b) {
+    return a.point.y() < b.point.y() || (a.point.y() == b.point.y() && a.hole < b.hole);
+  });
+  const int n = static_cast<int>(ring.size());
+  for (int i = 0; i < n; ++i) {
+    const Point2d& a = ring[i];
+    const Point2d& b = ring[i + 1 == n ? 0 : i + 1];
+    const double ylo = std::min(a.y(), b.y()) - noise, yhi = std::max(a.y(), b.y()) + noise;
+    const double xlo = std::min(a.x(), b.x()) - noise, xhi = std::max(a.x(), b.x()) + noise;
+    auto q = std::lower_bound(queries.begin(), queries.end(), ylo,
+                              [](const Query& x, double y) { return x.point.y() < y; });
+    for (; q != queries.end() && q->point.y() <= yhi; ++q) {
+      const Point2d& p = q->point;
+      if (!q->near && xlo <= p.x() && p.x() <= xhi && SegmentDistance(p, a, b) <= noise) {
+        q->near = true;
+      }
+      // Half-open rule on y, so a ray through a vertex counts it once; the ray to +x meets
+      // the edge iff p lies left of the upward-directed edge.
+      const bool a_above = a.y() > p.y(), b_above = b.y() > p.y();
+      if (a_above == b_above || p.x() > xhi) continue;
+      const int side = Orientation(a, b, p);
+      if (b_above ? side > 0 : side < 0) q->inside = !q->inside;
+    }
+  }
+  std::sort(queries.begin(), queries.end(),
+            [](const Query& a, const Query& b) { return a.hole < b.hole; });
+  std::vector<Kernel::Point_2> boundary;
+  for (const Query& q : queries) {
+    bool inside = q.inside;
+    if (q.near) {
+      if (boundary.empty()) {
+        boundary.reserve(ring.size());
+        for (const Point2d& p : ring) boundary.push_back(ToCgal(p));
+      }
+      inside = CGAL::bounded_side_2(boundary.begin(), boundary.end(), ToCgal(q.point), Kernel()) ==
+               CGAL::ON_BOUNDED_SIDE;
+    }
+    (*pieces)[inside ? tested : 1 - tested].holes.push_back(polygon.holes[q.hole]);
   }
 }
 
