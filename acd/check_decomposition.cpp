@@ -63,6 +63,7 @@ using internal::IdBox;
 using internal::Kernel;
 using internal::Orientation;
 using internal::PointLocation;
+using internal::RayCrossesEdge;
 using internal::RingLocator;
 using internal::SegmentDistance;
 using internal::ToCgal;
@@ -135,12 +136,7 @@ bool InsideRing(const Ring2d& ring, const Point2d& p) {
   bool inside = false;
   const size_t n = ring.size();
   for (size_t i = 0; i < n; ++i) {
-    const Point2d& a = ring[i];
-    const Point2d& b = ring[(i + 1) % n];
-    const bool a_above = a.y() > p.y(), b_above = b.y() > p.y();
-    if (a_above == b_above) continue;
-    const int side = Orientation(a, b, p);
-    if (b_above ? side > 0 : side < 0) inside = !inside;
+    if (RayCrossesEdge(p, ring[i], ring[(i + 1) % n])) inside = !inside;
   }
   return inside;
 }

@@ -671,8 +671,8 @@ void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
   // Each hole is tested by its first vertex. A piece carries few holes, so one pass over the
   // ring's edges serves them all (the points sorted by y; an edge visits those in its y-range),
   // where indexing the ring first (a RingLocator) cost more than the queries it saved. Exact
-  // even-odd parity, as RingLocator::InsideParity(); a point within `noise` of an edge is
-  // decided by CGAL's exact bounded_side_2 instead.
+  // even-odd parity (RayCrossesEdge()); a point within `noise` of an edge is decided by CGAL's
+  // exact bounded_side_2 instead.
   struct Query {
     Point2d point;
     int hole;
@@ -701,12 +701,7 @@ void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
       if (!q->near && xlo <= p.x() && p.x() <= xhi && SegmentDistance(p, a, b) <= noise) {
         q->near = true;
       }
-      // Half-open rule on y, so a ray through a vertex counts it once; the ray to +x meets
-      // the edge iff p lies left of the upward-directed edge.
-      const bool a_above = a.y() > p.y(), b_above = b.y() > p.y();
-      if (a_above == b_above || p.x() > xhi) continue;
-      const int side = Orientation(a, b, p);
-      if (b_above ? side > 0 : side < 0) q->inside = !q->inside;
+      if (p.x() <= xhi && RayCrossesEdge(p, a, b)) q->inside = !q->inside;
     }
   }
   std::sort(queries.begin(), queries.end(),

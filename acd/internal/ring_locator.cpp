@@ -4,8 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "acd/internal/exact_predicates.h"
-
 namespace acdplan::acd::internal {
 
 double SegmentDistance(const Point2d& p, const Point2d& a, const Point2d& b) {
@@ -74,13 +72,7 @@ bool RingLocator::InsideParity(const Point2d& p) const {
   bool inside = false;
   for (int k = slab_begin_[s]; k < slab_begin_[s + 1]; ++k) {
     const Edge& e = edges_[slab_edges_[k]];
-    // Half-open rule on y, so a ray through a vertex counts it once.
-    const bool a_above = e.a.y() > p.y();
-    const bool b_above = e.b.y() > p.y();
-    if (a_above == b_above) continue;
-    // The ray to +x meets the edge iff p lies left of the upward-directed edge.
-    const int side = Orientation(e.a, e.b, p);
-    if (b_above ? side > 0 : side < 0) inside = !inside;
+    if (RayCrossesEdge(p, e.a, e.b)) inside = !inside;
   }
   return inside;
 }
