@@ -48,4 +48,14 @@ inline int OrientationAlong(const Point2d& a, const Point2d& ab, const Point2d& 
   return static_cast<int>(CGAL::orientation(ToCgal(a), ToCgal(b), ToCgal(c)));
 }
 
+/// Whether the ray from `p` toward +x crosses the edge a-b: the even-odd rule's test per edge,
+/// with the half-open rule on y (a ray through a vertex counts once) and an exact side test.
+inline bool RayCrossesEdge(const Point2d& p, const Point2d& a, const Point2d& b) {
+  const bool a_above = a.y() > p.y(), b_above = b.y() > p.y();
+  if (a_above == b_above) return false;
+  // The ray meets the edge iff p lies left of the upward-directed edge.
+  const int side = Orientation(a, b, p);
+  return b_above ? side > 0 : side < 0;
+}
+
 }  // namespace acdplan::acd::internal

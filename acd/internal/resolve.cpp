@@ -658,8 +658,11 @@ void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b,
 // Gives each hole of `polygon` not in `skip` to the piece that contains it: the hole's
 // first vertex lies strictly inside one piece's ring, as a valid cut keeps clear of other
 // holes, so it is located in the smaller ring only (a hole split often cuts off a small piece).
-// Parity by a slab locator (exact); a point within rounding noise of the ring (never the case
-// for a valid cut) is decided by CGAL's exact test, as before.
+// A piece carries few holes, so one pass over that ring's edges locates them all (the points
+// sorted by y; an edge visits those in its y-range): indexing the ring first (a RingLocator)
+// cost more than the queries it saved. Exact even-odd parity (RayCrossesEdge()); a point within
+// rounding noise of the ring (never the case for a valid cut) is decided by CGAL's exact
+// bounded_side_2 instead.
 void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
                      std::array<Polygon2d, 2>* pieces) {
   if (polygon.holes.size() <= skip.size()) return;
@@ -668,12 +671,7 @@ void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
   double scale = 0.0;
   for (const Point2d& p : ring) scale = std::max(scale, MaxAbs(p));
   const double noise = kRoundingNoise * std::max(1.0, scale);
-  // Each hole is tested by its first vertex. A piece carries few holes, so one pass over the
-  // ring's edges serves them all (the points sorted by y; an edge visits those in its y-range),
-  // where indexing the ring first (a RingLocator) cost more than the queries it saved. Exact
-  // even-odd parity (RayCrossesEdge()); a point within `noise` of an edge is decided by CGAL's
-  // exact bounded_side_2 instead.
-  struct Query {
+  struct Query {  // A hole's first vertex, and what the pass found about it.
     Point2d point;
     int hole;
     bool near = false, inside = false;

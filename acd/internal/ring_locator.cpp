@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "acd/internal/exact_predicates.h"
+
 namespace acdplan::acd::internal {
 
 double SegmentDistance(const Point2d& p, const Point2d& a, const Point2d& b) {

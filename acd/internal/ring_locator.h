@@ -3,7 +3,6 @@
 
 #include <vector>
 
-#include "acd/internal/exact_predicates.h"
 #include "acd/polygon2d.h"
 
 namespace acdplan::acd::internal {
@@ -46,16 +45,6 @@ class RingLocator {
   std::vector<int> slab_begin_;  // CSR offsets into slab_edges_, slab_count_ + 1 entries.
   std::vector<int> slab_edges_;
 };
-
-/// Whether the ray from `p` toward +x crosses the edge a-b: the even-odd rule's test per edge,
-/// with the half-open rule on y (a ray through a vertex counts once) and an exact side test.
-inline bool RayCrossesEdge(const Point2d& p, const Point2d& a, const Point2d& b) {
-  const bool a_above = a.y() > p.y(), b_above = b.y() > p.y();
-  if (a_above == b_above) return false;
-  // The ray meets the edge iff p lies left of the upward-directed edge.
-  const int side = Orientation(a, b, p);
-  return b_above ? side > 0 : side < 0;
-}
 
 /// Distance from `p` to the segment [a, b].
 double SegmentDistance(const Point2d& p, const Point2d& a, const Point2d& b);
