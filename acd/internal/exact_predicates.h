@@ -4,6 +4,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "acd/polygon2d.h"
@@ -52,7 +53,7 @@ inline int OrientationAlong(const Point2d& a, const Point2d& ab, const Point2d& 
 /// with the half-open rule on y (a ray through a vertex counts once) and an exact side test.
 inline bool RayCrossesEdge(const Point2d& p, const Point2d& a, const Point2d& b) {
   const bool a_above = a.y() > p.y(), b_above = b.y() > p.y();
-  if (a_above == b_above) return false;
+  if (a_above == b_above || p.x() > std::max(a.x(), b.x())) return false;
   // The ray meets the edge iff p lies left of the upward-directed edge.
   const int side = Orientation(a, b, p);
   return b_above ? side > 0 : side < 0;

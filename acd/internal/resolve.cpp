@@ -683,9 +683,9 @@ void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
       queries.push_back({polygon.holes[k].front(), k});
     }
   }
-  std::sort(queries.begin(), queries.end(), [](const Query& a, const Query& b) {
-    return a.point.y() < b.point.y() || (a.point.y() == b.point.y() && a.hole < b.hole);
-  });
+  // By y, for the edges' range searches; the order among equal y changes nothing.
+  std::sort(queries.begin(), queries.end(),
+            [](const Query& a, const Query& b) { return a.point.y() < b.point.y(); });
   const int n = static_cast<int>(ring.size());
   for (int i = 0; i < n; ++i) {
     const Point2d& a = ring[i];
@@ -699,7 +699,7 @@ void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
       if (!q->near && xlo <= p.x() && p.x() <= xhi && SegmentDistance(p, a, b) <= noise) {
         q->near = true;
       }
-      if (p.x() <= xhi && RayCrossesEdge(p, a, b)) q->inside = !q->inside;
+      if (RayCrossesEdge(p, a, b)) q->inside = !q->inside;
     }
   }
   std::sort(queries.begin(), queries.end(),
