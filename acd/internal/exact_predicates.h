@@ -28,14 +28,21 @@ inline int FilteredTurnSign(double left, double right) {
   return 0;
 }
 
+/// CGAL's exact orientation, for the few cases the filter below leaves open. Kept out of line:
+/// inlined, its code would keep the compiler from inlining the filtered predicates into the
+/// hull and cut loops that call them per vertex.
+[[gnu::noinline]] inline int ExactOrientation(const Point2d& a, const Point2d& b,
+                                              const Point2d& c) {
+  return static_cast<int>(CGAL::orientation(ToCgal(a), ToCgal(b), ToCgal(c)));
+}
+
 /// Sign of the turn a -> b -> c, exactly: +1 left (counter-clockwise), 0 collinear, -1 right.
 /// A floating-point filter decides the clear cases (FilteredTurnSign()); CGAL's exact predicate
 /// decides the rest.
 inline int Orientation(const Point2d& a, const Point2d& b, const Point2d& c) {
   const int sign =
       FilteredTurnSign((a.x() - c.x()) * (b.y() - c.y()), (a.y() - c.y()) * (b.x() - c.x()));
-  if (sign != 0) return sign;
-  return static_cast<int>(CGAL::orientation(ToCgal(a), ToCgal(b), ToCgal(c)));
+  return sign != 0 ? sign : ExactOrientation(a, b, c);
 }
 
 /// Orientation(a, b, c) for loops that test many points c against one edge a -> b: `ab` must
@@ -45,8 +52,7 @@ inline int Orientation(const Point2d& a, const Point2d& b, const Point2d& c) {
 inline int OrientationAlong(const Point2d& a, const Point2d& ab, const Point2d& b,
                             const Point2d& c) {
   const int sign = FilteredTurnSign(ab.x() * (c.y() - a.y()), ab.y() * (c.x() - a.x()));
-  if (sign != 0) return sign;
-  return static_cast<int>(CGAL::orientation(ToCgal(a), ToCgal(b), ToCgal(c)));
+  return sign != 0 ? sign : ExactOrientation(a, b, c);
 }
 
 /// Whether the ray from `p` toward +x crosses the edge a-b: the even-odd rule's test per edge,
