@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <list>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -19,6 +18,7 @@
 #include "acd/internal/exact_rounding.h"
 #include "acd/internal/face_intersections.h"
 #include "acd/internal/in_plane_tolerance.h"
+#include "acd/internal/nesting_levels.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -218,36 +218,8 @@ std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Pl
     Cdt::Vertex_handle va = insert(a), vb = insert(b);
     if (va != vb) cdt.insert_constraint(va, vb);
   }
-  // Nesting levels from the infinite face (the CGAL polygon-with-holes recipe): faces at odd
-  // levels are inside the section.
-  for (auto f : cdt.all_face_handles()) f->info().nesting = -1;
-  std::list<Cdt::Edge> frontier;
-  auto flood = [&](Cdt::Face_handle start, int level) {
-    if (start->info().nesting != -1) return;
-    std::list<Cdt::Face_handle> queue{start};
-    while (!queue.empty()) {
-      Cdt::Face_handle f = queue.front();
-      queue.pop_front();
-      if (f->info().nesting != -1) continue;
-      f->info().nesting = level;
-      for (int i = 0; i < 3; ++i) {
-        Cdt::Face_handle n = f->neighbor(i);
-        if (n->info().nesting != -1) continue;
-        if (cdt.is_constrained(Cdt::Edge(f, i))) {
-          frontier.emplace_back(f, i);
-        } else {
-          queue.push_back(n);
-        }
-      }
-    }
-  };
-  flood(cdt.infinite_face(), 0);
-  while (!frontier.empty()) {
-    const Cdt::Edge e = frontier.front();
-    frontier.pop_front();
-    Cdt::Face_handle n = e.first->neighbor(e.second);
-    if (n->info().nesting == -1) flood(n, e.first->info().nesting + 1);
-  }
+  // Faces at odd nesting levels are inside the section.
+  MarkNestingLevels(cdt);
   const bool flip = CGAL::is_negative(coef[static_cast<size_t>(drop)]);
   std::vector<Tri> cap;
   for (auto f : cdt.finite_face_handles()) {

@@ -305,6 +305,17 @@ Eigen::Vector3d AnyPerpendicular(const Eigen::Vector3d& n) {
   return n.cross(axis).normalized();
 }
 
+// The principal axes of the faces' centroids (the eigenvectors of their covariance), by
+// increasing variance: column 2 is the direction the faces spread along most.
+Eigen::Matrix3d PrincipalAxes(const SurfacePart& part, const std::vector<int>& faces) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int f : faces) mean += part.Centroid(f);
+  mean /= static_cast<double>(faces.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (int f : faces) cov += (part.Centroid(f) - mean) * (part.Centroid(f) - mean).transpose();
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors();
+}
+
 // Unit normals of the candidate planes through the witness (duplicates removed).
 std::vector<Eigen::Vector3d> CandidateNormals(const SurfacePart& part,
                                               const std::vector<int>& faces, const Measure& m) {
@@ -320,13 +331,8 @@ std::vector<Eigen::Vector3d> CandidateNormals(const SurfacePart& part,
   normals.push_back(Eigen::Vector3d::UnitY());
   normals.push_back(Eigen::Vector3d::UnitZ());
   // Principal planes of the face centroids.
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (int f : faces) mean += part.Centroid(f);
-  mean /= static_cast<double>(faces.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (int f : faces) cov += (part.Centroid(f) - mean) * (part.Centroid(f) - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-  for (int axis = 2; axis >= 0; --axis) normals.push_back(eig.eigenvectors().col(axis));
+  const Eigen::Matrix3d axes = PrincipalAxes(part, faces);
+  for (int axis = 2; axis >= 0; --axis) normals.push_back(axes.col(axis));
   std::vector<Eigen::Vector3d> unique;
   for (const Eigen::Vector3d& n : normals) {
     if (!(n.norm() > 0.5)) continue;
@@ -373,13 +379,7 @@ Split Resolve(const SurfacePart& part, const std::vector<int>& faces, const Meas
   }
   if (!best.sides[0].empty()) return best;
   // Median of the centroids' projections on the principal axis (ties by face index).
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (int f : faces) mean += part.Centroid(f);
-  mean /= static_cast<double>(faces.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (int f : faces) cov += (part.Centroid(f) - mean) * (part.Centroid(f) - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-  const Eigen::Vector3d axis = eig.eigenvectors().col(2).normalized();
+  const Eigen::Vector3d axis = PrincipalAxes(part, faces).col(2).normalized();
   std::vector<std::pair<double, int>> order;
   for (int f : faces) order.emplace_back(axis.dot(part.Centroid(f)), f);
   std::sort(order.begin(), order.end());

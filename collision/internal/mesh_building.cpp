@@ -6,8 +6,9 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
-#include <list>
 #include <vector>
+
+#include "acd/internal/nesting_levels.h"
 
 namespace acdplan::collision::internal {
 namespace {
@@ -23,38 +24,6 @@ using Fbb = CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>;
 using Fb = CGAL::Constrained_triangulation_face_base_2<Kernel, Fbb>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
-
-// Marks faces by nesting level (CGAL's "polygon with holes" triangulation example): flood fill
-// from the infinite face, crossing a constrained edge raises the level by one.
-void MarkDomains(Cdt& cdt) {
-  std::list<Cdt::Edge> border;
-  auto flood = [&](Cdt::Face_handle start, int level) {
-    if (start->info().nesting != -1) return;
-    std::list<Cdt::Face_handle> queue{start};
-    while (!queue.empty()) {
-      Cdt::Face_handle f = queue.front();
-      queue.pop_front();
-      if (f->info().nesting != -1) continue;
-      f->info().nesting = level;
-      for (int i = 0; i < 3; ++i) {
-        Cdt::Face_handle n = f->neighbor(i);
-        if (n->info().nesting != -1) continue;
-        if (cdt.is_constrained(Cdt::Edge(f, i))) {
-          border.push_back(Cdt::Edge(f, i));
-        } else {
-          queue.push_back(n);
-        }
-      }
-    }
-  };
-  flood(cdt.infinite_face(), 0);
-  while (!border.empty()) {
-    Cdt::Edge e = border.front();
-    border.pop_front();
-    Cdt::Face_handle n = e.first->neighbor(e.second);
-    if (n->info().nesting == -1) flood(n, e.first->info().nesting + 1);
-  }
-}
 
 void AddRingWalls(const acd::Ring2d& ring, int bottom0, int top0, int ring_offset,
                   std::vector<Eigen::Vector3i>* tris) {
@@ -102,7 +71,7 @@ acd::TriangleMesh ExtrudePolygon(const acd::Polygon2d& polygon, double z0, doubl
     for (int i = 0; i < m; ++i) cdt.insert_constraint(handles[i], handles[(i + 1) % m]);
     offset += m;
   }
-  MarkDomains(cdt);
+  acd::internal::MarkNestingLevels(cdt);
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->info().inside()) continue;
     const int a = f->vertex(0)->info(), b = f->vertex(1)->info(), c = f->vertex(2)->info();
