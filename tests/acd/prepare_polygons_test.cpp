@@ -164,45 +164,37 @@ TEST(PreparePolygonsTest, MetamorphicRotateAndScale) {
 
 // A generated map tile: a 10^4-vertex outer ring and 10^3 holes on a grid, every fifth hole
 // touching its right neighbour and every hole of the bottom row touching the outer ring.
-}  // namespace
-Polygon2d LargeTouchingCase(bool any_touch = true);
-Polygon2d LargeTouchingCase(bool any_touch) {
+Polygon2d LargeTouchingCase() {
   constexpr int kGrid = 32;  // 1024 holes.
   constexpr double kCell = 10.0;
   const double size = kGrid * kCell;
   RandomEngine random(7);
-  auto wiggle = [&random] { return UniformReal(random, 0.0, 2.0); };
-  auto jitter = [&random] { return UniformReal(random, 0.0, 0.0); };
   Polygon2d raw;
   // Outer ring: a square whose top side is a saw tooth of ~10^4 vertices.
   raw.outer = {{0, 0}, {size, 0}};
   const int teeth = 9000;
   for (int i = 0; i <= teeth; ++i) {
     const double x = size - size * i / teeth;
-    raw.outer.emplace_back(x, size + 2.0 + (i % 2 == 0 ? 0.0 : wiggle()));
+    raw.outer.emplace_back(x, size + 2.0 + (i % 2 == 0 ? 0.0 : UniformReal(random, 0.0, 2.0)));
   }
   for (int i = 0; i < kGrid; ++i) {
     for (int j = 0; j < kGrid; ++j) {
       const double x = i * kCell, y = j * kCell;
       // A diamond from (x, y+5) to (x+10, y+5): it touches the diamond to its right at
       // (x+10, y+5) when `touch`, else it stops 1 short of it.
-      const bool touch_left = any_touch && i > 0 && ((i - 1) * kGrid + j) % 5 == 0;
-      const bool touch = any_touch && (i * kGrid + j) % 5 == 0 && i + 1 < kGrid;
-      const double right = touch ? x + kCell : x + kCell - 1.0 - jitter();
-      const double left = x + 1.0 + (touch_left ? -1.0 : jitter());
+      const bool touch_left = i > 0 && ((i - 1) * kGrid + j) % 5 == 0;
+      const bool touch = (i * kGrid + j) % 5 == 0 && i + 1 < kGrid;
+      const double right = touch ? x + kCell : x + kCell - 1.0;
+      const double left = touch_left ? x : x + 1.0;
       // Bottom row holes touch the outer ring unless they touch a neighbour (that would close a
       // chain of rings around part of the interior).
-      const double bottom = j == 0 && any_touch && !touch && !touch_left ? 0.0 : y + 1.0;
-      const double mid = left + (right - left) * (0.4 + jitter() / 2.5);
-      raw.holes.push_back({{left, y + 5},
-                           {mid, bottom},
-                           {right, y + 5 + (touch ? 0.0 : jitter())},
-                           {mid + jitter(), y + 8 - jitter()}});
+      const double bottom = j == 0 && !touch && !touch_left ? 0.0 : y + 1.0;
+      const double mid = left + (right - left) * 0.4;
+      raw.holes.push_back({{left, y + 5}, {mid, bottom}, {right, y + 5}, {mid, y + 8}});
     }
   }
   return raw;
 }
-namespace {
 
 TEST(PreparePolygonsTest, LargeTouchingCaseDecomposes) {
   const Polygon2d raw = LargeTouchingCase();
