@@ -114,7 +114,9 @@ double MaxAbs(const Point2d& p) { return p.cwiseAbs().maxCoeff(); }
 // which side of a vertex the exact cut passes (a cut aimed along a row of collinear vertices
 // slips past them by an ulp and leaves a piece pinched to 1e-15, which no later cut resolves).
 // Such a cut must therefore also keep every other vertex, and its new end every other edge,
-// farther than that noise. Edges are taken from `grid`.
+// farther than that noise: decided exactly, as a distance computed in floating point errs by
+// the rounding of its largest coordinates (an edge 1e26 long makes that 1e10, far above the
+// noise of a cut among its small features). Edges are taken from `grid`.
 bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint& a,
                 const Endpoint& b) {
   if (!LeavesInward(polygon, a, b.point) || !LeavesInward(polygon, b, a.point)) return false;
@@ -142,17 +144,25 @@ bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint&
       return true;
     }
     if (!constructed) return false;
-    const double edge_noise = std::max(noise, kRoundingNoise * std::max(MaxAbs(u), MaxAbs(w)));
+    // Whether p lies within `noise` of the segment s0-s1: the floating-point distance settles
+    // the clear cases (it errs by far less than `screen`), the exact comparison the rest.
+    const double screen = std::max(noise, kRoundingNoise * std::max(MaxAbs(u), MaxAbs(w)));
+    auto near = [&](const Point2d& p, const Point2d& s0, const Point2d& s1) {
+      if (SegmentDistance(p, s0, s1) > screen) return false;
+      return Kernel().compare_squared_distance_2_object()(ToCgal(p),
+                                                          Kernel::Segment_2(ToCgal(s0), ToCgal(s1)),
+                                                          noise * noise) != CGAL::LARGER;
+    };
     // Vertices of this edge other than the cut's own ends, near the cut.
     for (const Point2d* v : {&u, &w}) {
       if (*v == a.point || *v == b.point) continue;
-      if (SegmentDistance(*v, a.point, b.point) <= edge_noise) return true;
+      if (near(*v, a.point, b.point)) return true;
     }
     // A constructed end near an edge other than its own.
     for (const Endpoint* e : {&a, &b}) {
       if (!e->on_edge || (e->ring == edge.ring && e->index == i)) continue;
       if (IsIncident(*e, edge.ring, i, n)) continue;
-      if (SegmentDistance(e->point, u, w) <= edge_noise) return true;
+      if (near(e->point, u, w)) return true;
     }
     return false;
   });

@@ -563,6 +563,46 @@ TEST(Decompose2dTest, BisectorHitNearTheEndOfAVeryLongEdge) {
   }
 }
 
+// Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-huge-edge-clear-cut.wkt, its
+// third coordinate ignored): in (0 0, 4 0, 2 6, 4 4.1e26, 0 2, 2 2) the notch (2, 2) is resolved
+// only by its bisector's hit on the edge (4 0)-(2 6), a constructed point, which must keep clear
+// of the other vertices and edges by its rounding noise. That was tested on floating-point
+// distances with a margin for their rounding, which grows with the edges' coordinates: 4e13
+// next to the edges to (4, 4.1e26), so every cut among the small features was refused ("could
+// not resolve a piece"). The nearness is now decided exactly. The same shape at other heights
+// and mirrored, too.
+TEST(Decompose2dTest, CutAmongTheSmallFeaturesOfAPolygonWithAHugeEdge) {
+  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
+  std::vector<std::vector<Polygon2d>> inputs = {
+      ReadPolygons((corpus / "regression-huge-edge-clear-cut.wkt").string())};
+  for (const double far : {1e6, 1e14, 1e40, 1e99}) {
+    inputs.push_back(
+        PreparePolygons({{{0, 0}, {4, 0}, {2, 6}, {4, far}, {0, 2}, {2, 2}}, {}}, "spike"));
+    inputs.push_back(
+        PreparePolygons({{{-2, 2}, {0, 2}, {-4, far}, {-2, 6}, {-4, 0}, {0, 0}}, {}}, "mirrored"));
+  }
+  for (const std::vector<Polygon2d>& input : inputs) {
+    ASSERT_EQ(input.size(), 1u);
+    for (const ConcavityMeasure measure : kMeasures) {
+      for (const double tau : {0.0, 0.01 * ReferenceRadius(input[0])}) {
+        Decompose2dOptions options;
+        options.tau = tau;
+        options.measure = measure;
+        Decomposition2d decomposition;
+        ASSERT_NO_THROW(decomposition = Decompose2d(input, options))
+            << input[0].outer[3].transpose() << ", " << ToString(measure) << ", tau " << tau;
+        const DecompositionCheck check = CheckDecomposition(input, decomposition);
+        EXPECT_TRUE(check.ok()) << input[0].outer[3].transpose() << ", " << ToString(measure)
+                                << ", tau " << tau << ": "
+                                << ::testing::PrintToString(check.problems);
+        if (tau == 0.0) {
+          EXPECT_GE(decomposition.components.size(), 2u);
+        }
+      }
+    }
+  }
+}
+
 // At tau = 0 every notch needs a cut, so a diagonal resolving two notches saves a piece and
 // outranks every cut resolving one (ResolveOptions::double_resolves_first). texas.poly: CGAL's
 // optimal convex partition has 38 pieces; the target is 1.3 x that (51 before the rule, 45 with
