@@ -744,13 +744,134 @@ class Checker {
 
   // --- Coverage by area. ---
 
+  // The components end cuts at points constructed on the input's edges, each rounded off its
+  // edge: they tile the input with those points put into its boundary. That area differs from
+  // the input's by each such edge's sliver, the signed area of the chain from the edge's start
+  // through its points to its end: an offset of a rounding times the edge's length, which on an
+  // edge 1.5e9 long exceeded the relative tolerance (fuzz_decompose2d). A constructed point is a
+  // component vertex that is no input vertex; it goes to the nearest input edge of its source
+  // within OnEdgeNoise() of it (none for a point inside). Signed so that a point outside the
+  // input adds area, on any ring orientation.
+  std::vector<double> BoundarySlivers() const {
+    const int count = ComponentCount();
+    std::vector<std::pair<int, Point2d>> input_vertices;  // (source, vertex), sorted.
+    std::vector<IdBox> edge_boxes;
+    for (int e = 0; e < static_cast<int>(edges_.size()); ++e) {
+      const EdgeRef& edge = edges_[e];
+      if (IsComponent(edge.owner)) continue;
+      input_vertices.emplace_back(SourceOf(edge.owner), edge.a);
+      // Padded by OnEdgeNoise() of any point of the edge, or more.
+      const double pad =
+          kHullNoise * std::max({edge.a.cwiseAbs().maxCoeff(), edge.b.cwiseAbs().maxCoeff(),
+                                 (edge.b - edge.a).cwiseAbs().maxCoeff(), 1.0});
+      edge_boxes.push_back(SegmentBox(edge.a, edge.b, e, pad));
+    }
+    auto key = [](const std::pair<int, Point2d>& v) {
+      return std::make_tuple(v.first, v.second.x(), v.second.y());
+    };
+    auto before = [&](const auto& x, const auto& y) { return key(x) < key(y); };
+    std::sort(input_vertices.begin(), input_vertices.end(), before);
+    std::vector<std::pair<int, Point2d>> constructed;  // (source, point), each once.
+    for (int k = 0; k < count; ++k) {
+      if (!info_[k].usable) continue;
+      const Polygon2d& polygon = components_[k].polygon;
+      for (int r = 0; r <= static_cast<int>(polygon.holes.size()); ++r) {
+        for (const Point2d& p : RingOf(polygon, r)) {
+          const std::pair<int, Point2d> v(components_[k].source, p);
+          if (!std::binary_search(input_vertices.begin(), input_vertices.end(), v, before)) {
+            constructed.push_back(v);
+          }
+        }
+      }
+    }
+    std::sort(constructed.begin(), constructed.end(), before);
+    constructed.erase(std::unique(constructed.begin(), constructed.end(),
+                                  [&](const auto& x, const auto& y) { return key(x) == key(y); }),
+                      constructed.end());
+    std::vector<IdBox> point_boxes;
+    for (int i = 0; i < static_cast<int>(constructed.size()); ++i) {
+      point_boxes.push_back(SegmentBox(constructed[i].second, constructed[i].second, i));
+    }
+    // Per constructed point: its nearest input edge within noise, or -1. Nearest exactly: near
+    // a corner, two edges' distances may differ by less than their rounding.
+    std::vector<int> nearest(constructed.size(), -1);
+    auto segment = [this](int e) {
+      return Kernel::Segment_2(ToCgal(edges_[e].a), ToCgal(edges_[e].b));
+    };
+    internal::ForEachOverlap(std::move(edge_boxes), std::move(point_boxes), [&](int e, int i) {
+      const EdgeRef& edge = edges_[e];
+      const Point2d& p = constructed[i].second;
+      if (SourceOf(edge.owner) != constructed[i].first) return;
+      // Exactly: a distance in floating point errs by the rounding of the far end's coordinates.
+      const double noise = OnEdgeNoise(edge, p);
+      if (Kernel().compare_squared_distance_2_object()(ToCgal(p), segment(e), noise * noise) ==
+          CGAL::LARGER) {
+        return;
+      }
+      int& best = nearest[i];
+      const CGAL::Comparison_result order =
+          best < 0 ? CGAL::SMALLER
+                   : Kernel().compare_squared_distance_2_object()(ToCgal(p), segment(e), ToCgal(p),
+                                                                  segment(best));
+      if (order == CGAL::SMALLER || (order == CGAL::EQUAL && e < best)) best = e;
+    });
+    // (edge, parameter along it, point), in order along each edge.
+    std::vector<std::tuple<int, double, Point2d>> on_edges;
+    for (size_t i = 0; i < constructed.size(); ++i) {
+      const int e = nearest[i];
+      if (e < 0) continue;
+      const Point2d ab = edges_[e].b - edges_[e].a;
+      const Point2d& p = constructed[i].second;
+      on_edges.emplace_back(e, (p - edges_[e].a).dot(ab) / ab.squaredNorm(), p);
+    }
+    std::sort(on_edges.begin(), on_edges.end(), [](const auto& x, const auto& y) {
+      return std::make_tuple(std::get<0>(x), std::get<1>(x), std::get<2>(x).x(),
+                             std::get<2>(x).y()) < std::make_tuple(std::get<0>(y), std::get<1>(y),
+                                                                   std::get<2>(y).x(),
+                                                                   std::get<2>(y).y());
+    });
+    std::vector<double> slivers(input_.size(), 0.0);
+    std::map<std::pair<int, int>, bool> interior_left;  // Per (owner, ring) met.
+    for (size_t first = 0; first < on_edges.size();) {
+      const int e = std::get<0>(on_edges[first]);
+      const EdgeRef& edge = edges_[e];
+      Ring2d chain = {edge.a};
+      size_t last = first;
+      for (; last < on_edges.size() && std::get<0>(on_edges[last]) == e; ++last) {
+        chain.push_back(std::get<2>(on_edges[last]));
+      }
+      chain.push_back(edge.b);
+      const auto [ring, unseen] = interior_left.try_emplace({edge.owner, edge.ring}, false);
+      if (unseen) {
+        // The interior lies left of a counter-clockwise outer ring and of a clockwise hole.
+        const double ring_area = SignedArea(RingOf(PolygonOf(edge.owner), edge.ring));
+        ring->second = (ring_area > 0.0) == (edge.ring == 0);
+      }
+      const double sliver = SignedArea(chain);
+      slivers[static_cast<size_t>(SourceOf(edge.owner))] += ring->second ? sliver : -sliver;
+      first = last;
+    }
+    return slivers;
+  }
+
+  // How far a point constructed on `edge` may lie off it: rounding noise of its coordinates and
+  // of its offset from the nearer end of the edge, which it is constructed from (Resolve()), a
+  // thousand times the unit roundoff. Not the magnitude of the far end: an edge to 5.6e21 would
+  // then claim every point within 5.6e9 of it.
+  static double OnEdgeNoise(const EdgeRef& edge, const Point2d& p) {
+    auto magnitude = [](const Point2d& q) { return q.cwiseAbs().maxCoeff(); };
+    const double offset = std::min(magnitude(p - edge.a), magnitude(p - edge.b));
+    return kHullNoise * std::max({magnitude(p), offset, 1.0});
+  }
+
   void CheckAreas() {
     std::vector<double> sums(input_.size(), 0.0);
     for (int k = 0; k < ComponentCount(); ++k) {
       if (info_[k].usable) sums[components_[k].source] += info_[k].area;
     }
+    const std::vector<double> slivers = BoundarySlivers();
     for (size_t s = 0; s < input_.size(); ++s) {
-      const double expected = inputs_[s].area;
+      const double expected = inputs_[s].area + slivers[s];
       if (!(std::abs(sums[s] - expected) <= kRelative * std::abs(expected))) {
         problems_.Add("area of components " + Num(sums[s]) + " != input area " + Num(expected) +
                       " (polygon " + std::to_string(s) + ")");

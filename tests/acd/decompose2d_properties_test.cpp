@@ -603,6 +603,36 @@ TEST(Decompose2dTest, CutAmongTheSmallFeaturesOfAPolygonWithAHugeEdge) {
   }
 }
 
+// Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-long-edge-area-sliver.wkt,
+// the wedge (0 0, 1 4, 1557048468 199, 0 4)): the notch (1, 4) lies 1.25e-7 below the long top
+// edge, and its cut ends on that edge at a constructed point, rounded off the edge by about an
+// ulp of its coordinates (~1e-16), which moves the boundary by that times the edge's length:
+// the components' areas summed to 99.5 + 1.9e-7 against the input's 99.5, beyond the relative
+// tolerance of CheckDecomposition(), which now compares with the input's area plus each edge's
+// sliver through the points constructed on it. The same wedge at other lengths, too.
+TEST(Decompose2dTest, ComponentsCutOnAVeryLongEdgeTileTheInput) {
+  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
+  std::vector<std::vector<Polygon2d>> inputs = {
+      ReadPolygons((corpus / "regression-long-edge-area-sliver.wkt").string())};
+  for (const double far : {1e4, 1557048468.0, 1e12}) {
+    inputs.push_back(PreparePolygons({{{0, 0}, {1, 4}, {far, 199}, {0, 4}}, {}}, "wedge"));
+  }
+  for (const std::vector<Polygon2d>& input : inputs) {
+    ASSERT_EQ(input.size(), 1u);
+    for (const ConcavityMeasure measure : kMeasures) {
+      for (const double tau : {0.0, 0.05 * ReferenceRadius(input[0])}) {
+        Decompose2dOptions options;
+        options.tau = tau;
+        options.measure = measure;
+        const DecompositionCheck check = CheckDecomposition(input, Decompose2d(input, options));
+        EXPECT_TRUE(check.ok()) << input[0].outer[2].transpose() << ", " << ToString(measure)
+                                << ", tau " << tau << ": "
+                                << ::testing::PrintToString(check.problems);
+      }
+    }
+  }
+}
+
 // At tau = 0 every notch needs a cut, so a diagonal resolving two notches saves a piece and
 // outranks every cut resolving one (ResolveOptions::double_resolves_first). texas.poly: CGAL's
 // optimal convex partition has 38 pieces; the target is 1.3 x that (51 before the rule, 45 with
