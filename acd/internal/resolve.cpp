@@ -108,6 +108,16 @@ constexpr double kRoundingNoise = 1e-13;
 
 double MaxAbs(const Point2d& p) { return p.cwiseAbs().maxCoeff(); }
 
+// |v|, also where its squares underflow: a cut 1e-194 long (a vertex that close to a notch, in
+// its cone) is a cut all the same, not one of length 0. Scaled by a power of two there (exact),
+// so that elsewhere the result is norm()'s to the bit.
+double Length(const Point2d& v) {
+  const double squared = v.squaredNorm();
+  if (squared >= 1e-280) return std::sqrt(squared);
+  constexpr double kScale = 0x1p+600;
+  return (v * kScale).norm() / kScale;
+}
+
 // Whether the segment a-b is a valid cut: it leaves both ends into the interior and meets no
 // boundary edge elsewhere (exact predicates). An end on an edge is a constructed point, the
 // rounding of an exact one within kRoundingNoise: exact signs on the rounded point cannot tell
@@ -342,7 +352,7 @@ class CutScorer {
   // Scores `x` into `candidate`; false when x does not resolve r or is r.
   bool Score(const Endpoint& x, Candidate* candidate) const {
     if (!InCone(a_, r_, b_, x.point)) return false;
-    const double distance = (x.point - r_).norm();
+    const double distance = Length(x.point - r_);
     if (distance == 0.0) return false;
     const double relative_concavity = ConcavityAt(concavity_, outer_, x) / options_.concavity_unit;
     double score = (1.0 + options_.score_concavity * relative_concavity) /
@@ -512,6 +522,9 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
     floor = c;
     if (c.score > 0.0) {
       floor2 = c.score * options.score_distance * c.score * options.score_distance;
+      // Overflowed (the cut is shorter than about 1e-154): its tests would prune the floor's
+      // own candidate; with 0 they prune nothing.
+      if (!std::isfinite(floor2)) floor2 = 0.0;
       reach = edge_bound / c.score;
     }
   };
@@ -562,7 +575,7 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
   if (floor.rank < 1) {
     const std::optional<Endpoint> hit =
         ray_here ? ray.Best() : BisectorHit(polygon, ring_id, index, reach * 1.000001);
-    if (hit && hit->ring < 0 && hit->on_edge && (hit->point - r).norm() <= reach &&
+    if (hit && hit->ring < 0 && hit->on_edge && Length(hit->point - r) <= reach &&
         scorer.Score(*hit, &candidate)) {
       if (!options.steiner_cuts) candidate.score = -1.0;
       consider(candidate);

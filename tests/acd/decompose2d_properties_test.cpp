@@ -633,6 +633,40 @@ TEST(Decompose2dTest, ComponentsCutOnAVeryLongEdgeTileTheInput) {
   }
 }
 
+// Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-underflowing-cut-length.wkt):
+// in (1 0, 9 90, 1 2, 1 1e-194, 0 0) the only cut that resolves the notch (1, 1e-194) goes to
+// the vertex (1, 0) straight below it, 1e-194 away, whose squared length underflows to 0: the
+// cut's score took its length as 0, as for the notch itself, and refused it ("could not resolve
+// a piece"). The same wedge with other gaps, down to a subnormal one.
+TEST(Decompose2dTest, CutShorterThanTheSquareRootOfTheSmallestDouble) {
+  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
+  std::vector<std::vector<Polygon2d>> inputs = {
+      ReadPolygons((corpus / "regression-underflowing-cut-length.wkt").string())};
+  for (const double gap : {1e-20, 1e-160, 1e-300, 1e-310}) {
+    inputs.push_back(PreparePolygons({{{1, 0}, {9, 90}, {1, 2}, {1, gap}, {0, 0}}, {}}, "wedge"));
+  }
+  for (const std::vector<Polygon2d>& input : inputs) {
+    ASSERT_EQ(input.size(), 1u);
+    for (const ConcavityMeasure measure : kMeasures) {
+      for (const double tau : {0.0, 0.05 * ReferenceRadius(input[0])}) {
+        Decompose2dOptions options;
+        options.tau = tau;
+        options.measure = measure;
+        Decomposition2d decomposition;
+        ASSERT_NO_THROW(decomposition = Decompose2d(input, options))
+            << input[0].outer[3].transpose() << ", " << ToString(measure) << ", tau " << tau;
+        const DecompositionCheck check = CheckDecomposition(input, decomposition);
+        EXPECT_TRUE(check.ok()) << input[0].outer[3].transpose() << ", " << ToString(measure)
+                                << ", tau " << tau << ": "
+                                << ::testing::PrintToString(check.problems);
+        if (tau == 0.0) {
+          EXPECT_EQ(decomposition.components.size(), 2u);
+        }
+      }
+    }
+  }
+}
+
 // At tau = 0 every notch needs a cut, so a diagonal resolving two notches saves a piece and
 // outranks every cut resolving one (ResolveOptions::double_resolves_first). texas.poly: CGAL's
 // optimal convex partition has 38 pieces; the target is 1.3 x that (51 before the rule, 45 with
