@@ -159,6 +159,9 @@ bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint&
     const double screen = std::max(noise, kRoundingNoise * std::max(MaxAbs(u), MaxAbs(w)));
     auto near = [&](const Point2d& p, const Point2d& s0, const Point2d& s1) {
       if (SegmentDistance(p, s0, s1) > screen) return false;
+      // Below 1e-154 the square loses its digits: within `screen` counts as near, as it always
+      // did (a cut among coordinates that small and none far away, where the screen is tight).
+      if (noise * noise < std::numeric_limits<double>::min()) return true;
       return Kernel().compare_squared_distance_2_object()(ToCgal(p),
                                                           Kernel::Segment_2(ToCgal(s0), ToCgal(s1)),
                                                           noise * noise) != CGAL::LARGER;
