@@ -527,6 +527,33 @@ TEST(Decompose2dTest, HugeCoordinatesWhoseAreaTermsCancel) {
   }
 }
 
+// Each of `inputs` (one prepared polygon each) decomposes under every measure, at tau = 0 and at
+// tau_rel x its reference radius, and passes CheckDecomposition(); at tau = 0 into at least two
+// components (each input has a notch).
+void ExpectEveryMeasureDecomposes(const std::vector<std::vector<Polygon2d>>& inputs,
+                                  double tau_rel) {
+  for (size_t k = 0; k < inputs.size(); ++k) {
+    const std::vector<Polygon2d>& input = inputs[k];
+    ASSERT_EQ(input.size(), 1u) << "input " << k;
+    for (const ConcavityMeasure measure : kMeasures) {
+      for (const double tau : {0.0, tau_rel * ReferenceRadius(input[0])}) {
+        const std::string label = "input " + std::to_string(k) + ", " + ToString(measure) +
+                                  ", tau " + std::to_string(tau);
+        Decompose2dOptions options;
+        options.tau = tau;
+        options.measure = measure;
+        Decomposition2d decomposition;
+        ASSERT_NO_THROW(decomposition = Decompose2d(input, options)) << label;
+        const DecompositionCheck check = CheckDecomposition(input, decomposition);
+        EXPECT_TRUE(check.ok()) << label << ": " << ::testing::PrintToString(check.problems);
+        if (tau == 0.0) {
+          EXPECT_GE(decomposition.components.size(), 2u) << label;
+        }
+      }
+    }
+  }
+}
+
 // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-long-edge-bisector-snap.wkt):
 // in (0 0, 1 4, 1 2, 64526540 10, 0 4) no vertex lies in the cone of the notch (1, 4), so only
 // its bisector's hit resolves it; that hit lies 1e-7 from the notch on the 6.5e7-long edge, at
@@ -541,26 +568,7 @@ TEST(Decompose2dTest, BisectorHitNearTheEndOfAVeryLongEdge) {
     inputs.push_back(PreparePolygons({{{0, 0}, {1, 4}, {1, 2}, {far, 10}, {0, 4}}, {}}, "w"));
     inputs.push_back(PreparePolygons({{{0, 0}, {0, 4}, {-far, 10}, {-1, 2}, {-1, 4}}, {}}, "m"));
   }
-  for (const std::vector<Polygon2d>& input : inputs) {
-    ASSERT_EQ(input.size(), 1u);
-    for (const ConcavityMeasure measure : kMeasures) {
-      for (const double tau : {0.0, 0.01 * ReferenceRadius(input[0])}) {
-        Decompose2dOptions options;
-        options.tau = tau;
-        options.measure = measure;
-        Decomposition2d decomposition;
-        ASSERT_NO_THROW(decomposition = Decompose2d(input, options))
-            << input[0].outer[3].transpose() << ", " << ToString(measure) << ", tau " << tau;
-        const DecompositionCheck check = CheckDecomposition(input, decomposition);
-        EXPECT_TRUE(check.ok()) << input[0].outer[3].transpose() << ", " << ToString(measure)
-                                << ", tau " << tau << ": "
-                                << ::testing::PrintToString(check.problems);
-        if (tau == 0.0) {
-          EXPECT_GE(decomposition.components.size(), 2u);
-        }
-      }
-    }
-  }
+  ExpectEveryMeasureDecomposes(inputs, 0.01);
 }
 
 // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-huge-edge-clear-cut.wkt, its
@@ -581,26 +589,7 @@ TEST(Decompose2dTest, CutAmongTheSmallFeaturesOfAPolygonWithAHugeEdge) {
     inputs.push_back(
         PreparePolygons({{{-2, 2}, {0, 2}, {-4, far}, {-2, 6}, {-4, 0}, {0, 0}}, {}}, "mirrored"));
   }
-  for (const std::vector<Polygon2d>& input : inputs) {
-    ASSERT_EQ(input.size(), 1u);
-    for (const ConcavityMeasure measure : kMeasures) {
-      for (const double tau : {0.0, 0.01 * ReferenceRadius(input[0])}) {
-        Decompose2dOptions options;
-        options.tau = tau;
-        options.measure = measure;
-        Decomposition2d decomposition;
-        ASSERT_NO_THROW(decomposition = Decompose2d(input, options))
-            << input[0].outer[3].transpose() << ", " << ToString(measure) << ", tau " << tau;
-        const DecompositionCheck check = CheckDecomposition(input, decomposition);
-        EXPECT_TRUE(check.ok()) << input[0].outer[3].transpose() << ", " << ToString(measure)
-                                << ", tau " << tau << ": "
-                                << ::testing::PrintToString(check.problems);
-        if (tau == 0.0) {
-          EXPECT_GE(decomposition.components.size(), 2u);
-        }
-      }
-    }
-  }
+  ExpectEveryMeasureDecomposes(inputs, 0.01);
 }
 
 // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-long-edge-area-sliver.wkt,
@@ -617,20 +606,7 @@ TEST(Decompose2dTest, ComponentsCutOnAVeryLongEdgeTileTheInput) {
   for (const double far : {1e4, 1557048468.0, 1e12}) {
     inputs.push_back(PreparePolygons({{{0, 0}, {1, 4}, {far, 199}, {0, 4}}, {}}, "wedge"));
   }
-  for (const std::vector<Polygon2d>& input : inputs) {
-    ASSERT_EQ(input.size(), 1u);
-    for (const ConcavityMeasure measure : kMeasures) {
-      for (const double tau : {0.0, 0.05 * ReferenceRadius(input[0])}) {
-        Decompose2dOptions options;
-        options.tau = tau;
-        options.measure = measure;
-        const DecompositionCheck check = CheckDecomposition(input, Decompose2d(input, options));
-        EXPECT_TRUE(check.ok()) << input[0].outer[2].transpose() << ", " << ToString(measure)
-                                << ", tau " << tau << ": "
-                                << ::testing::PrintToString(check.problems);
-      }
-    }
-  }
+  ExpectEveryMeasureDecomposes(inputs, 0.05);
 }
 
 // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-underflowing-cut-length.wkt):
@@ -645,26 +621,7 @@ TEST(Decompose2dTest, CutShorterThanTheSquareRootOfTheSmallestDouble) {
   for (const double gap : {1e-20, 1e-160, 1e-300, 1e-310}) {
     inputs.push_back(PreparePolygons({{{1, 0}, {9, 90}, {1, 2}, {1, gap}, {0, 0}}, {}}, "wedge"));
   }
-  for (const std::vector<Polygon2d>& input : inputs) {
-    ASSERT_EQ(input.size(), 1u);
-    for (const ConcavityMeasure measure : kMeasures) {
-      for (const double tau : {0.0, 0.05 * ReferenceRadius(input[0])}) {
-        Decompose2dOptions options;
-        options.tau = tau;
-        options.measure = measure;
-        Decomposition2d decomposition;
-        ASSERT_NO_THROW(decomposition = Decompose2d(input, options))
-            << input[0].outer[3].transpose() << ", " << ToString(measure) << ", tau " << tau;
-        const DecompositionCheck check = CheckDecomposition(input, decomposition);
-        EXPECT_TRUE(check.ok()) << input[0].outer[3].transpose() << ", " << ToString(measure)
-                                << ", tau " << tau << ": "
-                                << ::testing::PrintToString(check.problems);
-        if (tau == 0.0) {
-          EXPECT_EQ(decomposition.components.size(), 2u);
-        }
-      }
-    }
-  }
+  ExpectEveryMeasureDecomposes(inputs, 0.05);
 }
 
 // At tau = 0 every notch needs a cut, so a diagonal resolving two notches saves a piece and
