@@ -54,6 +54,7 @@
 #include "acd/internal/exact_predicates.h"
 #include "acd/internal/problem_list.h"
 #include "acd/internal/ring_locator.h"
+#include "acd/internal/rounding_noise.h"
 #include "base/format.h"
 
 namespace acdplan::acd {
@@ -61,6 +62,7 @@ namespace {
 
 using internal::IdBox;
 using internal::Kernel;
+using internal::MaxAbs;
 using internal::Orientation;
 using internal::PointLocation;
 using internal::RayCrossesEdge;
@@ -97,9 +99,9 @@ bool AllFinite(const Ring2d& ring) {
 
 double MaxAbsCoordinate(const Polygon2d& polygon) {
   double m = 0.0;
-  for (const Point2d& p : polygon.outer) m = std::max({m, std::abs(p.x()), std::abs(p.y())});
+  for (const Point2d& p : polygon.outer) m = std::max(m, MaxAbs(p));
   for (const Ring2d& hole : polygon.holes) {
-    for (const Point2d& p : hole) m = std::max({m, std::abs(p.x()), std::abs(p.y())});
+    for (const Point2d& p : hole) m = std::max(m, MaxAbs(p));
   }
   return m;
 }
@@ -762,8 +764,7 @@ class Checker {
       input_vertices.emplace_back(SourceOf(edge.owner), edge.a);
       // Padded by OnEdgeNoise() of any point of the edge, or more.
       const double pad =
-          kHullNoise * std::max({edge.a.cwiseAbs().maxCoeff(), edge.b.cwiseAbs().maxCoeff(),
-                                 (edge.b - edge.a).cwiseAbs().maxCoeff(), 1.0});
+          kHullNoise * std::max({MaxAbs(edge.a), MaxAbs(edge.b), MaxAbs(edge.b - edge.a), 1.0});
       edge_boxes.push_back(SegmentBox(edge.a, edge.b, e, pad));
     }
     auto key = [](const std::pair<int, Point2d>& v) {
@@ -804,41 +805,41 @@ class Checker {
       if (SourceOf(edge.owner) != constructed[i].first) return;
       // Exactly: a distance in floating point errs by the rounding of the far end's coordinates.
       const double noise = OnEdgeNoise(edge, p);
-      if (Kernel().compare_squared_distance_2_object()(ToCgal(p), segment(e), noise * noise) ==
-          CGAL::LARGER) {
-        return;
-      }
+      const Kernel::Point_2 q = ToCgal(p);
+      const Kernel::Segment_2 s = segment(e);
+      const auto compare = Kernel().compare_squared_distance_2_object();
+      if (compare(q, s, noise * noise) == CGAL::LARGER) return;
       int& best = nearest[i];
       const CGAL::Comparison_result order =
-          best < 0 ? CGAL::SMALLER
-                   : Kernel().compare_squared_distance_2_object()(ToCgal(p), segment(e), ToCgal(p),
-                                                                  segment(best));
+          best < 0 ? CGAL::SMALLER : compare(q, s, q, segment(best));
       if (order == CGAL::SMALLER || (order == CGAL::EQUAL && e < best)) best = e;
     });
-    // (edge, parameter along it, point), in order along each edge.
-    std::vector<std::tuple<int, double, Point2d>> on_edges;
+    // The points on each edge, in order along it.
+    struct OnEdge {
+      int edge;
+      double along;  // Parameter along the edge, 0 at its start and 1 at its end.
+      Point2d point;
+      auto Key() const { return std::make_tuple(edge, along, point.x(), point.y()); }
+    };
+    std::vector<OnEdge> on_edges;
     for (size_t i = 0; i < constructed.size(); ++i) {
       const int e = nearest[i];
       if (e < 0) continue;
       const Point2d ab = edges_[e].b - edges_[e].a;
       const Point2d& p = constructed[i].second;
-      on_edges.emplace_back(e, (p - edges_[e].a).dot(ab) / ab.squaredNorm(), p);
+      on_edges.push_back({e, (p - edges_[e].a).dot(ab) / ab.squaredNorm(), p});
     }
-    std::sort(on_edges.begin(), on_edges.end(), [](const auto& x, const auto& y) {
-      return std::make_tuple(std::get<0>(x), std::get<1>(x), std::get<2>(x).x(),
-                             std::get<2>(x).y()) < std::make_tuple(std::get<0>(y), std::get<1>(y),
-                                                                   std::get<2>(y).x(),
-                                                                   std::get<2>(y).y());
-    });
+    std::sort(on_edges.begin(), on_edges.end(),
+              [](const OnEdge& x, const OnEdge& y) { return x.Key() < y.Key(); });
     std::vector<double> slivers(input_.size(), 0.0);
     std::map<std::pair<int, int>, bool> interior_left;  // Per (owner, ring) met.
     for (size_t first = 0; first < on_edges.size();) {
-      const int e = std::get<0>(on_edges[first]);
+      const int e = on_edges[first].edge;
       const EdgeRef& edge = edges_[e];
       Ring2d chain = {edge.a};
       size_t last = first;
-      for (; last < on_edges.size() && std::get<0>(on_edges[last]) == e; ++last) {
-        chain.push_back(std::get<2>(on_edges[last]));
+      for (; last < on_edges.size() && on_edges[last].edge == e; ++last) {
+        chain.push_back(on_edges[last].point);
       }
       chain.push_back(edge.b);
       const auto [ring, unseen] = interior_left.try_emplace({edge.owner, edge.ring}, false);
@@ -859,9 +860,8 @@ class Checker {
   // thousand times the unit roundoff. Not the magnitude of the far end: an edge to 5.6e21 would
   // then claim every point within 5.6e9 of it.
   static double OnEdgeNoise(const EdgeRef& edge, const Point2d& p) {
-    auto magnitude = [](const Point2d& q) { return q.cwiseAbs().maxCoeff(); };
-    const double offset = std::min(magnitude(p - edge.a), magnitude(p - edge.b));
-    return kHullNoise * std::max({magnitude(p), offset, 1.0});
+    const double offset = std::min(MaxAbs(p - edge.a), MaxAbs(p - edge.b));
+    return kHullNoise * std::max({MaxAbs(p), offset, 1.0});
   }
 
   void CheckAreas() {

@@ -14,6 +14,7 @@
 #include "acd/internal/is_notch.h"
 #include "acd/internal/pocket_cache.h"
 #include "acd/internal/point_tree.h"
+#include "acd/internal/rounding_noise.h"
 #include "acd/internal/shortest_paths.h"
 
 namespace acdplan::acd {
@@ -542,8 +543,7 @@ void MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions& 
   const Point2d& from = ring[begin];
   const Point2d& to = ring[end];
   const Point2d bridge = to - from;
-  const double on_bridge =
-      1e-9 * (from.cwiseAbs().maxCoeff() + to.cwiseAbs().maxCoeff() + bridge.cwiseAbs().maxCoeff());
+  const double on_bridge = 1e-9 * (MaxAbs(from) + MaxAbs(to) + MaxAbs(bridge));
   bool hazard = false;
   double sl_max = 0.0;
   for (int i = begin; i != end;) {

@@ -6,18 +6,17 @@
 #include <cmath>
 
 #include "acd/internal/exact_predicates.h"
+#include "acd/internal/rounding_noise.h"
 #include "acd/polygon2d.h"
 
 namespace acdplan::acd::internal {
 
 /// IsNotch() (acd/concavity.h): the turn prev -> v -> next is clockwise by more than rounding
-/// noise, 1e-13 times the largest coordinate magnitude (at least 1).
+/// noise, kRoundingNoise times the largest coordinate magnitude (at least 1).
 inline bool IsNotchInline(const Point2d& prev, const Point2d& v, const Point2d& next) {
   if (Orientation(prev, v, next) >= 0) return false;
   const Point2d chord = next - prev;
-  constexpr double kRoundingNoise = 1e-13;
-  const double magnitude =
-      std::max({prev.cwiseAbs().maxCoeff(), v.cwiseAbs().maxCoeff(), next.cwiseAbs().maxCoeff()});
+  const double magnitude = std::max({MaxAbs(prev), MaxAbs(v), MaxAbs(next)});
   const double noise = kRoundingNoise * std::max(1.0, magnitude);
   const Point2d offset = v - prev;
   const double cross = chord.x() * offset.y() - chord.y() * offset.x();

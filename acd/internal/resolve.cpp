@@ -14,6 +14,7 @@
 #include "acd/internal/is_notch.h"
 #include "acd/internal/nearest_boundary.h"
 #include "acd/internal/ring_locator.h"
+#include "acd/internal/rounding_noise.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -102,12 +103,6 @@ class EdgeQuery {
   mutable std::optional<EdgeGrid> grid_;
 };
 
-// Rounding noise of a constructed coordinate, relative to the coordinates' magnitude (a few
-// hundred ulps; the noise floor IsNotch() uses).
-constexpr double kRoundingNoise = 1e-13;
-
-double MaxAbs(const Point2d& p) { return p.cwiseAbs().maxCoeff(); }
-
 // |v|, also where its squares underflow: a cut 1e-194 long (a vertex that close to a notch, in
 // its cone) is a cut all the same, not one of length 0. Scaled by a power of two there (exact),
 // so that elsewhere the result is norm()'s to the bit.
@@ -134,6 +129,7 @@ bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint&
   const bool constructed = a.on_edge || b.on_edge;
   const double noise =
       constructed ? kRoundingNoise * std::max(MaxAbs(a.point), MaxAbs(b.point)) : 0.0;
+  const double noise_squared = noise * noise;
   const double pad = 2.0 * noise;
   const double xmin = std::min(a.point.x(), b.point.x()) - pad;
   const double xmax = std::max(a.point.x(), b.point.x()) + pad;
@@ -161,10 +157,10 @@ bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint&
       if (SegmentDistance(p, s0, s1) > screen) return false;
       // Below 1e-154 the square loses its digits: within `screen` counts as near, as it always
       // did (a cut among coordinates that small and none far away, where the screen is tight).
-      if (noise * noise < std::numeric_limits<double>::min()) return true;
+      if (noise_squared < std::numeric_limits<double>::min()) return true;
       return Kernel().compare_squared_distance_2_object()(ToCgal(p),
                                                           Kernel::Segment_2(ToCgal(s0), ToCgal(s1)),
-                                                          noise * noise) != CGAL::LARGER;
+                                                          noise_squared) != CGAL::LARGER;
     };
     // Vertices of this edge other than the cut's own ends, near the cut.
     for (const Point2d* v : {&u, &w}) {
@@ -250,8 +246,8 @@ class BisectorRay {
     const Point2d& origin = other[near];
     const Point2d offset = hit->s * (other[from_end ? i : j] - origin);
     const double noise = kRoundingNoise * std::max(1.0, MaxAbs(origin));
-    best_ = offset.cwiseAbs().maxCoeff() <= noise ? Endpoint{k, near, false, origin}
-                                                  : Endpoint{k, i, true, origin + offset};
+    best_ = MaxAbs(offset) <= noise ? Endpoint{k, near, false, origin}
+                                    : Endpoint{k, i, true, origin + offset};
     found_ = true;
   }
 
@@ -416,9 +412,7 @@ bool ClearlyNotch(const Point2d& p, const Point2d& v, const Point2d& q) {
   const double left = in.x() * out.y(), right = in.y() * out.x();
   const double turn = right - left;  // > 0: clockwise.
   if (!(turn > 0.0)) return false;
-  constexpr double kRoundingNoise = 1e-13;  // IsNotchInline()'s.
-  const double magnitude = std::max({std::abs(p.x()), std::abs(p.y()), std::abs(v.x()),
-                                     std::abs(v.y()), std::abs(q.x()), std::abs(q.y()), 1.0});
+  const double magnitude = std::max({MaxAbs(p), MaxAbs(v), MaxAbs(q), 1.0});
   const double chord_l1 = std::abs(q.x() - p.x()) + std::abs(q.y() - p.y());  // >= |chord|.
   return turn - 1e-15 * (std::abs(left) + std::abs(right)) >
          2.0 * kRoundingNoise * magnitude * chord_l1;
