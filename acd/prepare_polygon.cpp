@@ -720,14 +720,6 @@ std::vector<Polygon2d> PrepareTouching(std::vector<IndexedRing> rings, const std
 
 }  // namespace
 
-// Largest |coordinate| accepted. The measures of a polygon multiply coordinate differences:
-// areas and squared distances square them, the centroid's first moments cube them. Beyond 1e100
-// a difference is up to 2e100 and its cube 8e300, so a ring's moment sum would overflow a
-// double (1.8e308) and centroids, then areas and distances, turn into inf or NaN (a vertex at
-// 5e185 did). Such coordinates carry no geometry a double computation can measure, so they are
-// rejected, not decomposed.
-constexpr double kMaxCoordinate = 1e100;
-
 std::vector<Polygon2d> PreparePolygons(const Polygon2d& raw, const std::string& where) {
   // 1. Every coordinate finite and at most kMaxCoordinate in magnitude.
   const size_t ring_count = 1 + raw.holes.size();

@@ -8,6 +8,14 @@
 
 namespace acdplan::acd {
 
+/// Largest |coordinate| PreparePolygons() and RepairPolygon() accept. The measures of a polygon
+/// multiply coordinate differences: areas and squared distances square them, the centroid's
+/// first moments and a crossing point's construction cube them. Beyond 1e100 a difference is up
+/// to 2e100 and its cube 8e300, so a ring's moment sum would overflow a double (1.8e308) and
+/// centroids, then areas and distances, turn into inf or NaN (a vertex at 5e185 did). Such
+/// coordinates carry no geometry a double computation can measure, so they are rejected.
+inline constexpr double kMaxCoordinate = 1e100;
+
 /// Validates `raw` and returns its cleaned form as polygons that satisfy Polygon2d's
 /// invariants (simple rings, holes strictly inside and pairwise disjoint), whose union is
 /// `raw`'s interior. One polygon, unchanged but for cleaning, unless rings touch.

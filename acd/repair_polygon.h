@@ -30,8 +30,9 @@ struct RepairedPolygon {
 /// reported as an InputError ("repair failed: ..."), not hidden.
 /// O((n + k) log n) for n edges crossing k times, plus PreparePolygons().
 /// @param where  names the polygon in messages and change lines, e.g. "tile.wkt: polygon 0".
-/// @throws InputError if a coordinate is not finite or the repaired result cannot be
-///         represented in doubles.
+/// @throws InputError if a coordinate is not finite or beyond kMaxCoordinate
+///         (acd/prepare_polygon.h), with PreparePolygons()' message, or if the repaired result
+///         cannot be represented in doubles.
 RepairedPolygon RepairPolygon(const Polygon2d& raw, const std::string& where);
 
 }  // namespace acdplan::acd

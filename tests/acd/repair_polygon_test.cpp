@@ -86,5 +86,27 @@ TEST(RepairPolygonTest, NonFiniteCoordinateIsStillAnError) {
   EXPECT_THROW(RepairPolygon(raw, "w"), InputError);
 }
 
+// fuzz/corpus/decompose2d/regression-repair-far-coordinate.wkt: a ring crossing itself with a
+// vertex at 5e184 went into the exact arrangement, whose interval filters overflow there
+// (undefined behaviour inside CGAL under UBSan; "repair failed: rounding ..." in Release).
+// PreparePolygons()' range rule, which no repair can mend, is the answer, as for a non-finite
+// coordinate.
+TEST(RepairPolygonTest, CoordinateBeyondTheRangeIsStillAnError) {
+  const Polygon2d raw{{{0, 0}, {1, 4}, {1, 2}, {5e184, 199}, {0, 4}}, {}};
+  try {
+    RepairPolygon(raw, "w");
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("w: outer ring: vertex 3"));
+    EXPECT_THAT(error.what(), HasSubstr("is too far from the origin"));
+  }
+  // A bow tie reaching out to the limit is repaired into its two triangles; beyond it, refused.
+  auto bow_tie = [](double x) { return Polygon2d{{{0, 0}, {x, 1}, {x, 0}, {0, 1}}, {}}; };
+  const RepairedPolygon r = RepairPolygon(bow_tie(kMaxCoordinate), "w");
+  EXPECT_EQ(r.changes.size(), 1u);
+  EXPECT_EQ(r.polygons.size(), 2u);
+  EXPECT_THROW(RepairPolygon(bow_tie(2 * kMaxCoordinate), "w"), InputError);
+}
+
 }  // namespace
 }  // namespace acdplan::acd
