@@ -119,9 +119,12 @@ double Length(const Point2d& v) {
 // which side of a vertex the exact cut passes (a cut aimed along a row of collinear vertices
 // slips past them by an ulp and leaves a piece pinched to 1e-15, which no later cut resolves).
 // Such a cut must therefore also keep every other vertex, and its new end every other edge,
-// farther than that noise: decided exactly, as a distance computed in floating point errs by
-// the rounding of its largest coordinates (an edge 1e26 long makes that 1e10, far above the
-// noise of a cut among its small features). Edges are taken from `grid`.
+// farther than that noise; and the edge a new end splits must keep every vertex but its own
+// ends that far, as the rounded end moves the two edges it leaves by up to the noise (a vertex
+// 1e-22 from an edge 5.6e22 long landed on one of them, and the piece pinched there could not
+// be resolved). Decided exactly, as a distance computed in floating point errs by the rounding
+// of its largest coordinates (an edge 1e26 long makes that 1e10, far above the noise of a cut
+// among its small features). Edges are taken from `grid`.
 bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint& a,
                 const Endpoint& b) {
   if (!LeavesInward(polygon, a, b.point) || !LeavesInward(polygon, b, a.point)) return false;
@@ -135,6 +138,16 @@ bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint&
   const double xmax = std::max(a.point.x(), b.point.x()) + pad;
   const double ymin = std::min(a.point.y(), b.point.y()) - pad;
   const double ymax = std::max(a.point.y(), b.point.y()) + pad;
+  // Whether p lies within `noise` of the segment s0-s1: the floating-point distance settles the
+  // clear cases (it errs by far less than `screen`), the exact comparison the rest.
+  auto near = [&](const Point2d& p, const Point2d& s0, const Point2d& s1, double screen) {
+    if (SegmentDistance(p, s0, s1) > screen) return false;
+    // Below 1e-154 the square loses its digits: within `screen` counts as near, as it always
+    // did (a cut among coordinates that small and none far away, where the screen is tight).
+    if (noise_squared < std::numeric_limits<double>::min()) return true;
+    return Kernel().compare_squared_distance_2_object()(
+               ToCgal(p), Kernel::Segment_2(ToCgal(s0), ToCgal(s1)), noise_squared) != CGAL::LARGER;
+  };
   const bool blocked = grid.AnyNear(a.point, b.point, pad, [&](const EdgeGrid::Edge& edge) {
     const Ring2d& ring = RingOf(polygon, edge.ring);
     const int n = static_cast<int>(ring.size());
@@ -150,32 +163,36 @@ bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint&
       return true;
     }
     if (!constructed) return false;
-    // Whether p lies within `noise` of the segment s0-s1: the floating-point distance settles
-    // the clear cases (it errs by far less than `screen`), the exact comparison the rest.
     const double screen = std::max(noise, kRoundingNoise * std::max(MaxAbs(u), MaxAbs(w)));
-    auto near = [&](const Point2d& p, const Point2d& s0, const Point2d& s1) {
-      if (SegmentDistance(p, s0, s1) > screen) return false;
-      // Below 1e-154 the square loses its digits: within `screen` counts as near, as it always
-      // did (a cut among coordinates that small and none far away, where the screen is tight).
-      if (noise_squared < std::numeric_limits<double>::min()) return true;
-      return Kernel().compare_squared_distance_2_object()(ToCgal(p),
-                                                          Kernel::Segment_2(ToCgal(s0), ToCgal(s1)),
-                                                          noise_squared) != CGAL::LARGER;
-    };
     // Vertices of this edge other than the cut's own ends, near the cut.
     for (const Point2d* v : {&u, &w}) {
       if (*v == a.point || *v == b.point) continue;
-      if (near(*v, a.point, b.point)) return true;
+      if (near(*v, a.point, b.point, screen)) return true;
     }
     // A constructed end near an edge other than its own.
     for (const Endpoint* e : {&a, &b}) {
       if (!e->on_edge || (e->ring == edge.ring && e->index == i)) continue;
       if (IsIncident(*e, edge.ring, i, n)) continue;
-      if (near(e->point, u, w)) return true;
+      if (near(e->point, u, w, screen)) return true;
     }
     return false;
   });
-  return !blocked;
+  if (blocked) return false;
+  // The edges the constructed ends split, crowded by a vertex.
+  for (const Endpoint* e : {&a, &b}) {
+    if (!e->on_edge) continue;
+    const Ring2d& ring = RingOf(polygon, e->ring);
+    const Point2d& u = ring[e->index];
+    const Point2d& w = ring[Next(e->index, static_cast<int>(ring.size()))];
+    const double screen = std::max(noise, kRoundingNoise * std::max(MaxAbs(u), MaxAbs(w)));
+    const bool crowded = grid.AnyNear(u, w, pad, [&](const EdgeGrid::Edge& edge) {
+      const Ring2d& other = RingOf(polygon, edge.ring);
+      const Point2d& v = other[edge.index];  // Each vertex starts one edge.
+      return v != u && v != w && near(v, u, w, std::max(screen, kRoundingNoise * MaxAbs(v)));
+    });
+    if (crowded) return false;
+  }
+  return true;
 }
 
 bool SegmentsMeet(const Point2d& a, const Point2d& b, const Point2d& c, const Point2d& d) {

@@ -624,6 +624,26 @@ TEST(Decompose2dTest, CutShorterThanTheSquareRootOfTheSmallestDouble) {
   ExpectEveryMeasureDecomposes(inputs, 0.05);
 }
 
+// Found by fuzz/fuzz_decompose2d (a polygon made valid by RepairPolygon(), minimised to
+// fuzz/corpus/decompose2d/regression-vertex-near-split-edge.wkt): in (17 14, 18 5.6e22, 7 22,
+// 16 2051, 17 21) the vertex (17, 21) lies 1.3e-22 left of the edge from (17, 14) up to the
+// spike. A cut ended on that edge at (17, 2558.2), rounded onto x = 17 exactly; the piece's new
+// edge (17, 14)-(17, 2558.2) then ran through (17, 21), a pinch no later cut resolves ("could
+// not resolve a piece"). A cut may now end on an edge only where no other vertex lies within
+// the end's rounding noise of it. The same shape with other spikes, and mirrored, too.
+TEST(Decompose2dTest, CutEndsOnlyOnEdgesClearOfOtherVertices) {
+  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
+  std::vector<std::vector<Polygon2d>> inputs = {
+      ReadPolygons((corpus / "regression-vertex-near-split-edge.wkt").string())};
+  for (const double far : {1e15, 5.5555555555555555e22, 1e40}) {
+    inputs.push_back(
+        PreparePolygons({{{17, 14}, {18, far}, {7, 22}, {16, 2051}, {17, 21}}, {}}, "spike"));
+    inputs.push_back(PreparePolygons(
+        {{{-17, 21}, {-16, 2051}, {-7, 22}, {-18, far}, {-17, 14}}, {}}, "mirrored"));
+  }
+  ExpectEveryMeasureDecomposes(inputs, 0.05);
+}
+
 // At tau = 0 every notch needs a cut, so a diagonal resolving two notches saves a piece and
 // outranks every cut resolving one (ResolveOptions::double_resolves_first). texas.poly: CGAL's
 // optimal convex partition has 38 pieces; the target is 1.3 x that (51 before the rule, 45 with
