@@ -124,12 +124,13 @@ double Length(const Point2d& v) {
 // 1e-22 from an edge 5.6e22 long landed on one of them, and the piece pinched there could not
 // be resolved). Decided exactly, as a distance computed in floating point errs by the rounding
 // of its largest coordinates (an edge 1e26 long makes that 1e10, far above the noise of a cut
-// among its small features). Edges are taken from `grid`.
+// among its small features). Edges are taken from `grid`. `noise_bands` false leaves only the
+// exact tests on the rounded points (ResolveOuterNotch()'s last resort checks the pieces instead).
 bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint& a,
-                const Endpoint& b) {
+                const Endpoint& b, bool noise_bands = true) {
   if (!LeavesInward(polygon, a, b.point) || !LeavesInward(polygon, b, a.point)) return false;
   const Kernel::Segment_2 cut(ToCgal(a.point), ToCgal(b.point));
-  const bool constructed = a.on_edge || b.on_edge;
+  const bool constructed = noise_bands && (a.on_edge || b.on_edge);
   const double noise =
       constructed ? kRoundingNoise * std::max(MaxAbs(a.point), MaxAbs(b.point)) : 0.0;
   const double noise_squared = noise * noise;
@@ -180,7 +181,7 @@ bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint&
   if (blocked) return false;
   // The edges the constructed ends split, crowded by a vertex.
   for (const Endpoint* e : {&a, &b}) {
-    if (!e->on_edge) continue;
+    if (!constructed || !e->on_edge) continue;
     const Ring2d& ring = RingOf(polygon, e->ring);
     const Point2d& u = ring[e->index];
     const Point2d& w = ring[Next(e->index, static_cast<int>(ring.size()))];
@@ -639,13 +640,16 @@ std::optional<Endpoint> FirstAcceptedCut(const Polygon2d& polygon, const Concavi
                        quick.unique);
 }
 
-// Outer vertices and closest edge points, nearest first: the fallback ends of a hole's cut.
-std::vector<Candidate> NearestCandidates(const Polygon2d& polygon, const Point2d& from) {
+// Outer vertices and (with `edge_points`) closest edge points, nearest first: the fallback
+// ends of a hole's cut, and of an outer notch's last resort.
+std::vector<Candidate> NearestCandidates(const Polygon2d& polygon, const Point2d& from,
+                                         bool edge_points = true) {
   std::vector<Candidate> candidates;
   const Ring2d& outer = polygon.outer;
   const int m = static_cast<int>(outer.size());
   for (int i = 0; i < m; ++i) {
     candidates.push_back({{-1, i, false, outer[i]}, -(outer[i] - from).norm()});
+    if (!edge_points) continue;
     if (const std::optional<Point2d> foot = EdgeFoot(from, outer[i], outer[Next(i, m)])) {
       candidates.push_back({{-1, i, true, *foot}, -(*foot - from).norm()});
     }
@@ -756,21 +760,54 @@ void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
   }
 }
 
-bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeQuery& grid,
-                       const Concavity2d& concavity, int r, const ResolveOptions& options,
-                       Resolution* resolution) {
-  const Endpoint from{-1, r, false, polygon.outer[r]};
-  const std::optional<Endpoint> to =
-      FirstAcceptedCut(polygon, concavity, -1, r, options,
-                       [&](const Endpoint& x) { return IsClearCut(polygon, grid, from, x); });
-  if (!to) return false;
+// Splits `polygon` along the cut from -> to into resolution->pieces.
+void SplitAlong(const Polygon2d& polygon, const Endpoint& from, const Endpoint& to,
+                Resolution* resolution) {
   resolution->pieces = {};
   resolution->origin = {};
   for (int side = 0; side < 2; ++side) {
-    AppendOuterChain(polygon.outer, side == 0 ? from : *to, side == 0 ? *to : from,
+    AppendOuterChain(polygon.outer, side == 0 ? from : to, side == 0 ? to : from,
                      &resolution->pieces[side].outer, &resolution->origin[side]);
   }
   DistributeHoles(polygon, {}, &resolution->pieces);
+}
+
+// Whether both pieces' outer rings are simple, exactly.
+bool PiecesAreSimple(const Resolution& resolution) {
+  std::vector<Kernel::Point_2> ring;
+  for (const Polygon2d& piece : resolution.pieces) {
+    ring.clear();
+    for (const Point2d& p : piece.outer) ring.push_back(ToCgal(p));
+    if (ring.size() < 3 || !CGAL::is_simple_2(ring.begin(), ring.end(), Kernel())) return false;
+  }
+  return true;
+}
+
+// The cut of outer notch r. `last_resort`: for a notch that every cut misses when cut ends
+// must keep clear of other features by their rounding noise (a notch at (999, 4), 7e-15 below
+// an edge, where that noise is 1e-10): the first cut that crosses nothing,
+// exactly, and leaves two simple pieces, checked exactly on the rounded points; failing that
+// (no edge point in the notch's cone is a double apart from it), such a diagonal to the
+// nearest vertex, resolving or not. A notch always sees some vertex, and a diagonal leaves two
+// pieces of fewer vertices, so the decomposition still ends.
+bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeQuery& grid,
+                       const Concavity2d& concavity, int r, const ResolveOptions& options,
+                       Resolution* resolution, bool last_resort = false) {
+  const Endpoint from{-1, r, false, polygon.outer[r]};
+  auto accept = [&](const Endpoint& x) {
+    if (!last_resort) return IsClearCut(polygon, grid, from, x);
+    if (x.point == from.point || !IsClearCut(polygon, grid, from, x, /*noise_bands=*/false)) {
+      return false;
+    }
+    SplitAlong(polygon, from, x, resolution);
+    return PiecesAreSimple(*resolution);
+  };
+  std::optional<Endpoint> to = FirstAcceptedCut(polygon, concavity, -1, r, options, accept);
+  if (!to && last_resort) {
+    to = FirstAccepted(NearestCandidates(polygon, from.point, /*edge_points=*/false), accept);
+  }
+  if (!to) return false;
+  SplitAlong(polygon, from, *to, resolution);
   resolution->cuts = {{from.point, to->point}};
   resolution->witness = from.point;
   return true;
@@ -1054,6 +1091,16 @@ bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const Resol
                    [&](int a, int b) { return concavity.outer[a] > concavity.outer[b]; });
   for (int r : notches) {
     if (ResolveOuterNotch(polygon, grid, concavity, r, options, resolution)) return true;
+  }
+  if (concavity.witness_vertex >= 0 &&
+      ResolveOuterNotch(polygon, grid, concavity, concavity.witness_vertex, options, resolution,
+                        /*last_resort=*/true)) {
+    return true;
+  }
+  for (int r : notches) {
+    if (ResolveOuterNotch(polygon, grid, concavity, r, options, resolution, /*last_resort=*/true)) {
+      return true;
+    }
   }
   return false;
 }

@@ -644,6 +644,27 @@ TEST(Decompose2dTest, CutEndsOnlyOnEdgesClearOfOtherVertices) {
   ExpectEveryMeasureDecomposes(inputs, 0.05);
 }
 
+// Found by fuzz/fuzz_decompose2d (a polygon made valid by RepairPolygon(), minimised to
+// fuzz/corpus/decompose2d/regression-notch-within-noise-of-edge.wkt): the notch (999, 4) lies
+// 7e-15 below the edge from (1.7e8, 4.0000000013) to (91, 4), and every cut that resolves it
+// ends on that edge within 7e-15 of it, inside the band of rounding noise (1e-13 x the cut's
+// largest coordinate) that a constructed cut end must keep clear of other edges: every cut was
+// refused
+// ("could not resolve a piece"). The last resort takes the first cut that crosses nothing and
+// leaves two simple pieces, both checked exactly. The same shape with other gaps and lengths.
+TEST(Decompose2dTest, NotchWithinRoundingNoiseOfAnEdge) {
+  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
+  std::vector<std::vector<Polygon2d>> inputs = {
+      ReadPolygons((corpus / "regression-notch-within-noise-of-edge.wkt").string())};
+  for (const double far : {1e6, 1.6666666422434840e8, 1e12}) {
+    for (const double rise : {1e-12, 1.3078187e-9}) {
+      inputs.push_back(PreparePolygons(
+          {{{91, 4}, {334, 2}, {999, 4}, {0.6 * far, 2}, {far, 4 + rise}}, {}}, "sliver"));
+    }
+  }
+  ExpectEveryMeasureDecomposes(inputs, 0.05);
+}
+
 // At tau = 0 every notch needs a cut, so a diagonal resolving two notches saves a piece and
 // outranks every cut resolving one (ResolveOptions::double_resolves_first). texas.poly: CGAL's
 // optimal convex partition has 38 pieces; the target is 1.3 x that (51 before the rule, 45 with
