@@ -720,12 +720,9 @@ std::vector<Polygon2d> PrepareTouching(std::vector<IndexedRing> rings, const std
 
 }  // namespace
 
-std::vector<Polygon2d> PreparePolygons(const Polygon2d& raw, const std::string& where) {
-  // 1. Every coordinate finite and at most kMaxCoordinate in magnitude.
-  const size_t ring_count = 1 + raw.holes.size();
-  auto raw_ring = [&](size_t r) -> const Ring2d& { return r == 0 ? raw.outer : raw.holes[r - 1]; };
-  for (size_t r = 0; r < ring_count; ++r) {
-    const Ring2d& ring = raw_ring(r);
+void CheckCoordinates(const Polygon2d& raw, const std::string& where) {
+  for (size_t r = 0; r <= raw.holes.size(); ++r) {
+    const Ring2d& ring = r == 0 ? raw.outer : raw.holes[r - 1];
     for (size_t i = 0; i < ring.size(); ++i) {
       if (!std::isfinite(ring[i].x()) || !std::isfinite(ring[i].y())) {
         Fail(where, RingName(r) + ": vertex " + std::to_string(i) + " is not finite " +
@@ -739,6 +736,13 @@ std::vector<Polygon2d> PreparePolygons(const Polygon2d& raw, const std::string& 
       }
     }
   }
+}
+
+std::vector<Polygon2d> PreparePolygons(const Polygon2d& raw, const std::string& where) {
+  // 1. Every coordinate finite and at most kMaxCoordinate in magnitude.
+  CheckCoordinates(raw, where);
+  const size_t ring_count = 1 + raw.holes.size();
+  auto raw_ring = [&](size_t r) -> const Ring2d& { return r == 0 ? raw.outer : raw.holes[r - 1]; };
 
   // 2. Clean and orient (outer counter-clockwise, holes clockwise); 3. enough vertices, area.
   std::vector<IndexedRing> rings;

@@ -16,6 +16,11 @@ namespace acdplan::acd {
 /// coordinates carry no geometry a double computation can measure, so they are rejected.
 inline constexpr double kMaxCoordinate = 1e100;
 
+/// Throws InputError (naming `where`, the ring and the vertex) unless every coordinate of
+/// `raw` is finite and at most kMaxCoordinate in magnitude: the first check of
+/// PreparePolygons() and RepairPolygon(), as no repair brings a coordinate into range.
+void CheckCoordinates(const Polygon2d& raw, const std::string& where);
+
 /// Validates `raw` and returns its cleaned form as polygons that satisfy Polygon2d's
 /// invariants (simple rings, holes strictly inside and pairwise disjoint), whose union is
 /// `raw`'s interior. One polygon, unchanged but for cleaning, unless rings touch.

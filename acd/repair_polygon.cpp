@@ -43,6 +43,10 @@ std::string Rule(const InputError& error, const std::string& where) {
 }  // namespace
 
 RepairedPolygon RepairPolygon(const Polygon2d& raw, const std::string& where) {
+  // No repair brings a coordinate into range. Nor could the arrangement below take one: its
+  // interval filters overflow on cubed coordinates, and CGAL's arrangement then reached
+  // undefined behaviour (a vertex at 5e184, fuzz_decompose2d).
+  CheckCoordinates(raw, where);
   RepairedPolygon result;
   std::string rule;
   try {
@@ -53,17 +57,6 @@ RepairedPolygon RepairPolygon(const Polygon2d& raw, const std::string& where) {
   }
   const size_t ring_count = 1 + raw.holes.size();
   auto ring_at = [&](size_t r) -> const Ring2d& { return r == 0 ? raw.outer : raw.holes[r - 1]; };
-  // No repair brings a coordinate into range (PreparePolygons() checks range first, so `rule`
-  // names it). Nor could the arrangement below take one: its interval filters overflow on
-  // cubed coordinates, and CGAL's arrangement then reached undefined behaviour (a vertex at
-  // 5e184, fuzz_decompose2d).
-  for (size_t r = 0; r < ring_count; ++r) {
-    for (const Point2d& p : ring_at(r)) {
-      if (!(std::max(std::abs(p.x()), std::abs(p.y())) <= kMaxCoordinate)) {
-        throw InputError(where + ": " + rule);
-      }
-    }
-  }
 
   // 1. Rings that collapse.
   std::vector<size_t> kept;

@@ -807,7 +807,7 @@ bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeQuery& grid,
     to = FirstAccepted(NearestCandidates(polygon, from.point, /*edge_points=*/false), accept);
   }
   if (!to) return false;
-  SplitAlong(polygon, from, *to, resolution);
+  if (!last_resort) SplitAlong(polygon, from, *to, resolution);  // accept() split the last resort
   resolution->cuts = {{from.point, to->point}};
   resolution->witness = from.point;
   return true;

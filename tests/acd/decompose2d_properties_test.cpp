@@ -491,6 +491,12 @@ TEST(Decompose2dTest, VerticesFarOutsideTheReflexVerticesBox) {
   }
 }
 
+// The polygons of fuzz/corpus/decompose2d/`file`, a regression input kept by the fuzzer.
+std::vector<Polygon2d> FuzzRegressionInput(const std::string& file) {
+  return ReadPolygons(
+      (fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d" / file).string());
+}
+
 // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-huge-spike-area.poly and
 // regression-zero-area-component.wkt): coordinates of 5.56e21 and 5e58 make the shoelace terms
 // cancel far beyond double precision. The decompositions were right (the exact area sums agree:
@@ -499,14 +505,13 @@ TEST(Decompose2dTest, VerticesFarOutsideTheReflexVerticesBox) {
 // must now decompose both validly, with the exact input area. Coordinates above 1e100 are
 // rejected by PreparePolygons() (regression-overflowing-coordinate.wkt).
 TEST(Decompose2dTest, HugeCoordinatesWhoseAreaTermsCancel) {
-  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
   // The last: the wedge at the largest magnitude PreparePolygons() accepts (1e100).
   const std::pair<std::string, double> cases[] = {{"regression-huge-spike-area.poly", 2191.5},
                                                   {"regression-zero-area-component.wkt", 5e58},
                                                   {"", 1e100 + 98.5}};
   for (const auto& [file, area] : cases) {
     const std::vector<Polygon2d> input =
-        !file.empty() ? ReadPolygons((corpus / file).string())
+        !file.empty() ? FuzzRegressionInput(file)
                       : PreparePolygons({{{0, 0}, {1, 4}, {1, 2}, {1e100, 199}, {0, 4}}, {}}, "w");
     ASSERT_EQ(input.size(), 1u) << file;
     EXPECT_EQ(Area(input[0]), area) << file;
@@ -561,9 +566,8 @@ void ExpectEveryMeasureDecomposes(const std::vector<std::vector<Polygon2d>>& inp
 // the cone ("could not resolve a piece"). The hit now snaps only within rounding noise, and is
 // constructed from the nearer edge end. The same wedge at other lengths and mirrored, too.
 TEST(Decompose2dTest, BisectorHitNearTheEndOfAVeryLongEdge) {
-  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
   std::vector<std::vector<Polygon2d>> inputs = {
-      ReadPolygons((corpus / "regression-long-edge-bisector-snap.wkt").string())};
+      FuzzRegressionInput("regression-long-edge-bisector-snap.wkt")};
   for (const double far : {1e3, 1e6, 64526540.0, 1e9, 1e12}) {
     inputs.push_back(PreparePolygons({{{0, 0}, {1, 4}, {1, 2}, {far, 10}, {0, 4}}, {}}, "w"));
     inputs.push_back(PreparePolygons({{{0, 0}, {0, 4}, {-far, 10}, {-1, 2}, {-1, 4}}, {}}, "m"));
@@ -580,9 +584,8 @@ TEST(Decompose2dTest, BisectorHitNearTheEndOfAVeryLongEdge) {
 // not resolve a piece"). The nearness is now decided exactly. The same shape at other heights
 // and mirrored, too.
 TEST(Decompose2dTest, CutAmongTheSmallFeaturesOfAPolygonWithAHugeEdge) {
-  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
   std::vector<std::vector<Polygon2d>> inputs = {
-      ReadPolygons((corpus / "regression-huge-edge-clear-cut.wkt").string())};
+      FuzzRegressionInput("regression-huge-edge-clear-cut.wkt")};
   for (const double far : {1e6, 1e14, 1e40, 1e99}) {
     inputs.push_back(
         PreparePolygons({{{0, 0}, {4, 0}, {2, 6}, {4, far}, {0, 2}, {2, 2}}, {}}, "spike"));
@@ -600,9 +603,8 @@ TEST(Decompose2dTest, CutAmongTheSmallFeaturesOfAPolygonWithAHugeEdge) {
 // tolerance of CheckDecomposition(), which now compares with the input's area plus each edge's
 // sliver through the points constructed on it. The same wedge at other lengths, too.
 TEST(Decompose2dTest, ComponentsCutOnAVeryLongEdgeTileTheInput) {
-  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
   std::vector<std::vector<Polygon2d>> inputs = {
-      ReadPolygons((corpus / "regression-long-edge-area-sliver.wkt").string())};
+      FuzzRegressionInput("regression-long-edge-area-sliver.wkt")};
   for (const double far : {1e4, 1557048468.0, 1e12}) {
     inputs.push_back(PreparePolygons({{{0, 0}, {1, 4}, {far, 199}, {0, 4}}, {}}, "wedge"));
   }
@@ -615,9 +617,8 @@ TEST(Decompose2dTest, ComponentsCutOnAVeryLongEdgeTileTheInput) {
 // cut's score took its length as 0, as for the notch itself, and refused it ("could not resolve
 // a piece"). The same wedge with other gaps, down to a subnormal one.
 TEST(Decompose2dTest, CutShorterThanTheSquareRootOfTheSmallestDouble) {
-  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
   std::vector<std::vector<Polygon2d>> inputs = {
-      ReadPolygons((corpus / "regression-underflowing-cut-length.wkt").string())};
+      FuzzRegressionInput("regression-underflowing-cut-length.wkt")};
   for (const double gap : {1e-20, 1e-160, 1e-300, 1e-310}) {
     inputs.push_back(PreparePolygons({{{1, 0}, {9, 90}, {1, 2}, {1, gap}, {0, 0}}, {}}, "wedge"));
   }
@@ -632,9 +633,8 @@ TEST(Decompose2dTest, CutShorterThanTheSquareRootOfTheSmallestDouble) {
 // not resolve a piece"). A cut may now end on an edge only where no other vertex lies within
 // the end's rounding noise of it. The same shape with other spikes, and mirrored, too.
 TEST(Decompose2dTest, CutEndsOnlyOnEdgesClearOfOtherVertices) {
-  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
   std::vector<std::vector<Polygon2d>> inputs = {
-      ReadPolygons((corpus / "regression-vertex-near-split-edge.wkt").string())};
+      FuzzRegressionInput("regression-vertex-near-split-edge.wkt")};
   for (const double far : {1e15, 5.5555555555555555e22, 1e40}) {
     inputs.push_back(
         PreparePolygons({{{17, 14}, {18, far}, {7, 22}, {16, 2051}, {17, 21}}, {}}, "spike"));
@@ -649,13 +649,11 @@ TEST(Decompose2dTest, CutEndsOnlyOnEdgesClearOfOtherVertices) {
 // 7e-15 below the edge from (1.7e8, 4.0000000013) to (91, 4), and every cut that resolves it
 // ends on that edge within 7e-15 of it, inside the band of rounding noise (1e-13 x the cut's
 // largest coordinate) that a constructed cut end must keep clear of other edges: every cut was
-// refused
-// ("could not resolve a piece"). The last resort takes the first cut that crosses nothing and
-// leaves two simple pieces, both checked exactly. The same shape with other gaps and lengths.
+// refused ("could not resolve a piece"). The last resort takes the first cut that crosses nothing
+// and leaves two simple pieces, both checked exactly. The same shape with other gaps and lengths.
 TEST(Decompose2dTest, NotchWithinRoundingNoiseOfAnEdge) {
-  const fs::path corpus = fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d";
   std::vector<std::vector<Polygon2d>> inputs = {
-      ReadPolygons((corpus / "regression-notch-within-noise-of-edge.wkt").string())};
+      FuzzRegressionInput("regression-notch-within-noise-of-edge.wkt")};
   for (const double far : {1e6, 1.6666666422434840e8, 1e12}) {
     for (const double rise : {1e-12, 1.3078187e-9}) {
       inputs.push_back(PreparePolygons(
