@@ -3,6 +3,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -38,6 +39,26 @@ std::string Rule(const InputError& error, const std::string& where) {
   std::string message = error.what();
   if (message.compare(0, where.size() + 2, where + ": ") == 0) message.erase(0, where.size() + 2);
   return message;
+}
+
+// `message` about a polygon whose rings are the input's rings `kept` (ascending, the outer ring
+// first), with each "hole K" named as the input numbers it.
+std::string WithInputHoleNumbers(const std::string& message, const std::vector<size_t>& kept) {
+  const std::string word = "hole ";
+  std::string renamed;
+  size_t done = 0;
+  for (size_t at = message.find(word); at != std::string::npos; at = message.find(word, at)) {
+    at += word.size();
+    size_t end = at;
+    while (end < message.size() && std::isdigit(static_cast<unsigned char>(message[end]))) ++end;
+    if (end == at) continue;
+    const size_t hole = std::stoul(message.substr(at, end - at));
+    if (hole + 1 >= kept.size()) continue;  // Not a ring name; left as it is.
+    renamed += message.substr(done, at - done) + std::to_string(kept[hole + 1] - 1);
+    done = end;
+    at = end;
+  }
+  return renamed + message.substr(done);
 }
 
 }  // namespace
@@ -82,7 +103,7 @@ RepairedPolygon RepairPolygon(const Polygon2d& raw, const std::string& where) {
       result.polygons = PreparePolygons(rest, where);
       return result;
     } catch (const InputError& error) {
-      rule = Rule(error, where);
+      rule = WithInputHoleNumbers(Rule(error, where), kept);
     }
   }
 

@@ -59,6 +59,18 @@ TEST(RepairPolygonTest, TwoVertexHoleIsDropped) {
   EXPECT_DOUBLE_EQ(Area(r.polygons[0]), 15.0);
 }
 
+// After a hole is dropped, the rule the rest breaks names its rings as the input numbers them.
+TEST(RepairPolygonTest, ChangesNameHolesByTheirInputIndex) {
+  const RepairedPolygon r = RepairPolygon(
+      {SquareRing(0, 0, 4), {{{1, 1}, {2, 2}}, SquareRing(0.5, 0.5, 1), SquareRing(3, 1, 2)}},
+      "t.wkt: polygon 1");
+  ASSERT_EQ(r.changes.size(), 2u);
+  EXPECT_EQ(r.changes[0], "t.wkt: polygon 1: repaired: hole 0 has 2 distinct vertices: dropped");
+  EXPECT_THAT(r.changes[1],
+              HasSubstr("t.wkt: polygon 1: repaired: hole 2 touches or crosses the outer ring"));
+  EXPECT_THAT(r.changes[1], HasSubstr("into 2 polygon(s) with 1 hole(s)"));
+}
+
 TEST(RepairPolygonTest, HoleCrossingOuterRingGivesTheEvenOddResult) {
   // Inside both: excluded; inside the hole only: included (the symmetric difference).
   const RepairedPolygon r = RepairPolygon({SquareRing(0, 0, 4), {SquareRing(3, 1, 2)}}, "w");
