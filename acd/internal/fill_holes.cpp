@@ -1,9 +1,17 @@
 #include "acd/internal/fill_holes.h"
 
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <map>
+#include <queue>
 
 #include "acd/internal/mesh_edges.h"
 
@@ -64,6 +72,95 @@ std::vector<std::vector<const BorderHalfedge*>> TraceLoops(
   return loops;
 }
 
+using PatchTriangle = CGAL::Triple<int, int, int>;
+
+// The triangles of the hole `points` (in loop order) when the hole is nearly planar, as
+// index triples in ascending order (CGAL's hole filling gives them so; the order of the
+// loop orients them). A constrained Delaunay triangulation of the loop's projection along
+// the dominant axis of its normal, when that projection is a simple polygon: the projection
+// drops a coordinate, so it is exact, and simplicity and the triangulation are decided by
+// exact predicates. CGAL's own planar path (use_2d_constrained_delaunay_triangulation)
+// projects along an averaged normal with rounded constructions, which can call a loop simple
+// and then build an inconsistent triangulation (undefined behaviour inside CGAL; found by
+// fuzz_decompose3d). "Nearly planar" is CGAL's default rule: every point within a quarter of
+// the bounding box's diagonal of the plane through the centroid. Empty when the loop is not
+// nearly planar or its projection is not simple: the caller then uses CGAL's 3D search.
+std::vector<PatchTriangle> TriangulatePlanarHole(const std::vector<Epick::Point_3>& points) {
+  const int n = static_cast<int>(points.size());
+  if (n < 3) return {};
+  // Newell's normal and the centroid; rounding here only chooses between two valid methods.
+  std::array<double, 3> normal = {0, 0, 0}, centroid = {0, 0, 0};
+  for (int i = 0; i < n; ++i) {
+    const Epick::Point_3& p = points[i];
+    const Epick::Point_3& q = points[(i + 1) % n];
+    normal[0] += (p.y() - q.y()) * (p.z() + q.z());
+    normal[1] += (p.z() - q.z()) * (p.x() + q.x());
+    normal[2] += (p.x() - q.x()) * (p.y() + q.y());
+    for (int k = 0; k < 3; ++k) centroid[k] += p[k] / n;
+  }
+  const double length =
+      std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  if (!(length > 0.0)) return {};
+  const CGAL::Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
+  const double quarter_diagonal = 0.25 * std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
+                                                   CGAL::square(box.ymax() - box.ymin()) +
+                                                   CGAL::square(box.zmax() - box.zmin()));
+  for (const Epick::Point_3& p : points) {
+    double distance = 0.0;
+    for (int k = 0; k < 3; ++k) distance += (p[k] - centroid[k]) * normal[k] / length;
+    if (std::abs(distance) > quarter_diagonal) return {};
+  }
+  const int drop = static_cast<int>(
+      std::max_element(normal.begin(), normal.end(),
+                       [](double a, double b) { return std::abs(a) < std::abs(b); }) -
+      normal.begin());
+  std::vector<Epick::Point_2> projected;
+  projected.reserve(points.size());
+  for (const Epick::Point_3& p : points) {
+    projected.emplace_back(p[drop == 0 ? 1 : 0], p[drop == 2 ? 1 : 2]);
+  }
+  if (!CGAL::is_simple_2(projected.begin(), projected.end(), Epick())) return {};
+
+  // A simple polygon: its edges cross nowhere and pass through no other vertex.
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, Epick>;
+  using Fb = CGAL::Constrained_triangulation_face_base_2<
+      Epick, CGAL::Triangulation_face_base_with_info_2<bool, Epick>>;
+  using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
+      Epick, CGAL::Triangulation_data_structure_2<Vb, Fb>, CGAL::No_constraint_intersection_tag>;
+  Cdt cdt;
+  std::vector<Cdt::Vertex_handle> vertices;
+  vertices.reserve(points.size());
+  for (int i = 0; i < n; ++i) {
+    vertices.push_back(cdt.insert(projected[i]));
+    vertices.back()->info() = i;
+  }
+  for (int i = 0; i < n; ++i) cdt.insert_constraint(vertices[i], vertices[(i + 1) % n]);
+  // Outside: the faces reached from the infinite one without crossing a constraint.
+  for (const Cdt::Face_handle f : cdt.all_face_handles()) f->info() = false;
+  std::queue<Cdt::Face_handle> outside;
+  outside.push(cdt.infinite_face());
+  cdt.infinite_face()->info() = true;
+  while (!outside.empty()) {
+    const Cdt::Face_handle f = outside.front();
+    outside.pop();
+    for (int k = 0; k < 3; ++k) {
+      const Cdt::Face_handle g = f->neighbor(k);
+      if (!g->info() && !cdt.is_constrained({f, k})) {
+        g->info() = true;
+        outside.push(g);
+      }
+    }
+  }
+  std::vector<PatchTriangle> triangles;
+  for (const Cdt::Face_handle f : cdt.finite_face_handles()) {
+    if (f->info()) continue;
+    std::array<int, 3> corner = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+    std::sort(corner.begin(), corner.end());
+    triangles.emplace_back(corner[0], corner[1], corner[2]);
+  }
+  return triangles;
+}
+
 }  // namespace
 
 HoleFilling FillHoles(const TriangleMesh& mesh) {
@@ -94,13 +191,15 @@ HoleFilling FillHoles(const TriangleMesh& mesh) {
       points.push_back(point(h->from));
       apexes.push_back(point(h->apex));
     }
-    std::vector<CGAL::Triple<int, int, int>> patch;
-    try {
-      PMP::triangulate_hole_polyline(
-          points, apexes, std::back_inserter(patch),
-          CGAL::parameters::use_2d_constrained_delaunay_triangulation(true));
-    } catch (const CGAL::Failure_exception&) {
-      patch.clear();  // A precondition CGAL checks on odd loops: the hole stays open.
+    std::vector<PatchTriangle> patch = TriangulatePlanarHole(points);
+    if (patch.empty()) {
+      try {
+        PMP::triangulate_hole_polyline(
+            points, apexes, std::back_inserter(patch),
+            CGAL::parameters::use_2d_constrained_delaunay_triangulation(false));
+      } catch (const CGAL::Failure_exception&) {
+        patch.clear();  // A precondition CGAL checks on odd loops: the hole stays open.
+      }
     }
     if (patch.empty()) {
       ++filling.failed;

@@ -246,6 +246,46 @@ TEST(PrepareMeshTest, RepairClosesAPyramidWithAnOctagonalHole) {
   EXPECT_NEAR(MeshVolume(prepared.mesh), 2 * std::sqrt(2.0) / 3, 1e-12);  // Octagon area 2 sqrt 2.
 }
 
+TEST(PrepareMeshTest, RepairClosesAnLShapedHoleInItsPlane) {
+  // An L-shaped prism, its top open: the hole is planar and not convex, so its filling must
+  // keep to the L (a triangle across the notch would add volume).
+  const std::vector<Eigen::Vector2d> l{{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 4}, {0, 4}};
+  const int n = static_cast<int>(l.size());
+  std::vector<Eigen::Vector3d> v;
+  for (const double z : {0.0, 2.0}) {
+    for (const Eigen::Vector2d& p : l) v.emplace_back(p.x(), p.y(), z);
+  }
+  std::vector<Eigen::Vector3i> t{{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {0, 5, 4}};  // The bottom.
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    t.emplace_back(i, j, j + n);
+    t.emplace_back(i, j + n, i + n);
+  }
+  const PreparedMesh prepared = PrepareMesh(MakeTriangleMesh(v, t), Repair());
+  ASSERT_TRUE(prepared.solid()) << prepared.defects.first;
+  EXPECT_TRUE(HasNote(prepared, "repair: filled 1 hole with 4 triangles"));
+  EXPECT_DOUBLE_EQ(MeshVolume(prepared.mesh), 2.0 * 7.0);  // The L's area is 7.
+}
+
+// Found by fuzz/fuzz_decompose3d (fuzz/corpus/decompose3d/regression-hole-projection-not-simple
+// .bin): repairing this patchwork of a cube's faces and stray triangles sent a boundary loop
+// into CGAL's planar hole filling, whose projection along a rounded average normal let an
+// inconsistent constrained triangulation dereference a null pointer (undefined behaviour; the
+// sanitizer suite reports it). Holes are now triangulated in an exact projection, or by CGAL's
+// 3D search when that projection is not simple.
+TEST(PrepareMeshTest, RepairOfAHoleWhoseProjectionIsDegenerateIsDefined) {
+  const std::vector<Eigen::Vector3d> v{{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0},
+                                       {0, 0, 4}, {4, 0, 4}, {4, 4, 4}, {0, 4, 31.5},
+                                       {4, 2, 2}, {2, 6, 2}, {2, 6, 6}, {2, 2, -14.75},
+                                       {2, 2, 2}, {6, 6, 2}, {6, 6, 6}, {6, 2, 6}};
+  const std::vector<Eigen::Vector3i> t{{8, 0, 2},  {1, 0, 3}, {2, 4, 5}, {6, 4, 6},   {7, 0, 1},
+                                       {5, 12, 0}, {5, 4, 1}, {2, 6, 1}, {12, 11, 12}};
+  PreparedMesh prepared;
+  ASSERT_NO_THROW(prepared = PrepareMesh(MakeTriangleMesh(v, t), Repair()));
+  EXPECT_FALSE(prepared.parts.empty());
+  EXPECT_FALSE(prepared.solid());  // Repair closes what it can; the rest stays diagnosed.
+}
+
 TEST(PrepareMeshTest, ThreeFacesOnOneEdgeAreNonManifold) {
   // A fin on the cube's edge 3-7.
   TriangleMesh cube = AppendVertex(Cube(2), Eigen::Vector3d(3, 3, 0));
