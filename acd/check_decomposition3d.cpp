@@ -52,7 +52,6 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -71,6 +70,7 @@
 #include "acd/internal/exact_rounding.h"
 #include "acd/internal/in_plane_tolerance.h"
 #include "acd/internal/problem_list.h"
+#include "acd/internal/side_of_mesh.h"
 #include "acd/mesh_measures.h"
 #include "base/format.h"
 #include "base/random.h"
@@ -83,7 +83,7 @@ using Point3 = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point3>;
 using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-using SideOf = CGAL::Side_of_triangle_mesh<Mesh, Kernel>;
+using SideOf = internal::SideOfMesh<Mesh>;
 
 constexpr double kRelative = 1e-9;        // Areas, stored figures, tau, distances (x S).
 constexpr double kVolumeRelative = 1e-6;  // Volume sums (cut vertices are rounded).

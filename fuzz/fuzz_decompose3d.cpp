@@ -8,9 +8,10 @@
 //
 // The encoding keeps meshes small and their coordinates on a coarse lattice, where coplanar
 // faces, shared edges, touching and crossing shells (the cases exact predicates decide) are
-// common: byte 0 holds the options (bit 0: repair; bits 1-2: tau_rel 0.02, 0.05, 0.1, 0.2),
-// byte 1 the vertex count (4 + byte % 13), then three signed bytes per vertex (a coordinate
-// is the byte / 4), then three bytes per triangle (indices modulo the vertex count), at most
+// common: byte 0 holds the options (bit 0: repair; bits 1-2: tau_rel 0.02, 0.05, 0.1, 0.2;
+// bits 3-4: the lattice's spacing 1/4, 1e-6, 1e6 or 1e30, as meshes come in any unit), byte 1
+// the vertex count (4 + byte % 13), then three signed bytes per vertex (a coordinate is the
+// byte times the spacing), then three bytes per triangle (indices modulo the vertex count), at most
 // 48 triangles. The 3D code carries no libFuzzer coverage (it would slow the sanitizer tree's
 // 3D tests), so this explores by mutating the seeds rather than by coverage.
 #include <cstdint>
@@ -28,6 +29,7 @@ namespace {
 
 constexpr int kMaxTriangles = 48;
 constexpr double kTauRel[] = {0.02, 0.05, 0.1, 0.2};
+constexpr double kSpacing[] = {0.25, 1e-6, 1e6, 1e30};
 
 }  // namespace
 
@@ -37,11 +39,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const int vertex_count = 4 + data[1] % 13;
   std::size_t at = 2;
   if (size < at + 3 * static_cast<std::size_t>(vertex_count) + 3) return 0;
+  const double spacing = kSpacing[(data[0] >> 3) & 3];
   std::vector<Eigen::Vector3d> vertices;
   for (int v = 0; v < vertex_count; ++v, at += 3) {
-    vertices.emplace_back(static_cast<std::int8_t>(data[at]) / 4.0,
-                          static_cast<std::int8_t>(data[at + 1]) / 4.0,
-                          static_cast<std::int8_t>(data[at + 2]) / 4.0);
+    vertices.emplace_back(static_cast<std::int8_t>(data[at]) * spacing,
+                          static_cast<std::int8_t>(data[at + 1]) * spacing,
+                          static_cast<std::int8_t>(data[at + 2]) * spacing);
   }
   std::vector<Eigen::Vector3i> triangles;
   for (; at + 3 <= size && triangles.size() < kMaxTriangles; at += 3) {

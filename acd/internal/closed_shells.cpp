@@ -2,7 +2,6 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
-#include <CGAL/Side_of_triangle_mesh.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -12,13 +11,14 @@
 #include <set>
 
 #include "acd/internal/cgal_surface_mesh.h"
+#include "acd/internal/side_of_mesh.h"
 
 namespace acdplan::acd::internal {
 namespace {
 
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Epick::Point_3>;
-using Side = CGAL::Side_of_triangle_mesh<Mesh, Epick>;
+using Side = SideOfMesh<Mesh>;
 
 }  // namespace
 

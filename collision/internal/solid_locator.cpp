@@ -1,7 +1,6 @@
 #include "collision/internal/solid_locator.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -9,6 +8,7 @@
 #include <string>
 
 #include "acd/internal/face_intersections.h"
+#include "acd/internal/side_of_mesh.h"
 #include "acd/prepare_mesh.h"
 #include "base/input_error.h"
 
@@ -101,7 +101,7 @@ bool PolygonLocator2d::Contains(const Eigen::Vector2d& p) const {
 struct MeshLocator3d::Impl {
   using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
   Mesh mesh;
-  std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>> side;
+  std::unique_ptr<acd::internal::SideOfMesh<Mesh>> side;
 };
 
 MeshLocator3d::MeshLocator3d(const acd::TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
@@ -124,7 +124,7 @@ MeshLocator3d::MeshLocator3d(const acd::TriangleMesh& mesh) : impl_(std::make_un
       impl_->mesh.add_face(a2, b2, c2);
     }
   }
-  impl_->side = std::make_unique<CGAL::Side_of_triangle_mesh<Impl::Mesh, Kernel>>(impl_->mesh);
+  impl_->side = std::make_unique<acd::internal::SideOfMesh<Impl::Mesh>>(impl_->mesh);
   // Build the AABB tree now, so concurrent queries never race to build it.
   (*impl_->side)(Kernel::Point_3(box_.min().x() - 1, box_.min().y(), box_.min().z()));
 }

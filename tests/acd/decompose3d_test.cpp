@@ -139,6 +139,29 @@ TEST(Decompose3d, CavityIsCutOpen) {
   for (const Component3d& c : d.components) EXPECT_EQ(EulerCharacteristic(c.mesh), 2);
 }
 
+// Found by fuzz/fuzz_decompose3d: with coordinates beyond 2^53 (a cube of side 4e16), the
+// point-in-solid queries of the nesting of shells and of CheckDecomposition3d() never returned
+// (CGAL's query rays were degenerate there; acd/internal/side_of_mesh.h). Scaled up, the
+// L block and the box with a cavity decompose as they do at unit size.
+TEST(Decompose3d, HugeCoordinatesDecomposeAsAtUnitSize) {
+  for (const double scale : {1e17, 1e25}) {
+    auto scaled = [&](TriangleMesh mesh) {
+      mesh.vertices *= scale;
+      return mesh;
+    };
+    const TriangleMesh l = scaled(LBlock());
+    const Decomposition3d dl = Solve(l, 0.05 * scale);
+    ExpectValid(l, dl);
+    EXPECT_EQ(dl.components.size(), 2u) << "scale " << scale;
+    const TriangleMesh unit_box =
+        Concatenate(Box({0, 0, 0}, {4, 4, 4}), Box({1, 1, 1}, {3, 3, 3}, true));
+    const TriangleMesh box = scaled(unit_box);
+    const Decomposition3d db = Solve(box, 0.1 * scale);
+    ExpectValid(box, db);
+    EXPECT_EQ(db.components.size(), Solve(unit_box, 0.1).components.size()) << "scale " << scale;
+  }
+}
+
 TEST(Decompose3d, SameInputSameBytes) {
   const TriangleMesh torus = Torus(2.0, 1.0, 16, 8);
   const Decomposition3d a = Solve(torus, 0.3), b = Solve(torus, 0.3);

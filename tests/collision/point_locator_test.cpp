@@ -108,6 +108,19 @@ TEST(PointLocator3d, ExactOnACube) {
   EXPECT_FALSE(exact.Inside(Eigen::Vector3d(1.01, 0, 0)));
 }
 
+// Found by fuzz/fuzz_decompose3d: CGAL's Side_of_triangle_mesh builds its query rays from the
+// point along unit vectors, which vanish next to coordinates beyond 2^53: every ray was
+// degenerate and the query never returned (acd/internal/side_of_mesh.h).
+TEST(PointLocator3d, ExactOnACubeOfSide2e17) {
+  const double s = 1e17;
+  auto set = std::make_shared<const ObstacleSet>(
+      BuildObstacleSet(testing::MeshWorld(testing::CubeMesh(2 * s))));
+  const PointLocator exact(set, LocateMethod::kExact);
+  EXPECT_TRUE(exact.Inside(Eigen::Vector3d(0.2 * s, 0.3 * s, -0.9 * s)));
+  EXPECT_TRUE(exact.Inside(Eigen::Vector3d(s, 0, 0)));  // on a face
+  EXPECT_FALSE(exact.Inside(Eigen::Vector3d(1.01 * s, 0, 0)));
+}
+
 TEST(PointLocator3d, ExactRefusesAnOpenMesh) {
   acd::TriangleMesh open = testing::CubeMesh(2);
   open.triangles.conservativeResize(10, 3);  // drop the x+ face
