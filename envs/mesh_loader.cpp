@@ -5,8 +5,10 @@
 
 #include <assimp/Importer.hpp>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "base/input_error.h"
@@ -39,6 +41,12 @@ acd::TriangleMesh ReadMesh(const std::string& path) {
     const int base = static_cast<int>(vertices.size());
     for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
       const aiVector3D& p = mesh->mVertices[v];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+        // Also a finite number in the file beyond float's range: assimp reads in float.
+        throw InputError(path + ": mesh " + std::to_string(m) + ", vertex " + std::to_string(v) +
+                         ": a coordinate is not finite as read (NaN or infinite, or beyond "
+                         "3.4e38, the range of the single-precision floats assimp reads)");
+      }
       vertices.emplace_back(p.x, p.y, p.z);
     }
     for (unsigned f = 0; f < mesh->mNumFaces; ++f) {

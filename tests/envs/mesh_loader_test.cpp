@@ -99,6 +99,11 @@ TEST(ReadMeshTest, Errors) {
               HasSubstr("bad.xyz123: cannot read mesh: "));
   EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("points.obj", "v 0 0 0\nv 1 0 0\n")); }),
               HasSubstr("points.obj: cannot read mesh: "));
+  // 1e75 is a finite double, but assimp reads floats: the message says why it is not finite.
+  EXPECT_THAT(
+      ErrorOf([&] { ReadMesh(dir.Write("far.obj", "v 0 0 0\nv 1e75 0 0\nv 0 1 0\nf 1 2 3\n")); }),
+      HasSubstr("far.obj: mesh 0, vertex 1: a coordinate is not finite as read (NaN or "
+                "infinite, or beyond 3.4e38"));
 }
 
 TEST(CheckTriangleMeshTest, Errors) {
