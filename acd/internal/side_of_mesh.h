@@ -31,8 +31,9 @@ struct FarRayKernel : CGAL::Epick {
       if (!(v_max > 0.0)) return Ray_3(p, p + v);  // Degenerate as asked; CGAL's precondition.
       const double p_max = std::max(
           {std::abs(p.x()), std::abs(p.y()), std::abs(p.z()), std::numeric_limits<double>::min()});
-      // A power of two: v times it is exact.
-      const int exponent = std::max(0, std::ilogb(p_max) + 24 - std::ilogb(v_max));
+      // A power of two, so v times it is exact, keeping the far point below 2^1000.
+      const int exponent = std::clamp(std::ilogb(p_max) + 24 - std::ilogb(v_max), 0,
+                                      std::max(0, 1000 - std::ilogb(v_max)));
       return Ray_3(p, p + std::ldexp(1.0, exponent) * v);
     }
   };
