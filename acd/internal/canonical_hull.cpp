@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -73,11 +74,16 @@ CanonicalHull MakeCanonicalHull(const std::vector<Eigen::Vector3d>& points) {
     if (n.dot(outward.at(on)) < 0) n = -n;
     // A plane some hull vertex lies clearly outside of (a facet too thin for its normal to be
     // computed in doubles) is no face of the hull: dropped, so it measures no depth.
-    const Eigen::Vector3d& p0 = v[static_cast<size_t>(on[0])];
-    double excess = 0;
-    for (const Eigen::Vector3d& p : v) excess = std::max(excess, n.dot(p - p0));
+    double offset = -std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& p : v) offset = std::max(offset, n.dot(p));
+    const double excess = offset - n.dot(v[static_cast<size_t>(on[0])]);
     if (excess > 10 * tol) continue;
-    planes.emplace_back(n.x(), n.y(), n.z(), n.dot(p0));
+    // Any other is moved out to the farthest vertex: a supporting plane. A point within a
+    // distance of it is then within that distance of the hull's boundary, and its depth below
+    // it at least its depth in the hull, so the concavity measured against these planes is
+    // never below the true one. (Through its own vertex, a group's refitted plane can cut up to
+    // 10 x tol into the hull, and a face that deep counted as on the hull.)
+    planes.emplace_back(n.x(), n.y(), n.z(), offset);
   }
   out.planes.resize(static_cast<Eigen::Index>(planes.size()), 4);
   for (size_t i = 0; i < planes.size(); ++i)

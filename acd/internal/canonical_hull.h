@@ -20,7 +20,8 @@ struct CanonicalHull {
 /// the hull vertices within kInPlaneTolerance of the hull's size of the plane through three of
 /// its own vertices (chosen by lexicographic order), its plane refitted the same way from the
 /// group and oriented by the facet's outward normal; a plane some hull vertex lies clearly
-/// outside of (10 x kInPlaneTolerance of the hull's size) is dropped. Planes are sorted by their
+/// outside of (10 x kInPlaneTolerance of the hull's size) is dropped, any other moved out to
+/// the farthest hull vertex, so every plane supports the hull. Planes are sorted by their
 /// vertex sets. A hull of fewer than 4 vertices keeps no planes; a flat one keeps its one plane.
 CanonicalHull MakeCanonicalHull(const std::vector<Eigen::Vector3d>& points);
 

@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <vector>
 
+#include "acd/convex_hull3d.h"
 #include "acd/mesh_measures.h"
+#include "base/random.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -58,6 +62,30 @@ TEST(CanonicalHullTest, ThePlanesDoNotDependOnThePointOrder) {
   ASSERT_EQ(b.planes.rows(), 6);
   EXPECT_EQ(a.planes, b.planes);
   EXPECT_LE(Excess(a, points), 0.0);
+}
+
+// Two grids of points, a flat one and one whose heights lie within a few in-plane tolerances of
+// a plane: the near-coplanar facets are regrouped, and each group's refitted plane is still a
+// supporting plane of the hull (through its own vertices, it cut up to 8 tolerances into it).
+TEST(CanonicalHullTest, RegroupedPlanesOfNearlyCoplanarFacetsSupportTheHull) {
+  const int g = 4;
+  const double tol = kInPlaneTolerance * std::sqrt(2.0 * g * g + 1.0);
+  int regrouped = 0;
+  for (std::uint64_t trial = 0; trial < 200; ++trial) {
+    RandomEngine rng(DeriveSeed(3, trial));
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i <= g; ++i) {
+      for (int j = 0; j <= g; ++j) {
+        points.emplace_back(j, i, 0.0);
+        points.emplace_back(j, i, 1.0 + UniformReal(rng, -3 * tol, 3 * tol));
+      }
+    }
+    const CanonicalHull hull = MakeCanonicalHull(points);
+    ASSERT_GE(hull.planes.rows(), 5) << "trial " << trial;
+    regrouped += hull.planes.rows() < HullPlanes(hull.mesh).rows();
+    EXPECT_LE(Excess(hull, points), 1e-12) << "trial " << trial;
+  }
+  EXPECT_GT(regrouped, 100);
 }
 
 }  // namespace
