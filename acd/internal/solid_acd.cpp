@@ -29,9 +29,13 @@ namespace {
 constexpr int kMaxPiecesPerPart = 2048;
 // A cut leaving a piece below this fraction of the cut piece's volume is rejected.
 constexpr double kMinPieceFraction = 1e-9;
-// When no ranked plane cuts a piece cleanly, the planes are tried again moved by this fraction
-// of tau along their normals.
-constexpr double kPlaneShift = 1e-3;
+// When no ranked plane cuts a piece cleanly, the planes are tried again moved along their
+// normals by these fractions of tau, either way, nearest first: a hair off (a pinch at a vertex,
+// a rounding crossing right at the plane), then far enough off to miss faces that lie closer
+// together than doubles resolve (a repaired solid's sheets, where every plane near the witness
+// made a piece whose rounded cut faces crossed another face: fuzz_decompose3d). A plane a
+// quarter of tau off the witness still takes most of the pocket's depth.
+constexpr double kPlaneShifts[] = {1e-3, 0.05, 0.25};
 
 struct Piece {
   ExactPiece exact;
@@ -161,9 +165,10 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
     Plane3d chosen;
     if (live < kMaxPiecesPerPart) {
       // The best-ranked plane that splits; for a handle, the best one that lowers the genus.
-      // If none does, the same planes moved off by kPlaneShift x tau either way: a plane
-      // through the witness vertex can leave a piece pinched at a vertex, or one that
-      // self-intersects once its cut points are rounded, where a plane beside it does not.
+      // If none does, the same planes moved off by kPlaneShifts x tau either way, farther
+      // only while none splits: a plane through the witness vertex can leave a piece pinched
+      // at a vertex, or one that self-intersects once its cut points are rounded, where a
+      // plane beside it does not.
       std::vector<CutPiece> fallback, sliver_fallback;
       Plane3d fallback_plane, sliver_plane;
       size_t fallback_rank = 0, sliver_rank = 0;
@@ -240,12 +245,17 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
       }
       if (parts.empty() && fallback.empty()) {  // no unshifted plane splits it
         size_t rank = ranked.size();
-        for (const double shift : {kPlaneShift * tau, -kPlaneShift * tau}) {
-          for (Plane3d plane : ranked) {
-            if (!parts.empty()) break;
-            plane.offset += shift;
-            try_plane(plane, rank++);
+        bool split = false;  // by a plane moved off less far
+        for (const double fraction : kPlaneShifts) {
+          if (split) break;
+          for (const double shift : {fraction * tau, -fraction * tau}) {
+            for (Plane3d plane : ranked) {
+              if (!parts.empty()) break;
+              plane.offset += shift;
+              try_plane(plane, rank++);
+            }
           }
+          split = !parts.empty() || !fallback.empty() || !sliver_fallback.empty();
         }
       }
       if (parts.empty() && !fallback.empty()) parts = std::move(fallback), chosen = fallback_plane;

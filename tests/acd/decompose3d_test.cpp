@@ -8,9 +8,11 @@
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "acd/check_decomposition3d.h"
 #include "acd/mesh_measures.h"
+#include "acd/prepare_mesh.h"
 #include "base/input_error.h"
 #include "solid_test_meshes.h"
 #include "tests/acd/problem_lines.h"
@@ -160,6 +162,35 @@ TEST(Decompose3d, HugeCoordinatesDecomposeAsAtUnitSize) {
     ExpectValid(box, db);
     EXPECT_EQ(db.components.size(), Solve(unit_box, 0.1).components.size()) << "scale " << scale;
   }
+}
+
+// Found by fuzz/fuzz_decompose3d (its input decoded here; not a seed of its corpus, as it takes
+// longer under the sanitizers than the fuzz step's 10 s limit): two overlapping, warped boxes,
+// united by repair. One piece, 0.31 deep against tau 0.12,
+// had no plane among its ranked ones, nor among them moved 1e-3 x tau off, whose pieces stayed
+// valid solids once their cut points were rounded (a rounded cut face crossed another face), so
+// it was left above tau. The planes moved farther off (kPlaneShifts) cut it.
+TEST(Decompose3d, APieceWhoseNearPlanesAllRoundInvalidIsStillCut) {
+  const std::vector<Eigen::Vector3d> v{
+      {0, 0, 8.25},     {4, 0, 0},         {4, 2, 2.75},     {2.5, 3, 3.25},
+      {3.5, 3, 3.5},    {3.75, 9.5, 2.25}, {3.25, 2, 3.25},  {3, 2.25, 2.5},
+      {3.5, 2.25, 3.5}, {3.25, 3.75, 2.5}, {2.5, 2.5, 3.75}, {2, 6, 2},
+      {2, 2, 6},        {6, 2, 0.75},      {6, 6, 6},        {2, 6, 6}};
+  const std::vector<Eigen::Vector3i> t{
+      {0, 2, 1},   {0, 3, 2},   {4, 5, 6},    {4, 6, 7},    {0, 1, 5},   {0, 5, 4},
+      {1, 2, 6},   {1, 6, 5},   {2, 3, 7},    {2, 7, 6},    {3, 0, 4},   {3, 4, 7},
+      {8, 10, 9},  {8, 11, 10}, {12, 13, 14}, {12, 14, 15}, {6, 9, 13},  {8, 13, 12},
+      {9, 10, 14}, {9, 14, 13}, {15, 4, 10},  {10, 15, 14}, {11, 8, 12}, {11, 12, 15}};
+  PrepareMeshOptions repair;
+  repair.repair = true;
+  const PreparedMesh prepared = PrepareMesh(MakeTriangleMesh(v, t), repair);
+  ASSERT_TRUE(prepared.solid());
+  Decompose3dOptions options;
+  options.tau = 0.02 * ReferenceRadius(prepared.mesh);
+  const Decomposition3d d = Decompose3d(prepared, options);
+  EXPECT_LE(d.stats.max_concavity, options.tau);
+  const DecompositionCheck check = CheckDecomposition3d(prepared, d);
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
 }
 
 TEST(Decompose3d, SameInputSameBytes) {
