@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -173,9 +174,16 @@ void SplitPinchedVertices(ExactPiece* piece) {
 FT Coordinate(const Point3& p, int axis) { return axis == 0 ? p.x() : (axis == 1 ? p.y() : p.z()); }
 
 // The cap closing `below`'s section: the region bounded by the boundary edges of `below`
-// (all in `plane`), triangulated with outward normal +n (seen from `below`).
-std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Plane_3& plane,
-                            std::vector<Point3>* points, std::vector<Eigen::Vector3d>* rounded) {
+// (all in `plane`), triangulated with outward normal +n (seen from `below`). Nothing when a
+// vertex of `in_plane` (those counted as on the plane) that is not on the section's border lies
+// in the section or on its border: there the plane touches the surface without crossing it (the
+// bottom of a dimple, the plane tangent to it), and the cap would pass through that vertex, or
+// within kInPlaneTolerance of it, leaving a piece that touches itself.
+std::optional<std::vector<Tri>> SectionCap(const std::vector<Tri>& below,
+                                           const ExactKernel::Plane_3& plane,
+                                           const std::vector<int>& in_plane,
+                                           std::vector<Point3>* points,
+                                           std::vector<Eigen::Vector3d>* rounded) {
   std::map<std::pair<int, int>, int> net;  // +1 per a->b with a < b, -1 per b->a
   for (const Tri& t : below) {
     for (int k = 0; k < 3; ++k) {
@@ -191,7 +199,7 @@ std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Pl
   for (const auto& [edge, count] : net) {
     if (count != 0) border.push_back(edge);
   }
-  if (border.empty()) return {};
+  if (border.empty()) return std::vector<Tri>{};
   // Project by dropping the coordinate the normal is largest along (exact: a coordinate copy);
   // cyclic order of the kept axes makes counter-clockwise mean a +axis normal.
   const std::array<FT, 3> coef = {plane.a(), plane.b(), plane.c()};
@@ -220,6 +228,22 @@ std::vector<Tri> SectionCap(const std::vector<Tri>& below, const ExactKernel::Pl
   }
   // Faces at odd nesting levels are inside the section.
   MarkNestingLevels(cdt);
+  auto inside = [&](Cdt::Face_handle f) {
+    return !cdt.is_infinite(f) && f->info().nesting % 2 == 1;
+  };
+  for (const int id : in_plane) {
+    if (handle.count(id) != 0) continue;
+    const Point3& p = (*points)[static_cast<size_t>(id)];
+    Cdt::Locate_type type;
+    int li = 0;
+    const Cdt::Face_handle f =
+        cdt.locate(ExactKernel::Point_2(Coordinate(p, u_axis), Coordinate(p, v_axis)), type, li);
+    // At a border vertex's position (another vertex within the tolerance of it), it touches.
+    if (type == Cdt::VERTEX || (type == Cdt::FACE && inside(f)) ||
+        (type == Cdt::EDGE && (inside(f) || inside(f->neighbor(li))))) {
+      return std::nullopt;
+    }
+  }
   const bool flip = CGAL::is_negative(coef[static_cast<size_t>(drop)]);
   std::vector<Tri> cap;
   for (auto f : cdt.finite_face_handles()) {
@@ -302,8 +326,10 @@ TriangleMesh ToDouble(const ExactPiece& piece) {
   return mesh;
 }
 
-void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, ExactPiece* below,
+bool SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, ExactPiece* below,
                   ExactPiece* above) {
+  *below = {};
+  *above = {};
   std::vector<Point3> points = piece.points;
   std::vector<Eigen::Vector3d> rounded = piece.rounded;
   std::vector<int> side(points.size());
@@ -321,10 +347,12 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
                           RoundToDouble(plane.c()));
   const double snap = kInPlaneTolerance * box.diagonal().norm() * n.norm();
   const double offset = RoundToDouble(plane.d());
+  std::vector<int> in_plane;
   for (size_t i = 0; i < points.size(); ++i) {
     side[i] = std::abs(n.dot(rounded[i]) + offset) <= snap
                   ? 0
                   : static_cast<int>(plane.oriented_side(points[i]));
+    if (side[i] == 0) in_plane.push_back(static_cast<int>(i));
   }
   // Crossings are computed on the exact values directly: as lazy expressions they would be a
   // dozen nodes each, and CGAL 5.5 guards each node's first exact evaluation by std::call_once,
@@ -411,13 +439,15 @@ void SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
     fan(std::move(neg), &lower);
     fan(std::move(pos), &upper);
   }
-  std::vector<Tri> cap = SectionCap(lower, plane, &points, &rounded);
-  for (const Tri& t : cap) {
+  const std::optional<std::vector<Tri>> cap = SectionCap(lower, plane, in_plane, &points, &rounded);
+  if (!cap) return false;
+  for (const Tri& t : *cap) {
     lower.push_back(t);
     upper.push_back({t[0], t[2], t[1]});
   }
   *below = Compact(points, rounded, lower);
   *above = Compact(points, rounded, upper);
+  return true;
 }
 
 std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {

@@ -30,11 +30,13 @@ constexpr int kMaxPiecesPerPart = 2048;
 // A cut leaving a piece below this fraction of the cut piece's volume is rejected.
 constexpr double kMinPieceFraction = 1e-9;
 // When no ranked plane cuts a piece cleanly, the planes are tried again moved along their
-// normals by these fractions of tau, either way, nearest first: a hair off (a pinch at a vertex,
-// a rounding crossing right at the plane), then farther, past a region where every plane near
-// the witness gives a piece whose rounded cut faces cross another face (measured on a repaired
-// solid from fuzz_decompose3d: 40 such planes, 36 rounded invalid). A pocket deeper than tau
-// still meets a plane a quarter of tau off.
+// normals by these fractions of tau, either way, nearest first. A plane through the witness
+// vertex often passes exactly through other vertices too (a mesh stored in single precision,
+// an axis plane), and gives a section that does not close, a plane tangent to the surface
+// inside the section (SplitByPlane), or a piece whose rounded cut faces cross another face; a
+// hair off it does not (measured: character at tau_rel 0.02, whose ranked planes all failed so,
+// kept a piece 23 x tau deep without these). Farther shifts for where every plane near the
+// witness fails; a pocket deeper than tau still meets a plane a quarter of tau off.
 constexpr double kPlaneShifts[] = {1e-3, 0.05, 0.25};
 
 struct Piece {
@@ -80,7 +82,7 @@ std::vector<CutPiece> Cut(const ExactPiece& piece, const Plane3d& plane, bool* s
   const ExactKernel::Plane_3 exact(plane.normal.x(), plane.normal.y(), plane.normal.z(),
                                    -plane.offset);
   ExactPiece below, above;
-  SplitByPlane(piece, exact, &below, &above);
+  if (!SplitByPlane(piece, exact, &below, &above)) return {};
   if (below.triangles.empty() || above.triangles.empty()) return {};
   std::vector<ExactPiece> solids = ConnectedSolids(below);
   for (ExactPiece& p : ConnectedSolids(above)) solids.push_back(std::move(p));

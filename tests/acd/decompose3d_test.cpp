@@ -166,10 +166,12 @@ TEST(Decompose3d, HugeCoordinatesDecomposeAsAtUnitSize) {
 
 // Found by fuzz/fuzz_decompose3d (its input decoded here; not a seed of its corpus, as it takes
 // longer under the sanitizers than the fuzz step's 10 s limit): two overlapping, warped boxes,
-// united by repair. One piece, 0.31 deep against tau 0.12,
-// had no plane among its ranked ones, nor among them moved 1e-3 x tau off, whose pieces stayed
-// valid solids once their cut points were rounded (a rounded cut face crossed another face), so
-// it was left above tau. The planes moved farther off (kPlaneShifts) cut it.
+// united by repair. One piece, 0.31 deep against tau 0.12, had no plane among its ranked ones,
+// nor among them moved 1e-3 x tau off, whose pieces stayed valid solids once their cut points
+// were rounded (a rounded cut face crossed another face), so it was left above tau. The cause
+// was an earlier cut whose plane was tangent to a dimple inside its section: its cap passed
+// within rounding of the dimple's bottom vertex. SplitByPlane now refuses such a plane, and the
+// planes moved farther off (kPlaneShifts) had worked around it; either alone passes this test.
 TEST(Decompose3d, APieceWhoseNearPlanesAllRoundInvalidIsStillCut) {
   const std::vector<Eigen::Vector3d> v{
       {0, 0, 8.25},     {4, 0, 0},         {4, 2, 2.75},     {2.5, 3, 3.25},

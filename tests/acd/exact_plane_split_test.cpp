@@ -87,6 +87,53 @@ TEST(ExactPlaneSplitTest, VerticesWithinTheInPlaneToleranceAreOnThePlane) {
   }
 }
 
+// The box [0, 4] x [0, 2] x [0, 2] whose top is two roofs, square [0, 2] x [0, 2] with its apex
+// at (1, 1, left) and square [2, 4] x [0, 2] at (3, 1, right): a peak above z = 2, a dimple
+// below it.
+TriangleMesh BoxWithTwoRoofs(double left, double right) {
+  const std::vector<Eigen::Vector3d> v = {{0, 0, 0}, {4, 0, 0}, {4, 2, 0},    {0, 2, 0},
+                                          {0, 0, 2}, {2, 0, 2}, {4, 0, 2},    {4, 2, 2},
+                                          {2, 2, 2}, {0, 2, 2}, {1, 1, left}, {3, 1, right}};
+  const std::vector<Eigen::Vector3i> f = {
+      {0, 2, 1},  {0, 3, 2},  {0, 1, 6},  {0, 6, 5},  {0, 5, 4},  {1, 2, 7},  {1, 7, 6},
+      {2, 3, 9},  {2, 9, 8},  {2, 8, 7},  {3, 0, 4},  {3, 4, 9},  {4, 5, 10}, {5, 8, 10},
+      {8, 9, 10}, {9, 4, 10}, {5, 6, 11}, {6, 7, 11}, {7, 8, 11}, {8, 5, 11}};
+  return MakeTriangleMesh(v, f);
+}
+
+// The plane z = 1 is tangent to the left roof's dimple at its bottom (1, 1, 1), which lies inside
+// the section (the whole rectangle): the cap would touch the upper half's surface there. The
+// split is refused; a plane a hair lower cuts the box cleanly.
+TEST(ExactPlaneSplitTest, APlaneTangentToADimpleInsideTheSectionIsRefused) {
+  const ExactPiece box = ToExact(BoxWithTwoRoofs(1.0, 2.5));
+  ASSERT_TRUE(IsClosedSurface(box.triangles));
+  ASSERT_NEAR(MeshVolume(ToDouble(box)), 16.0 - 4.0 / 3.0 + 2.0 / 3.0, 1e-12);
+  ExactPiece below, above;
+  EXPECT_FALSE(SplitByPlane(box, ExactKernel::Plane_3(0, 0, 1, -1), &below, &above));
+  EXPECT_TRUE(below.triangles.empty());
+  EXPECT_TRUE(above.triangles.empty());
+  ASSERT_TRUE(SplitByPlane(box, ExactKernel::Plane_3(0, 0, 1, -0.99), &below, &above));
+  for (const ExactPiece* half : {&below, &above}) {
+    EXPECT_TRUE(IsClosedSurface(half->triangles));
+    EXPECT_TRUE(RoundsToValidSolid(*half));
+  }
+  EXPECT_NEAR(MeshVolume(ToDouble(below)), 8 * 0.99, 1e-12);
+}
+
+// The plane z = 3 touches the left roof's peak (1, 1, 3) from outside the solid, away from the
+// section (a square around the right roof, whose apex is at z = 4): the cut goes ahead, the peak
+// a vertex of the lower half.
+TEST(ExactPlaneSplitTest, APlaneTouchingAPeakOutsideTheSectionCuts) {
+  const ExactPiece box = ToExact(BoxWithTwoRoofs(3.0, 4.0));
+  ExactPiece below, above;
+  ASSERT_TRUE(SplitByPlane(box, ExactKernel::Plane_3(0, 0, 1, -3), &below, &above));
+  for (const ExactPiece* half : {&below, &above}) {
+    EXPECT_TRUE(IsClosedSurface(half->triangles));
+    EXPECT_TRUE(RoundsToValidSolid(*half));
+  }
+  EXPECT_NEAR(MeshVolume(ToDouble(above)), 1.0 / 3.0, 1e-12);  // the top of a pyramid of 8 / 3
+}
+
 // A piece with a triangle whose corners round onto one position is not a valid output.
 TEST(ExactPlaneSplitTest, RoundsToValidSolidRejectsTwoCornersAtOnePosition) {
   ExactPiece piece = ToExact(NeedleTetrahedron());
