@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <queue>
@@ -246,18 +247,18 @@ void DecomposePart(const TriangleMesh& part, int source, double tau, bool keep_i
         }
       }
       if (parts.empty() && fallback.empty()) {  // no unshifted plane splits it
+        // Farther only while nothing splits; a sliver left by an unshifted plane still gets
+        // the nearest shift.
         size_t rank = ranked.size();
-        bool split = false;  // by a plane moved off less far
-        for (const double fraction : kPlaneShifts) {
-          if (split) break;
-          for (const double shift : {fraction * tau, -fraction * tau}) {
-            for (Plane3d plane : ranked) {
-              if (!parts.empty()) break;
+        for (size_t k = 0; k < std::size(kPlaneShifts) && parts.empty(); ++k) {
+          if (k > 0 && (!fallback.empty() || !sliver_fallback.empty())) break;
+          for (const double shift : {kPlaneShifts[k] * tau, -kPlaneShifts[k] * tau}) {
+            for (size_t i = 0; i < ranked.size() && parts.empty(); ++i) {
+              Plane3d plane = ranked[i];
               plane.offset += shift;
               try_plane(plane, rank++);
             }
           }
-          split = !parts.empty() || !fallback.empty() || !sliver_fallback.empty();
         }
       }
       if (parts.empty() && !fallback.empty()) parts = std::move(fallback), chosen = fallback_plane;
