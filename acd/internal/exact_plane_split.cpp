@@ -175,13 +175,14 @@ FT Coordinate(const Point3& p, int axis) { return axis == 0 ? p.x() : (axis == 1
 
 // The cap closing `below`'s section: the region bounded by the boundary edges of `below`
 // (all in `plane`), triangulated with outward normal +n (seen from `below`). Nothing when a
-// vertex of `in_plane` (those counted as on the plane) that is not on the section's border lies
-// in the section or on its border: there the plane touches the surface without crossing it (the
-// bottom of a dimple, the plane tangent to it), and the cap would pass through that vertex, or
-// within kInPlaneTolerance of it, leaving a piece that touches itself.
+// vertex or an edge of `in_plane` (the piece's, counted as on the plane: (v, v) for a vertex,
+// (a, b) with a < b for an edge) that is not on the section's border lies in the section or on
+// its border: there the plane touches the surface without crossing it (the bottom of a dimple
+// or of a groove, the plane tangent to it), and the cap would pass through it, or within
+// kInPlaneTolerance of it, leaving a piece that touches itself.
 std::optional<std::vector<Tri>> SectionCap(const std::vector<Tri>& below,
                                            const ExactKernel::Plane_3& plane,
-                                           const std::vector<int>& in_plane,
+                                           const std::vector<std::pair<int, int>>& in_plane,
                                            std::vector<Point3>* points,
                                            std::vector<Eigen::Vector3d>* rounded) {
   std::map<std::pair<int, int>, int> net;  // +1 per a->b with a < b, -1 per b->a
@@ -231,9 +232,13 @@ std::optional<std::vector<Tri>> SectionCap(const std::vector<Tri>& below,
   auto inside = [&](Cdt::Face_handle f) {
     return !cdt.is_infinite(f) && f->info().nesting % 2 == 1;
   };
-  for (const int id : in_plane) {
-    if (handle.count(id) != 0) continue;
-    const Point3& p = (*points)[static_cast<size_t>(id)];
+  for (const auto& [a, b] : in_plane) {
+    const bool on_border = a == b
+                               ? handle.count(a) != 0
+                               : std::binary_search(border.begin(), border.end(), std::pair{a, b});
+    if (on_border) continue;
+    const Point3& pa = (*points)[static_cast<size_t>(a)];
+    const Point3 p = a == b ? pa : CGAL::midpoint(pa, (*points)[static_cast<size_t>(b)]);
     Cdt::Locate_type type;
     int li = 0;
     const Cdt::Face_handle f =
@@ -347,12 +352,20 @@ bool SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
                           RoundToDouble(plane.c()));
   const double snap = kInPlaneTolerance * box.diagonal().norm() * n.norm();
   const double offset = RoundToDouble(plane.d());
-  std::vector<int> in_plane;
+  std::vector<std::pair<int, int>> in_plane;  // vertices (v, v), then edges (a, b), a < b
   for (size_t i = 0; i < points.size(); ++i) {
     side[i] = std::abs(n.dot(rounded[i]) + offset) <= snap
                   ? 0
                   : static_cast<int>(plane.oriented_side(points[i]));
-    if (side[i] == 0) in_plane.push_back(static_cast<int>(i));
+    if (side[i] == 0) in_plane.emplace_back(static_cast<int>(i), static_cast<int>(i));
+  }
+  for (const Tri& t : piece.triangles) {  // each edge once: it runs a -> b in one of its faces
+    for (size_t k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (a < b && side[static_cast<size_t>(a)] == 0 && side[static_cast<size_t>(b)] == 0) {
+        in_plane.emplace_back(a, b);
+      }
+    }
   }
   // Crossings are computed on the exact values directly: as lazy expressions they would be a
   // dozen nodes each, and CGAL 5.5 guards each node's first exact evaluation by std::call_once,

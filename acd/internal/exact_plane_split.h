@@ -43,11 +43,11 @@ TriangleMesh ToDouble(const ExactPiece& piece);
 /// share an identical interface. O(n log n) for n triangles.
 ///
 /// Returns false, with both halves empty, when the plane touches the surface inside the section
-/// without crossing it: a vertex on the plane, off the section's border, lies in the section or
-/// on its border (the bottom of a dimple the plane is tangent to). The cap would pass through
-/// that vertex, or within the tolerance of it, and leave a piece touching itself there, which no
-/// later cut near that point can split into pieces that stay valid once rounded (measured: hips
-/// at tau_rel 0.02, a piece left at 24 x tau). A plane moved off the vertex cuts cleanly.
+/// without crossing it: a vertex or an edge on the plane, off the section's border, lies in the
+/// section or on its border (the bottom of a dimple or a groove the plane is tangent to). The cap
+/// would pass through it, or within the tolerance of it, and leave a piece touching itself
+/// there, which no later cut near that point can split into pieces that stay valid once rounded
+/// (measured: hips at tau_rel 0.02, a piece left at 24 x tau). A plane moved off it cuts cleanly.
 bool SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, ExactPiece* below,
                   ExactPiece* above);
 

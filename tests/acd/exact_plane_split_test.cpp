@@ -120,6 +120,29 @@ TEST(ExactPlaneSplitTest, APlaneTangentToADimpleInsideTheSectionIsRefused) {
   EXPECT_NEAR(MeshVolume(ToDouble(below)), 8 * 0.99, 1e-12);
 }
 
+// The box [0, 2]^3 whose top is a groove along y, its bottom edge from (1, 0, 1) to (1, 2, 1).
+TriangleMesh GroovedBox() {
+  const std::vector<Eigen::Vector3d> v = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0, 0, 2},
+                                          {2, 0, 2}, {2, 2, 2}, {0, 2, 2}, {1, 0, 1}, {1, 2, 1}};
+  const std::vector<Eigen::Vector3i> f = {
+      {0, 2, 1}, {0, 3, 2}, {1, 2, 6}, {1, 6, 5}, {3, 0, 4}, {3, 4, 7}, {0, 1, 8}, {1, 5, 8},
+      {0, 8, 4}, {2, 3, 9}, {3, 7, 9}, {2, 9, 6}, {4, 8, 9}, {4, 9, 7}, {8, 5, 6}, {8, 6, 9}};
+  return MakeTriangleMesh(v, f);
+}
+
+// The plane z = 1 is tangent to the groove along its bottom edge, whose ends are on the section's
+// border (the plane crosses the end walls there) and whose inside crosses the section: refused,
+// as for a dimple's vertex.
+TEST(ExactPlaneSplitTest, APlaneTangentToAGrooveAlongAnEdgeIsRefused) {
+  const ExactPiece box = ToExact(GroovedBox());
+  ASSERT_TRUE(IsClosedSurface(box.triangles));
+  ASSERT_NEAR(MeshVolume(ToDouble(box)), 6.0, 1e-12);
+  ExactPiece below, above;
+  EXPECT_FALSE(SplitByPlane(box, ExactKernel::Plane_3(0, 0, 1, -1), &below, &above));
+  ASSERT_TRUE(SplitByPlane(box, ExactKernel::Plane_3(0, 0, 1, -0.99), &below, &above));
+  EXPECT_NEAR(MeshVolume(ToDouble(below)), 4 * 0.99, 1e-12);
+}
+
 // The plane z = 3 touches the left roof's peak (1, 1, 3) from outside the solid, away from the
 // section (a square around the right roof, whose apex is at z = 4): the cut goes ahead, the peak
 // a vertex of the lower half.
