@@ -243,7 +243,8 @@ std::optional<std::vector<Tri>> SectionCap(const std::vector<Tri>& below,
     int li = 0;
     const Cdt::Face_handle f =
         cdt.locate(ExactKernel::Point_2(Coordinate(p, u_axis), Coordinate(p, v_axis)), type, li);
-    // At a border vertex's position (another vertex within the tolerance of it), it touches.
+    // On a vertex of the border (where another vertex lies, or where border edges cross), it
+    // touches the border.
     if (type == Cdt::VERTEX || (type == Cdt::FACE && inside(f)) ||
         (type == Cdt::EDGE && (inside(f) || inside(f->neighbor(li))))) {
       return std::nullopt;

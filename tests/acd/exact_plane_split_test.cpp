@@ -139,6 +139,7 @@ TEST(ExactPlaneSplitTest, APlaneTangentToAGrooveAlongAnEdgeIsRefused) {
   ASSERT_NEAR(MeshVolume(ToDouble(box)), 6.0, 1e-12);
   ExactPiece below, above;
   EXPECT_FALSE(SplitByPlane(box, ExactKernel::Plane_3(0, 0, 1, -1), &below, &above));
+  EXPECT_TRUE(below.triangles.empty() && above.triangles.empty());
   ASSERT_TRUE(SplitByPlane(box, ExactKernel::Plane_3(0, 0, 1, -0.99), &below, &above));
   EXPECT_NEAR(MeshVolume(ToDouble(below)), 4 * 0.99, 1e-12);
 }
