@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "acd/convex_hull3d.h"
+#include "acd/internal/canonical_hull.h"
 #include "acd/internal/in_plane_tolerance.h"
 #include "acd/mesh_measures.h"
 #include "base/random.h"
@@ -122,6 +123,34 @@ TEST(MeasureSolidConcavity, NearlyCoplanarHullFacetsHideNoDepth) {
         << "trial " << trial;
   }
   EXPECT_GT(deep, 100);  // most pressed vertices lie clearly below the tolerance
+}
+
+// Found by fuzz/fuzz_decompose3d (repaired, then kept by the solid ACD as one component of
+// concavity 0; CheckDecomposition3d re-measured 0.756): a solid whose hull has 5 vertices and
+// keeps only 3 of its regrouped planes (MakeCanonicalHull drops a plane a hull vertex lies
+// clearly outside of). Fewer than four planes were taken for a flat hull, measured 0.
+TEST(MeasureSolidConcavity, AHullThatKeepsFewerThanFourPlanesIsNotTakenForFlat) {
+  const std::vector<Eigen::Vector3d> v = {
+      {4, 4, 0},
+      {0, -21.75, -21.5},
+      {0, -0.25, -0.25},
+      {-32, 0, 0},
+      {4, 0, 0},
+      {-13.017863161442534, -12.901921132457026, -12.753623188405797},
+      {-12.340807174887891, -12.340807174887891, -12.340807174887891},
+      {-12.274906780106086, -12.382175305918805, -12.382175305918805},
+      {-0.25001754859722702, -0.24999979354591495, -0.24997708359656229},
+      {-0.24806201550387597, -0.24806201550387597, -0.24806201550387597},
+      {0, 0, 0},
+      {0.23529411764705882, 0, 0}};
+  const std::vector<Eigen::Vector3i> f = {
+      {3, 5, 8}, {3, 6, 5},   {3, 8, 9},  {3, 9, 10}, {3, 10, 0},  {3, 0, 6}, {5, 6, 7},
+      {5, 7, 1}, {5, 1, 8},   {6, 0, 7},  {7, 0, 1},  {8, 1, 2},   {8, 2, 9}, {9, 2, 10},
+      {1, 0, 2}, {2, 11, 10}, {2, 4, 11}, {2, 0, 4},  {10, 11, 0}, {11, 4, 0}};
+  const TriangleMesh mesh = MakeTriangleMesh(v, f);
+  ASSERT_GT(MeshVolume(mesh), 400.0);
+  ASSERT_LT(MakeCanonicalHull(v).planes.rows(), 4);
+  EXPECT_GT(MeasureSolidConcavity(mesh, 0.45).value, 0.7);
 }
 
 }  // namespace
