@@ -194,14 +194,20 @@ std::optional<Mesh> ToCgal(const TriangleMesh& mesh) {
 }
 
 // Largest distance of a vertex or face centroid of `mesh` to the boundary of the convex hull of
-// its vertices.
+// its vertices; 0 when the hull is flat (exactly, as ConvexHull3 decides), as every point of a
+// flat set is on its hull's boundary. A flat hull is one-sided and has one plane, whose normal,
+// for a needle of a patch, is rounding noise (fuzz_decompose3d: a triangle two of whose corners
+// are an ulp apart at 4e30 had a centroid 6.6e28 below its plane so found).
 double ConcavityLowerBound(const TriangleMesh& mesh) {
   std::vector<Eigen::Vector3d> points;
   points.reserve(static_cast<size_t>(mesh.vertices.rows() + mesh.triangles.rows()));
   for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
     points.push_back(mesh.vertices.row(v).transpose());
   }
-  const Eigen::Matrix<double, Eigen::Dynamic, 4> planes = HullPlanes(ConvexHull3(points, 0.0));
+  const TriangleMesh hull = ConvexHull3(points, 0.0);
+  // A closed hull of V vertices has 2V - 4 triangles; a flat one, fanned, V - 2.
+  if (hull.triangles.rows() < 2 * hull.vertices.rows() - 4) return 0.0;
+  const Eigen::Matrix<double, Eigen::Dynamic, 4> planes = HullPlanes(hull);
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
     points.push_back((Corner(mesh, f, 0) + Corner(mesh, f, 1) + Corner(mesh, f, 2)) / 3.0);
   }
