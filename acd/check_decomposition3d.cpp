@@ -196,8 +196,9 @@ std::optional<Mesh> ToCgal(const TriangleMesh& mesh) {
 // Largest distance of a vertex or face centroid of `mesh` to the boundary of the convex hull of
 // its vertices; 0 when the hull is flat (exactly, as ConvexHull3 decides), as every point of a
 // flat set is on its hull's boundary. A flat hull is one-sided and has one plane, whose normal,
-// for a needle of a patch, is rounding noise (fuzz_decompose3d: a triangle two of whose corners
-// are an ulp apart at 4e30 had a centroid 6.6e28 below its plane so found).
+// for a needle of a patch, is rounding noise (fuzz/corpus/decompose3d/
+// regression-needle-patch-at-4e30.bin: a triangle two of whose corners are an ulp apart at 4e30
+// had a centroid 6.6e28 below its plane so found).
 double ConcavityLowerBound(const TriangleMesh& mesh) {
   std::vector<Eigen::Vector3d> points;
   points.reserve(static_cast<size_t>(mesh.vertices.rows() + mesh.triangles.rows()));

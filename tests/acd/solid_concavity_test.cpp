@@ -125,10 +125,11 @@ TEST(MeasureSolidConcavity, NearlyCoplanarHullFacetsHideNoDepth) {
   EXPECT_GT(deep, 100);  // most pressed vertices lie clearly below the tolerance
 }
 
-// Found by fuzz/fuzz_decompose3d (repaired, then kept by the solid ACD as one component of
-// concavity 0; CheckDecomposition3d re-measured 0.756): a solid whose hull has 5 vertices and
-// keeps only 3 of its regrouped planes (MakeCanonicalHull drops a plane a hull vertex lies
-// clearly outside of). Fewer than four planes were taken for a flat hull, measured 0.
+// Found by fuzz/fuzz_decompose3d (fuzz/corpus/decompose3d/regression-hull-keeps-three-planes.bin;
+// repaired, then kept by the solid ACD as one component of concavity 0; CheckDecomposition3d
+// re-measured 0.756): a solid whose hull has 5 vertices and keeps only 3 of its regrouped planes
+// (MakeCanonicalHull drops a plane a hull vertex lies clearly outside of). Fewer than four planes
+// were taken for a flat hull, measured 0.
 TEST(MeasureSolidConcavity, AHullThatKeepsFewerThanFourPlanesIsNotTakenForFlat) {
   const std::vector<Eigen::Vector3d> v = {
       {4, 4, 0},
