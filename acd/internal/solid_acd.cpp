@@ -83,8 +83,10 @@ std::vector<CutPiece> Cut(const ExactPiece& piece, const Plane3d& plane, bool* s
   const ExactKernel::Plane_3 exact(plane.normal.x(), plane.normal.y(), plane.normal.z(),
                                    -plane.offset);
   ExactPiece below, above;
-  if (!SplitByPlane(piece, exact, &below, &above)) return {};
-  if (below.triangles.empty() || above.triangles.empty()) return {};
+  if (!SplitByPlane(piece, exact, &below, &above) || below.triangles.empty() ||
+      above.triangles.empty()) {
+    return {};
+  }
   std::vector<ExactPiece> solids = ConnectedSolids(below);
   for (ExactPiece& p : ConnectedSolids(above)) solids.push_back(std::move(p));
   // A section the cap could not close cleanly (constraints that overlap or cross, which a
