@@ -33,7 +33,7 @@ std::string Lower(std::string text) {
 }
 
 // The report's "name  value" lines, aligned as the 2D decompose report's.
-constexpr ReportLines Line(14);
+constexpr ReportLines MeshLine(14);
 
 /// An output path that can never be written is a usage error, reported before any work.
 void CheckOutputPath(const std::string& option, const std::string& path) {
@@ -151,44 +151,44 @@ int RunDecompose3d(const Decompose3dArguments& args) {
   }
 
   const acd::DecompositionStats3d& stats = decomposition.stats;
-  Line("input", args.input + " (" + Plural(mesh.vertices.rows(), "vertex") + ", " +
-                    Plural(mesh.triangles.rows(), "triangle") + ")");
-  Line("prepared", Plural(prepared.mesh.vertices.rows(), "vertex") + ", " +
-                       Plural(prepared.mesh.triangles.rows(), "triangle") + ", " +
-                       Plural(prepared.parts.size(), "part") + ", " +
-                       FormatSignificant(prepare_ms, 3) + " ms");
-  for (const std::string& note : prepared.notes) Line("  changed", note);
+  MeshLine("input", args.input + " (" + Plural(mesh.vertices.rows(), "vertex") + ", " +
+                        Plural(mesh.triangles.rows(), "triangle") + ")");
+  MeshLine("prepared", Plural(prepared.mesh.vertices.rows(), "vertex") + ", " +
+                           Plural(prepared.mesh.triangles.rows(), "triangle") + ", " +
+                           Plural(prepared.parts.size(), "part") + ", " +
+                           FormatSignificant(prepare_ms, 3) + " ms");
+  for (const std::string& note : prepared.notes) MeshLine("  changed", note);
   if (prepared.defects.none()) {
-    Line("defects", "none");
+    MeshLine("defects", "none");
   } else {
-    Line("defects", DefectSummary(prepared.defects));
-    Line("  first", prepared.defects.first);
+    MeshLine("defects", DefectSummary(prepared.defects));
+    MeshLine("  first", prepared.defects.first);
   }
-  Line("acd", why);
+  MeshLine("acd", why);
   if (tau_rel >= 0) {
-    Line("tau", ReportNumber(decomposition.tau) + " (tau_rel " + ReportNumber(tau_rel) +
-                    " x radius " + ReportNumber(radius) +
-                    (args.tau_rel < 0 ? ", the default)" : ")"));
+    MeshLine("tau", ReportNumber(decomposition.tau) + " (tau_rel " + ReportNumber(tau_rel) +
+                        " x radius " + ReportNumber(radius) +
+                        (args.tau_rel < 0 ? ", the default)" : ")"));
   } else {
-    Line("tau", ReportNumber(decomposition.tau));
+    MeshLine("tau", ReportNumber(decomposition.tau));
   }
-  if (decomposition.max_hulls > 0) Line("max hulls", std::to_string(decomposition.max_hulls));
+  if (decomposition.max_hulls > 0) MeshLine("max hulls", std::to_string(decomposition.max_hulls));
   if (decomposition.merge_growth >= 0) {
-    Line("merge",
-         "tau-convex neighbours, hull growth <= " + ReportNumber(decomposition.merge_growth));
+    MeshLine("merge",
+             "tau-convex neighbours, hull growth <= " + ReportNumber(decomposition.merge_growth));
   }
-  Line("components", std::to_string(stats.components));
+  MeshLine("components", std::to_string(stats.components));
   if (stats.surface) {
-    Line("hull volume", ReportNumber(stats.hull_volume));
+    MeshLine("hull volume", ReportNumber(stats.hull_volume));
   } else {
-    Line("hull volume",
-         ReportNumber(stats.hull_volume) + " / volume " + ReportNumber(stats.volume) + " = " +
-             (stats.volume > 0 ? ReportNumber(stats.hull_volume / stats.volume) : "n/a"));
+    MeshLine("hull volume",
+             ReportNumber(stats.hull_volume) + " / volume " + ReportNumber(stats.volume) + " = " +
+                 (stats.volume > 0 ? ReportNumber(stats.hull_volume / stats.volume) : "n/a"));
   }
-  Line("max concavity", ReportNumber(stats.max_concavity));
-  Line("time", FormatFixed(stats.time_ms, 3) + " ms");
-  if (args.check) Line("check", "ok");
-  for (const std::string& path : written) Line("wrote", path);
+  MeshLine("max concavity", ReportNumber(stats.max_concavity));
+  MeshLine("time", FormatFixed(stats.time_ms, 3) + " ms");
+  if (args.check) MeshLine("check", "ok");
+  for (const std::string& path : written) MeshLine("wrote", path);
   return 0;
 }
 

@@ -14,7 +14,6 @@ namespace acdplan::acd::internal {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-const double kPi = std::acos(-1.0);
 
 Eigen::Vector3d Position(const TriangleMesh& mesh, int v) { return mesh.vertices.row(v); }
 
@@ -367,6 +366,7 @@ std::vector<GlobalCut> FindGlobalCuts(const TriangleMesh& mesh, const SolidConca
         [&](int v) { return !in_pocket[static_cast<size_t>(v)]; }));
   }
   // 4. The lightest cycle.
+  constexpr double kPi = 3.14159265358979323846;
   auto weight = [&](const std::vector<int>& cycle) {
     double sum = 0, gamma = 0;
     for (size_t i = 0; i < cycle.size(); ++i) {
