@@ -78,4 +78,12 @@ void WriteFileAtomically(const std::string& path, const std::string& text) {
   if (std::rename(temporary.c_str(), path.c_str()) != 0) discard(errno);
 }
 
+void CheckOutputPath(const std::string& option, const std::string& path) {
+  if (path.empty()) return;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(option + " " + path + ": is a directory");
+  }
+}
+
 }  // namespace acdplan

@@ -17,4 +17,9 @@ std::string ReadFile(const std::string& path);
 ///         left behind.
 void WriteFileAtomically(const std::string& path, const std::string& text);
 
+/// Checks, before any work, the output `path` given with command-line `option`: empty (not
+/// asked for) passes; a folder, which could never be written as a file, does not.
+/// @throws InputError "<option> <path>: is a directory"
+void CheckOutputPath(const std::string& option, const std::string& path);
+
 }  // namespace acdplan

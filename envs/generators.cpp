@@ -8,6 +8,7 @@
 #include "base/format.h"
 #include "base/input_error.h"
 #include "base/random.h"
+#include "envs/internal/generator_rules.h"
 #include "envs/internal/trace_cells.h"
 
 namespace acdplan::envs {
@@ -17,11 +18,9 @@ using acd::Point2d;
 using acd::Polygon2d;
 using acd::Ring2d;
 
-void Require(bool ok, const char* where, const std::string& rule) {
-  if (!ok) throw InputError(std::string(where) + ": " + rule);
-}
-
-bool Positive(double value) { return std::isfinite(value) && value > 0.0; }
+using internal::Format;
+using internal::Positive;
+using internal::Require;
 
 Polygon2d Box(double x0, double y0, double x1, double y1) {
   return Polygon2d{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
@@ -30,9 +29,6 @@ Polygon2d Box(double x0, double y0, double x1, double y1) {
 int UniformInt(RandomEngine& rng, int n) {  // In [0, n).
   return static_cast<int>(UniformIndex(rng, static_cast<std::uint64_t>(n)));
 }
-
-/// Lengths in descriptions, as a stream prints them ("0.5", "1e-05").
-std::string Format(double value) { return FormatSignificant(value, 6); }
 
 // One side of an open polyline offset by `h` to its left (h < 0: right), with miter joins.
 Ring2d OffsetPolyline(const std::vector<Point2d>& points, double h) {

@@ -7,6 +7,7 @@
 #include "base/input_error.h"
 #include "base/random.h"
 #include "envs/internal/box_grid_solids.h"
+#include "envs/internal/generator_rules.h"
 
 namespace acdplan::envs {
 namespace {
@@ -14,13 +15,9 @@ namespace {
 using Box = Eigen::AlignedBox3d;
 using Eigen::Vector3d;
 
-void Require(bool ok, const char* where, const std::string& rule) {
-  if (!ok) throw InputError(std::string(where) + ": " + rule);
-}
-
-bool Positive(double value) { return std::isfinite(value) && value > 0.0; }
-
-std::string Format(double value) { return FormatSignificant(value, 6); }
+using internal::Format;
+using internal::Positive;
+using internal::Require;
 
 Box MakeBox(double x0, double y0, double z0, double x1, double y1, double z1) {
   return Box(Vector3d(x0, y0, z0), Vector3d(x1, y1, z1));

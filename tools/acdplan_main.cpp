@@ -128,14 +128,7 @@ CLI::Validator NumberThat(Accept accept, const std::string& rule) {
       "");
 }
 
-/// An output path that can never be written is a usage error, reported before any work.
-void CheckOutputPath(const std::string& option, const std::string& path) {
-  if (path.empty()) return;
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw acdplan::InputError(option + " " + path + ": is a directory");
-  }
-}
+using acdplan::CheckOutputPath;
 
 int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) {
   if (acdplan::tools::IsMeshFile(args.input)) return RunDecomposeMesh(args, kinds);

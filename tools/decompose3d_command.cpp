@@ -35,13 +35,6 @@ std::string Lower(std::string text) {
 // The report's "name  value" lines, aligned as the 2D decompose report's.
 constexpr ReportLines MeshLine(14);
 
-/// An output path that can never be written is a usage error, reported before any work.
-void CheckOutputPath(const std::string& option, const std::string& path) {
-  if (path.empty()) return;
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw InputError(option + " " + path + ": is a directory");
-}
-
 std::string DefectSummary(const acd::MeshDefects& defects) {
   return Plural(defects.boundary_edges, "boundary edge") + ", " +
          Plural(defects.non_manifold_edges, "non-manifold edge") + ", " +
