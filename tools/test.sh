@@ -39,8 +39,12 @@ fi
 
 jobs=${ACDPLAN_JOBS:-$(nproc)}
 # ccache (CMakeLists.txt uses it when installed) shares its objects between checkouts: paths
-# relative to this one, and the debug-info builds' working folder left out of the hash.
+# relative to this one, and the debug-info builds' working folder left out of the hash. Its
+# depend mode keys an object by the headers the compiler's own dependency file lists (CMake
+# passes -MD), so a miss does not first run the preprocessor to look for it: that run cost
+# 1.6 s (clang) to 4.3 s (GCC) of CPU on acd's largest unit, on every miss of a cold build.
 export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root} CCACHE_NOHASHDIR=${CCACHE_NOHASHDIR:-1}
+export CCACHE_DEPEND=${CCACHE_DEPEND:-1}
 # Given on every configure, so a tree first configured with another compiler is reconfigured.
 clang_args=(-DCMAKE_CXX_COMPILER=clang++)
 label="acdplan tests"
