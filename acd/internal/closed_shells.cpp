@@ -44,7 +44,9 @@ int VolumeSign(const TriangleMesh& mesh, const std::vector<int>& faces) {
   const double bound = 2 * (10 + static_cast<double>(faces.size())) * u * magnitude;
   if (std::abs(sum) > bound) return sum > 0 ? 1 : -1;
   using Q = CGAL::Exact_rational;
-  auto exact = [&](int v, int k) { return Q(mesh.vertices(v, k)) - Q(origin(k)); };
+  // Returns a value: with GMP's C++ numbers, `Q - Q` is an expression template holding
+  // references to the two temporaries, which would dangle once the lambda returns.
+  auto exact = [&](int v, int k) -> Q { return Q(mesh.vertices(v, k)) - Q(origin(k)); };
   Q total = 0;
   for (const int f : faces) {
     Q p[3][3];

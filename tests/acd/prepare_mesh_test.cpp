@@ -171,6 +171,28 @@ TEST(PrepareMeshTest, OrientsAFarThinSlabOutward) {
   EXPECT_GT(MeshVolume(prepared.mesh), 0);
 }
 
+// Found through fuzz/fuzz_decompose3d: a tetrahedron of four lattice points that are coplanar
+// until rounded to doubles (volume about 2e-33; the floating-point sum cannot tell its sign, the
+// exact one decides). The exact sum read its differences through dangling references (GMP's
+// expression templates; ASan does not see into GMP, valgrind did), so the prepared orientation
+// changed from run to run. Checked in both orientations, each several times.
+TEST(PrepareMeshTest, OrientsASliverByItsExactVolumeSign) {
+  const double s = 1e-6;
+  const std::vector<Eigen::Vector3d> v{
+      {3 * s, 2 * s, 6 * s}, {8 * s, 9 * s, 0}, {4 * s, 3 * s, 6 * s}, {9 * s, 10 * s, 0}};
+  const TriangleMesh outward = MakeTriangleMesh(v, {{1, 0, 2}, {3, 1, 2}, {1, 3, 0}, {0, 3, 2}});
+  TriangleMesh inward = outward;
+  inward.triangles.col(1).swap(inward.triangles.col(2));
+  for (int run = 0; run < 8; ++run) {
+    const PreparedMesh kept = PrepareMesh(outward);
+    ASSERT_TRUE(kept.solid());
+    EXPECT_EQ(kept.mesh.triangles, outward.triangles) << "run " << run;
+    const PreparedMesh turned = PrepareMesh(inward);
+    ASSERT_TRUE(turned.solid());
+    EXPECT_EQ(turned.mesh.triangles, outward.triangles) << "run " << run;
+  }
+}
+
 TEST(PrepareMeshTest, DropsDegenerateAndDuplicateFaces) {
   TriangleMesh cube = AppendVertex(Cube(2), Eigen::Vector3d(0, -1, -1));  // Midpoint of 0-1.
   cube = AppendTriangle(cube, Eigen::Vector3i(0, 8, 1));                  // Collinear.
