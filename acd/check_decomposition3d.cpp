@@ -59,6 +59,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <string>
@@ -67,6 +68,7 @@
 #include <vector>
 
 #include "acd/convex_hull3d.h"
+#include "acd/internal/closed_shells.h"
 #include "acd/internal/exact_rounding.h"
 #include "acd/internal/in_plane_tolerance.h"
 #include "acd/internal/problem_list.h"
@@ -255,6 +257,15 @@ Eigen::Vector3d NewellNormal(const std::vector<Eigen::Vector3d>& polygon) {
   return n;
 }
 
+// The lengths of the faces' edges, an edge shared by two faces counted twice.
+double EdgeLengthSum(const TriangleMesh& mesh) {
+  double sum = 0.0;
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) sum += (Corner(mesh, f, (k + 1) % 3) - Corner(mesh, f, k)).norm();
+  }
+  return sum;
+}
+
 bool Near(double a, double b, double relative, double absolute) {
   return std::abs(a - b) <= relative * std::max(std::abs(a), std::abs(b)) + absolute;
 }
@@ -436,7 +447,10 @@ class Checker {
         problems_.Add(Name(i) + "mesh is not closed: " + fault);
         continue;
       }
-      if (!(volume > 0.0)) {
+      // The exact sign: a sliver's rounded volume may have either.
+      std::vector<int> faces(static_cast<size_t>(c.mesh.triangles.rows()));
+      std::iota(faces.begin(), faces.end(), 0);
+      if (internal::VolumeSign(c.mesh, faces) <= 0) {
         problems_.Add(Name(i) + "mesh is inward-oriented (volume " + Num(volume) + ")");
         continue;
       }
@@ -464,7 +478,10 @@ class Checker {
     }
     for (size_t p = 0; p < input_.parts.size(); ++p) {
       const double volume = MeshVolume(input_.parts[p]);
-      if (!Near(sums[p], volume, kVolumeRelative, 0.0)) {
+      // Besides the relative bound, a layer as thick as the distance tolerance over the part's
+      // surface: a near-flat part's volume is rounding noise, which no relative bound covers.
+      const double layer = parts_[p].tolerance * MeshArea(input_.parts[p]);
+      if (!Near(sums[p], volume, kVolumeRelative, layer)) {
         problems_.Add("part " + std::to_string(p) + ": component volumes sum to " + Num(sums[p]) +
                       ", the part's volume is " + Num(volume) +
                       (sums[p] < volume ? " (a gap)" : " (an overlap)"));
@@ -593,7 +610,10 @@ class Checker {
                       " faces are in no patch, e.g. the one at (" + Num((*first)[0][0]) + ", " +
                       Num((*first)[0][1]) + ", " + Num((*first)[0][2]) + ")");
       }
-      if (!Near(patch_area[p], part_area[p], kRelative, 0.0)) {
+      // Besides the relative bound, a band as wide as the distance tolerance along the part's
+      // edges: a needle face's area is rounding noise, which no relative bound covers.
+      const double band = parts_[p].tolerance * EdgeLengthSum(input_.parts[p]);
+      if (!Near(patch_area[p], part_area[p], kRelative, band)) {
         problems_.Add("part " + std::to_string(p) + ": patch areas sum to " + Num(patch_area[p]) +
                       ", the part's area is " + Num(part_area[p]));
       }

@@ -195,6 +195,53 @@ TEST(Decompose3d, APieceWhoseNearPlanesAllRoundInvalidIsStillCut) {
   EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
 }
 
+// Found by fuzz/fuzz_decompose3d (fuzz/corpus/decompose3d/regression-sliver-volume-noise.bin):
+// four points coplanar on a lattice of spacing 1e-6, not exactly coplanar once rounded to
+// doubles, so a valid tetrahedron of volume about 1e-33, nothing but rounding. Its one component
+// is the tetrahedron itself, whose volume, summed in another vertex order, came out 40% smaller,
+// and CheckDecomposition3d() reported a gap: its volume sum had only a relative bound.
+TEST(Decompose3d, ASliverWhoseVolumeIsRoundingNoisePassesTheCheck) {
+  const double s = 1e-6;
+  const std::vector<Eigen::Vector3d> v{
+      {3 * s, 2 * s, 6 * s}, {8 * s, 9 * s, 0}, {4 * s, 3 * s, 6 * s}, {9 * s, 10 * s, 0}};
+  const std::vector<Eigen::Vector3i> t{{1, 0, 2}, {3, 1, 2}, {1, 3, 0}, {0, 3, 2}};
+  const PreparedMesh prepared = PrepareMesh(MakeTriangleMesh(v, t), PrepareMeshOptions{});
+  ASSERT_TRUE(prepared.solid());
+  ASSERT_LT(MeshVolume(prepared.mesh), 1e-30);
+  Decompose3dOptions options;
+  options.tau = 0.02 * ReferenceRadius(prepared.mesh);
+  const Decomposition3d d = Decompose3d(prepared, options);
+  ASSERT_EQ(d.components.size(), 1u);
+  EXPECT_EQ(d.components[0].mesh.vertices.rows(), 4);
+  const DecompositionCheck check = CheckDecomposition3d(prepared, d);
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
+}
+
+// Found by fuzz/fuzz_decompose3d (fuzz/corpus/decompose3d/regression-needle-face-area-noise.bin):
+// a surface at coordinates near 1e31, repaired into eight parts, one of them a single needle
+// triangle whose area (1.4e45 against the part's squared size of 1e62) is rounding noise. Its
+// patch, the same triangle from another first vertex, measured 0, and CheckDecomposition3d()
+// reported that the patch areas did not sum to the part's: that sum had only a relative bound.
+TEST(Decompose3d, ANeedleFaceWhoseAreaIsRoundingNoisePassesTheCheck) {
+  std::vector<Eigen::Vector3d> v{{-1, -1, 4}, {7, 6, 1}, {2, 8, 1},  {8, 7, 0},
+                                 {3, 9, 2},   {9, 8, 3}, {4, 10, 3}, {10, 9, 4},
+                                 {5, 0, 0},   {0, 6, 8}, {0, 0, 0},  {16, 0, 0}};
+  for (Eigen::Vector3d& p : v) p *= 1e30;
+  const std::vector<Eigen::Vector3i> t{
+      {4, 5, 0}, {4, 0, 4}, {4, 0, 4}, {4, 0, 0},  {10, 11, 0}, {1, 7, 0},  {7, 6, 1},   {2, 8, 1},
+      {8, 7, 2}, {3, 9, 2}, {9, 8, 3}, {4, 10, 3}, {10, 9, 4},  {5, 11, 4}, {11, 10, 5}, {0, 6, 5}};
+  PrepareMeshOptions repair;
+  repair.repair = true;
+  const PreparedMesh prepared = PrepareMesh(MakeTriangleMesh(v, t), repair);
+  ASSERT_FALSE(prepared.solid());
+  Decompose3dOptions options;
+  options.tau = 0.2 * ReferenceRadius(prepared.mesh);
+  options.surface = true;
+  const Decomposition3d d = Decompose3d(prepared, options);
+  const DecompositionCheck check = CheckDecomposition3d(prepared, d);
+  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
+}
+
 TEST(Decompose3d, SameInputSameBytes) {
   const TriangleMesh torus = Torus(2.0, 1.0, 16, 8);
   const Decomposition3d a = Solve(torus, 0.3), b = Solve(torus, 0.3);
