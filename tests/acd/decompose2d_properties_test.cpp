@@ -618,6 +618,36 @@ TEST(Decompose2dTest, ComponentsCutOnAVeryLongEdgeTileTheInput) {
   ExpectEveryMeasureDecomposes(inputs, 0.05);
 }
 
+// Found by fuzz/fuzz_decompose2d (a polygon made valid by RepairPolygon(), kept as
+// fuzz/corpus/decompose2d/regression-needle-cut-point-sliver.wkt): the edge from (17, 18 - 4e-15)
+// up to (18, 5.6e21) passes 3.6e-22 from the point (17, 20), where a cut meets the diagonal x = 17
+// that closes off the needle. The exact areas of the components sum to the input's, but
+// CheckDecomposition() took (17, 20) for a point on that edge and added the sliver of the chain
+// through it, an area of 1 (half the edge's length times 3.6e-22): the components' boundary never
+// follows the edge there. A point now counts only where a component's edge runs from it along
+// the input edge. The same shape with other spikes, too.
+TEST(Decompose2dTest, PointsNearANeedleEdgeAddNoSliver) {
+  std::vector<std::vector<Polygon2d>> inputs = {
+      FuzzRegressionInput("regression-needle-cut-point-sliver.wkt")};
+  for (const double far : {1e15, 1e30}) {
+    inputs.push_back(PreparePolygons({{{14, 19},
+                                       {16, 19},
+                                       {16, 18},
+                                       {15, 17},
+                                       {14.913043478260869, 16.60869565217391},
+                                       {17, 18},
+                                       {17, 17.999999999999996},
+                                       {18, far},
+                                       {17, 22},
+                                       {17, 21},
+                                       {16, 2051},
+                                       {15, 20}},
+                                      {}},
+                                     "spike"));
+  }
+  ExpectEveryMeasureDecomposes(inputs, 0.05);
+}
+
 // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-underflowing-cut-length.wkt):
 // in (1 0, 9 90, 1 2, 1 1e-194, 0 0) the only cut that resolves the notch (1, 1e-194) goes to
 // the vertex (1, 0) straight below it, 1e-194 away, whose squared length underflows to 0: the
