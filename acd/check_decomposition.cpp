@@ -44,7 +44,6 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <set>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -815,7 +814,34 @@ class Checker {
           best < 0 ? CGAL::SMALLER : compare(q, s, q, segment(best));
       if (order == CGAL::SMALLER || (order == CGAL::EQUAL && e < best)) best = e;
     });
-    // The points on each edge, in order along it.
+    // Per constructed point: whether a component's edge runs straight through it (within
+    // OnEdgeNoise(), not ending there). That edge is not split at the point, so the components'
+    // boundary does not bend there: a cut's point 3.6e-22 from an edge 5.6e21 long, on the
+    // diagonal that closes off the needle, would add a sliver of area 1.
+    std::vector<char> passed_through(constructed.size(), 0);
+    std::vector<IdBox> component_edge_boxes, near_points;
+    for (int e = 0; e < static_cast<int>(edges_.size()); ++e) {
+      const EdgeRef& edge = edges_[e];
+      if (!IsComponent(edge.owner)) continue;
+      const double pad =
+          kHullNoise * std::max({MaxAbs(edge.a), MaxAbs(edge.b), MaxAbs(edge.b - edge.a), 1.0});
+      component_edge_boxes.push_back(SegmentBox(edge.a, edge.b, e, pad));
+    }
+    for (int i = 0; i < static_cast<int>(constructed.size()); ++i) {
+      if (nearest[i] >= 0) {
+        near_points.push_back(SegmentBox(constructed[i].second, constructed[i].second, i));
+      }
+    }
+    internal::ForEachOverlap(
+        std::move(component_edge_boxes), std::move(near_points), [&](int e, int i) {
+          const EdgeRef& edge = edges_[e];
+          const Point2d& p = constructed[i].second;
+          if (p == edge.a || p == edge.b || SourceOf(edge.owner) != constructed[i].first) return;
+          const double noise = OnEdgeNoise(edge, p);
+          const auto compare = Kernel().compare_squared_distance_2_object();
+          if (compare(ToCgal(p), segment(e), noise * noise) != CGAL::LARGER) passed_through[i] = 1;
+        });
+    // The points on each edge that it is split at, in order along it.
     struct OnEdge {
       int edge;
       double along;  // Parameter along the edge, 0 at its start and 1 at its end.
@@ -825,44 +851,22 @@ class Checker {
     std::vector<OnEdge> on_edges;
     for (size_t i = 0; i < constructed.size(); ++i) {
       const int e = nearest[i];
-      if (e < 0) continue;
+      if (e < 0 || passed_through[i]) continue;
       const Point2d ab = edges_[e].b - edges_[e].a;
       const Point2d& p = constructed[i].second;
       on_edges.push_back({e, (p - edges_[e].a).dot(ab) / ab.squaredNorm(), p});
     }
     std::sort(on_edges.begin(), on_edges.end(),
               [](const OnEdge& x, const OnEdge& y) { return x.Key() < y.Key(); });
-    // A point splits its edge only where a component's edge runs from it to another point of
-    // the chain (an end of the edge or another point on it). A point constructed elsewhere may
-    // lie within noise of a needle's edge without the components' boundary following the edge
-    // there: a cut's point 3.6e-22 from an edge 5.6e21 long would add a sliver of area 1.
-    using PointKey = std::pair<double, double>;
-    std::map<PointKey, std::vector<PointKey>> component_neighbours;
-    for (const EdgeRef& edge : edges_) {
-      if (!IsComponent(edge.owner)) continue;
-      const PointKey a{edge.a.x(), edge.a.y()}, b{edge.b.x(), edge.b.y()};
-      component_neighbours[a].push_back(b);
-      component_neighbours[b].push_back(a);
-    }
     std::vector<double> slivers(input_.size(), 0.0);
     std::map<std::pair<int, int>, bool> interior_left;  // Per (owner, ring) met.
     for (size_t first = 0; first < on_edges.size();) {
       const int e = on_edges[first].edge;
       const EdgeRef& edge = edges_[e];
-      size_t last = first;
-      std::set<PointKey> on_chain = {{edge.a.x(), edge.a.y()}, {edge.b.x(), edge.b.y()}};
-      for (; last < on_edges.size() && on_edges[last].edge == e; ++last) {
-        on_chain.insert({on_edges[last].point.x(), on_edges[last].point.y()});
-      }
       Ring2d chain = {edge.a};
-      for (size_t i = first; i < last; ++i) {
-        const Point2d& p = on_edges[i].point;
-        const auto it = component_neighbours.find({p.x(), p.y()});
-        if (it != component_neighbours.end() &&
-            std::any_of(it->second.begin(), it->second.end(),
-                        [&](const PointKey& q) { return on_chain.count(q) > 0; })) {
-          chain.push_back(p);
-        }
+      size_t last = first;
+      for (; last < on_edges.size() && on_edges[last].edge == e; ++last) {
+        chain.push_back(on_edges[last].point);
       }
       chain.push_back(edge.b);
       const auto [ring, unseen] = interior_left.try_emplace({edge.owner, edge.ring}, false);

@@ -618,17 +618,19 @@ TEST(Decompose2dTest, ComponentsCutOnAVeryLongEdgeTileTheInput) {
   ExpectEveryMeasureDecomposes(inputs, 0.05);
 }
 
-// Found by fuzz/fuzz_decompose2d (a polygon made valid by RepairPolygon(), kept as
-// fuzz/corpus/decompose2d/regression-needle-cut-point-sliver.wkt): the edge from (17, 18 - 4e-15)
-// up to (18, 5.6e21) passes 3.6e-22 from the point (17, 20), where a cut meets the diagonal x = 17
-// that closes off the needle. The exact areas of the components sum to the input's, but
-// CheckDecomposition() took (17, 20) for a point on that edge and added the sliver of the chain
-// through it, an area of 1 (half the edge's length times 3.6e-22): the components' boundary never
-// follows the edge there. A point now counts only where a component's edge runs from it along
-// the input edge. The same shape with other spikes, too.
+// Found by fuzz/fuzz_decompose2d (polygons made valid by RepairPolygon(), kept as
+// fuzz/corpus/decompose2d/regression-needle-cut-point-sliver.wkt and, found by CI's fuzz run from
+// that seed, regression-needle-diagonal-t-junction.wkt): the edge from (17, 18 - 4e-15) up to
+// (18, 5.6e21) passes 3.6e-22 from the point (17, 20), where a cut meets the diagonal x = 17 that
+// closes off the needle. The exact areas of the components sum to the input's, but
+// CheckDecomposition() took (17, 20) for a point the edge is split at and added the sliver of the
+// chain through it, an area of 1 (half the edge's length times 3.6e-22). The needle's component
+// keeps the edge whole and its diagonal runs straight through (17, 20): a point some component's
+// edge runs through now splits no input edge. The same shape with other spikes, too.
 TEST(Decompose2dTest, PointsNearANeedleEdgeAddNoSliver) {
   std::vector<std::vector<Polygon2d>> inputs = {
-      FuzzRegressionInput("regression-needle-cut-point-sliver.wkt")};
+      FuzzRegressionInput("regression-needle-cut-point-sliver.wkt"),
+      FuzzRegressionInput("regression-needle-diagonal-t-junction.wkt")};
   for (const double far : {1e15, 1e30}) {
     inputs.push_back(PreparePolygons({{{14, 19},
                                        {16, 19},

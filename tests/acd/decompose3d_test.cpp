@@ -164,6 +164,28 @@ TEST(Decompose3d, HugeCoordinatesDecomposeAsAtUnitSize) {
   }
 }
 
+// What fuzz/fuzz_decompose3d does with a decoded input: PrepareMesh() (repairing or not), the
+// solid ACD of a solid, else the surface ACD, at tau_rel x the reference radius, and the check.
+struct FuzzedRun {
+  PreparedMesh prepared;
+  Decomposition3d d;
+  DecompositionCheck check;
+};
+FuzzedRun RunAsTheFuzzerDoes(const std::vector<Eigen::Vector3d>& vertices,
+                             const std::vector<Eigen::Vector3i>& triangles, bool repair,
+                             double tau_rel) {
+  FuzzedRun run;
+  PrepareMeshOptions prepare;
+  prepare.repair = repair;
+  run.prepared = PrepareMesh(MakeTriangleMesh(vertices, triangles), prepare);
+  Decompose3dOptions options;
+  options.tau = tau_rel * ReferenceRadius(run.prepared.mesh);
+  options.surface = !run.prepared.solid();
+  run.d = Decompose3d(run.prepared, options);
+  run.check = CheckDecomposition3d(run.prepared, run.d);
+  return run;
+}
+
 // Found by fuzz/fuzz_decompose3d (its input decoded here; not a seed of its corpus, as it takes
 // longer under the sanitizers than the fuzz step's 10 s limit): two overlapping, warped boxes,
 // united by repair. One piece, 0.31 deep against tau 0.12, had no plane among its ranked ones,
@@ -183,16 +205,10 @@ TEST(Decompose3d, APieceWhoseNearPlanesAllRoundInvalidIsStillCut) {
       {1, 2, 6},   {1, 6, 5},   {2, 3, 7},    {2, 7, 6},    {3, 0, 4},   {3, 4, 7},
       {8, 10, 9},  {8, 11, 10}, {12, 13, 14}, {12, 14, 15}, {6, 9, 13},  {8, 13, 12},
       {9, 10, 14}, {9, 14, 13}, {15, 4, 10},  {10, 15, 14}, {11, 8, 12}, {11, 12, 15}};
-  PrepareMeshOptions repair;
-  repair.repair = true;
-  const PreparedMesh prepared = PrepareMesh(MakeTriangleMesh(v, t), repair);
-  ASSERT_TRUE(prepared.solid());
-  Decompose3dOptions options;
-  options.tau = 0.02 * ReferenceRadius(prepared.mesh);
-  const Decomposition3d d = Decompose3d(prepared, options);
-  EXPECT_LE(d.stats.max_concavity, options.tau);
-  const DecompositionCheck check = CheckDecomposition3d(prepared, d);
-  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
+  const FuzzedRun run = RunAsTheFuzzerDoes(v, t, true, 0.02);
+  ASSERT_TRUE(run.prepared.solid());
+  EXPECT_LE(run.d.stats.max_concavity, run.d.tau);
+  EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
 }
 
 // Found by fuzz/fuzz_decompose3d (fuzz/corpus/decompose3d/regression-sliver-volume-noise.bin):
@@ -205,16 +221,12 @@ TEST(Decompose3d, ASliverWhoseVolumeIsRoundingNoisePassesTheCheck) {
   const std::vector<Eigen::Vector3d> v{
       {3 * s, 2 * s, 6 * s}, {8 * s, 9 * s, 0}, {4 * s, 3 * s, 6 * s}, {9 * s, 10 * s, 0}};
   const std::vector<Eigen::Vector3i> t{{1, 0, 2}, {3, 1, 2}, {1, 3, 0}, {0, 3, 2}};
-  const PreparedMesh prepared = PrepareMesh(MakeTriangleMesh(v, t), PrepareMeshOptions{});
-  ASSERT_TRUE(prepared.solid());
-  ASSERT_LT(MeshVolume(prepared.mesh), 1e-30);
-  Decompose3dOptions options;
-  options.tau = 0.02 * ReferenceRadius(prepared.mesh);
-  const Decomposition3d d = Decompose3d(prepared, options);
-  ASSERT_EQ(d.components.size(), 1u);
-  EXPECT_EQ(d.components[0].mesh.vertices.rows(), 4);
-  const DecompositionCheck check = CheckDecomposition3d(prepared, d);
-  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
+  const FuzzedRun run = RunAsTheFuzzerDoes(v, t, false, 0.02);
+  ASSERT_TRUE(run.prepared.solid());
+  ASSERT_LT(MeshVolume(run.prepared.mesh), 1e-30);
+  ASSERT_EQ(run.d.components.size(), 1u);
+  EXPECT_EQ(run.d.components[0].mesh.vertices.rows(), 4);
+  EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
 }
 
 // Found by fuzz/fuzz_decompose3d (fuzz/corpus/decompose3d/regression-needle-face-area-noise.bin):
@@ -230,16 +242,9 @@ TEST(Decompose3d, ANeedleFaceWhoseAreaIsRoundingNoisePassesTheCheck) {
   const std::vector<Eigen::Vector3i> t{
       {4, 5, 0}, {4, 0, 4}, {4, 0, 4}, {4, 0, 0},  {10, 11, 0}, {1, 7, 0},  {7, 6, 1},   {2, 8, 1},
       {8, 7, 2}, {3, 9, 2}, {9, 8, 3}, {4, 10, 3}, {10, 9, 4},  {5, 11, 4}, {11, 10, 5}, {0, 6, 5}};
-  PrepareMeshOptions repair;
-  repair.repair = true;
-  const PreparedMesh prepared = PrepareMesh(MakeTriangleMesh(v, t), repair);
-  ASSERT_FALSE(prepared.solid());
-  Decompose3dOptions options;
-  options.tau = 0.2 * ReferenceRadius(prepared.mesh);
-  options.surface = true;
-  const Decomposition3d d = Decompose3d(prepared, options);
-  const DecompositionCheck check = CheckDecomposition3d(prepared, d);
-  EXPECT_TRUE(check.ok()) << acdplan::test::ProblemLines(check);
+  const FuzzedRun run = RunAsTheFuzzerDoes(v, t, true, 0.2);
+  ASSERT_FALSE(run.prepared.solid());
+  EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
 }
 
 TEST(Decompose3d, SameInputSameBytes) {
