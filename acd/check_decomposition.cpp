@@ -814,18 +814,17 @@ class Checker {
           best < 0 ? CGAL::SMALLER : compare(q, s, q, segment(best));
       if (order == CGAL::SMALLER || (order == CGAL::EQUAL && e < best)) best = e;
     });
-    // Per constructed point: whether a component's edge runs straight through it (within
-    // OnEdgeNoise(), not ending there). That edge is not split at the point, so the components'
-    // boundary does not bend there: a cut's point 3.6e-22 from an edge 5.6e21 long, on the
-    // diagonal that closes off the needle, would add a sliver of area 1.
+    // Per constructed point: whether a component's edge runs straight through it (exactly; not
+    // within noise, which a long edge's is wide enough to take in the cut ends beside it). That
+    // edge is not split at the point, so the components' boundary does not bend there: a cut's
+    // point 3.6e-22 from an edge 5.6e21 long, on the diagonal that closes off the needle, would
+    // add a sliver of area 1.
     std::vector<char> passed_through(constructed.size(), 0);
     std::vector<IdBox> component_edge_boxes, near_points;
     for (int e = 0; e < static_cast<int>(edges_.size()); ++e) {
       const EdgeRef& edge = edges_[e];
       if (!IsComponent(edge.owner)) continue;
-      const double pad =
-          kHullNoise * std::max({MaxAbs(edge.a), MaxAbs(edge.b), MaxAbs(edge.b - edge.a), 1.0});
-      component_edge_boxes.push_back(SegmentBox(edge.a, edge.b, e, pad));
+      component_edge_boxes.push_back(SegmentBox(edge.a, edge.b, e));
     }
     for (int i = 0; i < static_cast<int>(constructed.size()); ++i) {
       if (nearest[i] >= 0) {
@@ -837,9 +836,7 @@ class Checker {
           const EdgeRef& edge = edges_[e];
           const Point2d& p = constructed[i].second;
           if (p == edge.a || p == edge.b || SourceOf(edge.owner) != constructed[i].first) return;
-          const double noise = OnEdgeNoise(edge, p);
-          const auto compare = Kernel().compare_squared_distance_2_object();
-          if (compare(ToCgal(p), segment(e), noise * noise) != CGAL::LARGER) passed_through[i] = 1;
+          if (segment(e).has_on(ToCgal(p))) passed_through[i] = 1;
         });
     // The points on each edge that it is split at, in order along it.
     struct OnEdge {

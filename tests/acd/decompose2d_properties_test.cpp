@@ -615,6 +615,11 @@ TEST(Decompose2dTest, ComponentsCutOnAVeryLongEdgeTileTheInput) {
   for (const double far : {1e4, 1557048468.0, 1e12}) {
     inputs.push_back(PreparePolygons({{{0, 0}, {1, 4}, {far, 199}, {0, 4}}, {}}, "wedge"));
   }
+  // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-long-edge-wide-noise.wkt,
+  // repaired into this wedge) while the test of PointsNearANeedleEdgeAddNoSliver for a point a
+  // component's edge runs through allowed that edge's noise, which along an edge 5e12 long took in
+  // the cut end beside it: its sliver was dropped.
+  inputs.push_back(PreparePolygons({{{0, 0}, {1, 4}, {5175040148996, 9}, {0, 4}}, {}}, "wedge"));
   ExpectEveryMeasureDecomposes(inputs, 0.05);
 }
 
