@@ -171,13 +171,11 @@ struct FuzzedRun {
   Decomposition3d d;
   DecompositionCheck check;
 };
-FuzzedRun RunAsTheFuzzerDoes(const std::vector<Eigen::Vector3d>& vertices,
-                             const std::vector<Eigen::Vector3i>& triangles, bool repair,
-                             double tau_rel) {
+FuzzedRun RunAsTheFuzzerDoes(const TriangleMesh& mesh, bool repair, double tau_rel) {
   FuzzedRun run;
   PrepareMeshOptions prepare;
   prepare.repair = repair;
-  run.prepared = PrepareMesh(MakeTriangleMesh(vertices, triangles), prepare);
+  run.prepared = PrepareMesh(mesh, prepare);
   Decompose3dOptions options;
   options.tau = tau_rel * ReferenceRadius(run.prepared.mesh);
   options.surface = !run.prepared.solid();
@@ -205,23 +203,18 @@ TEST(Decompose3d, APieceWhoseNearPlanesAllRoundInvalidIsStillCut) {
       {1, 2, 6},   {1, 6, 5},   {2, 3, 7},    {2, 7, 6},    {3, 0, 4},   {3, 4, 7},
       {8, 10, 9},  {8, 11, 10}, {12, 13, 14}, {12, 14, 15}, {6, 9, 13},  {8, 13, 12},
       {9, 10, 14}, {9, 14, 13}, {15, 4, 10},  {10, 15, 14}, {11, 8, 12}, {11, 12, 15}};
-  const FuzzedRun run = RunAsTheFuzzerDoes(v, t, true, 0.02);
+  const FuzzedRun run = RunAsTheFuzzerDoes(MakeTriangleMesh(v, t), true, 0.02);
   ASSERT_TRUE(run.prepared.solid());
   EXPECT_LE(run.d.stats.max_concavity, run.d.tau);
   EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
 }
 
 // Found by fuzz/fuzz_decompose3d (fuzz/corpus/decompose3d/regression-sliver-volume-noise.bin):
-// four points coplanar on a lattice of spacing 1e-6, not exactly coplanar once rounded to
-// doubles, so a valid tetrahedron of volume about 1e-33, nothing but rounding. Its one component
+// LatticeSliver(), a valid tetrahedron whose volume is nothing but rounding. Its one component
 // is the tetrahedron itself, whose volume, summed in another vertex order, came out 40% smaller,
 // and CheckDecomposition3d() reported a gap: its volume sum had only a relative bound.
 TEST(Decompose3d, ASliverWhoseVolumeIsRoundingNoisePassesTheCheck) {
-  const double s = 1e-6;
-  const std::vector<Eigen::Vector3d> v{
-      {3 * s, 2 * s, 6 * s}, {8 * s, 9 * s, 0}, {4 * s, 3 * s, 6 * s}, {9 * s, 10 * s, 0}};
-  const std::vector<Eigen::Vector3i> t{{1, 0, 2}, {3, 1, 2}, {1, 3, 0}, {0, 3, 2}};
-  const FuzzedRun run = RunAsTheFuzzerDoes(v, t, false, 0.02);
+  const FuzzedRun run = RunAsTheFuzzerDoes(test::LatticeSliver(), false, 0.02);
   ASSERT_TRUE(run.prepared.solid());
   ASSERT_LT(MeshVolume(run.prepared.mesh), 1e-30);
   ASSERT_EQ(run.d.components.size(), 1u);
@@ -242,7 +235,7 @@ TEST(Decompose3d, ANeedleFaceWhoseAreaIsRoundingNoisePassesTheCheck) {
   const std::vector<Eigen::Vector3i> t{
       {4, 5, 0}, {4, 0, 4}, {4, 0, 4}, {4, 0, 0},  {10, 11, 0}, {1, 7, 0},  {7, 6, 1},   {2, 8, 1},
       {8, 7, 2}, {3, 9, 2}, {9, 8, 3}, {4, 10, 3}, {10, 9, 4},  {5, 11, 4}, {11, 10, 5}, {0, 6, 5}};
-  const FuzzedRun run = RunAsTheFuzzerDoes(v, t, true, 0.2);
+  const FuzzedRun run = RunAsTheFuzzerDoes(MakeTriangleMesh(v, t), true, 0.2);
   ASSERT_FALSE(run.prepared.solid());
   EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
 }

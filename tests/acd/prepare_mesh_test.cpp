@@ -177,10 +177,7 @@ TEST(PrepareMeshTest, OrientsAFarThinSlabOutward) {
 // expression templates; ASan does not see into GMP, valgrind did), so the prepared orientation
 // changed from run to run. Checked in both orientations, each several times.
 TEST(PrepareMeshTest, OrientsASliverByItsExactVolumeSign) {
-  const double s = 1e-6;
-  const std::vector<Eigen::Vector3d> v{
-      {3 * s, 2 * s, 6 * s}, {8 * s, 9 * s, 0}, {4 * s, 3 * s, 6 * s}, {9 * s, 10 * s, 0}};
-  const TriangleMesh outward = MakeTriangleMesh(v, {{1, 0, 2}, {3, 1, 2}, {1, 3, 0}, {0, 3, 2}});
+  const TriangleMesh outward = test::LatticeSliver();
   TriangleMesh inward = outward;
   inward.triangles.col(1).swap(inward.triangles.col(2));
   for (int run = 0; run < 8; ++run) {

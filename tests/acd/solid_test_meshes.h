@@ -50,6 +50,15 @@ inline TriangleMesh UBlock() {
   return Extrude({{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 1.0);
 }
 
+/// A tetrahedron of four points coplanar on a lattice of spacing 1e-6 but not once rounded to
+/// doubles: a valid solid of volume about 2e-33, all of it rounding. Outward by the exact sign.
+inline TriangleMesh LatticeSliver() {
+  const double s = 1e-6;
+  return MakeTriangleMesh(
+      {{3 * s, 2 * s, 6 * s}, {8 * s, 9 * s, 0}, {4 * s, 3 * s, 6 * s}, {9 * s, 10 * s, 0}},
+      {{1, 0, 2}, {3, 1, 2}, {1, 3, 0}, {0, 3, 2}});
+}
+
 /// An axis-aligned box from `lo` to `hi`; outward, or inward (a cavity shell) if `inward`.
 inline TriangleMesh Box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, bool inward = false) {
   TriangleMesh cube = Cube(1.0);
