@@ -84,10 +84,19 @@ export UBSAN_OPTIONS="print_stacktrace=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 # $ACDPLAN_FUZZ_RUNS: that many inputs per target from seed 1 (reproducible, for CI) instead
 # of SECONDS of fuzzing. A seed alone does not make a run repeat: libFuzzer rereads the corpus
 # folder every second (re-running the seeds it did not keep, at times the clock decides), and
-# turns the operands of comparisons into bytes to insert, some of them stack addresses, which
-# ASLR moves; both are off here (checked: the same inputs in the same order, run after run).
+# turns the operands of comparisons into bytes to insert, some of them stack addresses; both
+# are off here. Where ASLR can be turned off for the runs, it is: code that orders or hashes
+# heap addresses (yaml-cpp's node memory, CGAL's constraint sets) takes other branches when the
+# allocator's regions move, and those branches are coverage. Checked on the scenario reader: the
+# same inputs in the same order whatever the environment's size, stack limit or corpus path.
+launch=()
 if [[ -n ${ACDPLAN_FUZZ_RUNS:-} ]]; then
   budget=(-runs="$ACDPLAN_FUZZ_RUNS" -seed=1 -reload=0 -use_cmp=0)
+  if setarch "$(uname -m)" -R true 2>/dev/null; then
+    launch=(setarch "$(uname -m)" -R)
+  else
+    echo "fuzz.sh: cannot turn ASLR off here (setarch -R); runs may differ from other machines'"
+  fi
 else
   budget=(-max_total_time="$seconds")
 fi
@@ -107,7 +116,7 @@ run_target() {
   rm -f "$artifacts"/* "$result"
   local t0=$SECONDS status
   set +e
-  "$build_dir/fuzz/fuzz_$t" "${budget[@]}" -timeout=10 -rss_limit_mb=2048 \
+  "${launch[@]}" "$build_dir/fuzz/fuzz_$t" "${budget[@]}" -timeout=10 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus" >"$log" 2>&1
   status=$?
   set -e
