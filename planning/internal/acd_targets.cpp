@@ -7,6 +7,15 @@
 
 namespace acdplan::planning::internal {
 
+double AcrossAngle(const Eigen::Vector2d& d) { return std::atan2(d.y(), d.x()) + M_PI / 2; }
+
+double AlignedYaw(RandomEngine& rng, double across, const AcdSamplerOptions& options) {
+  const double flip = UniformIndex(rng, 2) ? M_PI : 0.0;
+  const double yaw =
+      across - options.long_axis + flip + options.aligned_jitter * StandardNormal(rng);
+  return std::remainder(yaw, 2 * M_PI);
+}
+
 AcdTargets::AcdTargets(const acd::Decomposition2d& decomposition, const AcdSamplerOptions& options)
     : options_(options) {
   CheckAcdSamplerOptions(options);
@@ -40,7 +49,7 @@ AcdTargets::AcdTargets(const acd::Decomposition2d& decomposition, const AcdSampl
     // sampling is weakest (Ch. VI.C); capped so a sliver cut cannot take every sample.
     target.weight = options.opening_weight * std::min(mean_length / length, options.max_narrowness);
     target.opening = true;
-    target.across = std::atan2(d.y(), d.x()) + M_PI / 2;
+    target.across = AcrossAngle(d);
     targets_.push_back(target);
   }
   double sum = 0;
@@ -57,10 +66,7 @@ AcdDraw AcdTargets::DrawAround(RandomEngine& rng, const AcdTarget& target) const
   draw.position = target.position + target.sigma * Eigen::Vector2d(dx, dy);
   if (target.opening && options_.orientation == AcdOrientation::kAligned) {
     draw.has_yaw = true;
-    const double flip = UniformIndex(rng, 2) ? M_PI : 0.0;
-    const double yaw =
-        target.across - options_.long_axis + flip + options_.aligned_jitter * StandardNormal(rng);
-    draw.yaw = std::remainder(yaw, 2 * M_PI);
+    draw.yaw = AlignedYaw(rng, target.across, options_);
   }
   return draw;
 }

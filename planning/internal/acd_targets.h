@@ -28,6 +28,13 @@ struct AcdDraw {
   double yaw = 0.0;
 };
 
+/// The angle of the normal of an opening running along `d` [rad]: AcdTarget::across.
+double AcrossAngle(const Eigen::Vector2d& d);
+
+/// A yaw that turns the robot's long axis across an opening whose normal is at `across`, either
+/// way round, jittered by options.aligned_jitter (AcdOrientation::kAligned); in [-pi, pi].
+double AlignedYaw(RandomEngine& rng, double across, const AcdSamplerOptions& options);
+
 /// The targets of `decomposition` under `options` (immutable; shared between samplers).
 class AcdTargets {
  public:

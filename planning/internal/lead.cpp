@@ -197,7 +197,7 @@ LeadDistribution::LeadDistribution(const acd::Decomposition2d& decomposition,
     target.position = 0.5 * (opening.a + opening.b);
     target.sigma = sampler_options.opening_spread * d.norm();
     target.opening = true;
-    target.across = std::atan2(d.y(), d.x()) + M_PI / 2;
+    target.across = AcrossAngle(d);
     openings_.push_back(target);
   }
 
@@ -248,10 +248,7 @@ AcdDraw LeadDistribution::Draw(RandomEngine& rng, int level, double pick_u, int*
   if (options_.orientation == AcdOrientation::kAligned) {
     // The robot's long axis across the opening, either way round (as AcdTargets).
     draw.has_yaw = true;
-    const double flip = UniformIndex(rng, 2) ? M_PI : 0.0;
-    const double yaw =
-        target.across - options_.long_axis + flip + options_.aligned_jitter * StandardNormal(rng);
-    draw.yaw = std::remainder(yaw, 2 * M_PI);
+    draw.yaw = AlignedYaw(rng, target.across, options_);
   }
   if (part) *part = -1 - chosen.index;
   return draw;

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "planning/internal/acd_targets3d.h"
+
 namespace acdplan::planning::internal {
 namespace ob = ompl::base;
 
@@ -52,14 +54,6 @@ int Coordinates(SpaceKind kind, ob::State* state, double* out[3]) {
 }
 
 double Clamp(double x, double low, double high) { return std::min(std::max(x, low), high); }
-
-/// Uniform random unit quaternion (Shoemake).
-Eigen::Quaterniond RandomRotation(RandomEngine& rng) {
-  const double u1 = UniformReal(rng, 0, 1), u2 = UniformReal(rng, 0, 2 * M_PI),
-               u3 = UniformReal(rng, 0, 2 * M_PI);
-  const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-  return Eigen::Quaterniond(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2), b * std::sin(u3));
-}
 
 Eigen::Quaterniond GetRotation(const ob::State* state) {
   const auto& r = state->as<ob::SE3StateSpace::StateType>()->rotation();
@@ -110,7 +104,7 @@ void SampleUniform(SpaceKind kind, const ob::StateSpace* space, ob::State* state
   if (kind == SpaceKind::kSE2) {
     state->as<ob::SE2StateSpace::StateType>()->setYaw(UniformReal(rng, -M_PI, M_PI));
   } else if (kind == SpaceKind::kSE3) {
-    SetRotation(state, RandomRotation(rng));
+    SetRotation(state, UniformRotation(rng));
   }
 }
 
@@ -132,7 +126,7 @@ bool SetFromDraw(SpaceKind kind, const ob::StateSpace* space, const AcdDraw& dra
   } else if (kind == SpaceKind::kSE3) {
     SetRotation(state, draw.has_yaw
                            ? Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()))
-                           : RandomRotation(rng));
+                           : UniformRotation(rng));
   }
   return true;
 }
