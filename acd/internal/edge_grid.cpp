@@ -7,18 +7,28 @@
 namespace acdplan::acd::internal {
 
 EdgeGrid::EdgeGrid(const Polygon2d& polygon) {
-  Point2d lower = polygon.outer.front(), upper = polygon.outer.front();
   size_t total = polygon.outer.size();
   for (const Ring2d& hole : polygon.holes) total += hole.size();
-  edges_.reserve(total);
+  // Stores through a local pointer and bounds in scalars: with push_back() the compiler reloaded
+  // the ring's size and the vector's end after every store (they might alias), which took a
+  // third of the build on neuron.poly.
+  edges_.resize(total);
+  double x_lo = polygon.outer.front().x(), x_hi = x_lo;
+  double y_lo = polygon.outer.front().y(), y_hi = y_lo;
+  Edge* edge = edges_.data();
   for (int ring = -1; ring < static_cast<int>(polygon.holes.size()); ++ring) {
     const Ring2d& points = ring < 0 ? polygon.outer : polygon.holes[ring];
-    for (int i = 0; i < static_cast<int>(points.size()); ++i) {
-      edges_.push_back({ring, i});
-      lower = lower.cwiseMin(points[i]);
-      upper = upper.cwiseMax(points[i]);
+    const int n = static_cast<int>(points.size());
+    for (int i = 0; i < n; ++i) {
+      *edge++ = {ring, i};
+      const double x = points[i].x(), y = points[i].y();
+      x_lo = std::min(x_lo, x);
+      x_hi = std::max(x_hi, x);
+      y_lo = std::min(y_lo, y);
+      y_hi = std::max(y_hi, y);
     }
   }
+  const Point2d lower(x_lo, y_lo), upper(x_hi, y_hi);
   magnitude_ = std::max(lower.cwiseAbs().maxCoeff(), upper.cwiseAbs().maxCoeff());
   const Point2d extent = upper - lower;
   const double edge_count = static_cast<double>(edges_.size());
