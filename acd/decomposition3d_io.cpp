@@ -41,7 +41,6 @@ Json MeshToJson(const TriangleMesh& mesh) {
 }
 
 /// A number for the caption and tooltips: short.
-std::string Short(double v) { return FormatSignificant(v, 4); }
 
 /// The k-th component's colour as RGB in [0, 1] (sRGB), from the same table as the 2D
 /// pictures (base/svg.h ComponentFill), so a component has one colour in every output.
@@ -234,8 +233,7 @@ class GlbBuilder {
 struct View {
   Eigen::Vector3d toward_viewer, right, up, light;
   View() {
-    const double pi = std::acos(-1.0);
-    const double azimuth = 35.0 * pi / 180.0, elevation = 25.0 * pi / 180.0;
+    const double azimuth = 35.0 * M_PI / 180.0, elevation = 25.0 * M_PI / 180.0;
     toward_viewer = Eigen::Vector3d(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
                                     std::cos(elevation) * std::cos(azimuth));
     right = Eigen::Vector3d::UnitY().cross(toward_viewer).normalized();
@@ -609,15 +607,16 @@ std::string Decomposition3dToSvg(const Decomposition3d& decomposition,
   const DecompositionStats3d& stats = decomposition.stats;
   std::vector<std::string> caption;
   caption.push_back(labels.input.empty() ? std::string("(unnamed input)") : labels.input);
-  std::string line = "tau " + Short(decomposition.tau);
-  if (labels.tau_rel >= 0) line += " (tau_rel " + Short(labels.tau_rel) + ")";
+  std::string line = "tau " + FormatSignificant(decomposition.tau, 4);
+  if (labels.tau_rel >= 0) line += " (tau_rel " + FormatSignificant(labels.tau_rel, 4) + ")";
   if (decomposition.max_hulls > 0) line += ", max hulls " + std::to_string(decomposition.max_hulls);
   line += ", " + std::string(stats.surface ? "surface" : "solid") + " ACD, " +
           Plural(decomposition.components.size(), "component");
   if (!stats.surface && stats.volume > 0) {
-    line += ", hull volume / volume " + Short(stats.hull_volume / stats.volume);
+    line += ", hull volume / volume " + FormatSignificant(stats.hull_volume / stats.volume, 4);
   }
-  line += ", max concavity " + Short(stats.max_concavity) + ", " + Short(stats.time_ms) + " ms";
+  line += ", max concavity " + FormatSignificant(stats.max_concavity, 4) + ", " +
+          FormatSignificant(stats.time_ms, 4) + " ms";
   caption.push_back(line);
   const std::string title = caption[0] + ": " + caption[1];
   caption.push_back(ViewCaption(false) + "; one colour per component");

@@ -30,7 +30,6 @@ std::string PathData(const SvgCanvas& canvas, const Polygon2d& polygon) {
 }
 
 /// A number for the caption and tooltips: short.
-std::string Short(double v) { return FormatSignificant(v, 4); }
 
 }  // namespace
 
@@ -116,7 +115,7 @@ std::string DecompositionToSvg(const Decomposition2d& decomposition,
     const Component2d& component = decomposition.components[k];
     svg << "<path class=\"component\" fill=\"" << ComponentFill(static_cast<int>(k)) << "\" d=\""
         << PathData(canvas, component.polygon) << "\"><title>component " << k << ": concavity "
-        << Short(component.concavity) << "</title></path>\n";
+        << FormatSignificant(component.concavity, 4) << "</title></path>\n";
   }
   svg << "</g>\n";
 
@@ -148,7 +147,7 @@ std::string DecompositionToSvg(const Decomposition2d& decomposition,
     svg << "<circle class=\"most-concave-notch\" cx=\"" << canvas.X(node.witness.x()) << "\" cy=\""
         << canvas.Y(node.witness.y()) << "\" r=\"" << N::Number(root_radius)
         << "\" fill=\"none\" stroke=\"#d01010\" stroke-width=\"" << N::Number(2.5 * thin)
-        << "\"><title>most concave notch: concavity " << Short(node.concavity)
+        << "\"><title>most concave notch: concavity " << FormatSignificant(node.concavity, 4)
         << "</title></circle>\n";
   }
   svg << "</g>\n";
@@ -156,14 +155,15 @@ std::string DecompositionToSvg(const Decomposition2d& decomposition,
 
   std::vector<std::string> caption;
   caption.push_back(labels.input.empty() ? std::string("(unnamed input)") : labels.input);
-  std::string line = "tau " + Short(decomposition.tau);
-  if (labels.tau_rel >= 0) line += " (tau_rel " + Short(labels.tau_rel) + ")";
+  std::string line = "tau " + FormatSignificant(decomposition.tau, 4);
+  if (labels.tau_rel >= 0) line += " (tau_rel " + FormatSignificant(labels.tau_rel, 4) + ")";
   if (decomposition.min_convexity > 0) {
-    line += ", min convexity " + Short(decomposition.min_convexity);
+    line += ", min convexity " + FormatSignificant(decomposition.min_convexity, 4);
   }
   line += ", measure " + ToString(decomposition.measure) + ", " +
           std::to_string(decomposition.components.size()) + " components, convexity " +
-          Short(decomposition.stats.convexity) + ", " + Short(decomposition.stats.time_ms) + " ms";
+          FormatSignificant(decomposition.stats.convexity, 4) + ", " +
+          FormatSignificant(decomposition.stats.time_ms, 4) + " ms";
   caption.push_back(line);
   caption.push_back(
       "red rings: most concave notches of the input; dots: resolved notches (where cuts "

@@ -366,14 +366,13 @@ std::vector<GlobalCut> FindGlobalCuts(const TriangleMesh& mesh, const SolidConca
         [&](int v) { return !in_pocket[static_cast<size_t>(v)]; }));
   }
   // 4. The lightest cycle.
-  constexpr double kPi = 3.14159265358979323846;
   auto weight = [&](const std::vector<int>& cycle) {
     double sum = 0, gamma = 0;
     for (size_t i = 0; i < cycle.size(); ++i) {
       sum += c[static_cast<size_t>(cycle[i])];
       const int e = FindEdge(table, cycle[i], cycle[(i + 1) % cycle.size()]);
       if (e < 0) return kInfinity;
-      gamma += length(e) * (1 + DihedralAngle(mesh, table, e) / kPi);
+      gamma += length(e) * (1 + DihedralAngle(mesh, table, e) / M_PI);
     }
     if (!(sum > 0)) return kInfinity;
     return static_cast<double>(cycle.size()) / sum * gamma;

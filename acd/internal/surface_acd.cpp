@@ -51,7 +51,6 @@ namespace {
 constexpr int kScoreFaces = 600;
 // Candidate directions in the plane perpendicular to the witness's hull normal.
 constexpr int kFanDirections = 8;
-constexpr double kPi = 3.14159265358979323846;
 
 // A part's faces with what the measure and the cuts need, computed once.
 class SurfacePart {
@@ -323,7 +322,7 @@ std::vector<Eigen::Vector3d> CandidateNormals(const SurfacePart& part,
   const Eigen::Vector3d h = m.hull_normal.normalized();
   const Eigen::Vector3d u = AnyPerpendicular(h), v = h.cross(u);
   for (int k = 0; k < kFanDirections; ++k) {
-    const double angle = kPi * k / kFanDirections;
+    const double angle = M_PI * k / kFanDirections;
     normals.push_back(std::cos(angle) * u + std::sin(angle) * v);
   }
   normals.push_back(h);

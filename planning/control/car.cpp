@@ -18,12 +18,6 @@ namespace oc = ompl::control;
 
 namespace {
 
-const ob::SE2StateSpace::StateType* Se2(CarModel model, const ob::State* state) {
-  return model == CarModel::kKinematic
-             ? state->as<ob::SE2StateSpace::StateType>()
-             : state->as<ob::CompoundStateSpace::StateType>()->as<ob::SE2StateSpace::StateType>(0);
-}
-
 /// Projects a car state to its (x, y), cells 1/20 of the bounds (KPIECE1, EST, PDST).
 class XyProjection : public ob::ProjectionEvaluator {
  public:
@@ -34,7 +28,7 @@ class XyProjection : public ob::ProjectionEvaluator {
     cellSizes_ = {bounds_.sizes().x() / 20, bounds_.sizes().y() / 20};
   }
   void project(const ob::State* state, Eigen::Ref<Eigen::VectorXd> out) const override {
-    const auto* s = Se2(model_, state);
+    const auto* s = CarSe2(model_, state);
     out[0] = s->getX();
     out[1] = s->getY();
   }
@@ -56,8 +50,19 @@ std::string ToString(CarModel model) {
   return model == CarModel::kKinematic ? "kinematic_car" : "dynamic_car";
 }
 
+const ob::SE2StateSpace::StateType* CarSe2(CarModel model, const ob::State* state) {
+  return model == CarModel::kKinematic
+             ? state->as<ob::SE2StateSpace::StateType>()
+             : state->as<ob::CompoundStateSpace::StateType>()->as<ob::SE2StateSpace::StateType>(0);
+}
+
+ob::SE2StateSpace::StateType* CarSe2(CarModel model, ob::State* state) {
+  return const_cast<ob::SE2StateSpace::StateType*>(
+      CarSe2(model, static_cast<const ob::State*>(state)));
+}
+
 Eigen::Isometry2d CarPose(CarModel model, const ob::State* state) {
-  const auto* s = Se2(model, state);
+  const auto* s = CarSe2(model, state);
   Eigen::Isometry2d pose = Eigen::Isometry2d::Identity();
   pose.translate(Eigen::Vector2d(s->getX(), s->getY()));
   pose.rotate(s->getYaw());

@@ -2,6 +2,7 @@
 // Control-space cars as OMPL.app defines them (KinematicCarPlanning, DynamicCarPlanning),
 // integrated with OMPL's ODE solver.
 
+#include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/control/SpaceInformation.h>
 
 #include <Eigen/Geometry>
@@ -50,6 +51,11 @@ void CheckCarOptions(const CarOptions& options);
 ompl::control::SpaceInformationPtr MakeCarSpaceInformation(
     CarModel model, const Eigen::AlignedBox2d& xy_bounds,
     std::function<bool(const Eigen::Isometry2d& pose)> valid, const CarOptions& options = {});
+
+/// The SE(2) part of a state of a car space: the state itself (kKinematic) or its first
+/// component (kDynamic).
+const ompl::base::SE2StateSpace::StateType* CarSe2(CarModel model, const ompl::base::State* state);
+ompl::base::SE2StateSpace::StateType* CarSe2(CarModel model, ompl::base::State* state);
 
 /// The pose (x, y, theta) of a state of a car space.
 Eigen::Isometry2d CarPose(CarModel model, const ompl::base::State* state);

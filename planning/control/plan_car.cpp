@@ -30,12 +30,6 @@ namespace oc = ompl::control;
 
 namespace {
 
-ob::SE2StateSpace::StateType* Se2(CarModel model, ob::State* state) {
-  return model == CarModel::kKinematic
-             ? state->as<ob::SE2StateSpace::StateType>()
-             : state->as<ob::CompoundStateSpace::StateType>()->as<ob::SE2StateSpace::StateType>(0);
-}
-
 /// OMPL's grid with the car's (x, y) as the projection.
 class XyGrid : public oc::GridDecomposition {
  public:
@@ -48,7 +42,7 @@ class XyGrid : public oc::GridDecomposition {
   void sampleFullState(const ob::StateSamplerPtr& sampler, const std::vector<double>& coord,
                        ob::State* s) const override {
     sampler->sampleUniform(s);
-    Se2(model_, s)->setXY(coord[0], coord[1]);
+    CarSe2(model_, s)->setXY(coord[0], coord[1]);
   }
 
  private:
@@ -142,10 +136,10 @@ CarResult PlanCar(const CarQuery& query) {
   for (ob::ScopedState<>* s : {&start, &goal}) {
     for (unsigned i = 0; i < si->getStateDimension(); ++i) (*s)[i] = 0.0;
   }
-  Se2(query.model, start.get())->setXY(query.start.x(), query.start.y());
-  Se2(query.model, start.get())->setYaw(query.start.z());
-  Se2(query.model, goal.get())->setXY(query.goal.x(), query.goal.y());
-  Se2(query.model, goal.get())->setYaw(query.goal.z());
+  CarSe2(query.model, start.get())->setXY(query.start.x(), query.start.y());
+  CarSe2(query.model, start.get())->setYaw(query.start.z());
+  CarSe2(query.model, goal.get())->setXY(query.goal.x(), query.goal.y());
+  CarSe2(query.model, goal.get())->setYaw(query.goal.z());
   if (!si->isValid(start.get())) {
     throw InputError("PlanCar(): start: the robot is in collision or out of bounds there");
   }

@@ -19,7 +19,6 @@ namespace acdplan::planning {
 namespace {
 
 const std::string kData = acdplan::test::SourceDir() + "/tests/data/ompl_app/";
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(ScenarioFromOmplApp, Turns2dMeshesIntoFootprints) {
   const Scenario s = LoadScenarioFile(kData + "planar.cfg");
@@ -44,7 +43,7 @@ TEST(ScenarioFromOmplApp, Turns2dMeshesIntoFootprints) {
   ASSERT_EQ(s.goal.size(), 3u);
   EXPECT_NEAR(s.goal[0], 8, 1e-12);
   EXPECT_NEAR(s.goal[1], 0, 1e-12);
-  EXPECT_NEAR(s.goal[2], kPi / 2, 1e-12);
+  EXPECT_NEAR(s.goal[2], M_PI / 2, 1e-12);
   EXPECT_EQ(s.planner, PlannerType::kRrtConnect);  // the first [planner] entry
   EXPECT_EQ(s.time_limit, 2.5);
   EXPECT_EQ(s.sampler, SamplerType::kBridge);
