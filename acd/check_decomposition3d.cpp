@@ -208,8 +208,7 @@ double ConcavityLowerBound(const TriangleMesh& mesh) {
     points.push_back(mesh.vertices.row(v).transpose());
   }
   const TriangleMesh hull = ConvexHull3(points, 0.0);
-  // A closed hull of V vertices has 2V - 4 triangles; a flat one, fanned, V - 2.
-  if (hull.triangles.rows() < 2 * hull.vertices.rows() - 4) return 0.0;
+  if (IsFlatHull(hull)) return 0.0;
   const Eigen::Matrix<double, Eigen::Dynamic, 4> planes = HullPlanes(hull);
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
     points.push_back((Corner(mesh, f, 0) + Corner(mesh, f, 1) + Corner(mesh, f, 2)) / 3.0);

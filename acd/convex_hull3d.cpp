@@ -11,6 +11,11 @@ TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thic
   return internal::FanTriangulation(internal::ConvexHullFacets(points, thickness));
 }
 
+bool IsFlatHull(const TriangleMesh& hull) {
+  const Eigen::Index triangles = hull.triangles.rows();
+  return triangles == 0 || triangles < 2 * hull.vertices.rows() - 4;
+}
+
 Eigen::Matrix<double, Eigen::Dynamic, 4> HullPlanes(const TriangleMesh& hull) {
   std::vector<Eigen::Vector4d> planes;
   for (Eigen::Index f = 0; f < hull.triangles.rows(); ++f) {

@@ -19,6 +19,12 @@ namespace acdplan::acd {
 /// O(n log n) for n points.
 TriangleMesh ConvexHull3(const std::vector<Eigen::Vector3d>& points, double thickness);
 
+/// Whether `hull`, a mesh of ConvexHull3() at thickness 0, bounds no volume: it has no triangle,
+/// or is one-sided (fanned, a flat hull of V vertices has V - 2 triangles; a closed one, 2V - 4).
+/// Exact, from the mesh's counts: its computed volume is rounding noise, and not even that for
+/// a flat hull off the origin (its one side's signed volume is the plane's offset x area / 3).
+bool IsFlatHull(const TriangleMesh& hull);
+
 /// Outward half-spaces (n, d), |n| = 1, of the closed convex mesh `hull`: one row per face
 /// (coplanar faces merged); the hull is { x : n . x <= d for every row }. Every d is at least
 /// max over the hull's vertices of n . v, so no vertex of `hull` is ever outside a row, even for

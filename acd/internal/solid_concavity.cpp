@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "acd/convex_hull3d.h"
 #include "acd/internal/canonical_hull.h"
 #include "acd/internal/in_plane_tolerance.h"
 #include "acd/mesh_measures.h"
@@ -46,7 +47,7 @@ SolidConcavity MeasureSolidConcavity(const TriangleMesh& mesh, double tau) {
   out.hull_volume = MeshVolume(out.hull);
   const double scale = BoundingBox(mesh).diagonal().norm();
   const double tol = kInPlaneTolerance * scale;  // the hull's planes are regrouped at this
-  if (out.hull.triangles.rows() < 4 || !(out.hull_volume > 0)) return out;
+  if (IsFlatHull(out.hull) || !(out.hull_volume > 0)) return out;
   const Eigen::Matrix<double, Eigen::Dynamic, 4>& planes = hull.planes;
   const int m = static_cast<int>(planes.rows());
   // Fewer than four planes need not mean flat: MakeCanonicalHull drops a regrouped plane that a
