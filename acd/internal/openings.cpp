@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "acd/internal/rounding_noise.h"
+
 namespace acdplan::acd::internal {
 namespace {
 
@@ -34,9 +36,12 @@ std::vector<Interval> IntervalsOnCut(const Decomposition2d& d, const std::vector
   std::vector<Interval> intervals;
   if (length == 0.0) return intervals;
   const Point2d unit = axis / length;
-  const double scale =
-      std::max({length, cut.from.cwiseAbs().maxCoeff(), cut.to.cwiseAbs().maxCoeff()});
-  const double tolerance = 1e-9 * scale;
+  // An edge lies on the cut when its ends do to within rounding: the cut's own ends, and points
+  // later cuts constructed on it, are off its line by a few ulps of the coordinates. Not more: a
+  // later cut from one end to a point 1e-8 beside the other (fuzz_decompose2d) runs 1e-3 rad
+  // off this one, and its piece, which touches this cut at that end alone, was paired across it.
+  const double scale = std::max({length, MaxAbs(cut.from), MaxAbs(cut.to)});
+  const double tolerance = kRoundingNoise * scale;
   const Point2d pad = Point2d::Constant(2.0 * tolerance);
   const Point2d cut_min = cut.from.cwiseMin(cut.to) - pad;
   const Point2d cut_max = cut.from.cwiseMax(cut.to) + pad;

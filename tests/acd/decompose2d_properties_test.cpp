@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <ostream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -705,6 +706,36 @@ TEST(Decompose2dTest, NotchWithinRoundingNoiseOfAnEdge) {
     }
   }
   ExpectEveryMeasureDecomposes(inputs, 0.05);
+}
+
+// Found by fuzz/fuzz_decompose2d (a polygon made valid by RepairPolygon(), minimised to
+// fuzz/corpus/decompose2d/regression-near-collinear-cut-opening.wkt): at tau = 0 a cut A-B was
+// followed by a cut A'-B from a point A' 1e-8 beside A, 1e-3 rad off the first. FindOpenings()
+// took an edge for lying on a cut when both its ends were within 1e-9 of the coordinates'
+// magnitude of its line, so the piece that touches A-B at B alone was paired across all of A-B
+// (its end A not on that piece's boundary), and another pair of pieces was listed twice. The same
+// shape mirrored; every opening's ends lie on both its pieces (CheckDecomposition()), and no
+// opening is listed twice.
+TEST(Decompose2dTest, OpeningsPairOnlyPiecesAlongTheCut) {
+  std::vector<std::vector<Polygon2d>> inputs = {
+      FuzzRegressionInput("regression-near-collinear-cut-opening.wkt")};
+  Polygon2d mirrored = inputs[0][0];
+  for (Point2d& p : mirrored.outer) p.x() = -p.x();
+  std::reverse(mirrored.outer.begin(), mirrored.outer.end());
+  inputs.push_back(PreparePolygons(mirrored, "mirrored"));
+  ExpectEveryMeasureDecomposes(inputs, 0.05);
+  for (const std::vector<Polygon2d>& input : inputs) {
+    const Decomposition2d decomposition = Decompose2d(input, Decompose2dOptions{});
+    const auto key = [](const Opening2d& o) {
+      return std::make_tuple(o.component_a, o.component_b, o.a.x(), o.a.y(), o.b.x(), o.b.y());
+    };
+    std::set<decltype(key(Opening2d{}))> seen;
+    for (const Opening2d& opening : decomposition.openings) {
+      EXPECT_TRUE(seen.insert(key(opening)).second)
+          << "opening between " << opening.component_a << " and " << opening.component_b
+          << " listed twice";
+    }
+  }
 }
 
 // At tau = 0 every notch needs a cut, so a diagonal resolving two notches saves a piece and
