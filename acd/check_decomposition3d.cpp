@@ -57,6 +57,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -196,11 +197,15 @@ std::optional<Mesh> ToCgal(const TriangleMesh& mesh) {
 }
 
 // Largest distance of a vertex or face centroid of `mesh` to the boundary of the convex hull of
-// its vertices; 0 when the hull is flat (exactly, as ConvexHull3 decides), as every point of a
-// flat set is on its hull's boundary. A flat hull is one-sided and has one plane, whose normal,
-// for a needle of a patch, is rounding noise (fuzz/corpus/decompose3d/
-// regression-needle-patch-at-4e30.bin: a triangle two of whose corners are an ulp apart at 4e30
-// had a centroid 6.6e28 below its plane so found).
+// its vertices, from below. Each hull facet's plane is taken with the rounding of its normal (its
+// cross product's error over its length) times the hull's diameter subtracted: a plane turned by
+// that much measures a point's distance off by at most that. A facet whose normal is all
+// rounding bounds nothing, and neither does a flat hull (exactly, as ConvexHull3 decides): every
+// point of a flat set is on its hull's boundary. Without the error terms the bound was none for a
+// needle: four corners 1e30 apart and 1e13 off a line (fuzz/corpus/decompose3d/
+// regression-needle-hull-at-1e30.bin) gave hull planes whose normals were noise, which put a face
+// centroid 1.1e28 deep; the same for a needle triangle at 4e30, 6.6e28 below its plane
+// (regression-needle-patch-at-4e30.bin).
 double ConcavityLowerBound(const TriangleMesh& mesh) {
   std::vector<Eigen::Vector3d> points;
   points.reserve(static_cast<size_t>(mesh.vertices.rows() + mesh.triangles.rows()));
@@ -209,17 +214,42 @@ double ConcavityLowerBound(const TriangleMesh& mesh) {
   }
   const TriangleMesh hull = ConvexHull3(points, 0.0);
   if (IsFlatHull(hull)) return 0.0;
-  const Eigen::Matrix<double, Eigen::Dynamic, 4> planes = HullPlanes(hull);
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
     points.push_back((Corner(mesh, f, 0) + Corner(mesh, f, 1) + Corner(mesh, f, 2)) / 3.0);
+  }
+  const Eigen::AlignedBox3d box = BoundingBox(hull);
+  const double magnitude =
+      std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
+  const double diameter = box.diagonal().norm();
+  constexpr double kUlp = std::numeric_limits<double>::epsilon();
+  struct Plane {
+    Eigen::Vector3d normal;
+    double offset, error;  // the hull lies in normal . x <= offset; depths err by up to error
+  };
+  std::vector<Plane> planes;
+  for (Eigen::Index f = 0; f < hull.triangles.rows(); ++f) {
+    const Eigen::Vector3d a = Corner(hull, f, 0);
+    const Eigen::Vector3d u = Corner(hull, f, 1) - a, w = Corner(hull, f, 2) - a;
+    Eigen::Vector3d normal = u.cross(w);
+    const double length = normal.norm();
+    // Rounding of u and w (an ulp of the coordinates each) and of the products, with room.
+    const double normal_error =
+        16 * kUlp * (u.norm() * w.norm() + magnitude * (u.norm() + w.norm()));
+    if (!(length > normal_error)) return 0.0;
+    normal /= length;
+    double offset = -std::numeric_limits<double>::infinity();
+    for (Eigen::Index v = 0; v < hull.vertices.rows(); ++v) {
+      offset = std::max(offset, normal.dot(hull.vertices.row(v).transpose()));
+    }
+    planes.push_back({normal, offset, 2 * normal_error / length * diameter + 8 * kUlp * magnitude});
   }
   double best = 0.0;
   for (const Eigen::Vector3d& p : points) {
     double depth = std::numeric_limits<double>::infinity();
-    for (Eigen::Index r = 0; r < planes.rows() && depth > best; ++r) {
-      depth = std::min(depth, planes(r, 3) - planes.row(r).head<3>().dot(p));
+    for (size_t r = 0; r < planes.size() && depth > best; ++r) {
+      depth = std::min(depth, planes[r].offset - planes[r].normal.dot(p) - planes[r].error);
     }
-    if (planes.rows() > 0) best = std::max(best, depth);
+    best = std::max(best, depth);
   }
   return best;
 }

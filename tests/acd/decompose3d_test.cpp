@@ -240,6 +240,25 @@ TEST(Decompose3d, ANeedleFaceWhoseAreaIsRoundingNoisePassesTheCheck) {
   EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
 }
 
+// Found by fuzz/fuzz_decompose3d (fuzz/corpus/decompose3d/regression-needle-hull-at-1e30.bin),
+// from the input above: the surface ACD's patch of two triangles whose four corners, 1e30 apart,
+// lie within about 1e13 of a line. It measured 0 deep, rightly; CheckDecomposition3d() re-measured
+// it 1.1e28 deep against its hull's planes, whose normals, cross products of nearly parallel
+// edges, were rounding noise. Its lower bound now takes each plane's rounding off.
+TEST(Decompose3d, ANeedlePatchWhoseHullPlanesAreRoundingNoisePassesTheCheck) {
+  std::vector<Eigen::Vector3d> v{{-1, -1, 4}, {7, 6, 1}, {2, 8, 1},  {8, 7, 0},
+                                 {3, 9, 2},   {9, 8, 3}, {4, 10, 3}, {10, 9, 4},
+                                 {5, 0, 0},   {0, 6, 8}, {0, 16, 0}, {0, 0, 0}};
+  for (Eigen::Vector3d& p : v) p *= 1e30;
+  const std::vector<Eigen::Vector3i> t{{4, 5, 0}, {4, 0, 4},   {4, 0, 4},  {4, 0, 0},  {8, 0, 0},
+                                       {0, 4, 0}, {0, 6, 1},   {2, 8, 1},  {8, 7, 2},  {3, 9, 2},
+                                       {8, 8, 3}, {11, 4, 10}, {3, 10, 9}, {4, 5, 11}, {4, 11, 10},
+                                       {5, 0, 6}, {5, 6, 11}};
+  const FuzzedRun run = RunAsTheFuzzerDoes(MakeTriangleMesh(v, t), true, 0.2);
+  ASSERT_FALSE(run.prepared.solid());
+  EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
+}
+
 TEST(Decompose3d, SameInputSameBytes) {
   const TriangleMesh torus = Torus(2.0, 1.0, 16, 8);
   const Decomposition3d a = Solve(torus, 0.3), b = Solve(torus, 0.3);
