@@ -40,8 +40,6 @@ Json MeshToJson(const TriangleMesh& mesh) {
   return json;
 }
 
-/// A number for the caption and tooltips: short.
-
 /// The k-th component's colour as RGB in [0, 1] (sRGB), from the same table as the 2D
 /// pictures (base/svg.h ComponentFill), so a component has one colour in every output.
 Eigen::Vector3d ComponentRgb(int k) {

@@ -29,8 +29,6 @@ std::string PathData(const SvgCanvas& canvas, const Polygon2d& polygon) {
   return canvas.PathData(rings);
 }
 
-/// A number for the caption and tooltips: short.
-
 }  // namespace
 
 std::string DecompositionToJson(const Decomposition2d& decomposition,
