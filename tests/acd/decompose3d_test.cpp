@@ -184,6 +184,13 @@ FuzzedRun RunAsTheFuzzerDoes(const TriangleMesh& mesh, bool repair, double tau_r
   return run;
 }
 
+// A mesh as fuzz_decompose3d decodes it: lattice points times the input's `spacing`.
+TriangleMesh FuzzLatticeMesh(std::vector<Eigen::Vector3d> lattice,
+                             const std::vector<Eigen::Vector3i>& triangles, double spacing) {
+  for (Eigen::Vector3d& p : lattice) p *= spacing;
+  return MakeTriangleMesh(lattice, triangles);
+}
+
 // Found by fuzz/fuzz_decompose3d (its input decoded here; not a seed of its corpus, as it takes
 // longer under the sanitizers than the fuzz step's 10 s limit): two overlapping, warped boxes,
 // united by repair. One piece, 0.31 deep against tau 0.12, had no plane among its ranked ones,
@@ -228,14 +235,13 @@ TEST(Decompose3d, ASliverWhoseVolumeIsRoundingNoisePassesTheCheck) {
 // patch, the same triangle from another first vertex, measured 0, and CheckDecomposition3d()
 // reported that the patch areas did not sum to the part's: that sum had only a relative bound.
 TEST(Decompose3d, ANeedleFaceWhoseAreaIsRoundingNoisePassesTheCheck) {
-  std::vector<Eigen::Vector3d> v{{-1, -1, 4}, {7, 6, 1}, {2, 8, 1},  {8, 7, 0},
-                                 {3, 9, 2},   {9, 8, 3}, {4, 10, 3}, {10, 9, 4},
-                                 {5, 0, 0},   {0, 6, 8}, {0, 0, 0},  {16, 0, 0}};
-  for (Eigen::Vector3d& p : v) p *= 1e30;
+  const std::vector<Eigen::Vector3d> v{{-1, -1, 4}, {7, 6, 1}, {2, 8, 1},  {8, 7, 0},
+                                       {3, 9, 2},   {9, 8, 3}, {4, 10, 3}, {10, 9, 4},
+                                       {5, 0, 0},   {0, 6, 8}, {0, 0, 0},  {16, 0, 0}};
   const std::vector<Eigen::Vector3i> t{
       {4, 5, 0}, {4, 0, 4}, {4, 0, 4}, {4, 0, 0},  {10, 11, 0}, {1, 7, 0},  {7, 6, 1},   {2, 8, 1},
       {8, 7, 2}, {3, 9, 2}, {9, 8, 3}, {4, 10, 3}, {10, 9, 4},  {5, 11, 4}, {11, 10, 5}, {0, 6, 5}};
-  const FuzzedRun run = RunAsTheFuzzerDoes(MakeTriangleMesh(v, t), true, 0.2);
+  const FuzzedRun run = RunAsTheFuzzerDoes(FuzzLatticeMesh(v, t, 1e30), true, 0.2);
   ASSERT_FALSE(run.prepared.solid());
   EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
 }
@@ -246,15 +252,14 @@ TEST(Decompose3d, ANeedleFaceWhoseAreaIsRoundingNoisePassesTheCheck) {
 // it 1.1e28 deep against its hull's planes, whose normals, cross products of nearly parallel
 // edges, were rounding noise. Its lower bound now takes each plane's rounding off.
 TEST(Decompose3d, ANeedlePatchWhoseHullPlanesAreRoundingNoisePassesTheCheck) {
-  std::vector<Eigen::Vector3d> v{{-1, -1, 4}, {7, 6, 1}, {2, 8, 1},  {8, 7, 0},
-                                 {3, 9, 2},   {9, 8, 3}, {4, 10, 3}, {10, 9, 4},
-                                 {5, 0, 0},   {0, 6, 8}, {0, 16, 0}, {0, 0, 0}};
-  for (Eigen::Vector3d& p : v) p *= 1e30;
+  const std::vector<Eigen::Vector3d> v{{-1, -1, 4}, {7, 6, 1}, {2, 8, 1},  {8, 7, 0},
+                                       {3, 9, 2},   {9, 8, 3}, {4, 10, 3}, {10, 9, 4},
+                                       {5, 0, 0},   {0, 6, 8}, {0, 16, 0}, {0, 0, 0}};
   const std::vector<Eigen::Vector3i> t{{4, 5, 0}, {4, 0, 4},   {4, 0, 4},  {4, 0, 0},  {8, 0, 0},
                                        {0, 4, 0}, {0, 6, 1},   {2, 8, 1},  {8, 7, 2},  {3, 9, 2},
                                        {8, 8, 3}, {11, 4, 10}, {3, 10, 9}, {4, 5, 11}, {4, 11, 10},
                                        {5, 0, 6}, {5, 6, 11}};
-  const FuzzedRun run = RunAsTheFuzzerDoes(MakeTriangleMesh(v, t), true, 0.2);
+  const FuzzedRun run = RunAsTheFuzzerDoes(FuzzLatticeMesh(v, t, 1e30), true, 0.2);
   ASSERT_FALSE(run.prepared.solid());
   EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
 }
