@@ -60,7 +60,6 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <numeric>
 #include <optional>
 #include <set>
 #include <string>
@@ -477,9 +476,7 @@ class Checker {
         continue;
       }
       // The exact sign: a sliver's rounded volume may have either.
-      std::vector<int> faces(static_cast<size_t>(c.mesh.triangles.rows()));
-      std::iota(faces.begin(), faces.end(), 0);
-      if (internal::VolumeSign(c.mesh, faces) <= 0) {
+      if (internal::VolumeSign(c.mesh) <= 0) {
         problems_.Add(Name(i) + "mesh is inward-oriented (volume " + Num(volume) + ")");
         continue;
       }

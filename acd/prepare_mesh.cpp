@@ -16,6 +16,7 @@
 #include "acd/internal/face_intersections.h"
 #include "acd/internal/fill_holes.h"
 #include "acd/internal/mesh_edges.h"
+#include "acd/internal/separate_pinches.h"
 #include "acd/internal/winding_union.h"
 #include "base/format.h"
 #include "base/input_error.h"
@@ -493,6 +494,34 @@ Diagnosis Recheck(const TriangleMesh& mesh, const std::string& where,
   return Diagnose(cleaned.mesh);
 }
 
+// A solid whose part meets itself at a vertex (a cavity touching the outer shell, two lobes of
+// one part) is valid, but no cut can keep such a point as a vertex of two fans, and its
+// components would not be 2-manifolds: each fan gets its own copy of the vertex, moved a hair
+// (internal::SeparatePinches), and the mesh is diagnosed again. Vertices where different parts
+// meet stay: each part is decomposed on its own.
+Diagnosis SeparatePinchesOfParts(Diagnosis d, const std::string& where,
+                                 std::vector<std::string>* notes) {
+  std::vector<Eigen::Vector3d> vertices;
+  for (Eigen::Index v = 0; v < d.mesh.vertices.rows(); ++v) {
+    vertices.push_back(d.mesh.vertices.row(v).transpose());
+  }
+  std::vector<std::array<int, 3>> triangles;
+  for (Eigen::Index f = 0; f < d.mesh.triangles.rows(); ++f) {
+    triangles.push_back({d.mesh.triangles(f, 0), d.mesh.triangles(f, 1), d.mesh.triangles(f, 2)});
+  }
+  std::vector<int> part_of(triangles.size(), -1);
+  for (size_t p = 0; p < d.parts.size(); ++p) {
+    for (const int f : d.parts[p]) part_of[static_cast<size_t>(f)] = static_cast<int>(p);
+  }
+  const int pinches = internal::SeparatePinches(&vertices, &triangles, part_of);
+  if (pinches == 0) return d;
+  notes->push_back("separated the fans of " + Plural(pinches, "pinch vertex") +
+                   " where a part touches itself by 1e-3 of their shortest edge");
+  std::vector<Eigen::Vector3i> faces;
+  for (const auto& t : triangles) faces.emplace_back(t[0], t[1], t[2]);
+  return Recheck(MakeTriangleMesh(vertices, faces), where, notes);
+}
+
 }  // namespace
 
 PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& options,
@@ -523,6 +552,7 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
       prepared.notes.push_back("repair: still not a solid: " + d.defects.first);
     }
   }
+  if (d.defects.none()) d = SeparatePinchesOfParts(std::move(d), where, &prepared.notes);
   if (d.defects.none()) {
     prepared.notes.push_back("found " + Plural(d.parts.size(), "solid part") +
                              (d.cavities > 0 ? " with " + Plural(d.cavities, "cavity") : ""));

@@ -72,6 +72,11 @@ struct PreparedMesh {
 ///    inside an odd number of others is a cavity, turned inward and put in the part of the
 ///    innermost shell around it; a shell inside an even number starts a part. Otherwise the
 ///    parts are the patches. Parts are ordered by their lowest triangle.
+/// 5. Pinches: a vertex where a solid part meets itself in several fans of triangles (a cavity
+///    touching the outer shell, two lobes touching at a point) gets one copy per fan, moved 1e-3
+///    of the shortest edge there (internal::SeparatePinches; the outer shell's fan stays), so
+///    that every part is a 2-manifold that cuts can split; then steps 1-4 run again. Parts that
+///    touch each other at a vertex keep it: each is decomposed on its own.
 /// Repair (options.repair, when there are defects): boundary loops are triangulated without
 /// new vertices (PMP::triangulate_hole_polyline, 2D constrained Delaunay when the loop is
 /// nearly planar); then, if the mesh is closed and manifold, each group of closed shells that

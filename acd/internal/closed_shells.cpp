@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <set>
 
 #include "acd/internal/cgal_surface_mesh.h"
@@ -58,6 +59,12 @@ int VolumeSign(const TriangleMesh& mesh, const std::vector<int>& faces) {
              p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
   }
   return CGAL::sign(total);
+}
+
+int VolumeSign(const TriangleMesh& mesh) {
+  std::vector<int> faces(static_cast<size_t>(mesh.triangles.rows()));
+  std::iota(faces.begin(), faces.end(), 0);
+  return VolumeSign(mesh, faces);
 }
 
 std::vector<std::vector<int>> EnclosingShells(const TriangleMesh& mesh,

@@ -13,6 +13,8 @@ namespace acdplan::acd::internal {
 /// determinants in doubles decides when it exceeds its rounding-error bound; otherwise the sum
 /// is redone in exact rationals. O(n).
 int VolumeSign(const TriangleMesh& mesh, const std::vector<int>& faces);
+/// The same for all the faces of `mesh` (a solid: its shells, cavities facing inward).
+int VolumeSign(const TriangleMesh& mesh);
 
 /// For closed shells `shells` (triangle lists of `mesh`), each free of self-intersections and
 /// no two crossing: enclosing[i] lists, ascending, the shells j whose bounded side holds shell

@@ -15,11 +15,13 @@
 #include <stdexcept>
 #include <utility>
 
+#include "acd/internal/closed_shells.h"
 #include "acd/internal/disjoint_sets.h"
 #include "acd/internal/exact_rounding.h"
 #include "acd/internal/face_intersections.h"
 #include "acd/internal/in_plane_tolerance.h"
 #include "acd/internal/nesting_levels.h"
+#include "acd/internal/separate_pinches.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -133,40 +135,28 @@ ExactPiece Compact(const std::vector<Point3>& points, const std::vector<Eigen::V
 // Gives each extra fan of faces around a vertex its own copy of the vertex, so a solid that
 // touches itself in a vertex (a plane tangent there) has a manifold surface.
 void SplitPinchedVertices(ExactPiece* piece) {
-  std::vector<std::vector<std::pair<int, int>>> corners(piece->points.size());  // (face, k)
+  std::vector<std::vector<int>> around(piece->points.size());
   for (size_t f = 0; f < piece->triangles.size(); ++f) {
-    for (int k = 0; k < 3; ++k) {
-      corners[static_cast<size_t>(piece->triangles[f][static_cast<size_t>(k)])].emplace_back(
-          static_cast<int>(f), k);
-    }
+    for (const int v : piece->triangles[f])
+      around[static_cast<size_t>(v)].push_back(static_cast<int>(f));
   }
   const size_t original = piece->points.size();
+  std::vector<int> fan;
   for (size_t v = 0; v < original; ++v) {
-    const auto& around = corners[v];
-    if (around.size() < 2) continue;
-    // Faces around v are joined when they share an edge at v (the same other endpoint).
-    DisjointSets uf(static_cast<int>(around.size()));
-    std::map<int, int> by_neighbour;
-    for (size_t i = 0; i < around.size(); ++i) {
-      const Tri& t = piece->triangles[static_cast<size_t>(around[i].first)];
-      for (int step : {1, 2}) {
-        const int other = t[static_cast<size_t>((around[i].second + step) % 3)];
-        auto [it, inserted] = by_neighbour.emplace(other, static_cast<int>(i));
-        if (!inserted) uf.Unite(static_cast<int>(i), it->second);
-      }
-    }
-    std::map<int, int> copy;  // fan root -> vertex index
-    for (size_t i = 0; i < around.size(); ++i) {
-      const int root = uf.Find(static_cast<int>(i));
-      auto [it, inserted] = copy.emplace(root, static_cast<int>(v));
-      if (inserted && root != uf.Find(0)) {
-        it->second = static_cast<int>(piece->points.size());
+    const int fans = FansAroundVertex(piece->triangles, around[v], static_cast<int>(v), &fan);
+    if (fans < 2) continue;
+    std::vector<int> copy(static_cast<size_t>(fans), -1);  // fan -> its vertex
+    copy[0] = static_cast<int>(v);
+    for (size_t i = 0; i < around[v].size(); ++i) {
+      int& c = copy[static_cast<size_t>(fan[i])];
+      if (c < 0) {
+        c = static_cast<int>(piece->points.size());
         piece->points.push_back(piece->points[v]);
         piece->rounded.push_back(piece->rounded[v]);
       }
-      piece
-          ->triangles[static_cast<size_t>(around[i].first)][static_cast<size_t>(around[i].second)] =
-          it->second;
+      for (int& w : piece->triangles[static_cast<size_t>(around[v][i])]) {
+        if (w == static_cast<int>(v)) w = c;
+      }
     }
   }
 }
@@ -275,31 +265,6 @@ std::optional<std::vector<Tri>> SectionCap(const std::vector<Tri>& below,
     cap.push_back(t);
   }
   return cap;
-}
-
-// Whether `p` is inside the closed shell `triangles` (ray parity along a fixed, generic
-// direction; used only to give a cavity shell, disjoint from every other shell, its owner).
-bool InsideShell(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& v,
-                 const std::vector<Tri>& triangles) {
-  const Eigen::Vector3d dir =
-      Eigen::Vector3d(0.5773502691896258, 0.5773912345, 0.5772987654).normalized();
-  int crossings = 0;
-  for (const Tri& t : triangles) {
-    const Eigen::Vector3d& a = v[static_cast<size_t>(t[0])];
-    const Eigen::Vector3d e1 = v[static_cast<size_t>(t[1])] - a,
-                          e2 = v[static_cast<size_t>(t[2])] - a;
-    const Eigen::Vector3d h = dir.cross(e2);
-    const double det = e1.dot(h);
-    if (std::abs(det) < 1e-300) continue;
-    const Eigen::Vector3d s = p - a;
-    const double u = s.dot(h) / det;
-    if (u < 0 || u > 1) continue;
-    const Eigen::Vector3d q = s.cross(e1);
-    const double w = dir.dot(q) / det;
-    if (w < 0 || u + w > 1) continue;
-    if (e2.dot(q) / det > 0) ++crossings;
-  }
-  return crossings % 2 == 1;
 }
 
 }  // namespace
@@ -469,8 +434,10 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
   const std::vector<int> label =
       ShellLabels(piece.triangles, SortedEdgeFaces(piece.triangles), &count);
   std::vector<std::vector<Tri>> shells(static_cast<size_t>(count));
+  std::vector<std::vector<int>> shell_faces(static_cast<size_t>(count));
   for (size_t f = 0; f < piece.triangles.size(); ++f) {
     shells[static_cast<size_t>(label[f])].push_back(piece.triangles[f]);
+    shell_faces[static_cast<size_t>(label[f])].push_back(static_cast<int>(f));
   }
   if (count == 1) {
     ExactPiece out = piece;
@@ -499,15 +466,18 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
   for (int s = 0; s < count; ++s) {
     if (volume[static_cast<size_t>(s)] >= 0) owner[static_cast<size_t>(s)] = s;
   }
+  // Exactly (a cavity can lie within rounding of its shell, or touch it where a pinch was split);
+  // only when there is a cavity, which few cuts leave.
+  const bool any_cavity = std::count(owner.begin(), owner.end(), -1) > 0;
+  const std::vector<std::vector<int>> enclosing =
+      any_cavity ? EnclosingShells(ToDouble(piece), shell_faces)
+                 : std::vector<std::vector<int>>(static_cast<size_t>(count));
   for (int s = 0; s < count; ++s) {
     if (owner[static_cast<size_t>(s)] >= 0) continue;
-    const Eigen::Vector3d& p = v[static_cast<size_t>(shells[static_cast<size_t>(s)][0][0])];
     int best = -1;
-    for (int o = 0; o < count; ++o) {
+    for (const int o : enclosing[static_cast<size_t>(s)]) {
       if (volume[static_cast<size_t>(o)] < 0) continue;
-      if (best >= 0 && volume[static_cast<size_t>(o)] >= volume[static_cast<size_t>(best)])
-        continue;
-      if (InsideShell(p, v, shells[static_cast<size_t>(o)])) best = o;
+      if (best < 0 || volume[static_cast<size_t>(o)] < volume[static_cast<size_t>(best)]) best = o;
     }
     owner[static_cast<size_t>(s)] = best < 0 ? s : best;
   }

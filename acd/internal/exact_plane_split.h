@@ -52,7 +52,9 @@ bool SplitByPlane(const ExactPiece& piece, const ExactKernel::Plane_3& plane, Ex
                   ExactPiece* above);
 
 /// The connected solids of `piece`: its shells grouped by edge connectivity, each cavity shell
-/// (negative volume) given to the smallest outer shell that contains it. Ordered by their
+/// (negative volume) given to the smallest outer shell that contains it (EnclosingShells(), on
+/// the rounded coordinates: exact); a cavity no outer shell contains stands alone, inside out,
+/// and the caller rejects it. Ordered by their
 /// smallest triangle index, so the order is deterministic.
 std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece);
 

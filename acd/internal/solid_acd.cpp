@@ -11,6 +11,7 @@
 #include <tuple>
 #include <utility>
 
+#include "acd/internal/closed_shells.h"
 #include "acd/internal/cut_plane.h"
 #include "acd/internal/cut_topology.h"
 #include "acd/internal/exact_plane_split.h"
@@ -91,7 +92,8 @@ std::vector<CutPiece> Cut(const ExactPiece& piece, const Plane3d& plane, bool* s
   for (ExactPiece& p : ConnectedSolids(above)) solids.push_back(std::move(p));
   // A section the cap could not close cleanly (constraints that overlap or cross, which a
   // valid solid's section should not have) rejects the plane rather than leak an open piece;
-  // so does a piece that is valid exactly but not once rounded to the doubles it is output as.
+  // so does a piece that is valid exactly but not once rounded to the doubles it is output as,
+  // and a cavity that no outer shell of its half encloses (only a defect could leave one).
   // A plane that only shaves off a rounding-level sliver (a plane through a vertex whose
   // neighbours lie a hair off it) is flagged: such a piece would be a component of no use, so
   // the plane is taken only when no other splits the piece.
@@ -103,6 +105,7 @@ std::vector<CutPiece> Cut(const ExactPiece& piece, const Plane3d& plane, bool* s
     const ShellTopology topology = Topology(p.triangles);
     if (!topology.closed || !RoundsToValidSolid(p, &faces_of_piece)) return {};
     TriangleMesh mesh = ToDouble(p);
+    if (VolumeSign(mesh) < 0) return {};
     volumes.push_back(MeshVolume(mesh));
     total += volumes.back();
     out.push_back({std::move(p), std::move(mesh), topology});

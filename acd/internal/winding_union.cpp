@@ -19,6 +19,7 @@
 
 #include "acd/internal/disjoint_sets.h"
 #include "acd/internal/exact_rounding.h"
+#include "acd/internal/separate_pinches.h"
 #include "base/random.h"
 
 namespace acdplan::acd::internal {
@@ -31,9 +32,6 @@ using Segment = K::Segment_3;
 using Triangle = K::Triangle_3;
 using Corners = std::array<Point, 3>;
 
-// How far the copies of a pinch vertex move apart, relative to the shortest edge at it: far
-// above rounding (1e-16), far below the fan's own size.
-constexpr double kPinchShift = 1e-3;
 // Shells of the result below this fraction of the largest one's volume are dropped (the solid
 // ACD, too, avoids cuts that leave pieces below 1e-9 of their volume).
 constexpr double kSpeckFraction = 1e-9;
@@ -173,74 +171,6 @@ std::optional<int> FrontWinding(const std::vector<Triangle>& shells,
     if (const std::optional<int> winding = Crossings(shells, candidates, from, to)) return winding;
   }
   return std::nullopt;
-}
-
-// Gives each fan of triangles around a pinch vertex (one where `triangles` meet in several
-// fans, e.g. two parts of the solid touching at a point) its own copy of the vertex, moved a
-// little (kPinchShift) toward the centroid of that fan's corners, so that the surface becomes
-// a 2-manifold. (The fans' solids can be wedges that their mean normal points out of; their
-// corners lie on their own sides.) Returns the number of pinch vertices.
-int SeparatePinches(std::vector<Eigen::Vector3d>* vertices,
-                    std::vector<std::array<int, 3>>* triangles) {
-  std::vector<std::vector<int>> around(vertices->size());
-  for (size_t f = 0; f < triangles->size(); ++f) {
-    for (const int v : (*triangles)[f])
-      around[static_cast<size_t>(v)].push_back(static_cast<int>(f));
-  }
-  int pinches = 0;
-  for (size_t v = 0; v < around.size(); ++v) {
-    const std::vector<int>& faces = around[v];
-    // Fans: the faces around v joined across their edges through v.
-    DisjointSets fans(static_cast<int>(faces.size()));
-    std::map<int, int> by_neighbour;  // the other end of an edge through v -> a face using it
-    for (size_t i = 0; i < faces.size(); ++i) {
-      for (const int w : (*triangles)[static_cast<size_t>(faces[i])]) {
-        if (w == static_cast<int>(v)) continue;
-        const auto [it, inserted] = by_neighbour.emplace(w, static_cast<int>(i));
-        if (!inserted) fans.Unite(it->second, static_cast<int>(i));
-      }
-    }
-    std::map<int, Eigen::Vector3d> toward;  // fan (its lowest member) -> to its rim's centroid
-    for (size_t i = 0; i < faces.size(); ++i) {
-      const auto& t = (*triangles)[static_cast<size_t>(faces[i])];
-      const Eigen::Vector3d a = (*vertices)[static_cast<size_t>(t[0])];
-      const Eigen::Vector3d b = (*vertices)[static_cast<size_t>(t[1])];
-      const Eigen::Vector3d c = (*vertices)[static_cast<size_t>(t[2])];
-      const auto it = toward.emplace(fans.Find(static_cast<int>(i)), Eigen::Vector3d::Zero()).first;
-      it->second += a + b + c - 3.0 * (*vertices)[v];
-    }
-    if (toward.size() < 2) continue;
-    ++pinches;
-    const Eigen::Vector3d pinch = (*vertices)[v];
-    // Far shorter than any edge at v, so each copy stays in its own fan's neighbourhood.
-    double shortest = std::numeric_limits<double>::infinity();
-    for (const int f : faces) {
-      for (const int w : (*triangles)[static_cast<size_t>(f)]) {
-        if (w != static_cast<int>(v))
-          shortest = std::min(shortest, ((*vertices)[static_cast<size_t>(w)] - pinch).norm());
-      }
-    }
-    const double shift = kPinchShift * shortest;
-    std::map<int, int> copy;  // The first fan keeps the vertex (moved), the others get new ones.
-    for (const auto& [fan, direction] : toward) {
-      const double norm = direction.norm();
-      const Eigen::Vector3d moved =
-          norm > 0 ? Eigen::Vector3d(pinch + (shift / norm) * direction) : pinch;
-      if (copy.empty()) {
-        copy[fan] = static_cast<int>(v);
-        (*vertices)[v] = moved;
-      } else {
-        copy[fan] = static_cast<int>(vertices->size());
-        vertices->push_back(moved);
-      }
-    }
-    for (size_t i = 0; i < faces.size(); ++i) {
-      for (int& w : (*triangles)[static_cast<size_t>(faces[i])]) {
-        if (w == static_cast<int>(v)) w = copy[fans.Find(static_cast<int>(i))];
-      }
-    }
-  }
-  return pinches;
 }
 
 // Rounding can put a corner of a sliver triangle exactly on its opposite edge (three collinear

@@ -36,8 +36,8 @@ struct WindingUnion {
 /// 4. A group is kept when w > 0 on exactly one of its sides, facing the other side.
 /// 5. The result is rounded to doubles. A vertex where it meets itself in several fans (two
 ///    parts touching at a point, as a mirror-symmetric model's halves often do on their plane)
-///    gets one copy per fan, moved toward the centroid of that fan's corners by 1e-3 of the
-///    shortest edge at the vertex, so that the surface is a 2-manifold. A triangle that rounding
+///    gets one copy per fan, moved by 1e-3 of the shortest edge at the vertex
+///    (SeparatePinches()), so that the surface is a 2-manifold. A triangle that rounding
 ///    made flat (a corner on the opposite edge) is removed and its neighbour split there.
 /// 6. Shells (edge-connected) enclosing less than 1e-9 of the largest one's volume are dropped:
 ///    specks and bubbles where two sheets crossed almost tangentially, of no use to a cut.

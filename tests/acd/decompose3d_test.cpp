@@ -264,6 +264,47 @@ TEST(Decompose3d, ANeedlePatchWhoseHullPlanesAreRoundingNoisePassesTheCheck) {
   EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
 }
 
+// A valid solid whose cavity touches its outer surface at a corner. Before PrepareMesh() gave
+// each fan there its own vertex, no cut could split the piece holding both fans (they round to
+// one position, which RoundsToValidSolid() refuses): the L was output whole, 4 x tau deep, and
+// CheckDecomposition3d() found it non-manifold.
+TEST(Decompose3d, ACavityTouchingTheSurfaceAtAVertexIsCutOpen) {
+  const TriangleMesh l = LBlock();
+  const int corner = test::VertexAt(l, {2, 0, 1});
+  ASSERT_GE(corner, 0);
+  const TriangleMesh solid = test::WithCavityAtCorner(l, corner, {-1, 1, -1}, 0.25);
+  for (const double tau_rel : {0.2, 0.05}) {
+    const FuzzedRun run = RunAsTheFuzzerDoes(solid, false, tau_rel);
+    ASSERT_TRUE(run.prepared.solid()) << run.prepared.defects.first;
+    EXPECT_TRUE(run.check.ok()) << "tau_rel " << tau_rel << "\n"
+                                << acdplan::test::ProblemLines(run.check);
+    EXPECT_GE(run.d.components.size(), 2u);
+    for (const Component3d& c : run.d.components) EXPECT_EQ(EulerCharacteristic(c.mesh), 2);
+  }
+}
+
+// Found by fuzz/fuzz_decompose3d
+// (fuzz/corpus/decompose3d/regression-cavity-touching-its-shell.bin): repair unites two
+// self-crossing shells at 1e30 into one part with a cavity that touches the outer shell at two
+// vertices. The cavity's owner after each cut was decided by ray parity from its first vertex, one
+// of those two: it came out as a component of its own, inside out
+// ("mesh is inward-oriented"). Now PrepareMesh() separates the fans, ConnectedSolids() decides
+// the nesting exactly, and a cut that leaves an inward piece is refused.
+TEST(Decompose3d, ACavityTouchingItsShellIsNeverAComponentOfItsOwn) {
+  const std::vector<Eigen::Vector3d> v{{-1, 65, 4}, {7, 1, 8}, {1, 8, 6},  {9, 2, 2},
+                                       {3, 7, 2},   {9, 6, 3}, {4, 10, 3}, {5, 4, 10},
+                                       {0, 9, 0},   {0, 6, 8}, {0, 0, 0},  {16, 0, 0}};
+  const std::vector<Eigen::Vector3i> t{{4, 5, 0}, {4, 0, 4},   {0, 0, 4},  {4, 0, 0},   {10, 11, 0},
+                                       {1, 7, 0}, {7, 6, 1},   {2, 8, 1},  {8, 7, 2},   {3, 6, 2},
+                                       {9, 8, 3}, {4, 10, 3},  {10, 9, 4}, {5, 11, 10}, {11, 0, 1},
+                                       {7, 0, 7}, {6, 1, 2},   {8, 1, 8},  {7, 2, 3},   {9, 2, 9},
+                                       {8, 3, 4}, {10, 3, 10}, {9, 4, 4},  {11, 11, 5}, {0, 6, 5}};
+  const FuzzedRun run = RunAsTheFuzzerDoes(FuzzLatticeMesh(v, t, 1e30), true, 0.2);
+  ASSERT_TRUE(run.prepared.solid()) << run.prepared.defects.first;
+  EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
+  for (const Component3d& c : run.d.components) EXPECT_GT(c.volume, 0);
+}
+
 TEST(Decompose3d, SameInputSameBytes) {
   const TriangleMesh torus = Torus(2.0, 1.0, 16, 8);
   const Decomposition3d a = Solve(torus, 0.3), b = Solve(torus, 0.3);

@@ -87,6 +87,21 @@ TEST(ExactPlaneSplitTest, VerticesWithinTheInPlaneToleranceAreOnThePlane) {
   }
 }
 
+// A cavity whose first vertex is a corner of the box around it (the same vertex): the ray from
+// there that the nesting was once decided by leaves the box at once, and the cavity was a solid
+// of its own, inside out. Decided exactly, at a vertex off the box, it stays with the box.
+TEST(ExactPlaneSplitTest, ACavityTouchingItsShellAtAVertexStaysWithIt) {
+  const TriangleMesh box = test::Box({0, 0, 0}, {4, 4, 4});
+  const int corner = test::VertexAt(box, {4, 4, 4});
+  ASSERT_GE(corner, 0);
+  const TriangleMesh solid = test::WithCavityAtCorner(box, corner, {-1, -1, -1}, 1.0);
+  ASSERT_NEAR(MeshVolume(solid), 64.0 - 1.0 / 12, 1e-12);
+  const std::vector<ExactPiece> solids = ConnectedSolids(ToExact(solid));
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_EQ(solids[0].triangles.size(), 16u);
+  EXPECT_NEAR(MeshVolume(ToDouble(solids[0])), 64.0 - 1.0 / 12, 1e-12);
+}
+
 // The box [0, 4] x [0, 2] x [0, 2] whose top is two roofs, square [0, 2] x [0, 2] with its apex
 // at (1, 1, left) and square [2, 4] x [0, 2] at (3, 1, right): a peak above z = 2, a dimple
 // below it.

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -384,6 +385,62 @@ TEST(PrepareMeshTest, BoxWithACavityIsOnePartOfTwoShells) {
     EXPECT_DOUBLE_EQ(MeshVolume(prepared.mesh), 64.0 - 8.0);
     EXPECT_TRUE(HasNote(prepared, "found 1 solid part with 1 cavity"));
     EXPECT_TRUE(ClosedAndConsistent(prepared.parts[0]));
+  }
+}
+
+// The most fans (faces around a vertex joined across their edges through it) at one vertex.
+int MostFansAtAVertex(const TriangleMesh& mesh) {
+  int most = 0;
+  for (int v = 0; v < mesh.vertices.rows(); ++v) {
+    std::vector<std::set<int>> fans;  // each fan's vertices other than v
+    for (int f = 0; f < mesh.triangles.rows(); ++f) {
+      std::set<int> others;
+      for (int k = 0; k < 3; ++k) {
+        if (mesh.triangles(f, k) != v) others.insert(mesh.triangles(f, k));
+      }
+      if (others.size() != 2) continue;
+      // Joins every fan it shares an edge through v with.
+      for (auto it = fans.begin(); it != fans.end();) {
+        if (std::any_of(it->begin(), it->end(), [&](int w) { return others.count(w) > 0; })) {
+          others.insert(it->begin(), it->end());
+          it = fans.erase(it);
+        } else {
+          ++it;
+        }
+      }
+      fans.push_back(others);
+    }
+    most = std::max(most, static_cast<int>(fans.size()));
+  }
+  return most;
+}
+
+// A valid solid whose surface meets itself at a corner: the cavity's copy of the corner moves a
+// hair into the cavity, the box keeps its corner, and each vertex has one fan. The same whichever
+// shell comes first.
+TEST(PrepareMeshTest, ACavityTouchingTheOuterShellAtAVertexIsMovedOffIt) {
+  const TriangleMesh box = test::Box({0, 0, 0}, {4, 4, 4});
+  const TriangleMesh touching =
+      test::WithCavityAtCorner(box, test::VertexAt(box, {4, 4, 4}), {-1, -1, -1}, 1.0);
+  TriangleMesh cavity_first = touching;
+  const Eigen::Index n = touching.triangles.rows();
+  cavity_first.triangles << touching.triangles.bottomRows(4), touching.triangles.topRows(n - 4);
+  for (const TriangleMesh& solid : {touching, cavity_first}) {
+    ASSERT_EQ(MostFansAtAVertex(solid), 2);
+    const PreparedMesh prepared = PrepareMesh(solid);
+    ASSERT_TRUE(prepared.solid()) << prepared.defects.first;
+    ASSERT_EQ(prepared.parts.size(), 1u);
+    EXPECT_TRUE(
+        HasNote(prepared, "separated the fans of 1 pinch vertex where a part touches itself"));
+    EXPECT_TRUE(HasNote(prepared, "found 1 solid part with 1 cavity"));
+    EXPECT_EQ(prepared.mesh.vertices.rows(), 12);
+    EXPECT_EQ(MostFansAtAVertex(prepared.mesh), 1);
+    EXPECT_GE(test::VertexAt(prepared.mesh, {4, 4, 4}), 0);
+    // The cavity's apex moved 1e-3 of the shortest edge there (sqrt(1.5)) along the diagonal,
+    // toward its opposite face (area sqrt(3) / 8): the cavity (volume 1/12) shrank by a third of
+    // their product.
+    const double shrink = 1e-3 * std::sqrt(1.5) * (std::sqrt(3.0) / 8) / 3;
+    EXPECT_NEAR(MeshVolume(prepared.mesh), 64.0 - 1.0 / 12 + shrink, 1e-12);
   }
 }
 

@@ -103,6 +103,43 @@ inline TriangleMesh Concatenate(const TriangleMesh& a, const TriangleMesh& b) {
   return out;
 }
 
+/// The index of the vertex of `mesh` at `p`, or -1.
+inline int VertexAt(const TriangleMesh& mesh, const Eigen::Vector3d& p) {
+  for (int v = 0; v < mesh.vertices.rows(); ++v) {
+    if (mesh.vertices.row(v).transpose() == p) return v;
+  }
+  return -1;
+}
+
+/// `solid` (closed, outward) with a tetrahedral cavity whose first corner is the solid's vertex
+/// `corner` (the same index: the surface touches itself there) and whose other three corners
+/// lie `size` x (1, 1/2, 1/2), (1/2, 1, 1/2), (1/2, 1/2, 1) from it, each axis's sign given by
+/// `inward`, so inside the solid at a convex corner. Its first triangle starts at `corner`.
+inline TriangleMesh WithCavityAtCorner(const TriangleMesh& solid, int corner,
+                                       const Eigen::Vector3d& inward, double size) {
+  const Eigen::Vector3d c = solid.vertices.row(corner).transpose();
+  const int n = static_cast<int>(solid.vertices.rows());
+  TriangleMesh out = solid;
+  out.vertices.conservativeResize(n + 3, 3);
+  const Eigen::Vector3d offsets[] = {{1, 0.5, 0.5}, {0.5, 1, 0.5}, {0.5, 0.5, 1}};
+  for (int i = 0; i < 3; ++i) {
+    out.vertices.row(n + i) = (c + size * inward.cwiseProduct(offsets[i])).transpose();
+  }
+  std::vector<Eigen::Vector3i> cavity = {
+      {corner, n, n + 1}, {corner, n + 1, n + 2}, {corner, n + 2, n}, {n, n + 2, n + 1}};
+  const Eigen::Vector3d a = out.vertices.row(n).transpose() - c,
+                        b = out.vertices.row(n + 1).transpose() - c,
+                        d = out.vertices.row(n + 2).transpose() - c;
+  // As listed, the faces enclose volume -det(a, b, d) / 6: a cavity when det > 0.
+  if (a.dot(b.cross(d)) < 0) {
+    for (Eigen::Vector3i& t : cavity) std::swap(t(1), t(2));
+  }
+  out.triangles.conservativeResize(solid.triangles.rows() + 4, 3);
+  for (int i = 0; i < 4; ++i)
+    out.triangles.row(solid.triangles.rows() + i) = cavity[static_cast<size_t>(i)];
+  return out;
+}
+
 /// A PreparedMesh for a closed, clean, outward mesh: one part, no defects.
 inline PreparedMesh PreparedSolid(const TriangleMesh& mesh) {
   PreparedMesh prepared;
