@@ -283,6 +283,35 @@ TEST(Decompose3d, ACavityTouchingTheSurfaceAtAVertexIsCutOpen) {
   }
 }
 
+// One shell that touches itself: a square pyramid dented into the top of a 4 x 4 x 2 box, its
+// apex on the centre vertex of the bottom face. The dent's fan (the solid outside its cone)
+// moves up into the dent; the bottom's stays.
+TEST(Decompose3d, ADentWhoseTipTouchesTheBottomIsCutLikeAnyOther) {
+  const std::vector<Eigen::Vector3d> v{{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {2, 2, 0},
+                                       {0, 0, 2}, {4, 0, 2}, {4, 4, 2}, {0, 4, 2}, {1, 1, 2},
+                                       {3, 1, 2}, {3, 3, 2}, {1, 3, 2}};
+  std::vector<Eigen::Vector3i> t;
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    t.emplace_back(4, j, i);      // bottom
+    t.emplace_back(i, j, j + 5);  // sides
+    t.emplace_back(i, j + 5, i + 5);
+    t.emplace_back(i + 5, j + 5, j + 9);  // top, around the dent
+    t.emplace_back(i + 5, j + 9, i + 9);
+    t.emplace_back(i + 9, j + 9, 4);  // the dent
+  }
+  const TriangleMesh dented = MakeTriangleMesh(v, t);
+  ASSERT_NEAR(MeshVolume(dented), 32.0 - 8.0 / 3, 1e-12);
+  for (const double tau_rel : {0.2, 0.05}) {
+    const FuzzedRun run = RunAsTheFuzzerDoes(dented, false, tau_rel);
+    ASSERT_TRUE(run.prepared.solid()) << run.prepared.defects.first;
+    ASSERT_EQ(run.prepared.mesh.vertices.rows(), 14);  // The apex and its copy.
+    EXPECT_TRUE(run.check.ok()) << "tau_rel " << tau_rel << "\n"
+                                << acdplan::test::ProblemLines(run.check);
+    EXPECT_GE(run.d.components.size(), 2u);
+  }
+}
+
 // Found by fuzz/fuzz_decompose3d
 // (fuzz/corpus/decompose3d/regression-cavity-touching-its-shell.bin): repair unites two
 // self-crossing shells at 1e30 into one part with a cavity that touches the outer shell at two
