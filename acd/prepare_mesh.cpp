@@ -494,32 +494,63 @@ Diagnosis Recheck(const TriangleMesh& mesh, const std::string& where,
   return Diagnose(cleaned.mesh);
 }
 
+// The mesh's vertices and triangles as arrays, with each triangle's part.
+struct PartArrays {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> part_of;
+};
+PartArrays ArraysOf(const Diagnosis& d) {
+  PartArrays out;
+  for (Eigen::Index v = 0; v < d.mesh.vertices.rows(); ++v) {
+    out.vertices.push_back(d.mesh.vertices.row(v).transpose());
+  }
+  for (Eigen::Index f = 0; f < d.mesh.triangles.rows(); ++f) {
+    out.triangles.push_back(
+        {d.mesh.triangles(f, 0), d.mesh.triangles(f, 1), d.mesh.triangles(f, 2)});
+  }
+  out.part_of.assign(out.triangles.size(), -1);
+  for (size_t p = 0; p < d.parts.size(); ++p) {
+    for (const int f : d.parts[p]) out.part_of[static_cast<size_t>(f)] = static_cast<int>(p);
+  }
+  return out;
+}
+
 // A solid whose part meets itself at a vertex (a cavity touching the outer shell, two lobes of
 // one part) is valid, but no cut can keep such a point as a vertex of two fans, and its
 // components would not be 2-manifolds: each fan gets its own copy of the vertex, moved a hair
 // (internal::SeparatePinches), and the mesh is diagnosed again. Vertices where different parts
-// meet stay: each part is decomposed on its own.
+// meet stay: each part is decomposed on its own. A pinch that is left (too small to separate in
+// doubles) is a defect; the parts are then the patches, each closed one facing outward.
 Diagnosis SeparatePinchesOfParts(Diagnosis d, const std::string& where,
                                  std::vector<std::string>* notes) {
-  std::vector<Eigen::Vector3d> vertices;
-  for (Eigen::Index v = 0; v < d.mesh.vertices.rows(); ++v) {
-    vertices.push_back(d.mesh.vertices.row(v).transpose());
+  PartArrays a = ArraysOf(d);
+  const internal::PinchSeparation separation =
+      internal::SeparatePinches(&a.vertices, &a.triangles, a.part_of);
+  if (separation.separated > 0) {
+    notes->push_back("separated the fans of " + Plural(separation.separated, "pinch vertex") +
+                     " where a part touches itself by 1e-3 of their shortest edge");
+    std::vector<Eigen::Vector3i> faces;
+    for (const auto& t : a.triangles) faces.emplace_back(t[0], t[1], t[2]);
+    d = Recheck(MakeTriangleMesh(a.vertices, faces), where, notes);
+    if (!d.defects.none()) return d;
+    a = ArraysOf(d);
+  } else if (separation.left == 0) {
+    return d;
   }
-  std::vector<std::array<int, 3>> triangles;
-  for (Eigen::Index f = 0; f < d.mesh.triangles.rows(); ++f) {
-    triangles.push_back({d.mesh.triangles(f, 0), d.mesh.triangles(f, 1), d.mesh.triangles(f, 2)});
-  }
-  std::vector<int> part_of(triangles.size(), -1);
-  for (size_t p = 0; p < d.parts.size(); ++p) {
-    for (const int f : d.parts[p]) part_of[static_cast<size_t>(f)] = static_cast<int>(p);
-  }
-  const int pinches = internal::SeparatePinches(&vertices, &triangles, part_of);
-  if (pinches == 0) return d;
-  notes->push_back("separated the fans of " + Plural(pinches, "pinch vertex") +
-                   " where a part touches itself by 1e-3 of their shortest edge");
-  std::vector<Eigen::Vector3i> faces;
-  for (const auto& t : triangles) faces.emplace_back(t[0], t[1], t[2]);
-  return Recheck(MakeTriangleMesh(vertices, faces), where, notes);
+  // What is left: pinches too small to separate, or made again where the recheck merged copies.
+  int first = -1, fans_at_first = 0;
+  d.defects.pinch_vertices =
+      internal::CountPinches(a.triangles, a.vertices.size(), a.part_of, &first, &fans_at_first);
+  if (first < 0) return d;
+  d.defects.first = "vertex " + std::to_string(first) + " at " +
+                    At(d.mesh.vertices.row(first).transpose()) + " is a pinch: the surface meets " +
+                    "itself there in " + std::to_string(fans_at_first) + " fans of faces whose " +
+                    "edges are too short to move them apart (a solid's surface is a 2-manifold)";
+  OrientPatches(&d);  // Cavities outward again, as the patches of a mesh that is not a solid.
+  d.parts = d.patches;
+  d.cavities = 0;
+  return d;
 }
 
 }  // namespace
@@ -560,7 +591,10 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
     prepared.notes.push_back("found " + Plural(d.parts.size(), "surface patch") + ": " +
                              Plural(d.defects.boundary_edges, "boundary edge") + ", " +
                              Plural(d.defects.non_manifold_edges, "non-manifold edge") + ", " +
-                             Plural(d.defects.self_intersections, "self-intersection"));
+                             Plural(d.defects.self_intersections, "self-intersection") +
+                             (d.defects.pinch_vertices > 0
+                                  ? ", " + Plural(d.defects.pinch_vertices, "pinch vertex")
+                                  : ""));
   }
   for (const auto& faces : d.parts) prepared.parts.push_back(ExtractFaces(d.mesh, faces));
   // Parts of a solid are closed; otherwise they are the patches.

@@ -22,11 +22,15 @@ struct MeshDefects {
   int boundary_edges = 0;      ///< Edges with one incident face: the surface is open.
   int non_manifold_edges = 0;  ///< Edges with three or more incident faces.
   int self_intersections = 0;  ///< Pairs of faces that meet other than in a shared edge/vertex.
+  /// Vertices where a closed part meets itself in several fans of faces that could not be
+  /// separated (their edges there too short to move them apart; see step 5 below).
+  int pinch_vertices = 0;
   /// The first defect, naming the rule, an element and a point, e.g. "edge 12-40 at (0.5, 1, 0)
   /// has 3 faces (a solid needs exactly 2)"; empty when there is none.
   std::string first;
   bool none() const {
-    return boundary_edges == 0 && non_manifold_edges == 0 && self_intersections == 0;
+    return boundary_edges == 0 && non_manifold_edges == 0 && self_intersections == 0 &&
+           pinch_vertices == 0;
   }
 };
 
@@ -76,7 +80,9 @@ struct PreparedMesh {
 ///    touching the outer shell, two lobes touching at a point) gets one copy per fan, moved 1e-3
 ///    of the shortest edge there (internal::SeparatePinches; the outer shell's fan stays), so
 ///    that every part is a 2-manifold that cuts can split; then steps 1-4 run again. Parts that
-///    touch each other at a vertex keep it: each is decomposed on its own.
+///    touch each other at a vertex keep it: each is decomposed on its own. A pinch left (its
+///    edges too short for a copy to move off it in doubles) is a defect, "vertex 3 at (x, y, z)
+///    is a pinch: ...", and the parts are then the patches.
 /// Repair (options.repair, when there are defects): boundary loops are triangulated without
 /// new vertices (PMP::triangulate_hole_polyline, 2D constrained Delaunay when the loop is
 /// nearly planar); then, if the mesh is closed and manifold, each group of closed shells that

@@ -38,7 +38,8 @@ constexpr ReportLines MeshLine(14);
 std::string DefectSummary(const acd::MeshDefects& defects) {
   return Plural(defects.boundary_edges, "boundary edge") + ", " +
          Plural(defects.non_manifold_edges, "non-manifold edge") + ", " +
-         Plural(defects.self_intersections, "self-intersecting face pair");
+         Plural(defects.self_intersections, "self-intersecting face pair") +
+         (defects.pinch_vertices > 0 ? ", " + Plural(defects.pinch_vertices, "pinch vertex") : "");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@ namespace {
 
 // How far the copies of a pinch vertex move, relative to the shortest edge at it.
 constexpr double kPinchShift = 1e-3;
+constexpr double kMinShiftUlps = 16;
 
 // One fan around a pinch vertex: its faces (positions in the vertex's face list) and the
 // centroid of their corners.
@@ -44,6 +45,31 @@ bool FacesOutOfCone(const std::vector<Eigen::Vector3d>& vertices,
   return volume >= 0;
 }
 
+// Calls visit(v, faces, last) for each vertex v < vertex_count and each group's faces at v
+// (ascending; groups in ascending order, `last` true for v's last group), the faces as they
+// are when it is called.
+template <class Visit>
+void ForEachGroupAtVertex(const std::vector<std::array<int, 3>>& triangles, size_t vertex_count,
+                          const std::vector<int>& group, Visit visit) {
+  std::vector<std::vector<int>> around(vertex_count);
+  for (size_t f = 0; f < triangles.size(); ++f) {
+    for (const int v : triangles[f]) around[static_cast<size_t>(v)].push_back(static_cast<int>(f));
+  }
+  auto group_of = [&](int f) { return group.empty() ? 0 : group[static_cast<size_t>(f)]; };
+  std::vector<int> run;
+  for (size_t v = 0; v < vertex_count; ++v) {
+    std::vector<int>& faces = around[v];
+    std::stable_sort(faces.begin(), faces.end(),
+                     [&](int f, int g) { return group_of(f) < group_of(g); });
+    for (size_t begin = 0, end = 0; begin < faces.size(); begin = end) {
+      while (end < faces.size() && group_of(faces[end]) == group_of(faces[begin])) ++end;
+      run.assign(faces.begin() + static_cast<std::ptrdiff_t>(begin),
+                 faces.begin() + static_cast<std::ptrdiff_t>(end));
+      visit(static_cast<int>(v), run, end == faces.size() && begin == 0);
+    }
+  }
+}
+
 }  // namespace
 
 int FansAroundVertex(const std::vector<std::array<int, 3>>& triangles,
@@ -69,80 +95,88 @@ int FansAroundVertex(const std::vector<std::array<int, 3>>& triangles,
   return count;
 }
 
-int SeparatePinches(std::vector<Eigen::Vector3d>* vertices,
-                    std::vector<std::array<int, 3>>* triangles, const std::vector<int>& group) {
-  std::vector<std::vector<int>> around(vertices->size());
-  for (size_t f = 0; f < triangles->size(); ++f) {
-    for (const int v : (*triangles)[f])
-      around[static_cast<size_t>(v)].push_back(static_cast<int>(f));
-  }
-  auto group_of = [&](int f) { return group.empty() ? 0 : group[static_cast<size_t>(f)]; };
-  int pinches = 0;
-  const size_t original = vertices->size();
-  for (size_t v = 0; v < original; ++v) {
-    std::vector<int> faces = around[v];
-    std::stable_sort(faces.begin(), faces.end(),
-                     [&](int f, int g) { return group_of(f) < group_of(g); });
-    bool pinched = false;
-    for (size_t begin = 0, end = 0; begin < faces.size(); begin = end) {
-      while (end < faces.size() && group_of(faces[end]) == group_of(faces[begin])) ++end;
-      const std::vector<int> run(faces.begin() + static_cast<std::ptrdiff_t>(begin),
-                                 faces.begin() + static_cast<std::ptrdiff_t>(end));
-      std::vector<int> fan_of;
-      std::vector<Fan> fans(
-          static_cast<size_t>(FansAroundVertex(*triangles, run, static_cast<int>(v), &fan_of)));
-      if (fans.size() < 2) continue;
-      for (size_t i = 0; i < run.size(); ++i) {
-        fans[static_cast<size_t>(fan_of[i])].members.push_back(run[i]);
-      }
-      pinched = true;
-      const Eigen::Vector3d pinch = (*vertices)[v];
-      double shortest = std::numeric_limits<double>::infinity();
-      bool both_kinds = false;
-      for (Fan& fan : fans) {
-        for (const int f : fan.members) {
-          for (const int w : (*triangles)[static_cast<size_t>(f)]) {
-            fan.centroid += (*vertices)[static_cast<size_t>(w)];
-            if (w != static_cast<int>(v)) {
-              shortest = std::min(shortest, ((*vertices)[static_cast<size_t>(w)] - pinch).norm());
+PinchSeparation SeparatePinches(std::vector<Eigen::Vector3d>* vertices,
+                                std::vector<std::array<int, 3>>* triangles,
+                                const std::vector<int>& group) {
+  PinchSeparation out;
+  int counted = -1;  // The last vertex counted as separated or left.
+  std::vector<int> fan_of;
+  ForEachGroupAtVertex(
+      *triangles, vertices->size(), group,
+      [&](int v, const std::vector<int>& run, bool only_group) {
+        std::vector<Fan> fans(static_cast<size_t>(FansAroundVertex(*triangles, run, v, &fan_of)));
+        if (fans.size() < 2) return;
+        for (size_t i = 0; i < run.size(); ++i) {
+          fans[static_cast<size_t>(fan_of[i])].members.push_back(run[i]);
+        }
+        const Eigen::Vector3d pinch = (*vertices)[static_cast<size_t>(v)];
+        double shortest = std::numeric_limits<double>::infinity();
+        bool both_kinds = false;
+        for (Fan& fan : fans) {
+          for (const int f : fan.members) {
+            for (const int w : (*triangles)[static_cast<size_t>(f)]) {
+              fan.centroid += (*vertices)[static_cast<size_t>(w)];
+              if (w != v)
+                shortest = std::min(shortest, ((*vertices)[static_cast<size_t>(w)] - pinch).norm());
+            }
+          }
+          fan.centroid /= 3.0 * static_cast<double>(fan.members.size());
+          fan.faces_out = FacesOutOfCone(*vertices, *triangles, fan.members, fan.centroid);
+          both_kinds = both_kinds || fan.faces_out != fans.front().faces_out;
+        }
+        const double shift = kPinchShift * shortest;
+        const double ulp = pinch.cwiseAbs().maxCoeff() * std::numeric_limits<double>::epsilon();
+        if (!(shift >= kMinShiftUlps * ulp)) {
+          if (counted != v) ++out.left;
+          counted = v;
+          return;
+        }
+        if (counted != v) ++out.separated;
+        counted = v;
+        // v itself goes to the fan that stays, or else (when no other group uses it) to the first.
+        bool v_taken = both_kinds || !only_group;
+        bool kept = false;
+        for (Fan& fan : fans) {
+          int copy = v;
+          if (both_kinds && fan.faces_out && !kept) {
+            kept = true;
+          } else {
+            const Eigen::Vector3d direction = fan.centroid - pinch;
+            const double norm = direction.norm();
+            const Eigen::Vector3d moved =
+                norm > 0 ? Eigen::Vector3d(pinch + (shift / norm) * direction) : pinch;
+            if (v_taken) {
+              copy = static_cast<int>(vertices->size());
+              vertices->push_back(moved);
+            } else {
+              (*vertices)[static_cast<size_t>(v)] = moved;
+              v_taken = true;
+            }
+          }
+          for (const int f : fan.members) {
+            for (int& w : (*triangles)[static_cast<size_t>(f)]) {
+              if (w == v) w = copy;
             }
           }
         }
-        fan.centroid /= 3.0 * static_cast<double>(fan.members.size());
-        fan.faces_out = FacesOutOfCone(*vertices, *triangles, fan.members, fan.centroid);
-        both_kinds = both_kinds || fan.faces_out != fans.front().faces_out;
-      }
-      const double shift = kPinchShift * shortest;
-      // v itself goes to the fan that stays, or else (when no other group uses it) to the first.
-      bool v_taken = both_kinds || end - begin < faces.size();
-      bool kept = false;
-      for (Fan& fan : fans) {
-        int copy = static_cast<int>(v);
-        if (both_kinds && fan.faces_out && !kept) {
-          kept = true;
-        } else {
-          const Eigen::Vector3d direction = fan.centroid - pinch;
-          const double norm = direction.norm();
-          const Eigen::Vector3d moved =
-              norm > 0 ? Eigen::Vector3d(pinch + (shift / norm) * direction) : pinch;
-          if (v_taken) {
-            copy = static_cast<int>(vertices->size());
-            vertices->push_back(moved);
-          } else {
-            (*vertices)[v] = moved;
-            v_taken = true;
-          }
-        }
-        for (const int f : fan.members) {
-          for (int& w : (*triangles)[static_cast<size_t>(f)]) {
-            if (w == static_cast<int>(v)) w = copy;
-          }
-        }
-      }
-    }
-    pinches += pinched ? 1 : 0;
-  }
-  return pinches;
+      });
+  return out;
+}
+
+int CountPinches(const std::vector<std::array<int, 3>>& triangles, size_t vertex_count,
+                 const std::vector<int>& group, int* first, int* fans_at_first) {
+  int count = 0, counted = -1;
+  *first = -1;
+  std::vector<int> fan;
+  ForEachGroupAtVertex(triangles, vertex_count, group,
+                       [&](int v, const std::vector<int>& run, bool) {
+                         const int fans = FansAroundVertex(triangles, run, v, &fan);
+                         if (fans < 2 || counted == v) return;
+                         counted = v;
+                         ++count;
+                         if (*first < 0) *first = v, *fans_at_first = fans;
+                       });
+  return count;
 }
 
 }  // namespace acdplan::acd::internal

@@ -26,10 +26,22 @@ int FansAroundVertex(const std::vector<std::array<int, 3>>& triangles,
 /// cavity's cone inside the outer shell's), so moving it could cross them. `group`, when not
 /// empty, gives each triangle a group (e.g. the solid part it belongs to), and only fans of one
 /// group are separated: a vertex that two groups share, one fan each, is left as it is. New
-/// copies are appended to `vertices`. The caller checks the result for crossings (rounding or
-/// nearly tangent fans can make them). Returns the number of pinch vertices separated.
+/// copies are appended to `vertices`. A pinch whose shortest edge is so short that 1e-3 of it
+/// is below 16 units in the last place of its coordinates (an earlier separation at rounding
+/// level) is left as it is: its copies would round back onto it. The caller checks the result
+/// for crossings (rounding or nearly tangent fans can make them) and for pinches left.
 /// Complexity: O(F log F) for F triangles.
-int SeparatePinches(std::vector<Eigen::Vector3d>* vertices,
-                    std::vector<std::array<int, 3>>* triangles, const std::vector<int>& group = {});
+struct PinchSeparation {
+  int separated = 0;  ///< Pinch vertices given a copy per fan.
+  int left = 0;       ///< Pinch vertices too small to separate, left as they are.
+};
+PinchSeparation SeparatePinches(std::vector<Eigen::Vector3d>* vertices,
+                                std::vector<std::array<int, 3>>* triangles,
+                                const std::vector<int>& group = {});
+
+/// The vertices < `vertex_count` where one group's triangles (`group` as for SeparatePinches())
+/// form several fans; `*first` is the lowest (-1 if none) and `*fans_at_first` its fan count.
+int CountPinches(const std::vector<std::array<int, 3>>& triangles, size_t vertex_count,
+                 const std::vector<int>& group, int* first, int* fans_at_first);
 
 }  // namespace acdplan::acd::internal

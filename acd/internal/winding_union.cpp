@@ -465,7 +465,8 @@ std::optional<WindingUnion> UniteByWinding(const TriangleMesh& mesh, const std::
   std::vector<std::array<int, 3>> sorted = std::move(kept);
   WindingUnion out;
   MendFlatTriangles(vertices, &sorted);
-  out.pinches = SeparatePinches(&vertices, &sorted);
+  out.pinches =
+      SeparatePinches(&vertices, &sorted).separated;  // PrepareMesh() checks what is left.
   out.specks = DropSpecks(vertices, &sorted);
   if (out.specks > 0) {  // Their vertices go too (the order of the others is kept).
     std::vector<Eigen::Vector3d> compact;

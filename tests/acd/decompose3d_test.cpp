@@ -1,5 +1,6 @@
 #include "acd/decompose3d.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -332,6 +333,29 @@ TEST(Decompose3d, ACavityTouchingItsShellIsNeverAComponentOfItsOwn) {
   ASSERT_TRUE(run.prepared.solid()) << run.prepared.defects.first;
   EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
   for (const Component3d& c : run.d.components) EXPECT_GT(c.volume, 0);
+}
+
+// Found by fuzz/fuzz_decompose3d
+// (fuzz/corpus/decompose3d/regression-pinch-too-small-to-separate.bin), from the input above:
+// repair leaves a vertex whose shortest edges are a few units in the last place of its coordinates
+// (1e30), where the part meets itself in two fans. 1e-3 of those edges moves nothing in doubles, so
+// the copies rounded back onto the vertex, and the part went to the solid ACD pinched
+// (CheckDecomposition3d: "not a 2-manifold"). Such a pinch is now a defect, and the mesh gets the
+// surface ACD.
+TEST(Decompose3d, APinchTooSmallToSeparateIsADefect) {
+  const std::vector<Eigen::Vector3d> v{{-1, -1, 4}, {7, 1, 8},   {1, 8, 6},  {9, 2, 2},
+                                       {3, 7, 2},   {9, 6, 3},   {4, 10, 3}, {5, 4, 10},
+                                       {0, 9, 0},   {115, 6, 8}, {0, 0, 0},  {16, 0, 0}};
+  const std::vector<Eigen::Vector3i> t{{4, 5, 0}, {4, 0, 4},   {0, 0, 4},  {4, 0, 0},   {10, 11, 0},
+                                       {1, 7, 0}, {7, 6, 1},   {2, 8, 1},  {8, 7, 2},   {3, 6, 2},
+                                       {9, 8, 3}, {4, 10, 3},  {10, 9, 4}, {5, 11, 10}, {11, 0, 1},
+                                       {7, 0, 7}, {6, 1, 2},   {8, 1, 8},  {7, 2, 3},   {9, 2, 9},
+                                       {8, 3, 4}, {10, 3, 10}, {9, 4, 4},  {11, 10, 5}, {0, 6, 5}};
+  const FuzzedRun run = RunAsTheFuzzerDoes(FuzzLatticeMesh(v, t, 1e30), true, 0.2);
+  ASSERT_FALSE(run.prepared.solid());
+  EXPECT_EQ(run.prepared.defects.pinch_vertices, 1);
+  EXPECT_THAT(run.prepared.defects.first, ::testing::HasSubstr(" is a pinch: the surface meets"));
+  EXPECT_TRUE(run.check.ok()) << acdplan::test::ProblemLines(run.check);
 }
 
 TEST(Decompose3d, SameInputSameBytes) {
