@@ -13,8 +13,7 @@ namespace {
 constexpr double kPinchShift = 1e-3;
 constexpr double kMinShiftUlps = 16;
 
-// One fan around a pinch vertex: its faces (positions in the vertex's face list) and the
-// centroid of their corners.
+// One fan around a pinch vertex: its faces and the centroid of their corners.
 struct Fan {
   std::vector<int> members;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -45,9 +44,9 @@ bool FacesOutOfCone(const std::vector<Eigen::Vector3d>& vertices,
   return volume >= 0;
 }
 
-// Calls visit(v, faces, last) for each vertex v < vertex_count and each group's faces at v
-// (ascending; groups in ascending order, `last` true for v's last group), the faces as they
-// are when it is called.
+// Calls visit(v, faces, only) for each vertex v < vertex_count and each group's faces at v
+// (ascending; groups in ascending order), `only` true when that group has all of v's faces.
+// The faces at each vertex are listed before the first call: visit may renumber corners.
 template <class Visit>
 void ForEachGroupAtVertex(const std::vector<std::array<int, 3>>& triangles, size_t vertex_count,
                           const std::vector<int>& group, Visit visit) {
