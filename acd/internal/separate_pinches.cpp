@@ -1,5 +1,6 @@
 #include "acd/internal/separate_pinches.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <limits>
 #include <map>
