@@ -433,12 +433,11 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
   int count = 0;
   const std::vector<int> label =
       ShellLabels(piece.triangles, SortedEdgeFaces(piece.triangles), &count);
-  std::vector<std::vector<Tri>> shells(static_cast<size_t>(count));
   std::vector<std::vector<int>> shell_faces(static_cast<size_t>(count));
   for (size_t f = 0; f < piece.triangles.size(); ++f) {
-    shells[static_cast<size_t>(label[f])].push_back(piece.triangles[f]);
     shell_faces[static_cast<size_t>(label[f])].push_back(static_cast<int>(f));
   }
+  auto triangle = [&](int f) -> const Tri& { return piece.triangles[static_cast<size_t>(f)]; };
   if (count == 1) {
     ExactPiece out = piece;
     SplitPinchedVertices(&out);
@@ -447,8 +446,10 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
   const std::vector<Eigen::Vector3d>& v = piece.rounded;
   std::vector<double> volume(static_cast<size_t>(count), 0.0);
   for (int s = 0; s < count; ++s) {
-    const Eigen::Vector3d& o = v[static_cast<size_t>(shells[static_cast<size_t>(s)][0][0])];
-    for (const Tri& t : shells[static_cast<size_t>(s)]) {
+    const Eigen::Vector3d& o =
+        v[static_cast<size_t>(triangle(shell_faces[static_cast<size_t>(s)][0])[0])];
+    for (const int f : shell_faces[static_cast<size_t>(s)]) {
+      const Tri& t = triangle(f);
       volume[static_cast<size_t>(s)] +=
           (v[static_cast<size_t>(t[0])] - o)
               .dot((v[static_cast<size_t>(t[1])] - o).cross(v[static_cast<size_t>(t[2])] - o)) /
@@ -486,10 +487,8 @@ std::vector<ExactPiece> ConnectedSolids(const ExactPiece& piece) {
     if (owner[static_cast<size_t>(s)] != s) continue;
     std::vector<Tri> tris;
     for (int t = 0; t < count; ++t) {
-      if (owner[static_cast<size_t>(t)] == s) {
-        tris.insert(tris.end(), shells[static_cast<size_t>(t)].begin(),
-                    shells[static_cast<size_t>(t)].end());
-      }
+      if (owner[static_cast<size_t>(t)] != s) continue;
+      for (const int f : shell_faces[static_cast<size_t>(t)]) tris.push_back(triangle(f));
     }
     out.push_back(Compact(piece.points, piece.rounded, tris));
     SplitPinchedVertices(&out.back());
