@@ -8,10 +8,13 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
+#include "acd/internal/text_parsing.h"
 #include "base/input_error.h"
+#include "envs/obj_off_reader.h"
 
 namespace acdplan::envs {
 
@@ -21,6 +24,13 @@ acd::TriangleMesh ReadMesh(const std::string& path) {
     const bool exists = std::filesystem::exists(path, error);
     throw InputError(path + ": cannot read the file: " +
                      (exists ? std::string("not a regular file") : std::strerror(ENOENT)));
+  }
+  const std::string extension =
+      acd::internal::ToLower(std::filesystem::path(path).extension().string());
+  if (extension == ".obj" || extension == ".off") {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot read the file: " + std::strerror(errno));
+    return extension == ".obj" ? ReadObj(in, path) : ReadOff(in, path);
   }
   Assimp::Importer importer;
   // Points and lines are not surfaces: drop them instead of failing on mixed files.

@@ -1,5 +1,6 @@
 #pragma once
-// Triangle meshes from files, through assimp.
+// Triangle meshes from files: OBJ and OFF read in double precision (envs/obj_off_reader.h),
+// the other formats through assimp.
 
 #include <string>
 
@@ -7,11 +8,13 @@
 
 namespace acdplan::envs {
 
-/// Reads every mesh of the scene in `path` (OBJ, STL, PLY, OFF, COLLADA .dae, glTF .gltf/.glb
-/// and the other formats assimp reads), with node transforms applied, polygons triangulated
-/// and identical vertices joined, as one acd::TriangleMesh.
-/// @throws InputError "<path>: cannot read mesh: <reason>" when the file is missing or
-///         assimp cannot parse it, and "<path>: no triangles in file" when it holds none.
+/// Reads the mesh in `path` as one acd::TriangleMesh, polygons triangulated. By extension (any
+/// case): .obj and .off with ReadObj() and ReadOff(), in double precision; every other format
+/// assimp reads (STL, PLY, COLLADA .dae, glTF .gltf/.glb, ...) through assimp, in single
+/// precision, with node transforms applied and identical vertices joined.
+/// @throws InputError "<path>: cannot read the file: <reason>" when it cannot be opened,
+///         "<path>:<line>: <rule>" for a malformed OBJ or OFF file, "<path>: cannot read mesh:
+///         <reason>" when assimp cannot parse it, and "<path>: no triangles in file".
 acd::TriangleMesh ReadMesh(const std::string& path);
 
 }  // namespace acdplan::envs
