@@ -15,8 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const bool obj : {true, false}) {
     std::istringstream in(text);
     try {
-      const acdplan::acd::TriangleMesh mesh = obj ? acdplan::envs::ReadObj(in, "fuzz.obj")
-                                                  : acdplan::envs::ReadOff(in, "fuzz.off");
+      const acdplan::acd::TriangleMesh mesh =
+          obj ? acdplan::envs::ReadObj(in, "fuzz.obj") : acdplan::envs::ReadOff(in, "fuzz.off");
       acdplan::acd::CheckTriangleMesh(mesh, "fuzz");
       std::vector<char> used(static_cast<size_t>(mesh.vertices.rows()), 0);
       for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t) {
