@@ -100,7 +100,8 @@ class EarClipper {
     const double h = max_y_ - min_y_;
     if (r >= 16 && w > 0.0 && h > 0.0) {
       const double cells = 0.5 * r;
-      nx_ = std::clamp(static_cast<int>(std::sqrt(cells * w / h)), 1, r);
+      // Clamped before the conversion: w / h can exceed any int (a ring 1e30 wide, 1 high).
+      nx_ = static_cast<int>(std::clamp(std::sqrt(cells * w / h), 1.0, static_cast<double>(r)));
       ny_ = std::clamp(static_cast<int>(cells / nx_), 1, r);
     } else if (r >= 16) {
       (w > 0.0 ? nx_ : ny_) = std::max(1, r / 2);

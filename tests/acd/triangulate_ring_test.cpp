@@ -107,6 +107,18 @@ TEST(TriangulateRingTest, CombSpiralStarTwoOpt) {
   ExpectValidTriangulation(RandomStar(5000, rng, 0.05), "star 5000");
 }
 
+TEST(TriangulateRingTest, ExtremeAspectRatios) {
+  // Combs with 20 reflex vertices, 1e30 times wider than high and the other way round: the
+  // reflex-vertex grid's cell counts once overflowed an int (found by fuzz_mesh_reader).
+  for (const double scale : {1e30, 1e-30}) {
+    Ring2d comb = {{0, 0}, {21, 0}, {21, 2}};
+    for (int k = 20; k >= 1; --k) comb.insert(comb.end(), {{k + 0.5, 2}, {k + 0.25, 1}, {k, 2}});
+    comb.push_back({0, 2});
+    for (Point2d& p : comb) p.x() *= scale;
+    ExpectValidTriangulation(comb, "scale " + std::to_string(scale));
+  }
+}
+
 TEST(TriangulateRingTest, WeaklySimpleRings) {
   // Two squares touching at a repeated vertex (1, 1).
   const Ring2d bowtie = {{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}, {1, 2}, {1, 1}, {0, 1}};
