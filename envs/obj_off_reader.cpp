@@ -162,19 +162,21 @@ acd::TriangleMesh ReadObj(std::istream& in, const std::string& source) {
   Words words;
   std::string line, statement;
   int next_line = 0;
+  // A line without its comment and its CR.
+  auto content = [](std::string* text) {
+    text->resize(std::min(text->size(), text->find('#')));
+    if (!text->empty() && text->back() == '\r') text->pop_back();
+  };
   while (std::getline(in, line)) {
     where.line = ++next_line;
+    content(&line);
     statement = line;
-    // A line ending in '\' continues on the next one.
-    while (!statement.empty() && (statement.back() == '\\' || statement.back() == '\r')) {
-      if (statement.back() == '\r') {
-        statement.pop_back();
-        continue;
-      }
-      statement.pop_back();
+    // A statement ending in '\' continues on the next line (not a comment ending in one).
+    while (!statement.empty() && statement.back() == '\\') {
+      statement.back() = ' ';
       if (!std::getline(in, line)) break;
       ++next_line;
-      statement += ' ';
+      content(&line);
       statement += line;
     }
     SplitWords(statement, &words);

@@ -66,8 +66,9 @@ TEST(ReadObjTest, ReadsCornerFormsRelativeIndicesAndSkipsWhatIsNotASurface) {
       Obj("# a comment\r\n"
           "mtllib m.mtl\n"
           "o thing\n"
-          "v 0 0 0 1 0 0\n"  // A vertex colour after the coordinates.
-          "v 9 9 9\n"        // Used by the line only: dropped.
+          "# from C:\\models\\\n"  // A comment ending in '\' continues nothing.
+          "v 0 0 0 1 0 0\n"        // A vertex colour after the coordinates.
+          "v 9 9 9\n"              // Used by the line only: dropped.
           "v 1 0 0\n"
           "v 0 1 \\\n"  // Continued on the next line.
           "  0\n"
