@@ -3,6 +3,7 @@
 #include <cctype>
 #include <iterator>
 #include <string>
+#include <string_view>
 
 #include "acd/internal/text_parsing.h"
 #include "base/input_error.h"
@@ -11,9 +12,9 @@ namespace acdplan::acd {
 namespace {
 
 // Recursive-descent parser over the whole text (OGC 06-103r4, section 7):
-//   text       := geometry*
+//   text       := ([SRID=integer ;] geometry)*   the SRID prefix of PostGIS's EWKT is skipped
 //   geometry   := POLYGON [dim] (EMPTY | polygon)
-//               | MULTIPOLYGON [dim] (EMPTY | '(' polygon (',' polygon)* ')')
+//               | MULTIPOLYGON [dim] (EMPTY | '(' (EMPTY | polygon) (',' (EMPTY | polygon))* ')')
 //               | GEOMETRYCOLLECTION [dim] (EMPTY | '(' geometry (',' geometry)* ')')
 //   polygon    := '(' ring (',' ring)* ')'   first ring outer, the others holes
 //   ring       := '(' point (',' point)* ')' closed: the last point repeats the first
@@ -29,6 +30,7 @@ class WktParser {
     SkipSpace();
     if (pos_ >= text_.size()) Fail("expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION");
     while (pos_ < text_.size()) {
+      SkipSrid();
       ParseGeometry();
       SkipSpace();
       // Several geometries may follow one another, optionally separated by ';'.
@@ -112,6 +114,18 @@ class WktParser {
     return false;
   }
 
+  // Skips EWKT's "SRID=4326;": the reference system does not change the planar geometry.
+  void SkipSrid() {
+    const std::string word = PeekWord();
+    if (word.compare(0, 5, "srid=") != 0) return;
+    long long srid = 0;
+    if (!internal::ParseInt(std::string_view(word).substr(5), srid)) {
+      Fail("malformed SRID (expected SRID=<integer>;)");
+    }
+    pos_ += word.size();
+    Expect(';');
+  }
+
   void ParseGeometry() {
     SkipSpace();
     const size_t start = pos_;
@@ -124,7 +138,11 @@ class WktParser {
       if (DimensionThenEmpty()) return;
       Expect('(');
       do {
-        ParsePolygon();
+        if (PeekWord() == "empty") {
+          pos_ += 5;
+        } else {
+          ParsePolygon();
+        }
       } while (CommaOr(')', "a polygon"));
       Expect(')');
     } else if (word == "geometrycollection") {

@@ -9,10 +9,11 @@
 namespace acdplan::acd {
 
 /// Parses Well-Known Text: one or more POLYGON or MULTIPOLYGON geometries (GEOMETRYCOLLECTION of
-/// them too), case-insensitive, EMPTY allowed and skipped. Rings must be closed (the last point
-/// repeats the first; it is dropped); z and m values are ignored. Messages read "<source>: <rule>
-/// at line L, column C, found '<word>'". Returns the polygons as written (not yet cleaned or
-/// validated: see PreparePolygon()).
+/// them too), case-insensitive, EMPTY allowed and skipped (also as a member of a MULTIPOLYGON),
+/// each optionally with PostGIS's EWKT prefix "SRID=<integer>;" (skipped). Rings must be closed
+/// (the last point repeats the first; it is dropped); z and m values are ignored. Messages read
+/// "<source>: <rule> at line L, column C, found '<word>'". Returns the polygons as written (not yet
+/// cleaned or validated: see PreparePolygon()).
 /// @param source  the file name used in messages.
 /// @throws InputError naming `source`, the line (or element) and the rule broken, e.g. a
 ///         malformed or non-finite number, a wrong count, a truncated file.

@@ -44,6 +44,21 @@ TEST(WktReaderTest, ReadsMultiPolygonCollectionCaseAndZ) {
   EXPECT_EQ(polygons[2].outer, Ring2d({{0, 0}, {10, 0}, {10, 10}}));
 }
 
+TEST(WktReaderTest, ReadsPostgisEwktAndEmptyMembers) {
+  // ST_AsEWKT's SRID prefix, and EMPTY polygons inside a MULTIPOLYGON (OGC 06-103r4, 7.2.4).
+  const std::vector<Polygon2d> polygons = WktOf(
+      "SRID=4326;MULTIPOLYGON (EMPTY, ((0 0, 1 0, 1 1, 0 0)), EMPTY)\n"
+      "srid=3857 ; POLYGON ((5 5, 6 5, 6 6, 5 5))");
+  ASSERT_EQ(polygons.size(), 2u);
+  EXPECT_EQ(polygons[0].outer, Ring2d({{0, 0}, {1, 0}, {1, 1}}));
+  EXPECT_EQ(polygons[1].outer, Ring2d({{5, 5}, {6, 5}, {6, 6}}));
+  EXPECT_THAT(WktErrorOf("SRID=x;POLYGON EMPTY"),
+              HasSubstr("malformed SRID (expected SRID=<integer>;) at line 1, column 1, found "
+                        "'SRID=x'"));
+  EXPECT_THAT(WktErrorOf("SRID=4326 POLYGON EMPTY"),
+              HasSubstr("expected ';' at line 1, column 11, found 'POLYGON'"));
+}
+
 TEST(WktReaderTest, SyntaxErrorsNameLineColumnAndRule) {
   EXPECT_THAT(WktErrorOf("POLYGON 0 0, 1 0"),
               HasSubstr("shape.wkt: expected '(' at line 1, column 9, found '0'"));
