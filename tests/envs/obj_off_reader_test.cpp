@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "acd/mesh_measures.h"
 #include "test_util.h"
 
 namespace acdplan::envs {
@@ -36,19 +37,8 @@ Eigen::Vector3d AreaVector(const acd::TriangleMesh& mesh) {
   return sum;
 }
 
-double TotalAbsoluteArea(const acd::TriangleMesh& mesh) {
-  double sum = 0.0;
-  for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t) {
-    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(t, 0));
-    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(t, 1));
-    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(t, 2));
-    sum += (b - a).cross(c - a).norm() / 2;
-  }
-  return sum;
-}
-
 TEST(ReadObjTest, KeepsEveryDigitOfAGeoreferencedVertex) {
-  // Near 4.5e6 a float's step is 0.5: assimp would read all three x as 4500000.
+  // Near 4.5e6 a float's step is 0.5: in floats, the first and third x would both be 4500000.
   const acd::TriangleMesh mesh =
       Obj("v 4500000.125 5300000.0625 101.3\n"
           "v 4500000.375 5300000.0625 101.3\n"
@@ -107,7 +97,7 @@ TEST(ReadObjTest, TriangulatesANonConvexFaceKeepingItsOrientation) {
     const Eigen::Vector3d twice = AreaVector(mesh);
     EXPECT_NEAR(twice.dot(normal), 2 * area, 1e-12) << reversed;
     // No triangle overlaps another or leaves the face: their areas add up to the face's.
-    EXPECT_NEAR(TotalAbsoluteArea(mesh), area, 1e-12) << reversed;
+    EXPECT_NEAR(acd::MeshArea(mesh), area, 1e-12) << reversed;
   }
 }
 
