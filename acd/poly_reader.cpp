@@ -23,6 +23,7 @@ struct Token {
 class PolyParser {
  public:
   PolyParser(std::istream& in, const std::string& source) : source_(source) {
+    internal::SkipByteOrderMark(in);
     std::string line;
     int number = 0;
     while (std::getline(in, line)) {

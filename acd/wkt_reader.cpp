@@ -22,9 +22,7 @@ namespace {
 //   dim        := Z | M | ZM
 class WktParser {
  public:
-  WktParser(std::istream& in, const std::string& source)
-      : text_(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
-        source_(source) {}
+  WktParser(std::istream& in, const std::string& source) : text_(Text(in)), source_(source) {}
 
   std::vector<Polygon2d> Parse() {
     SkipSpace();
@@ -43,6 +41,11 @@ class WktParser {
   }
 
  private:
+  static std::string Text(std::istream& in) {
+    internal::SkipByteOrderMark(in);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
+
   [[noreturn]] void Fail(const std::string& message) const { FailAt(pos_, message); }
 
   [[noreturn]] void FailAt(size_t offset, const std::string& message) const {

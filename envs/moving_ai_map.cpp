@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "acd/internal/text_parsing.h"
 #include "base/file_io.h"
 #include "base/input_error.h"
 
@@ -27,6 +28,7 @@ void Chomp(std::string& text) {
 OccupancyGrid ReadMovingAiMap(const std::string& path) {
   const std::string text = ReadFile(path);
   std::istringstream in(text);
+  acd::internal::SkipByteOrderMark(in);
   int width = -1, height = -1;
   bool has_type = false;
   int line_number = 0;

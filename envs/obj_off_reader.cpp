@@ -162,6 +162,7 @@ acd::TriangleMesh ReadObj(std::istream& in, const std::string& source) {
   Words words;
   std::string line, statement;
   int next_line = 0;
+  acd::internal::SkipByteOrderMark(in);
   // A line without its comment and its CR.
   auto content = [](std::string* text) {
     text->resize(std::min(text->size(), text->find('#')));
@@ -235,6 +236,7 @@ acd::TriangleMesh ReadOff(std::istream& in, const std::string& source) {
   Where where{source};
   Words words;
   std::string line;
+  acd::internal::SkipByteOrderMark(in);
   // The next line with words on it; false at the end of the input.
   auto next = [&] {
     while (std::getline(in, line)) {

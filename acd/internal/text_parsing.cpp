@@ -42,6 +42,15 @@ std::string FormatPoint(const Point2d& p) {
   return "(" + FormatSignificant(p.x(), 15) + ", " + FormatSignificant(p.y(), 15) + ")";
 }
 
+void SkipByteOrderMark(std::istream& in) {
+  static constexpr char kMark[] = "\xEF\xBB\xBF";
+  for (int k = 0; k < 3; ++k) {
+    // A partial mark is no UTF-8 text: what was taken of it the reader would reject anyway.
+    if (in.peek() != static_cast<unsigned char>(kMark[k])) return;
+    in.get();
+  }
+}
+
 std::string ToLower(std::string_view text) {
   std::string lower(text);
   for (char& c : lower) {

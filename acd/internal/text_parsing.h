@@ -2,6 +2,7 @@
 // Small text helpers shared by the polygon readers (acd/poly_reader.cpp, acd/wkt_reader.cpp,
 // acd/geojson_reader.cpp) and PreparePolygon()'s messages. Not part of the public API.
 
+#include <istream>
 #include <string>
 #include <string_view>
 
@@ -26,6 +27,10 @@ bool ParseInt(std::string_view token, long long& value);
 
 /// Formats `p` as "(x, y)", each with up to 15 significant digits (as messages show numbers).
 std::string FormatPoint(const Point2d& p);
+
+/// Consumes a UTF-8 byte order mark (EF BB BF, which Windows editors write) at the start of
+/// `in`, so that a reader sees the text as written; other input is left as it is.
+void SkipByteOrderMark(std::istream& in);
 
 /// Lower-cases ASCII letters.
 std::string ToLower(std::string_view text);

@@ -48,6 +48,12 @@ TEST(PolyReaderTest, AcceptsCrLfTabsHeaderCommentsAndOrderOverSeveralLines) {
       PolyOf("# header\r\n#\r\n1\r\n4\tout\r\n0\t0\r\n1 0\r\n1 1\r\n0 1\r\n4 3\r\n2 1\r\n");
   ASSERT_EQ(polygons.size(), 1u);
   EXPECT_EQ(polygons[0].outer, Ring2d({{0, 1}, {1, 1}, {1, 0}, {0, 0}}));
+  // A UTF-8 byte order mark (Windows editors write one) is not part of the first number.
+  const std::vector<Polygon2d> marked = PolyOf(
+      "\xEF\xBB\xBF"
+      "1\n3 out\n0 0\n1 0\n0 1\n1 2 3\n");
+  ASSERT_EQ(marked.size(), 1u);
+  EXPECT_EQ(marked[0].outer, Ring2d({{0, 0}, {1, 0}, {0, 1}}));
 }
 
 TEST(PolyReaderTest, MalformedNumberNamesFileLineAndToken) {

@@ -52,6 +52,8 @@ TEST(WktReaderTest, ReadsPostgisEwktAndEmptyMembers) {
   ASSERT_EQ(polygons.size(), 2u);
   EXPECT_EQ(polygons[0].outer, Ring2d({{0, 0}, {1, 0}, {1, 1}}));
   EXPECT_EQ(polygons[1].outer, Ring2d({{5, 5}, {6, 5}, {6, 6}}));
+  // A UTF-8 byte order mark before the text.
+  EXPECT_EQ(WktOf("\xEF\xBB\xBFPOLYGON ((0 0, 1 0, 1 1, 0 0))").size(), 1u);
   EXPECT_THAT(WktErrorOf("SRID=x;POLYGON EMPTY"),
               HasSubstr("malformed SRID (expected SRID=<integer>;) at line 1, column 1, found "
                         "'SRID=x'"));

@@ -15,8 +15,9 @@ using testing::TempDir;
 
 TEST(MovingAiMapTest, ReadsTerrainAndHeader) {
   TempDir dir;
+  // Written on Windows: a UTF-8 byte order mark, CR LF line ends.
   const std::string path = dir.Write("small.map",
-                                     "type octile\r\nheight 2\r\nwidth 4\r\nmap\r\n"
+                                     "\xEF\xBB\xBFtype octile\r\nheight 2\r\nwidth 4\r\nmap\r\n"
                                      ".GS@\r\nOTW.\r\n");
   const OccupancyGrid grid = ReadMovingAiMap(path);
   EXPECT_EQ(grid.width, 4);

@@ -101,6 +101,12 @@ TEST(ReadObjTest, TriangulatesANonConvexFaceKeepingItsOrientation) {
   }
 }
 
+TEST(ReadObjTest, SkipsAUtf8ByteOrderMark) {
+  // Windows editors start a file with one; it is not part of the first keyword.
+  EXPECT_EQ(Obj("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").vertices.rows(), 3);
+  EXPECT_EQ(Off("\xEF\xBB\xBFOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").vertices.rows(), 3);
+}
+
 TEST(ReadObjTest, ErrorsNameTheLineAndTheRule) {
   const std::string three = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   EXPECT_EQ(ErrorOf([&] { Obj("v 0 0\n"); }), "m.obj:1: a vertex needs 3 coordinates, got 2");
