@@ -15,6 +15,7 @@
 #include <map>
 #include <set>
 
+#include "acd/internal/text_parsing.h"
 #include "base/input_error.h"
 #include "envs/mesh_loader.h"
 
@@ -103,6 +104,7 @@ IniFile ReadIni(const std::string& path) {
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ":0: cannot read the file: " + std::strerror(errno));
+  acd::internal::SkipByteOrderMark(in);
   IniFile ini;
   ini.path = path;
   std::string text, section;

@@ -154,12 +154,13 @@ TEST(ReadOmplAppProblem, ResolvesMeshPathsAgainstTheFilesFolderAndAppliesNodeTra
   EXPECT_TRUE(p.planners.empty());
 }
 
-TEST(ReadOmplAppProblem, AcceptsWhitespaceCommentsCaseAndCarriageReturns) {
+TEST(ReadOmplAppProblem, AcceptsAByteOrderMarkWhitespaceCommentsCaseAndCarriageReturns) {
   TempDir dir;
   dir.Write("tetra.obj", kTetra);
   const std::string path = dir.Write(
       "ok.cfg",
-      "; leading comment\r\n\r\n[Problem]\r\n  Name = spaced name  \r\nrobot = tetra.obj\r\n"
+      "\xEF\xBB\xBF; a UTF-8 byte order mark, then a comment\r\n\r\n[Problem]\r\n  Name = spaced "
+      "name  \r\nrobot = tetra.obj\r\n"
       "start.x = 1 # trailing\r\nstart.y=2\r\nstart.theta=0.5\r\ngoal.x=3\r\ngoal.y=4\r\n"
       "goal.theta=0\r\nvolume.min.x=0\r\nvolume.min.y=0\r\nvolume.max.x=5\r\nvolume.max.y=5\r\n");
   const OmplAppProblem p = ReadOmplAppProblem(path);
