@@ -101,8 +101,11 @@ class PolygonSoup {
   }
 
  private:
-  // Triangles of the face, counter-clockwise about its normal as the face is: ear clipping of
-  // the face projected along its Newell normal's largest axis (a fan if it has no area).
+  // Triangles of the face, counter-clockwise about its normal as the face is. Projected along
+  // its Newell normal's largest axis, a strictly convex face is fanned from its first corner,
+  // as other OBJ readers do (the choice of diagonals matters where modellers leave faces
+  // non-planar, or overlapping each other); any other face is ear-clipped (a fan if it has no
+  // area at all).
   void AppendTriangles(const std::vector<int>& face, std::vector<Eigen::Vector3i>* out) const {
     const size_t k = face.size();
     if (k == 3) {
@@ -130,6 +133,17 @@ class PolygonSoup {
     for (const int corner : face) {
       const Eigen::Vector3d p = vertices[corner] - origin;
       ring.emplace_back(p[u], p[v]);
+    }
+    bool strictly_convex = true;
+    for (size_t i = 0; i < k && strictly_convex; ++i) {
+      const acd::Point2d& a = ring[i];
+      const acd::Point2d& b = ring[(i + 1) % k];
+      const acd::Point2d& c = ring[(i + 2) % k];
+      strictly_convex = (b - a).x() * (c - b).y() - (b - a).y() * (c - b).x() > 0.0;
+    }
+    if (strictly_convex) {
+      for (size_t i = 1; i + 1 < k; ++i) out->emplace_back(face[0], face[i], face[i + 1]);
+      return;
     }
     for (const std::array<int, 3>& t : acd::internal::TriangulateRing(ring)) {
       out->emplace_back(face[t[0]], face[t[1]], face[t[2]]);

@@ -82,6 +82,17 @@ TEST(ReadObjTest, ReadsCornerFormsRelativeIndicesAndSkipsWhatIsNotASurface) {
   EXPECT_EQ(Obj("f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n").triangles.rows(), 1);
 }
 
+TEST(ReadObjTest, FansAConvexFaceFromItsFirstCorner) {
+  // A convex hexagon, not quite planar, so the diagonals matter: those from corner 1, as other
+  // OBJ readers take them (ear clipping would fan this one from corner 3).
+  const acd::TriangleMesh hexagon =
+      Obj("v 2 0 0\nv 1 2 0.1\nv -1 2 0\nv -2 0 0.1\nv -1 -2 0\nv 1 -2 0.1\nf 1 2 3 4 5 6\n");
+  ASSERT_EQ(hexagon.triangles.rows(), 4);
+  for (int t = 0; t < 4; ++t) {
+    EXPECT_EQ(hexagon.triangles.row(t), Eigen::RowVector3i(0, t + 1, t + 2)) << t;
+  }
+}
+
 TEST(ReadObjTest, TriangulatesANonConvexFaceKeepingItsOrientation) {
   // An L-shaped hexagon in the plane x + y = 1, and the same face listed backwards.
   const std::string vertices = "v 1 0 0\nv 1 0 2\nv 0.5 0.5 2\nv 0.5 0.5 1\nv -1 2 1\nv -1 2 0\n";
