@@ -141,8 +141,8 @@ class WktParser {
       if (DimensionThenEmpty()) return;
       Expect('(');
       do {
-        if (PeekWord() == "empty") {
-          pos_ += 5;
+        if (const std::string word = PeekWord(); word == "empty") {
+          pos_ += word.size();
         } else {
           ParsePolygon();
         }

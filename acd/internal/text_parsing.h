@@ -1,6 +1,7 @@
 #pragma once
-// Small text helpers shared by the polygon readers (acd/poly_reader.cpp, acd/wkt_reader.cpp,
-// acd/geojson_reader.cpp) and PreparePolygon()'s messages. Not part of the public API.
+// Small text helpers shared by the text readers (the polygon readers in acd/, and envs/'s OBJ,
+// OFF, Moving AI map and OMPL.app problem readers) and PreparePolygon()'s messages. Not part
+// of the public API.
 
 #include <istream>
 #include <string>
