@@ -67,7 +67,15 @@ struct Cleaned {
   int unreferenced = 0;                       // Distinct positions no kept triangle uses.
   int degenerate = 0, first_degenerate = -1;  // Triangles of the input.
   int duplicate = 0, first_duplicate = -1;
+  // Per triangle of `mesh`: its copies in the input face both ways equally often (a two-sided
+  // sheet, or an internal face two closed shells share), so their winding numbers cancel.
+  std::vector<bool> opposed;
+  int first_opposed = -1;  // A triangle of the input with such copies.
 };
+
+// Whether (a, b, c) is an even permutation of its corners in ascending order, i.e. faces the
+// same way as the sorted triple.
+bool IsEvenOrder(int a, int b, int c) { return ((a > b) + (a > c) + (b > c)) % 2 == 0; }
 
 // Merges vertices at identical positions (exact comparison: -0 and 0 are one position), drops
 // triangles with a repeated or three collinear corners (exact predicate) and repeats of a
@@ -121,9 +129,15 @@ Cleaned Clean(const TriangleMesh& in) {
     keys.emplace_back(key, static_cast<int>(i));
   }
   std::sort(keys.begin(), keys.end());
-  std::vector<bool> drop(kept.size(), false);
-  for (size_t i = 1; i < keys.size(); ++i) {
-    if (keys[i].first == keys[i - 1].first) drop[static_cast<size_t>(keys[i].second)] = true;
+  std::vector<bool> drop(kept.size(), false), opposed(kept.size(), false);
+  for (size_t begin = 0, end = 0; begin < keys.size(); begin = end) {
+    int winding = 0;  // Copies facing the sorted triple's way minus the others.
+    for (end = begin; end < keys.size() && keys[end].first == keys[begin].first; ++end) {
+      const Eigen::Vector3i& t = kept[static_cast<size_t>(keys[end].second)];
+      winding += IsEvenOrder(t(0), t(1), t(2)) ? 1 : -1;
+      if (end > begin) drop[static_cast<size_t>(keys[end].second)] = true;
+    }
+    opposed[static_cast<size_t>(keys[begin].second)] = winding == 0;
   }
 
   std::vector<int> index(static_cast<size_t>(nv), -1);
@@ -147,6 +161,8 @@ Cleaned Clean(const TriangleMesh& in) {
     triangles.emplace_back(index[static_cast<size_t>(kept[i](0))],
                            index[static_cast<size_t>(kept[i](1))],
                            index[static_cast<size_t>(kept[i](2))]);
+    out.opposed.push_back(opposed[i]);
+    if (opposed[i] && out.first_opposed < 0) out.first_opposed = kept_from[i];
   }
   out.mesh = MakeTriangleMesh(vertices, triangles);
   return out;
@@ -352,6 +368,25 @@ Diagnosis Diagnose(const TriangleMesh& cleaned) {
 
 // ---------------------------------------------------------------------------------------------
 // Repair.
+
+// `d`'s mesh without the triangles whose copies cancel (`cleaned.opposed`, `d` diagnosing
+// `cleaned.mesh`): by the winding rule repair follows, a two-sided sheet bounds no volume and a
+// face that two closed shells share back to back lies inside their union (lamp.obj's
+// overlapping polygons, a CAD assembly's touching blocks). Cleaning alone keeps one copy, which
+// leaves the sheet a surface to diagnose and decompose. Nothing when every triangle cancels.
+std::optional<TriangleMesh> DropOpposedFaces(const Diagnosis& d, const Cleaned& cleaned,
+                                             std::vector<std::string>* notes) {
+  std::vector<int> faces;
+  for (size_t f = 0; f < cleaned.opposed.size(); ++f) {
+    if (!cleaned.opposed[f]) faces.push_back(static_cast<int>(f));
+  }
+  const size_t dropped = cleaned.opposed.size() - faces.size();
+  if (dropped == 0 || faces.empty()) return std::nullopt;
+  notes->push_back("repair: dropped " + Plural(dropped, "face") +
+                   " given as often one way as the other (first: face " +
+                   std::to_string(cleaned.first_opposed) + "), which bound no volume");
+  return ExtractFaces(d.mesh, faces);
+}
 
 // Closes the holes of `d`'s mesh; returns the mesh with the new triangles.
 TriangleMesh CloseHoles(const Diagnosis& d, std::vector<std::string>* notes) {
@@ -572,6 +607,9 @@ PreparedMesh PrepareMesh(const TriangleMesh& mesh, const PrepareMeshOptions& opt
                              (d.cavities > 0 ? ", cavities inward)" : ")"));
   }
   if (options.repair && !d.defects.none()) {
+    if (std::optional<TriangleMesh> mesh = DropOpposedFaces(d, cleaned, &prepared.notes)) {
+      d = Recheck(*mesh, where, &prepared.notes);
+    }
     if (d.defects.boundary_edges > 0) {
       d = Recheck(CloseHoles(d, &prepared.notes), where, &prepared.notes);
     }

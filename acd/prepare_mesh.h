@@ -83,13 +83,15 @@ struct PreparedMesh {
 ///    touch each other at a vertex keep it: each is decomposed on its own. A pinch left (its
 ///    edges too short for a copy to move off it in doubles) is a defect, "vertex 3 at (x, y, z)
 ///    is a pinch: ...", and the parts are then the patches.
-/// Repair (options.repair, when there are defects): boundary loops are triangulated without
-/// new vertices (PMP::triangulate_hole_polyline, 2D constrained Delaunay when the loop is
-/// nearly planar); then, if the mesh is closed and manifold, each group of closed shells that
-/// cross each other or themselves is replaced by the solid they bound by the positive winding
-/// rule, their union when none crosses itself (internal::UniteByWinding, exact, rounded to
-/// doubles at the end). The result is cleaned and diagnosed again; what repair could not mend
-/// stays in `defects`.
+/// Repair (options.repair, when there are defects): first, a triangle the input gives as often
+/// facing one way as the other (a two-sided sheet, a face two closed shells share back to back)
+/// is dropped with all its copies, since by the winding rule below it bounds nothing (unless
+/// every triangle is such); then boundary loops are triangulated without new vertices
+/// (PMP::triangulate_hole_polyline, 2D constrained Delaunay when the loop is nearly planar);
+/// then, if the mesh is closed and manifold, each group of closed shells that cross each other
+/// or themselves is replaced by the solid they bound by the positive winding rule, their union
+/// when none crosses itself (internal::UniteByWinding, exact, rounded to doubles at the end).
+/// The result is cleaned and diagnosed again; what repair could not mend stays in `defects`.
 ///
 /// Complexity: O(F log F) for F triangles plus O(k) for k crossing candidate pairs (box
 /// intersection), O(S^2) bounding-box tests for S closed shells; repair adds the hole

@@ -205,6 +205,63 @@ TEST(PrepareMeshTest, DropsDegenerateAndDuplicateFaces) {
   EXPECT_TRUE(HasNote(prepared, "dropped 1 unreferenced vertex"));
 }
 
+TEST(PrepareMeshTest, RepairLeavesAFaceGivenBothWaysAloneWhenCleaningMadeASolid) {
+  const TriangleMesh cube = AppendTriangle(Cube(2), Eigen::Vector3i(3, 2, 1));  // Face 1 reversed.
+  const PreparedMesh repaired = PrepareMesh(cube, Repair());
+  EXPECT_TRUE(repaired.solid());
+  EXPECT_EQ(repaired.mesh.triangles.rows(), 12);
+  EXPECT_DOUBLE_EQ(MeshVolume(repaired.mesh), 8.0);
+  EXPECT_FALSE(HasNote(repaired, "repair:"));
+}
+
+// Two unit cubes that share the face x = 1, each a closed shell: the face comes once each way,
+// as where a CAD assembly's blocks touch. Cleaning keeps one copy, whose edges then have three
+// faces; repair drops both copies (no volume), which leaves the union, a 2 x 1 x 1 box.
+TEST(PrepareMeshTest, RepairDropsAFaceTwoShellsShareBackToBack) {
+  const TriangleMesh left = CubeAt(1, {0.5, 0.5, 0.5});
+  TriangleMesh right = left;  // Mirrored in x = 1 (the shared face's own triangles), outward.
+  right.vertices.col(0) = (2.0 - left.vertices.col(0).array()).matrix();
+  right.triangles.col(1).swap(right.triangles.col(2));
+  const TriangleMesh pair = test::Concatenate(left, right);
+  const PreparedMesh diagnosed = PrepareMesh(pair);
+  EXPECT_FALSE(diagnosed.solid());
+  EXPECT_EQ(diagnosed.defects.non_manifold_edges, 4);  // The shared square's sides.
+  EXPECT_TRUE(HasNote(diagnosed, "dropped 2 duplicate faces"));
+
+  const PreparedMesh repaired = PrepareMesh(pair, Repair());
+  ASSERT_TRUE(repaired.solid()) << repaired.defects.first;
+  ASSERT_EQ(repaired.parts.size(), 1u);
+  EXPECT_EQ(repaired.mesh.triangles.rows(), 20);
+  EXPECT_DOUBLE_EQ(MeshVolume(repaired.parts[0]), 2.0);
+  EXPECT_TRUE(HasNote(repaired,
+                      "repair: dropped 2 faces given as often one way as the other (first: face"));
+}
+
+// A two-sided sheet (a triangle given both ways) inside a cube, hinged on one of its edges: a
+// surface, with a non-manifold edge, until repair drops the sheet. A sheet on its own has nothing
+// else to keep: repair leaves it as cleaning does.
+TEST(PrepareMeshTest, RepairDropsATwoSidedSheetInsideASolidButNotASheetAlone) {
+  TriangleMesh cube = AppendVertex(Cube(2), Eigen::Vector3d(0, 0, 0));
+  cube = AppendTriangle(cube, Eigen::Vector3i(3, 7, 8));
+  cube = AppendTriangle(cube, Eigen::Vector3i(7, 3, 8));
+  const PreparedMesh diagnosed = PrepareMesh(cube);
+  EXPECT_FALSE(diagnosed.solid());
+  EXPECT_EQ(diagnosed.mesh.triangles.rows(), 13);  // One copy of the sheet kept.
+  EXPECT_EQ(diagnosed.defects.non_manifold_edges, 1);
+  const PreparedMesh repaired = PrepareMesh(cube, Repair());
+  ASSERT_TRUE(repaired.solid()) << repaired.defects.first;
+  EXPECT_EQ(repaired.mesh.triangles.rows(), 12);
+  EXPECT_DOUBLE_EQ(MeshVolume(repaired.mesh), 8.0);
+  EXPECT_TRUE(HasNote(repaired, "repair: dropped 1 face given as often one way as the other"));
+
+  const std::vector<Eigen::Vector3d> v{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const TriangleMesh sheet = MakeTriangleMesh(v, {{0, 1, 2}, {0, 2, 1}});
+  const PreparedMesh alone = PrepareMesh(sheet, Repair());
+  EXPECT_FALSE(alone.solid());
+  EXPECT_EQ(alone.parts.size(), 1u);
+  EXPECT_FALSE(HasNote(alone, "given as often"));
+}
+
 TEST(PrepareMeshTest, RejectsAMeshWithoutAreaAndInvalidMeshes) {
   TriangleMesh flat;
   flat.vertices.resize(3, 3);
