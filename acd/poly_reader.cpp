@@ -142,15 +142,9 @@ class PolyParser {
 
   double ReadNumber(const Token& token) const {
     double value = 0.0;
-    switch (internal::ParseDouble(token.text, value)) {
-      case internal::NumberStatus::kOk:
-        return value;
-      case internal::NumberStatus::kMalformed:
-        Fail(token.line, "malformed number '" + token.text + "'");
-      case internal::NumberStatus::kNotFinite:
-        Fail(token.line, "non-finite number '" + token.text + "'");
-      case internal::NumberStatus::kOutOfRange:
-        Fail(token.line, "number out of range '" + token.text + "'");
+    const internal::NumberStatus status = internal::ParseDouble(token.text, value);
+    if (status != internal::NumberStatus::kOk) {
+      Fail(token.line, internal::NumberProblem(status, token.text));
     }
     return value;
   }

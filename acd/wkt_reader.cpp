@@ -197,16 +197,9 @@ class WktParser {
       const size_t start = pos_;
       const std::string word = WordAt(pos_);
       double value = 0.0;
-      switch (internal::ParseDouble(word, value)) {
-        case internal::NumberStatus::kOk:
-          break;
-        case internal::NumberStatus::kMalformed:
-          FailAt(start, "malformed number '" + word + "'");
-        case internal::NumberStatus::kNotFinite:
-          FailAt(start, "non-finite number '" + word + "'");
-        case internal::NumberStatus::kOutOfRange:
-          FailAt(start, "number out of range '" + word + "'");
-      }
+      const internal::NumberStatus status = internal::ParseDouble(word, value);
+      if (status != internal::NumberStatus::kOk)
+        FailAt(start, internal::NumberProblem(status, word));
       if (count == 4) FailAt(start, "more than 4 coordinates in a point");
       if (count < 2) xy[count] = value;
       ++count;

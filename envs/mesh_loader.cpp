@@ -15,6 +15,7 @@
 #include "acd/internal/text_parsing.h"
 #include "base/input_error.h"
 #include "envs/obj_off_reader.h"
+#include "envs/ply_reader.h"
 
 namespace acdplan::envs {
 
@@ -27,9 +28,10 @@ acd::TriangleMesh ReadMesh(const std::string& path) {
   }
   const std::string extension =
       acd::internal::ToLower(std::filesystem::path(path).extension().string());
-  if (extension == ".obj" || extension == ".off") {
+  if (extension == ".obj" || extension == ".off" || extension == ".ply") {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot read the file: " + std::strerror(errno));
+    if (extension == ".ply") return ReadPly(in, path);
     return extension == ".obj" ? ReadObj(in, path) : ReadOff(in, path);
   }
   Assimp::Importer importer;

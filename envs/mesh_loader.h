@@ -1,6 +1,6 @@
 #pragma once
-// Triangle meshes from files: OBJ and OFF read in double precision (envs/obj_off_reader.h),
-// the other formats through assimp.
+// Triangle meshes from files: OBJ, OFF and PLY read in double precision (envs/obj_off_reader.h,
+// envs/ply_reader.h), the other formats through assimp.
 
 #include <string>
 
@@ -9,11 +9,12 @@
 namespace acdplan::envs {
 
 /// Reads the mesh in `path` as one acd::TriangleMesh, polygons triangulated. By extension (any
-/// case): .obj and .off with ReadObj() and ReadOff(), in double precision; every other format
-/// assimp reads (STL, PLY, COLLADA .dae, glTF .gltf/.glb, ...) through assimp, in single
-/// precision, with node transforms applied and identical vertices joined.
+/// case): .obj, .off and .ply with ReadObj(), ReadOff() and ReadPly(), in double precision;
+/// every other format assimp reads (STL, COLLADA .dae, glTF .gltf/.glb, ...) through assimp,
+/// in single precision, with node transforms applied and identical vertices joined.
 /// @throws InputError "<path>: cannot read the file: <reason>" when it cannot be opened,
-///         "<path>:<line>: <rule>" for a malformed OBJ or OFF file, "<path>: cannot read mesh:
+///         "<path>:<line>: <rule>" for a malformed OBJ, OFF or PLY file (ReadPly() names a
+///         binary file's element instead of a line), "<path>: cannot read mesh:
 ///         <reason>" when assimp cannot parse it, and "<path>: no triangles in file".
 acd::TriangleMesh ReadMesh(const std::string& path);
 

@@ -30,6 +30,21 @@ NumberStatus ParseDouble(std::string_view token, double& value) {
   return NumberStatus::kOk;
 }
 
+std::string NumberProblem(NumberStatus status, std::string_view token) {
+  const std::string quoted = "'" + std::string(token) + "'";
+  switch (status) {
+    case NumberStatus::kOk:
+      break;
+    case NumberStatus::kMalformed:
+      return "malformed number " + quoted;
+    case NumberStatus::kNotFinite:
+      return "non-finite number " + quoted;
+    case NumberStatus::kOutOfRange:
+      return "number out of range " + quoted;
+  }
+  return "";
+}
+
 bool ParseInt(std::string_view token, long long& value) {
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
   if (token.empty() || token.front() == '+') return false;

@@ -1,6 +1,6 @@
 #pragma once
 // Small text helpers shared by the text readers (the polygon readers in acd/, and envs/'s OBJ,
-// OFF, Moving AI map and OMPL.app problem readers) and PreparePolygon()'s messages. Not part
+// OFF, PLY, Moving AI map and OMPL.app problem readers) and PreparePolygon()'s messages. Not part
 // of the public API.
 
 #include <istream>
@@ -22,6 +22,10 @@ enum class NumberStatus {
 /// Parses the whole of `token` as a decimal floating-point number (locale independent; a
 /// leading '+' is accepted). Sets `value` only on kOk.
 NumberStatus ParseDouble(std::string_view token, double& value);
+
+/// The rule `token` breaks as messages name it: "malformed number '1,5'", "non-finite number
+/// 'nan'", "number out of range '1e400'"; empty for kOk.
+std::string NumberProblem(NumberStatus status, std::string_view token);
 
 /// Parses the whole of `token` as a decimal integer (a leading '+' is accepted).
 bool ParseInt(std::string_view token, long long& value);

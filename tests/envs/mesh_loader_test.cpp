@@ -93,8 +93,8 @@ TEST(ReadMeshTest, Errors) {
   TempDir dir;
   EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Path("none.obj")); }),
               HasSubstr("none.obj: cannot read the file: No such file or directory"));
-  EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("bad.ply", "ply\nformat nonsense\n")); }),
-              HasSubstr("bad.ply: cannot read mesh: "));
+  EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("bad.ply", "ply\nformat nonsense 1.0\n")); }),
+              HasSubstr("bad.ply:2: unknown format 'nonsense'"));
   EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("bad.xyz123", "hello")); }),
               HasSubstr("bad.xyz123: cannot read mesh: "));
   EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("points.obj", "v 0 0 0\nv 1 0 0\n")); }),
@@ -102,15 +102,18 @@ TEST(ReadMeshTest, Errors) {
   EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("bad.OFF", "OFF\n3 1 0\n0 0 0\n")); }),
               HasSubstr("bad.OFF:3: the file ends after 1 of the 3 vertices declared on line 2"));
   // 1e75 is a finite double, but assimp reads floats: the message says why it is not finite.
-  std::string far_ply = kTetraPly;
-  far_ply.replace(far_ply.find("\n1 0 0\n"), 7, "\n1e75 0 0\n");
-  EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("far.ply", far_ply)); }),
-              HasSubstr("far.ply: mesh 0, vertex 1: a coordinate is not finite as read (NaN or "
+  std::string far_stl = kTriangleStl;
+  far_stl.replace(far_stl.find("vertex 2 0 0"), 12, "vertex 1e75 0 0");
+  EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("far.stl", far_stl)); }),
+              HasSubstr("far.stl: mesh 0, vertex 1: a coordinate is not finite as read (NaN or "
                         "infinite, or beyond 3.4e38"));
-  // In OBJ it is read as it is.
+  // In OBJ and PLY it is read as it is.
   const acd::TriangleMesh far =
       ReadMesh(dir.Write("far.obj", "v 0 0 0\nv 1e75 0 0\nv 0 1 0\nf 1 2 3\n"));
   EXPECT_EQ(far.vertices(1, 0), 1e75);
+  std::string far_ply = kTetraPly;
+  far_ply.replace(far_ply.find("\n1 0 0\n"), 7, "\n1e75 0 0\n");
+  EXPECT_EQ(ReadMesh(dir.Write("far.ply", far_ply)).vertices(1, 0), 1e75);
 }
 
 TEST(CheckTriangleMeshTest, Errors) {
