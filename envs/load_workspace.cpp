@@ -23,13 +23,6 @@ std::string LowerExtension(const std::string& path) {
   return extension;
 }
 
-bool IsMeshExtension(const std::string& extension) {
-  for (const char* known : {".obj", ".stl", ".ply", ".off", ".dae", ".gltf", ".glb"}) {
-    if (extension == known) return true;
-  }
-  return false;
-}
-
 // A workspace YAML is 3D when its bounds have six numbers or an obstacle names a mesh; the 3D
 // loader then reports any other mistake with its key path.
 bool IsWorkspace3dYaml(const YamlFile& file) {
@@ -72,7 +65,7 @@ Workspace2d LoadWorkspace2d(const std::string& path, const acd::ReadPolygonsOpti
 World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygons) {
   const std::string extension = LowerExtension(path);
   World world;
-  if (IsMeshExtension(extension)) {
+  if (IsMeshFile(path)) {
     world.dimension = 3;
     world.kind = "mesh";
     acd::TriangleMesh mesh = ReadMesh(path);

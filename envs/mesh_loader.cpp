@@ -19,6 +19,15 @@
 
 namespace acdplan::envs {
 
+bool IsMeshFile(const std::string& path) {
+  const std::string extension =
+      acd::internal::ToLower(std::filesystem::path(path).extension().string());
+  for (const char* known : {".obj", ".off", ".ply", ".stl", ".dae", ".gltf", ".glb"}) {
+    if (extension == known) return true;
+  }
+  return false;
+}
+
 acd::TriangleMesh ReadMesh(const std::string& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) {

@@ -34,6 +34,7 @@
 #include "bench/runner.h"
 #include "bench/spec.h"
 #include "bench/targets.h"
+#include "envs/mesh_loader.h"
 #include "planning/plan_picture3d.h"
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
@@ -131,7 +132,7 @@ CLI::Validator NumberThat(Accept accept, const std::string& rule) {
 using acdplan::CheckOutputPath;
 
 int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) {
-  if (acdplan::tools::IsMeshFile(args.input)) return RunDecomposeMesh(args, kinds);
+  if (acdplan::envs::IsMeshFile(args.input)) return RunDecomposeMesh(args, kinds);
   for (const CLI::Option* option : kinds.meshes_only) {
     if (option->count() > 0) {
       throw acdplan::InputError(option->get_name() + ": applies to mesh files only (" + args.input +

@@ -44,14 +44,6 @@ std::string DefectSummary(const acd::MeshDefects& defects) {
 
 }  // namespace
 
-bool IsMeshFile(const std::string& path) {
-  static const char* const kExtensions[] = {".obj",  ".stl", ".ply", ".off",
-                                            ".gltf", ".glb", ".dae"};
-  const std::string extension = Lower(fs::path(path).extension().string());
-  return std::find(std::begin(kExtensions), std::end(kExtensions), extension) !=
-         std::end(kExtensions);
-}
-
 std::string MtlPathFor(const std::string& obj_path) {
   return fs::path(obj_path).replace_extension(".mtl").string();
 }

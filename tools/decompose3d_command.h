@@ -11,7 +11,7 @@ namespace acdplan::tools {
 
 /// What `acdplan decompose MESH` was asked.
 struct Decompose3dArguments {
-  std::string input;                   ///< A mesh file (IsMeshFile()).
+  std::string input;                   ///< A mesh file (envs::IsMeshFile()).
   double tau = -1.0;                   ///< Absolute tolerance [mesh units]; < 0: not given.
   double tau_rel = -1.0;               ///< Relative to acd::ReferenceRadius(); < 0: not given.
   bool surface = false;                ///< The surface ACD even for a solid.
@@ -26,10 +26,6 @@ struct Decompose3dArguments {
 /// enclosing radius may stay concave (between the dissertation's Table 5 settings 0.2 and
 /// 0.02).
 constexpr double kDefaultTauRel3d = 0.05;
-
-/// True when `path`'s extension (any case) is one of the mesh formats `decompose` reads
-/// through envs::ReadMesh(): .obj, .stl, .ply, .off, .gltf, .glb, .dae.
-bool IsMeshFile(const std::string& path);
 
 /// The material file written beside the OBJ file `obj_path`: its extension replaced by .mtl.
 std::string MtlPathFor(const std::string& obj_path);

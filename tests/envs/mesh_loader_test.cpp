@@ -116,6 +116,15 @@ TEST(ReadMeshTest, Errors) {
   EXPECT_EQ(ReadMesh(dir.Write("far.ply", far_ply)).vertices(1, 0), 1e75);
 }
 
+TEST(IsMeshFileTest, ByExtensionInAnyCase) {
+  for (const char* path : {"a.obj", "b/c.OFF", "d.Ply", "e.stl", "f.dae", "g.gltf", "h.GLB"}) {
+    EXPECT_TRUE(IsMeshFile(path)) << path;
+  }
+  for (const char* path : {"a.poly", "world.yaml", "map.map", "obj", "a.obj.txt", "mesh"}) {
+    EXPECT_FALSE(IsMeshFile(path)) << path;
+  }
+}
+
 TEST(CheckTriangleMeshTest, Errors) {
   acd::TriangleMesh mesh;
   EXPECT_EQ(ErrorOf([&] { CheckTriangleMesh(mesh, "m"); }), "m: mesh has no triangles");
