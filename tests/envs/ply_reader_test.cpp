@@ -7,11 +7,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <sstream>
 #include <string>
 
+#include "envs/obj_off_reader.h"
 #include "test_util.h"
+#include "tests/data_paths.h"
 
 namespace acdplan::envs {
 namespace {
@@ -121,6 +124,34 @@ TEST(ReadPlyTest, ReadsBinaryInBothByteOrders) {
                   nan.text);
             }),
             "m.ply: vertex 0: coordinate x is not finite");
+}
+
+// A real mesh written as binary PLY with doubles, in either byte order, reads back exactly as
+// the OBJ it came from (its polygons were triangulated on the way: the faces are triangles).
+TEST(ReadPlyTest, AMeshWrittenAsBinaryPlyReadsBackExactly) {
+  const std::string path = test::DataDir() + "/meshes/vhacd/al.obj";
+  std::ifstream file(path, std::ios::binary);
+  const acd::TriangleMesh mesh = ReadObj(file, path);
+  ASSERT_GT(mesh.triangles.rows(), 1000);
+  for (const bool big : {false, true}) {
+    Bytes body(big);
+    for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
+      body.Add(mesh.vertices(v, 0)).Add(mesh.vertices(v, 1)).Add(mesh.vertices(v, 2));
+    }
+    for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t) {
+      body.Add(std::uint8_t{3});
+      for (int k = 0; k < 3; ++k) body.Add(static_cast<std::int32_t>(mesh.triangles(t, k)));
+    }
+    const std::string header =
+        std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
+        " 1.0\nelement vertex " + std::to_string(mesh.vertices.rows()) +
+        "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+        std::to_string(mesh.triangles.rows()) +
+        "\nproperty list uchar int vertex_indices\nend_header\n";
+    const acd::TriangleMesh read = Ply(header + body.text);
+    EXPECT_EQ(read.vertices, mesh.vertices) << big;
+    EXPECT_EQ(read.triangles, mesh.triangles) << big;
+  }
 }
 
 TEST(ReadPlyTest, ErrorsNameTheLineAndTheRule) {
