@@ -16,6 +16,7 @@
 #include "base/input_error.h"
 #include "envs/obj_off_reader.h"
 #include "envs/ply_reader.h"
+#include "envs/stl_reader.h"
 
 namespace acdplan::envs {
 
@@ -37,10 +38,11 @@ acd::TriangleMesh ReadMesh(const std::string& path) {
   }
   const std::string extension =
       acd::internal::ToLower(std::filesystem::path(path).extension().string());
-  if (extension == ".obj" || extension == ".off" || extension == ".ply") {
+  if (extension == ".obj" || extension == ".off" || extension == ".ply" || extension == ".stl") {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot read the file: " + std::strerror(errno));
     if (extension == ".ply") return ReadPly(in, path);
+    if (extension == ".stl") return ReadStl(in, path);
     return extension == ".obj" ? ReadObj(in, path) : ReadOff(in, path);
   }
   Assimp::Importer importer;

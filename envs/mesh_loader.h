@@ -1,6 +1,7 @@
 #pragma once
-// Triangle meshes from files: OBJ, OFF and PLY read in double precision (envs/obj_off_reader.h,
-// envs/ply_reader.h), the other formats through assimp.
+// Triangle meshes from files: OBJ, OFF, PLY and STL read by our own readers, in double
+// precision (envs/obj_off_reader.h, envs/ply_reader.h, envs/stl_reader.h), the other formats
+// through assimp.
 
 #include <string>
 
@@ -9,12 +10,13 @@
 namespace acdplan::envs {
 
 /// Reads the mesh in `path` as one acd::TriangleMesh, polygons triangulated. By extension (any
-/// case): .obj, .off and .ply with ReadObj(), ReadOff() and ReadPly(), in double precision;
-/// every other format assimp reads (STL, COLLADA .dae, glTF .gltf/.glb, ...) through assimp,
-/// in single precision, with node transforms applied and identical vertices joined.
+/// case): .obj, .off, .ply and .stl with ReadObj(), ReadOff(), ReadPly() and ReadStl(), in
+/// double precision; every other format assimp reads (COLLADA .dae, glTF .gltf/.glb, ...)
+/// through assimp, in single precision, with node transforms applied and identical vertices
+/// joined.
 /// @throws InputError "<path>: cannot read the file: <reason>" when it cannot be opened,
-///         "<path>:<line>: <rule>" for a malformed OBJ, OFF or PLY file (ReadPly() names a
-///         binary file's element instead of a line), "<path>: cannot read mesh:
+///         "<path>:<line>: <rule>" for a malformed OBJ, OFF, PLY or STL file (a binary PLY's
+///         or STL's element or facet instead of a line), "<path>: cannot read mesh:
 ///         <reason>" when assimp cannot parse it, and "<path>: no triangles in file".
 acd::TriangleMesh ReadMesh(const std::string& path);
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +14,7 @@
 #include "acd/internal/text_parsing.h"
 #include "base/input_error.h"
 #include "envs/internal/polygon_soup.h"
+#include "envs/internal/text_words.h"
 
 namespace acdplan::envs {
 namespace {
@@ -233,7 +233,7 @@ Header ReadHeader(std::istream& in, const std::string& source) {
 class AsciiData {
  public:
   AsciiData(std::string text, const std::string& source, int header_lines)
-      : text_(std::move(text)), source_(source), line_(header_lines + 1) {}
+      : words_(std::move(text), header_lines + 1), source_(source) {}
 
   void Begin(const Element& element, long long index) {
     element_ = &element;
@@ -261,44 +261,26 @@ class AsciiData {
 
   // Nothing but white space may follow the declared elements.
   void End() {
-    SkipSpace();
-    if (pos_ < text_.size()) {
-      Fail("unexpected '" + std::string(Word()) + "' after the declared elements (wrong count?)");
+    std::string_view word;
+    if (words_.Next(&word)) {
+      Fail("unexpected '" + std::string(word) + "' after the declared elements (wrong count?)");
     }
   }
 
-  [[noreturn]] void Fail(const std::string& rule) const { FailAt(source_, line_, rule); }
+  [[noreturn]] void Fail(const std::string& rule) const { FailAt(source_, words_.Line(), rule); }
 
  private:
-  void SkipSpace() {
-    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) {
-      if (text_[pos_++] == '\n') ++line_;
-    }
-  }
-
-  std::string_view Word() const {
-    size_t end = pos_;
-    while (end < text_.size() && !std::isspace(static_cast<unsigned char>(text_[end]))) ++end;
-    return std::string_view(text_).substr(pos_, end - pos_);
-  }
-
   std::string_view Next() {
-    const int before = line_;
-    SkipSpace();
-    if (pos_ >= text_.size()) {
-      line_ = before;  // Named by the last line with data, not the empty end.
+    std::string_view word;
+    if (!words_.Next(&word)) {
       Fail("the file ends inside " + element_->name + " " + std::to_string(index_) + " of the " +
            std::to_string(element_->count) + " declared on line " + std::to_string(element_->line));
     }
-    const std::string_view word = Word();
-    pos_ += word.size();
     return word;
   }
 
-  std::string text_;
+  internal::TextWords words_;
   const std::string& source_;
-  int line_;
-  size_t pos_ = 0;
   const Element* element_ = nullptr;
   long long index_ = 0;
 };

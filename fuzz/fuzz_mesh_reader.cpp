@@ -1,4 +1,4 @@
-// libFuzzer target: envs::ReadObj(), envs::ReadOff() and envs::ReadPly() on arbitrary bytes.
+// libFuzzer target: envs::ReadObj(), ReadOff(), ReadPly() and ReadStl() on arbitrary bytes.
 // InputError is the expected answer to bad input; anything else (another exception, a crash, a
 // sanitizer report, a hang) is a finding. A mesh read must pass CheckTriangleMesh() (indices in
 // range, finite coordinates) and keep only vertices a triangle uses.
@@ -9,6 +9,7 @@
 #include "base/input_error.h"
 #include "envs/obj_off_reader.h"
 #include "envs/ply_reader.h"
+#include "envs/stl_reader.h"
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

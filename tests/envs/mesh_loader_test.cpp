@@ -102,18 +102,21 @@ TEST(ReadMeshTest, Errors) {
   EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("bad.OFF", "OFF\n3 1 0\n0 0 0\n")); }),
               HasSubstr("bad.OFF:3: the file ends after 1 of the 3 vertices declared on line 2"));
   // 1e75 is a finite double, but assimp reads floats: the message says why it is not finite.
-  std::string far_stl = kTriangleStl;
-  far_stl.replace(far_stl.find("vertex 2 0 0"), 12, "vertex 1e75 0 0");
-  EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("far.stl", far_stl)); }),
-              HasSubstr("far.stl: mesh 0, vertex 1: a coordinate is not finite as read (NaN or "
+  std::string far_dae = kTriangleDae;
+  far_dae.replace(far_dae.find("0 0 0 1 0 0"), 11, "0 0 0 1e75 0 0");
+  EXPECT_THAT(ErrorOf([&] { ReadMesh(dir.Write("far.dae", far_dae)); }),
+              HasSubstr("far.dae: mesh 0, vertex 1: a coordinate is not finite as read (NaN or "
                         "infinite, or beyond 3.4e38"));
-  // In OBJ and PLY it is read as it is.
+  // In OBJ, PLY and ASCII STL it is read as it is.
   const acd::TriangleMesh far =
       ReadMesh(dir.Write("far.obj", "v 0 0 0\nv 1e75 0 0\nv 0 1 0\nf 1 2 3\n"));
   EXPECT_EQ(far.vertices(1, 0), 1e75);
   std::string far_ply = kTetraPly;
   far_ply.replace(far_ply.find("\n1 0 0\n"), 7, "\n1e75 0 0\n");
   EXPECT_EQ(ReadMesh(dir.Write("far.ply", far_ply)).vertices(1, 0), 1e75);
+  std::string far_stl = kTriangleStl;
+  far_stl.replace(far_stl.find("vertex 2 0 0"), 12, "vertex 1e75 0 0");
+  EXPECT_EQ(ReadMesh(dir.Write("far.stl", far_stl)).vertices(1, 0), 1e75);
 }
 
 TEST(IsMeshFileTest, ByExtensionInAnyCase) {
