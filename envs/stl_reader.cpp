@@ -1,5 +1,6 @@
 #include "envs/stl_reader.h"
 
+#include <algorithm>
 #include <array>
 #include <climits>
 #include <cmath>
@@ -176,10 +177,13 @@ acd::TriangleMesh ReadStl(std::istream& in, const std::string& source) {
   const bool says_solid =
       start != std::string::npos &&
       acd::internal::ToLower(std::string_view(bytes).substr(start, 5)) == "solid";
-  // Text has no NUL byte; a binary header that says "solid" usually pads with them.
-  if (says_solid && !sized_as_binary && bytes.find('\0') == std::string::npos) {
-    return ReadAscii(std::move(bytes), source);
-  }
+  // Text has no control characters but white space; a binary file's floats and count do (a
+  // binary file whose count is wrong then gets the size error, not one about its text).
+  const bool text = std::none_of(bytes.begin(), bytes.end(), [](char c) {
+    return static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r' &&
+           c != '\f' && c != '\v';
+  });
+  if (says_solid && !sized_as_binary && text) return ReadAscii(std::move(bytes), source);
   if (bytes.size() < kBinaryHeader) {
     throw InputError(source + ": not an STL file: ASCII STL starts with 'solid', binary STL has " +
                      "84 bytes at least, this file " + std::to_string(bytes.size()));

@@ -12,12 +12,12 @@ namespace acdplan::envs {
 
 /// Reads an STL file, ASCII or binary. Binary: an 80-byte header, a little-endian facet count,
 /// 50 bytes per facet (a normal, three corners as floats, an attribute word); a file is taken
-/// as binary when its size is exactly what its count says, even if its header starts with
-/// "solid", as some CAD tools write. ASCII: `solid`, then `facet normal nx ny nz`, `outer loop`,
-/// three or more `vertex x y z` lines, `endloop`, `endfacet`, ..., `endsolid`; several solids
-/// may follow each other. Facet normals are ignored (the corners' order gives the orientation,
-/// as the format says). Corners at identical positions (exact comparison) become one vertex,
-/// numbered in order of first use.
+/// as binary unless it starts with "solid" (as some CAD tools' binary headers do too) and is
+/// text (no control characters but white space) and its size is not what a binary count says.
+/// ASCII: `solid`, then `facet normal nx ny nz`, `outer loop`, three or more `vertex x y z`
+/// lines, `endloop`, `endfacet`, ..., `endsolid`; several solids may follow each other. Facet
+/// normals are ignored (the corners' order gives the orientation, as the format says). Corners
+/// at identical positions (exact comparison) become one vertex, numbered in order of first use.
 /// @param source Names the input in messages (the file's path).
 /// @throws InputError "<source>:<line>: <rule>" for ASCII, e.g. "part.stl:7: expected
 ///         'endloop', got 'vertex'"; "<source>: facet <k>: <rule>" for binary, e.g. "part.stl:

@@ -157,6 +157,10 @@ TEST(ReadStlTest, ErrorsNameTheLineOrTheFacet) {
   const std::string binary = BinaryStl(corners, "binary");
   EXPECT_EQ(ErrorOf([&] { Stl(binary.substr(0, 120)); }),
             "m.stl: binary STL of 1 facets needs 134 bytes, the file has 120");
+  // So too when its header says "solid" (padded with spaces, no NUL in it).
+  const std::string solid_header = BinaryStl(corners, std::string(80, ' ').replace(0, 5, "solid"));
+  EXPECT_EQ(ErrorOf([&] { Stl(solid_header + "extra"); }),
+            "m.stl: binary STL of 1 facets needs 134 bytes, the file has 139");
   std::vector<std::array<float, 3>> nan = corners;
   nan[1][2] = std::numeric_limits<float>::quiet_NaN();
   EXPECT_EQ(ErrorOf([&] { Stl(BinaryStl(nan, "binary")); }),
