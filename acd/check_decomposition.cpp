@@ -752,8 +752,9 @@ class Checker {
   // through its points to its end: an offset of a rounding times the edge's length, which on an
   // edge 1.5e9 long exceeded the relative tolerance (fuzz_decompose2d). A constructed point is a
   // component vertex that is no input vertex; it goes to the nearest input edge of its source
-  // within OnEdgeNoise() of it (none for a point inside). Signed so that a point outside the
-  // input adds area, on any ring orientation.
+  // within OnEdgeNoise() of it (none for a point inside), if the components' union has a
+  // boundary edge from it along that edge. Signed so that a point outside the input adds area,
+  // on any ring orientation.
   std::vector<double> BoundarySlivers() const {
     const int count = ComponentCount();
     std::vector<std::pair<int, Point2d>> input_vertices;  // (source, vertex), sorted.
@@ -838,6 +839,45 @@ class Checker {
           if (p == edge.a || p == edge.b || SourceOf(edge.owner) != constructed[i].first) return;
           if (segment(e).has_on(ToCgal(p))) passed_through[i] = 1;
         });
+    // Per constructed point near an input edge: whether the union's boundary runs along that
+    // edge at the point, i.e. an edge of a component that no other component has reversed (not
+    // a cut between two of them) joins it to a point of the input edge. A cut's end inside the
+    // input can lie within noise of an edge where the input is that thin (1e-8 wide here); it
+    // splits no edge, and its sliver would be area the components do not miss.
+    using PointKey = std::tuple<int, double, double>;  // (source, x, y).
+    auto key_of = [this](int owner, const Point2d& p) {
+      return PointKey(SourceOf(owner), p.x(), p.y());
+    };
+    std::vector<std::pair<PointKey, PointKey>> component_edges;  // Directed, sorted.
+    for (const EdgeRef& edge : edges_) {
+      if (IsComponent(edge.owner)) {
+        component_edges.emplace_back(key_of(edge.owner, edge.a), key_of(edge.owner, edge.b));
+      }
+    }
+    std::sort(component_edges.begin(), component_edges.end());
+    std::map<PointKey, std::vector<Point2d>> boundary_neighbours;  // Ends of unmatched edges.
+    for (const EdgeRef& edge : edges_) {
+      if (!IsComponent(edge.owner)) continue;
+      const auto reversed = std::make_pair(key_of(edge.owner, edge.b), key_of(edge.owner, edge.a));
+      if (std::binary_search(component_edges.begin(), component_edges.end(), reversed)) continue;
+      boundary_neighbours[key_of(edge.owner, edge.a)].push_back(edge.b);
+      boundary_neighbours[key_of(edge.owner, edge.b)].push_back(edge.a);
+    }
+    auto on_boundary_along = [&](int i, int e) {
+      const EdgeRef& edge = edges_[e];
+      const auto it = boundary_neighbours.find(
+          PointKey(constructed[i].first, constructed[i].second.x(), constructed[i].second.y()));
+      if (it == boundary_neighbours.end()) return false;
+      for (const Point2d& q : it->second) {
+        if (q == edge.a || q == edge.b) return true;
+        const double noise = OnEdgeNoise(edge, q);
+        if (Kernel().compare_squared_distance_2_object()(ToCgal(q), segment(e), noise * noise) !=
+            CGAL::LARGER) {
+          return true;
+        }
+      }
+      return false;
+    };
     // The points on each edge that it is split at, in order along it.
     struct OnEdge {
       int edge;
@@ -848,7 +888,7 @@ class Checker {
     std::vector<OnEdge> on_edges;
     for (size_t i = 0; i < constructed.size(); ++i) {
       const int e = nearest[i];
-      if (e < 0 || passed_through[i]) continue;
+      if (e < 0 || passed_through[i] || !on_boundary_along(static_cast<int>(i), e)) continue;
       const Point2d ab = edges_[e].b - edges_[e].a;
       const Point2d& p = constructed[i].second;
       on_edges.push_back({e, (p - edges_[e].a).dot(ab) / ab.squaredNorm(), p});

@@ -567,6 +567,54 @@ void ExpectEveryMeasureDecomposes(const std::vector<std::vector<Polygon2d>>& inp
   }
 }
 
+// Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-thin-polygon-cut-end-near-
+// edge.wkt, a ring that touches itself, repaired into two polygons): the first is a needle
+// 3.5e-6 wide and 1 long near (14.9, 16.5). At tau = 0 one cut ends at a point constructed on
+// another cut, 7e-12 from the end of an input edge: within that edge's rounding noise, so
+// CheckDecomposition() took it for a point splitting the edge and added the triangle it makes
+// with the edge, 3.8e-13, to the input's area. The components tiled the needle (their areas
+// summed to it within 4e-16), but the check failed for every measure, and `acdplan decompose
+// --repair` refused the file with an internal error. A point counts as splitting an edge only if
+// the union's boundary runs along that edge from it.
+TEST(Decompose2dTest, ThinPolygonWhoseCutEndLiesWithinNoiseOfAnEdge) {
+  ReadPolygonsOptions repair;
+  repair.repair = true;
+  std::vector<std::vector<Polygon2d>> inputs;
+  for (const Polygon2d& polygon :
+       ReadPolygons((fs::path(acdplan::test::SourceDir()) / "fuzz" / "corpus" / "decompose2d" /
+                     "regression-thin-polygon-cut-end-near-edge.wkt")
+                        .string(),
+                    nullptr, repair)) {
+    inputs.push_back({polygon});
+  }
+  ASSERT_EQ(inputs.size(), 2u);
+  // The needle alone, as the repair gives it.
+  inputs.push_back(PreparePolygons({{{14.913040000000001, 16},
+                                     {14.913043478260867, 16.000039998400052},
+                                     {14.91304347826086, 16.5},
+                                     {14.913043468260868, 16.608001000520002},
+                                     {14.913043468277587, 16.608002113691995},
+                                     {14.913043468260868, 16.608001371371568},
+                                     {14.91304347869565, 16.608695699130433},
+                                     {14.913043483913041, 16.608696262599999},
+                                     {14.913043478260869, 17}},
+                                    {}},
+                                   "needle"));
+  for (const std::vector<Polygon2d>& input : inputs) {
+    for (const ConcavityMeasure measure : kMeasures) {
+      for (const double tau : {0.0, 0.05 * ReferenceRadius(input[0])}) {
+        Decompose2dOptions options;
+        options.tau = tau;
+        options.measure = measure;
+        const Decomposition2d decomposition = Decompose2d(input, options);
+        const DecompositionCheck check = CheckDecomposition(input, decomposition);
+        EXPECT_TRUE(check.ok()) << ToString(measure) << ", tau " << tau << ": "
+                                << ::testing::PrintToString(check.problems);
+      }
+    }
+  }
+}
+
 // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-long-edge-bisector-snap.wkt):
 // in (0 0, 1 4, 1 2, 64526540 10, 0 4) no vertex lies in the cone of the notch (1, 4), so only
 // its bisector's hit resolves it; that hit lies 1e-7 from the notch on the 6.5e7-long edge, at
