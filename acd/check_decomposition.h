@@ -20,7 +20,9 @@ struct DecompositionCheck {
 ///    clockwise, inside), and its hull, centroid and area agree with its polygon;
 ///  - the union of the components equals the input and their interiors are disjoint (area sum
 ///    equals the input's area to 1e-9 relative, every component lies inside its input polygon,
-///    no two components overlap; tolerances absorb the rounding of cut end points on edges);
+///    no two components overlap; tolerances absorb the rounding of cut end points on edges: the
+///    slivers they make on input edges, and a thousand ulps of each such point times the
+///    lengths of the component edges at it);
 ///  - every component's concavity, re-measured with the decomposition's measure, is at most tau
 ///    (+1e-9 relative) unless min_convexity was used (then area / hull area >= min_convexity
 ///    or the piece is convex); with tau == 0 every component is convex (no IsNotch() vertex);
