@@ -754,15 +754,14 @@ class Checker {
   // component vertex that is no input vertex; it goes to the nearest input edge of its source
   // within OnEdgeNoise() of it (none for a point inside), if the components' union has a
   // boundary edge from it along that edge. Signed so that a point outside the input adds area,
-  // on any ring orientation.
-  // Per source: the slivers' sum, and how much the components' area may differ from the input's
-  // besides (`noise`): a constructed point where a cut of one component ends on another's edge
-  // (a T-junction) is off that edge by its rounding, a triangle of at most half OnEdgeNoise()
-  // times the edge's length, which is at most the lengths of the component edges at the point.
+  // on any ring orientation. Returned per source with how much the components' area may differ
+  // from the input's besides (`noise`): a constructed point where a cut of one component ends
+  // on another's edge (a T-junction) is off that edge by its rounding, a triangle of at most
+  // half its noise times the edge's length, which the component edges at the point bound.
   struct AreaCorrections {
     std::vector<double> slivers, noise;
   };
-  AreaCorrections BoundarySlivers() const {
+  AreaCorrections RoundingCorrections() const {
     const int count = ComponentCount();
     std::vector<std::pair<int, Point2d>> input_vertices;  // (source, vertex), sorted.
     std::vector<IdBox> edge_boxes;
@@ -848,9 +847,9 @@ class Checker {
         });
     // Per constructed point near an input edge: whether the union's boundary runs along that
     // edge at the point, i.e. an edge of a component that no other component has reversed (not
-    // a cut between two of them) joins it to a point of the input edge. A cut's end inside the
-    // input can lie within noise of an edge where the input is that thin (1e-8 wide here); it
-    // splits no edge, and its sliver would be area the components do not miss.
+    // a cut between two of them) joins it to a point of the input edge. A cut's end inside a
+    // needle (3.5e-6 wide, fuzz_decompose2d) can lie within noise of an edge; it splits no edge,
+    // and its sliver would be area the components do not miss.
     using PointKey = std::tuple<int, double, double>;  // (source, x, y).
     auto key_of = [this](int owner, const Point2d& p) {
       return PointKey(SourceOf(owner), p.x(), p.y());
@@ -954,7 +953,7 @@ class Checker {
     for (int k = 0; k < ComponentCount(); ++k) {
       if (info_[k].usable) sums[components_[k].source] += info_[k].area;
     }
-    const AreaCorrections corrections = BoundarySlivers();
+    const AreaCorrections corrections = RoundingCorrections();
     for (size_t s = 0; s < input_.size(); ++s) {
       const double expected = inputs_[s].area + corrections.slivers[s];
       if (!(std::abs(sums[s] - expected) <=
