@@ -855,10 +855,13 @@ class Checker {
       return PointKey(SourceOf(owner), p.x(), p.y());
     };
     std::vector<std::pair<PointKey, PointKey>> component_edges;  // Directed, sorted.
+    std::map<PointKey, double> incident_length;  // Of the component edges at a point.
     for (const EdgeRef& edge : edges_) {
-      if (IsComponent(edge.owner)) {
-        component_edges.emplace_back(key_of(edge.owner, edge.a), key_of(edge.owner, edge.b));
-      }
+      if (!IsComponent(edge.owner)) continue;
+      component_edges.emplace_back(key_of(edge.owner, edge.a), key_of(edge.owner, edge.b));
+      const double length = (edge.b - edge.a).norm();
+      incident_length[component_edges.back().first] += length;
+      incident_length[component_edges.back().second] += length;
     }
     std::sort(component_edges.begin(), component_edges.end());
     std::map<PointKey, std::vector<Point2d>> boundary_neighbours;  // Ends of unmatched edges.
@@ -904,13 +907,6 @@ class Checker {
     AreaCorrections out{std::vector<double>(input_.size(), 0.0),
                         std::vector<double>(input_.size(), 0.0)};
     std::vector<double>& slivers = out.slivers;
-    std::map<PointKey, double> incident_length;  // Of the component edges at a point.
-    for (const EdgeRef& edge : edges_) {
-      if (!IsComponent(edge.owner)) continue;
-      const double length = (edge.b - edge.a).norm();
-      incident_length[key_of(edge.owner, edge.a)] += length;
-      incident_length[key_of(edge.owner, edge.b)] += length;
-    }
     for (const auto& [source, p] : constructed) {
       const double noise = kHullNoise * std::max(MaxAbs(p), 1.0);
       out.noise[static_cast<size_t>(source)] +=

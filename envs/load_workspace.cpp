@@ -7,6 +7,7 @@
 #include "acd/read_polygons.h"
 #include "base/input_error.h"
 #include "base/yaml_file.h"
+#include "envs/internal/file_extension.h"
 #include "envs/mesh_loader.h"
 #include "envs/moving_ai_map.h"
 #include "envs/occupancy_map.h"
@@ -16,12 +17,7 @@ namespace acdplan::envs {
 
 namespace {
 
-std::string LowerExtension(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
+using internal::LowerExtension;
 
 // A workspace YAML is 3D when its bounds have six numbers or an obstacle names a mesh; the 3D
 // loader then reports any other mistake with its key path.

@@ -14,15 +14,17 @@
 
 #include "acd/internal/text_parsing.h"
 #include "base/input_error.h"
+#include "envs/internal/file_extension.h"
 #include "envs/obj_off_reader.h"
 #include "envs/ply_reader.h"
 #include "envs/stl_reader.h"
 
 namespace acdplan::envs {
 
+using internal::LowerExtension;
+
 bool IsMeshFile(const std::string& path) {
-  const std::string extension =
-      acd::internal::ToLower(std::filesystem::path(path).extension().string());
+  const std::string extension = LowerExtension(path);
   for (const char* known : {".obj", ".off", ".ply", ".stl", ".dae", ".gltf", ".glb"}) {
     if (extension == known) return true;
   }
@@ -36,8 +38,7 @@ acd::TriangleMesh ReadMesh(const std::string& path) {
     throw InputError(path + ": cannot read the file: " +
                      (exists ? std::string("not a regular file") : std::strerror(ENOENT)));
   }
-  const std::string extension =
-      acd::internal::ToLower(std::filesystem::path(path).extension().string());
+  const std::string extension = LowerExtension(path);
   if (extension == ".obj" || extension == ".off" || extension == ".ply" || extension == ".stl") {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot read the file: " + std::strerror(errno));
