@@ -486,15 +486,16 @@ namespace {
 
 // The concavity of the vertices of `pocket` for the measures beyond SL, given its SL distances
 // in result->outer and whether it has a hazard: SL distances are final for SL, for H2 when they
-// exceed tau, and for SP and H1 when the pocket has no hazard (see PocketConcavity()).
-void FinishPocket(const Ring2d& ring, const Pocket& pocket, bool hazard, double sl_max,
+// exceed tau, and for SP and H1 when the pocket has no hazard (see PocketConcavity()). Returns
+// whether it replaced them.
+bool FinishPocket(const Ring2d& ring, const Pocket& pocket, bool hazard, double sl_max,
                   const ConcavityOptions& options, PocketCache* cache, Concavity2d* result) {
   const int n = static_cast<int>(ring.size());
   const bool needs_sp =
       hazard && (options.measure == ConcavityMeasure::kShortestPath ||
                  options.measure == ConcavityMeasure::kHybrid1 ||
                  (options.measure == ConcavityMeasure::kHybrid2 && sl_max <= options.tau));
-  if (!needs_sp) return;
+  if (!needs_sp) return false;
   const Ring2d chain = PocketChain(ring, pocket);
   const std::vector<double>* cached = cache != nullptr ? cache->Find(chain) : nullptr;
   std::vector<double> computed;
@@ -506,6 +507,7 @@ void FinishPocket(const Ring2d& ring, const Pocket& pocket, bool hazard, double 
   for (size_t k = 1; k + 1 < chain.size(); ++k) {
     result->outer[(pocket.begin + static_cast<int>(k)) % n] = d[k];
   }
+  return true;
 }
 
 // The concavity of every vertex of `pocket` into result->outer (Ch. IV.A.1).
@@ -535,11 +537,20 @@ void MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOpti
 // AppendGapPockets() and MeasurePocket() on each, in one pass where no vertex lies on the
 // bridge (then the gap is one pocket). A vertex on the bridge lies between its ends (every
 // vertex lies in the hull), so its SL distance is rounding noise, far below `on_bridge`:
-// the exact test runs only for distances that small.
-void MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions& options,
-                PocketCache* cache, Concavity2d* result) {
+// the exact test runs only for distances that small. Returns the largest concavity in the gap
+// (Concavity2d::bridge_max).
+double MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions& options,
+                  PocketCache* cache, Concavity2d* result) {
   const int n = static_cast<int>(ring.size());
-  if ((end - begin + n) % n <= 1) return;
+  if ((end - begin + n) % n <= 1) return -std::numeric_limits<double>::infinity();
+  // The largest of the final values, once a pocket's SL distances were replaced.
+  auto largest = [&] {
+    double top = 0.0;
+    for (int i = begin + 1 == n ? 0 : begin + 1; i != end; i = i + 1 == n ? 0 : i + 1) {
+      top = std::max(top, result->outer[i]);
+    }
+    return top;
+  };
   const Point2d& from = ring[begin];
   const Point2d& to = ring[end];
   const Point2d bridge = to - from;
@@ -555,24 +566,22 @@ void MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions& 
         std::vector<Pocket> pockets;
         AppendGapPockets(ring, begin, end, &pockets);
         for (const Pocket& pocket : pockets) MeasurePocket(ring, pocket, options, cache, result);
-        return;
+        return largest();
       }
       result->outer[i] = d;
       sl_max = std::max(sl_max, d);
     }
     i = next;
   }
-  FinishPocket(ring, {begin, end}, hazard, sl_max, options, cache, result);
+  return FinishPocket(ring, {begin, end}, hazard, sl_max, options, cache, result) ? largest()
+                                                                                  : sl_max;
 }
 
-// The witness notch and the holes, once result->outer is complete.
-void FinishMeasure(const Polygon2d& polygon, const ConcavityOptions& options, PocketCache* cache,
-                   Concavity2d* result) {
-  const Ring2d& ring = polygon.outer;
+// The witness notch by the outer concavities alone, into result->value and witness_vertex.
+void FindWitnessNotch(const Ring2d& ring, Concavity2d* result) {
   const int n = static_cast<int>(ring.size());
-  // The maximum over notches only (Lemma C.2: the most concave point is a notch), the first
-  // notch in ring order on equal concavity. Taken by decreasing concavity: the deepest vertex
-  // of a pocket is extreme in the pocket, so almost always a notch, and a few passes for the
+  // The maximum over notches only, the first notch in ring order on equal concavity, when the
+  // deepest vertices are no notches. Taken by decreasing concavity: a few passes for the
   // largest value left replace a notch test on every vertex that tops the notches before it
   // in ring order (most do, going down into a pocket). After kRounds values, the ring order.
   const std::vector<double>& concavity = result->outer;
@@ -608,6 +617,50 @@ void FinishMeasure(const Polygon2d& polygon, const ConcavityOptions& options, Po
       result->witness_vertex = i;
     }
   }
+}
+
+// The first notch in ring order among the outer vertices of concavity `top`, the largest
+// bridge_max, looked for in the gaps that hold it (the hull vertices, the rest, are no notches:
+// each is strictly convex); -1 if none is a notch.
+int FirstNotchAtTop(const Ring2d& ring, const Concavity2d& result, double top) {
+  const int n = static_cast<int>(ring.size());
+  const int h = static_cast<int>(result.hull.size());
+  auto first_in = [&](int from, int to) {  // Over [from, to).
+    for (int i = from; i < to; ++i) {
+      if (result.outer[i] == top && internal::IsNotchInline(ring[i == 0 ? n - 1 : i - 1], ring[i],
+                                                            ring[i + 1 == n ? 0 : i + 1])) {
+        return i;
+      }
+    }
+    return -1;
+  };
+  // The last gap wraps past vertex n - 1: its part before hull[0] comes first in ring order.
+  const bool wrap_holds_top = result.bridge_max[h - 1] == top;
+  int found = wrap_holds_top ? first_in(0, result.hull[0]) : -1;
+  for (int k = 0; k + 1 < h && found < 0; ++k) {
+    if (result.bridge_max[k] == top) found = first_in(result.hull[k] + 1, result.hull[k + 1]);
+  }
+  if (found < 0 && wrap_holds_top) found = first_in(result.hull[h - 1] + 1, n);
+  return found;
+}
+
+// The witness notch and the holes, once result->outer and result->bridge_max are complete.
+void FinishMeasure(const Polygon2d& polygon, const ConcavityOptions& options, PocketCache* cache,
+                   Concavity2d* result) {
+  const Ring2d& ring = polygon.outer;
+  // The maximum over notches only (Lemma C.2: the most concave point is a notch), the first
+  // notch in ring order on equal concavity. The deepest vertex of a pocket is extreme in the
+  // pocket, so almost always a notch: it is looked for at the largest bridge_max first.
+  const double top = result->bridge_max.empty()
+                         ? -std::numeric_limits<double>::infinity()
+                         : *std::max_element(result->bridge_max.begin(), result->bridge_max.end());
+  const int at_top = top >= 0.0 ? FirstNotchAtTop(ring, *result, top) : -1;
+  if (at_top >= 0) {
+    result->value = top;
+    result->witness_vertex = at_top;
+  } else if (top >= 0.0) {
+    FindWitnessNotch(ring, result);
+  }
   const double delta = result->value;
   result->holes = MeasureHoles(polygon, result->outer, delta, options, cache);
   for (int i = 0; i < static_cast<int>(result->holes.size()); ++i) {
@@ -628,76 +681,82 @@ Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOpti
   result.outer.assign(ring.size(), 0.0);
   result.hull = ConvexHullIndices(ring);
   const int h = static_cast<int>(result.hull.size());
+  result.bridge_max.resize(h);
   for (int k = 0; k < h; ++k) {
-    MeasureGap(ring, result.hull[k], result.hull[(k + 1) % h], options, cache, &result);
+    result.bridge_max[k] = MeasureGap(ring, result.hull[k], result.hull[k + 1 == h ? 0 : k + 1],
+                                      options, cache, &result);
   }
   FinishMeasure(polygon, options, cache, &result);
   return result;
 }
 
-Concavity2d MeasureChildConcavity(const Polygon2d& piece, const std::vector<int>& origin,
-                                  const Concavity2d& parent,
-                                  const std::vector<char>& parent_on_hull,
-                                  const ConcavityOptions& options, PocketCache* cache) {
+Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& chain,
+                                  const Concavity2d& parent, const ConcavityOptions& options,
+                                  PocketCache* cache) {
   const Ring2d& ring = piece.outer;
   const int n = static_cast<int>(ring.size());
-  const int parent_n = static_cast<int>(parent_on_hull.size());
-  // Edge i -> i + 1 is an edge of the parent.
-  auto inherited_edge = [&](int i) {
-    const int a = origin[i], b = origin[i + 1 == n ? 0 : i + 1];
-    return a >= 0 && b == (a + 1 == parent_n ? 0 : a + 1);
-  };
-  int run_start = -1;  // A vertex where a run of inherited edges starts.
-  if (static_cast<int>(origin.size()) == n) {
-    for (int i = 0; i < n && run_start < 0; ++i) {
-      if (!inherited_edge(i == 0 ? n - 1 : i - 1)) run_start = i;
-    }
+  const int parent_n = static_cast<int>(parent.outer.size());
+  const int parent_h = static_cast<int>(parent.hull.size());
+  if (chain.length < 2 || chain.begin < 0 || chain.begin + chain.length > n ||
+      chain.length > parent_n || chain.parent_begin < 0 || chain.parent_begin >= parent_n ||
+      static_cast<int>(parent.bridge_max.size()) != parent_h || parent_h == 0) {
+    return MeasureConcavityCached(piece, options, cache);
   }
-  if (run_start < 0) return MeasureConcavityCached(piece, options, cache);
-  // A gap of the parent's hull whose whole chain the piece inherits keeps its bridge: its
-  // vertices keep their concavity, and they are not vertices of the piece's hull (the piece
-  // lies in the parent, so the chain lies strictly inside the union of the piece and the
-  // pocket, whose hull is the piece's). The hull is built over the other vertices, in ring
-  // order from `run_start`; the first vertex of such a gap is marked with a negative
-  // concavity until its gap is skipped below.
-  constexpr double kInheritedGap = -1.0;
+  // The parent's hull vertices on the chain, in chain order: parent.hull increases, so they are
+  // those from the first at or after parent_begin on, cyclically, while on the chain. Each is a
+  // strict hull vertex of the piece too (the piece lies in the parent).
+  auto chain_offset = [&](int j) {
+    const int d = j - chain.parent_begin;
+    return d < 0 ? d + parent_n : d;
+  };
+  const int first_k = static_cast<int>(
+      std::lower_bound(parent.hull.begin(), parent.hull.end(), chain.parent_begin) -
+      parent.hull.begin());
+  auto hull_k = [&](int t) {  // The parent's hull index of the t-th on the chain.
+    const int k = first_k + t;
+    return k < parent_h ? k : k - parent_h;
+  };
+  auto position = [&](int t) { return chain.begin + chain_offset(parent.hull[hull_k(t)]); };
+  int m = 0;  // How many are on the chain.
+  while (m < parent_h && chain_offset(parent.hull[hull_k(m)]) < chain.length) ++m;
+  if (m < 2) return MeasureConcavityCached(piece, options, cache);
+  // A gap of the parent's hull between two of them is inherited whole and keeps its bridge: its
+  // vertices keep their concavity, and none is a vertex of the piece's hull (the chain lies
+  // strictly inside the union of the piece and the pocket, whose hull is the piece's). The hull
+  // is built over the other vertices, starting at the first parent hull vertex on the chain.
   Concavity2d result;
   result.outer.assign(n, 0.0);
-  // kept[0, kept_size), a stack without capacity checks; not zeroed, as it is written first.
-  const std::unique_ptr<int[]> kept(new int[n]);
-  int kept_size = 0;
-  int last_hull = -1;  // Where in `kept` the run's last parent hull vertex is, or -1.
-  // Where in `kept` the first parent hull vertex is, or -1: a strict hull vertex of the piece
-  // too (the piece lies in the parent), so the hull can start there. No cut of `kept` below
-  // reaches it: they keep the position of a later parent hull vertex.
-  int first_hull = -1;
-  for (int k = 0, i = run_start; k < n; ++k, i = i + 1 == n ? 0 : i + 1) {
-    const int from = origin[i];
-    if (from >= 0 && parent_on_hull[from]) {
-      if (first_hull < 0) first_hull = kept_size;
-      if (last_hull >= 0) {
-        const int begin = kept[last_hull];
-        for (int j = begin + 1 == n ? 0 : begin + 1; j != i; j = j + 1 == n ? 0 : j + 1) {
-          result.outer[j] = parent.outer[origin[j]];
-        }
-        kept_size = last_hull + 1;
-        result.outer[begin] = kInheritedGap;
-      }
-      last_hull = kept_size;
-    }
-    kept[kept_size++] = i;
-    if (!inherited_edge(i)) last_hull = -1;
+  const int first = position(0), last = position(m - 1);
+  const int kept_size = m + (n - 1 - last) + first;
+  const std::unique_ptr<int[]> kept(new int[kept_size]);
+  for (int t = 0; t < m; ++t) {
+    const int at = position(t);
+    kept[t] = at;
+    if (t + 1 == m) break;
+    const int count = position(t + 1) - at - 1;  // The gap's vertices.
+    const int from = parent.hull[hull_k(t)] + 1;
+    const int run = std::min(count, parent_n - from);  // Before the parent's ring wraps.
+    std::copy_n(parent.outer.begin() + from, run, result.outer.begin() + at + 1);
+    std::copy_n(parent.outer.begin(), count - run, result.outer.begin() + at + 1 + run);
   }
+  std::iota(kept.get() + m, kept.get() + m + (n - 1 - last), last + 1);
+  std::iota(kept.get() + m + (n - 1 - last), kept.get() + kept_size, 0);
   result.hull = MelkmanHull(
-      ring, kept_size, [&](int k) { return kept[k]; }, first_hull);
+      ring, kept_size, [&](int k) { return kept[k]; }, 0);
+  // The piece's hull edges in ring order, the inherited ones (from one parent hull vertex on
+  // the chain to the next: the positions increase along it, so never the edge that wraps) with
+  // their bridge_max.
   const int h = static_cast<int>(result.hull.size());
-  for (int k = 0; k < h; ++k) {
+  result.bridge_max.resize(h);
+  for (int k = 0, t = 0; k < h; ++k) {
     const int begin = result.hull[k];
-    if (result.outer[begin] == kInheritedGap) {
-      result.outer[begin] = 0.0;
-      continue;
+    const int end = result.hull[k + 1 == h ? 0 : k + 1];
+    while (t < m && kept[t] < begin) ++t;
+    if (t + 1 < m && kept[t] == begin && kept[t + 1] == end) {
+      result.bridge_max[k] = parent.bridge_max[hull_k(t)];
+    } else {
+      result.bridge_max[k] = MeasureGap(ring, begin, end, options, cache, &result);
     }
-    MeasureGap(ring, begin, result.hull[(k + 1) % h], options, cache, &result);
   }
   FinishMeasure(piece, options, cache, &result);
   return result;

@@ -26,8 +26,11 @@ struct HoleConcavity {
 
 /// Concavity of a polygon: per outer vertex, per hole, and the maximum with its witness.
 struct Concavity2d {
-  std::vector<double> outer;         ///< Per outer-ring vertex [units]; 0 on the convex hull.
-  std::vector<int> hull;             ///< ConvexHullIndices() of the outer ring.
+  std::vector<double> outer;  ///< Per outer-ring vertex [units]; 0 on the convex hull.
+  std::vector<int> hull;      ///< ConvexHullIndices() of the outer ring.
+  /// Per hull edge k, from hull[k] to hull[k + 1] (cyclically): the largest concavity of the
+  /// outer vertices strictly between its ends (its pockets' depth), or -infinity if none.
+  std::vector<double> bridge_max;
   std::vector<HoleConcavity> holes;  ///< Per hole.
   double value = 0.0;                ///< Max over notches and holes; 0 iff the polygon is convex.
   int witness_hole = -1;             ///< Hole holding the maximum, or -1 for the outer ring.

@@ -88,7 +88,6 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   // Pieces waiting on the stack are measured when they are cut from their parent, while the
   // parent's measure is at hand to reuse (MeasureChildConcavity()); indexed by node - root.
   std::vector<Concavity2d> measured(1);
-  std::vector<char> on_hull;
   while (!stack.empty()) {
     const int id = stack.back();
     stack.pop_back();
@@ -117,13 +116,11 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
     }
     out->tree[id].witness = resolution.witness;
     out->tree[id].cuts = resolution.cuts;
-    on_hull.assign(out->tree[id].piece.outer.size(), 0);
-    for (const int i : concavity.hull) on_hull[i] = 1;
     for (int side = 1; side >= 0; --side) {  // Child 0 is processed first (depth-first order).
       const int child = static_cast<int>(out->tree.size());
       measured.resize(child - root + 1);
       measured[child - root] = internal::MeasureChildConcavity(
-          resolution.pieces[side], resolution.origin[side], concavity, on_hull, measure, &cache);
+          resolution.pieces[side], resolution.inherited[side], concavity, measure, &cache);
       HierarchyNode2d node;
       node.piece = std::move(resolution.pieces[side]);
       node.parent = id;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "acd/concavity.h"
+#include "acd/internal/inherited_chain.h"
 #include "acd/polygon2d.h"
 
 namespace acdplan::acd::internal {
@@ -52,14 +53,11 @@ Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOpti
                                    PocketCache* cache);
 
 /// MeasureConcavityCached() of a piece cut from a measured parent, the same result for less work:
-/// `origin[i]` is the parent outer vertex that outer vertex i of `piece` copies, or -1 (a new
-/// point, a former hole vertex); `parent_on_hull[j]` whether parent vertex j is on the parent's
-/// hull. Hull gaps of the parent that the piece inherits whole keep their vertices' concavity
-/// and stay hull gaps of the piece, so only the chains next to the cuts are measured again and
-/// the hull is built over the other vertices.
-Concavity2d MeasureChildConcavity(const Polygon2d& piece, const std::vector<int>& origin,
-                                  const Concavity2d& parent,
-                                  const std::vector<char>& parent_on_hull,
-                                  const ConcavityOptions& options, PocketCache* cache);
+/// `chain` is the part of the piece's outer ring that copies the parent's. Hull gaps of the
+/// parent on the chain keep their vertices' concavity and stay hull gaps of the piece, so only
+/// the gaps next to the cuts are measured again and the hull is built over the other vertices.
+Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& chain,
+                                  const Concavity2d& parent, const ConcavityOptions& options,
+                                  PocketCache* cache);
 
 }  // namespace acdplan::acd::internal

@@ -669,31 +669,27 @@ void AppendChain(const Ring& ring, int from, int to, Ring* out) {
 }
 
 // Appends the outer ring from cut end `a` forward to cut end `b`, both included, to `ring`,
-// and to `origin` the outer index of each point (-1 for an end on an edge). Ends are ordered
-// along the ring by position: vertex k at 2k, a point on edge k at 2k + 1 (two ends on one
-// edge never occur: such a cut would run along the edge).
+// an empty ring, and sets `chain` to the outer vertices it copies. Ends are ordered along the
+// ring by position: vertex k at 2k, a point on edge k at 2k + 1 (two ends on one edge never
+// occur: such a cut would run along the edge).
 void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b, Ring2d* ring,
-                      std::vector<int>* origin) {
+                      InheritedChain* chain) {
   const int n = static_cast<int>(outer.size());
   const int pos_a = 2 * a.index + (a.on_edge ? 1 : 0);
   const int pos_b = 2 * b.index + (b.on_edge ? 1 : 0);
   const int span = (pos_b - pos_a + 2 * n) % (2 * n);
   const int between = (span - 1 + (pos_a & 1)) / 2;  // Vertices strictly between a and b.
   ring->reserve(ring->size() + between + 2);
-  origin->reserve(origin->size() + between + 2);
   ring->push_back(a.on_edge ? a.point : outer[a.index]);
-  origin->push_back(a.on_edge ? -1 : a.index);
   // The vertices between, in at most two runs of the outer ring.
   const int first = Next(a.index, n);
   const int run = std::min(between, n - first);
   ring->insert(ring->end(), outer.begin() + first, outer.begin() + first + run);
   ring->insert(ring->end(), outer.begin(), outer.begin() + (between - run));
-  const size_t from = origin->size();
-  origin->resize(from + between);
-  std::iota(origin->begin() + from, origin->begin() + from + run, first);
-  std::iota(origin->begin() + from + run, origin->end(), 0);
   ring->push_back(b.on_edge ? b.point : outer[b.index]);
-  origin->push_back(b.on_edge ? -1 : b.index);
+  chain->begin = a.on_edge ? 1 : 0;
+  chain->parent_begin = a.on_edge ? first : a.index;
+  chain->length = between + (a.on_edge ? 0 : 1) + (b.on_edge ? 0 : 1);
 }
 
 // Gives each hole of `polygon` not in `skip` to the piece that contains it: the hole's
@@ -764,10 +760,9 @@ void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
 void SplitAlong(const Polygon2d& polygon, const Endpoint& from, const Endpoint& to,
                 Resolution* resolution) {
   resolution->pieces = {};
-  resolution->origin = {};
   for (int side = 0; side < 2; ++side) {
     AppendOuterChain(polygon.outer, side == 0 ? from : to, side == 0 ? to : from,
-                     &resolution->pieces[side].outer, &resolution->origin[side]);
+                     &resolution->pieces[side].outer, &resolution->inherited[side]);
   }
   DistributeHoles(polygon, {}, &resolution->pieces);
 }
@@ -860,15 +855,11 @@ void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x,
                       const Endpoint& y, Resolution* resolution) {
   const Ring2d& hole = polygon.holes[h];
   resolution->pieces = {};
-  resolution->origin = {};
   // Piece 0: outer x..y, cut to b, hole b..a (forward keeps the interior on the left), cut to x.
-  AppendOuterChain(polygon.outer, x, y, &resolution->pieces[0].outer, &resolution->origin[0]);
+  AppendOuterChain(polygon.outer, x, y, &resolution->pieces[0].outer, &resolution->inherited[0]);
   AppendChain(hole, b, a, &resolution->pieces[0].outer);
-  AppendOuterChain(polygon.outer, y, x, &resolution->pieces[1].outer, &resolution->origin[1]);
+  AppendOuterChain(polygon.outer, y, x, &resolution->pieces[1].outer, &resolution->inherited[1]);
   AppendChain(hole, a, b, &resolution->pieces[1].outer);
-  for (int side = 0; side < 2; ++side) {
-    resolution->origin[side].resize(resolution->pieces[side].outer.size(), -1);  // Hole vertices.
-  }
   DistributeHoles(polygon, {h}, &resolution->pieces);
   resolution->cuts = {{hole[a], x.point}, {hole[b], y.point}};
   resolution->witness = hole[a];
@@ -893,19 +884,15 @@ struct HolePath {
 void SplitAlongPath(const Polygon2d& polygon, const HolePath& path, const Point2d& witness,
                     Resolution* resolution) {
   resolution->pieces = {};
-  resolution->origin = {};
   AppendOuterChain(polygon.outer, path.x, path.y, &resolution->pieces[0].outer,
-                   &resolution->origin[0]);
+                   &resolution->inherited[0]);
   for (auto it = path.holes.rbegin(); it != path.holes.rend(); ++it) {
     AppendChain(polygon.holes[it->hole], it->leave, it->enter, &resolution->pieces[0].outer);
   }
   AppendOuterChain(polygon.outer, path.y, path.x, &resolution->pieces[1].outer,
-                   &resolution->origin[1]);
+                   &resolution->inherited[1]);
   for (const HoleCrossing& c : path.holes) {
     AppendChain(polygon.holes[c.hole], c.enter, c.leave, &resolution->pieces[1].outer);
-  }
-  for (int side = 0; side < 2; ++side) {
-    resolution->origin[side].resize(resolution->pieces[side].outer.size(), -1);  // Hole vertices.
   }
   std::vector<int> crossed;
   for (const HoleCrossing& c : path.holes) crossed.push_back(c.hole);

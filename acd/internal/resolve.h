@@ -6,6 +6,7 @@
 
 #include "acd/concavity.h"
 #include "acd/decomposition2d.h"
+#include "acd/internal/inherited_chain.h"
 #include "acd/polygon2d.h"
 
 namespace acdplan::acd::internal {
@@ -34,9 +35,8 @@ struct ResolveOptions {
 /// Two pieces and the cut(s) between them.
 struct Resolution {
   std::array<Polygon2d, 2> pieces;
-  /// Per piece, per outer vertex: the index of the outer vertex of the resolved polygon it
-  /// copies, or -1 (a new point on an edge, a vertex of a hole).
-  std::array<std::vector<int>, 2> origin;
+  /// Per piece, the outer vertices it copies from the resolved polygon's outer ring.
+  std::array<InheritedChain, 2> inherited;
   std::vector<Cut2d> cuts;
   Point2d witness;  ///< The feature resolved.
 };

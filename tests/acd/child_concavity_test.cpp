@@ -17,6 +17,7 @@ namespace {
 
 void ExpectSameMeasure(const Concavity2d& full, const Concavity2d& child, const std::string& what) {
   EXPECT_EQ(full.hull, child.hull) << what;
+  EXPECT_EQ(full.bridge_max, child.bridge_max) << what;
   EXPECT_EQ(full.outer, child.outer) << what;
   EXPECT_EQ(full.value, child.value) << what;
   EXPECT_EQ(full.witness_vertex, child.witness_vertex) << what;
@@ -49,13 +50,18 @@ int CompareAlongDecomposition(const Polygon2d& polygon, const ConcavityOptions& 
       ADD_FAILURE() << "no cut";
       break;
     }
-    std::vector<char> on_hull(top.piece.outer.size(), 0);
-    for (const int i : top.concavity.hull) on_hull[i] = 1;
     for (int side = 0; side < 2; ++side) {
       const Polygon2d& piece = resolution.pieces[side];
-      EXPECT_EQ(resolution.origin[side].size(), piece.outer.size());
-      Concavity2d child = internal::MeasureChildConcavity(piece, resolution.origin[side],
-                                                          top.concavity, on_hull, measure, nullptr);
+      const internal::InheritedChain& chain = resolution.inherited[side];
+      // The chain copies what it says it copies.
+      EXPECT_LE(chain.begin + chain.length, static_cast<int>(piece.outer.size()));
+      for (int k = 0; k < chain.length && chain.begin + k < static_cast<int>(piece.outer.size());
+           ++k) {
+        const int from = (chain.parent_begin + k) % static_cast<int>(top.piece.outer.size());
+        EXPECT_EQ(piece.outer[chain.begin + k], top.piece.outer[from]) << "split " << splits;
+      }
+      Concavity2d child =
+          internal::MeasureChildConcavity(piece, chain, top.concavity, measure, nullptr);
       ExpectSameMeasure(MeasureConcavity(piece, measure), child,
                         "split " + std::to_string(splits) + " side " + std::to_string(side));
       ++compared;
@@ -87,21 +93,37 @@ TEST(ChildConcavityTest, MeasuresEverythingWhenNothingIsInherited) {
   const Polygon2d square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}};
   const Polygon2d dented{{{0, 0}, {4, 0}, {4, 4}, {2, 1}, {0, 4}}, {}};
   const Concavity2d parent = MeasureConcavity(square);
-  const std::vector<char> on_hull(4, 1);
-  const Concavity2d child =
-      internal::MeasureChildConcavity(dented, {-1, -1, -1, -1, -1}, parent, on_hull, {}, nullptr);
+  const Concavity2d child = internal::MeasureChildConcavity(dented, {}, parent, {}, nullptr);
   ExpectSameMeasure(MeasureConcavity(dented), child, "dented");
   EXPECT_GT(child.value, 0.0);
   EXPECT_EQ(child.witness_vertex, 3);
 }
 
-TEST(ChildConcavityTest, FallsBackOnAMismatchedOrigin) {
+TEST(ChildConcavityTest, FallsBackOnAChainThatDoesNotFit) {
   const Polygon2d dented{{{0, 0}, {4, 0}, {4, 4}, {2, 1}, {0, 4}}, {}};
   const Concavity2d parent = MeasureConcavity(dented);
-  const std::vector<char> on_hull = {1, 1, 1, 0, 1};
-  const Concavity2d child =
-      internal::MeasureChildConcavity(dented, {0, 1}, parent, on_hull, {}, nullptr);
-  ExpectSameMeasure(parent, child, "same piece");
+  for (const internal::InheritedChain chain :
+       {internal::InheritedChain{3, 0, 3}, internal::InheritedChain{0, 5, 3},
+        internal::InheritedChain{0, 0, 6}, internal::InheritedChain{-1, 0, 2}}) {
+    const Concavity2d child = internal::MeasureChildConcavity(dented, chain, parent, {}, nullptr);
+    ExpectSameMeasure(parent, child, "same piece");
+  }
+}
+
+TEST(ChildConcavityTest, InheritsTheGapsBetweenParentHullVertices) {
+  // Two pockets under the parent's hull edges (6, 3) -> (4, 4) and (2, 4) -> (0, 3.5), at
+  // vertices 3 and 6. The left piece of the cut from notch 3 down to (5, 0) keeps the second
+  // pocket whole (parent vertices 3 ... 7, 0 are its vertices 0 ... 5: the chain wraps past the
+  // parent's vertex 7), so vertex 6's concavity is copied, not measured.
+  const Polygon2d parent_polygon{{{0, 0}, {6, 0}, {6, 3}, {5, 1}, {4, 4}, {2, 4}, {1, 2}, {0, 3.5}},
+                                 {}};
+  const Concavity2d parent = MeasureConcavity(parent_polygon);
+  ASSERT_EQ(parent.hull, (std::vector<int>{0, 1, 2, 4, 5, 7}));
+  const Polygon2d piece{{{5, 1}, {4, 4}, {2, 4}, {1, 2}, {0, 3.5}, {0, 0}, {5, 0}}, {}};
+  const Concavity2d child = internal::MeasureChildConcavity(piece, {0, 3, 6}, parent, {}, nullptr);
+  ExpectSameMeasure(MeasureConcavity(piece), child, "left piece");
+  EXPECT_EQ(child.witness_vertex, 3);
+  EXPECT_EQ(child.value, parent.outer[6]);
 }
 
 }  // namespace
