@@ -335,9 +335,12 @@ namespace {
 // Melkman's linear-time hull of a simple polygonal chain: the points ring[index(k)],
 // k = 0..count-1, in ring order (increasing indices), started at `start` if it is known to be a
 // strict hull vertex, else at the lexicographically smallest point (always one), with exact
-// orientation; strict turns only. Returns ring indices in increasing order.
+// orientation; strict turns only. Returns ring indices in increasing order. `convex_prefix`:
+// how many points from `start` on are known to be consecutive strict hull vertices (as the
+// parent's hull vertices a piece inherits); at least 3 of them start the deque as they are.
 template <typename Index>
-std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int start = -1) {
+std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int start = -1,
+                             int convex_prefix = 0) {
   const int n = count;
   if (n < 3) {
     std::vector<int> all(n);
@@ -354,27 +357,35 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int sta
   }
   auto at = [&](int k) { return index(start + k < n ? start + k : start + k - n); };
   auto turn = [&](int a, int b, int c) { return Orientation(ring[a], ring[b], ring[c]); };
-  // Skip vertices collinear with the first edge: they lie on it (the chain is simple).
-  int second = at(1);
-  int k = 2;
-  while (k < n && turn(at(0), second, at(k)) == 0) second = at(k++);
-  if (k == n) return {std::min(at(0), second), std::max(at(0), second)};
   // A deque in a flat array: [bottom, top] with room to grow both ways.
   // Not zeroed (a memset of 8n bytes per hull): every slot is written before it is read.
   const std::unique_ptr<int[]> deque(new int[2 * n + 3]);
   int bottom = n, top = n - 1;
   auto push_top = [&](int v) { deque[++top] = v; };
   auto push_bottom = [&](int v) { deque[--bottom] = v; };
-  const int third = at(k);
-  push_top(third);
-  if (turn(at(0), second, third) > 0) {
-    push_top(at(0));
-    push_top(second);
+  int k = 2;
+  if (convex_prefix >= 3) {
+    // What the loop below would build from them: the last on both ends, the others in order
+    // (each is outside the hull of those before it, on no edge's line).
+    k = std::min(convex_prefix, n) - 1;
+    push_top(at(k));
+    for (int j = 0; j <= k; ++j) push_top(at(j));
   } else {
-    push_top(second);
-    push_top(at(0));
+    // Skip vertices collinear with the first edge: they lie on it (the chain is simple).
+    int second = at(1);
+    while (k < n && turn(at(0), second, at(k)) == 0) second = at(k++);
+    if (k == n) return {std::min(at(0), second), std::max(at(0), second)};
+    const int third = at(k);
+    push_top(third);
+    if (turn(at(0), second, third) > 0) {
+      push_top(at(0));
+      push_top(second);
+    } else {
+      push_top(second);
+      push_top(at(0));
+    }
+    push_top(third);
   }
-  push_top(third);
   // The deque's top edge (deque[top - 1] -> deque[top]) and bottom edge (deque[bottom] ->
   // deque[bottom + 1]) with their vectors: most vertices fall inside and leave both alone.
   struct Edge {
@@ -416,8 +427,16 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int sta
     top_edge.Set(ring[deque[top - 1]], point);
     bottom_edge.Set(point, ring[deque[bottom + 1]]);
   }
-  std::vector<int> hull(deque.get() + bottom, deque.get() + top);  // Drop the repeated end.
-  std::sort(hull.begin(), hull.end());
+  // The deque runs counter-clockwise, which for a counter-clockwise ring is the ring order from
+  // some vertex on: rotated to start at the least index, unless the ring turns the other way.
+  const int* hull_begin = deque.get() + bottom;
+  const int* hull_end = deque.get() + top;  // Drops the repeated end.
+  const int* least = std::min_element(hull_begin, hull_end);
+  std::vector<int> hull;
+  hull.reserve(hull_end - hull_begin);
+  hull.insert(hull.end(), least, hull_end);
+  hull.insert(hull.end(), hull_begin, least);
+  if (!std::is_sorted(hull.begin(), hull.end())) std::sort(hull.begin(), hull.end());
   return hull;
 }
 
@@ -742,20 +761,20 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
   std::iota(kept.get() + m, kept.get() + m + (n - 1 - last), last + 1);
   std::iota(kept.get() + m + (n - 1 - last), kept.get() + kept_size, 0);
   result.hull = MelkmanHull(
-      ring, kept_size, [&](int k) { return kept[k]; }, 0);
-  // The piece's hull edges in ring order, the inherited ones (from one parent hull vertex on
-  // the chain to the next: the positions increase along it, so never the edge that wraps) with
-  // their bridge_max.
+      ring, kept_size, [&](int k) { return kept[k]; }, 0, m);
+  // The piece's hull edges, the inherited ones (from one parent hull vertex on the chain to the
+  // next: m - 1 edges in a row, from the first's place in the sorted hull) with their bridge_max.
   const int h = static_cast<int>(result.hull.size());
+  const int offset = static_cast<int>(
+      std::lower_bound(result.hull.begin(), result.hull.end(), first) - result.hull.begin());
   result.bridge_max.resize(h);
-  for (int k = 0, t = 0; k < h; ++k) {
-    const int begin = result.hull[k];
-    const int end = result.hull[k + 1 == h ? 0 : k + 1];
-    while (t < m && kept[t] < begin) ++t;
-    if (t + 1 < m && kept[t] == begin && kept[t + 1] == end) {
+  for (int k = 0; k < h; ++k) {
+    const int t = k - offset;
+    if (0 <= t && t + 1 < m) {
       result.bridge_max[k] = parent.bridge_max[hull_k(t)];
     } else {
-      result.bridge_max[k] = MeasureGap(ring, begin, end, options, cache, &result);
+      result.bridge_max[k] = MeasureGap(ring, result.hull[k], result.hull[k + 1 == h ? 0 : k + 1],
+                                        options, cache, &result);
     }
   }
   FinishMeasure(piece, options, cache, &result);

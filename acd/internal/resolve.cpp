@@ -13,6 +13,7 @@
 #include "acd/internal/exact_predicates.h"
 #include "acd/internal/is_notch.h"
 #include "acd/internal/nearest_boundary.h"
+#include "acd/internal/ring_blocks.h"
 #include "acd/internal/ring_locator.h"
 #include "acd/internal/rounding_noise.h"
 
@@ -65,7 +66,9 @@ bool IsIncident(const Endpoint& e, int ring, int edge, int n) {
 // segment, so the cut tests that follow decide alike.
 class EdgeQuery {
  public:
-  explicit EdgeQuery(const Polygon2d& polygon) : polygon_(polygon) {}
+  /// `outer_blocks`: of polygon.outer, with the concavities (they serve BestCandidate() too).
+  EdgeQuery(const Polygon2d& polygon, const RingBlocks& outer_blocks)
+      : polygon_(polygon), outer_blocks_(outer_blocks) {}
 
   // As EdgeGrid::AnyNear(); `visit` is called at least on every edge whose bounding box meets
   // the box of a-b grown by `pad`.
@@ -75,10 +78,9 @@ class EdgeQuery {
     if (grid_) return grid_->AnyNear(a, b, pad, visit);
     const double xmin = std::min(a.x(), b.x()) - pad, xmax = std::max(a.x(), b.x()) + pad;
     const double ymin = std::min(a.y(), b.y()) - pad, ymax = std::max(a.y(), b.y()) + pad;
-    for (int ring = -1; ring < static_cast<int>(polygon_.holes.size()); ++ring) {
-      const Ring2d& points = ring < 0 ? polygon_.outer : polygon_.holes[ring];
+    auto scan = [&](int ring, const Ring2d& points, int from, int to) {
       const int n = static_cast<int>(points.size());
-      for (int i = 0; i < n; ++i) {
+      for (int i = from; i < to; ++i) {
         const Point2d& u = points[i];
         const Point2d& w = points[i + 1 == n ? 0 : i + 1];
         if (std::max(u.x(), w.x()) < xmin || std::min(u.x(), w.x()) > xmax ||
@@ -87,9 +89,26 @@ class EdgeQuery {
         }
         if (visit(EdgeGrid::Edge{ring, i})) return true;
       }
+      return false;
+    };
+    // The outer ring's edges block by block: a block whose box misses the query's holds none
+    // that meets it.
+    for (int k = 0; k < outer_blocks_.Count(); ++k) {
+      const RingBlocks::Block& block = outer_blocks_[k];
+      if (block.max.x() < xmin || block.min.x() > xmax || block.max.y() < ymin ||
+          block.min.y() > ymax) {
+        continue;
+      }
+      if (scan(-1, polygon_.outer, outer_blocks_.Begin(k), outer_blocks_.End(k))) return true;
+    }
+    for (int ring = 0; ring < static_cast<int>(polygon_.holes.size()); ++ring) {
+      const Ring2d& hole = polygon_.holes[ring];
+      if (scan(ring, hole, 0, static_cast<int>(hole.size()))) return true;
     }
     return false;
   }
+
+  const RingBlocks& OuterBlocks() const { return outer_blocks_; }
 
   const EdgeGrid& Grid() const {
     if (!grid_) grid_.emplace(polygon_);
@@ -99,6 +118,7 @@ class EdgeQuery {
  private:
   static constexpr int kScansBeforeGrid = 6;
   const Polygon2d& polygon_;
+  const RingBlocks& outer_blocks_;
   mutable int scans_ = 0;
   mutable std::optional<EdgeGrid> grid_;
 };
@@ -444,15 +464,18 @@ bool SurelyOutsideCone(const Point2d& a, const Point2d& v, const Point2d& b, con
 // The best of ScoredCandidates() and whether another candidate ties with it, without listing
 // them. A vertex x scores at most (1 + s_c concavity(x) / unit) * bonus / (s_d dist(r, x)) (the
 // bonus only if concavity(x) > tau), so once some candidate scores f, every vertex whose bound
-// is below f is skipped on its distance alone; a point on an edge is bounded with the largest
-// concavity. A first pass picks that candidate: the vertex of best score by a plain
-// floating-point cone test, a guess the second pass then scores exactly.
+// is below f is skipped on its distance alone, and every block of `blocks` (the outer ring's,
+// with the concavities) whose top and box bound its vertices so; a point on an edge is bounded
+// with the largest concavity. That first candidate is a guess from the blocks nearest to r: the
+// vertex of best score there by a plain floating-point cone test, then scored exactly. Which
+// candidate it is changes what is skipped, never the result: the best and its ties are visited.
 struct BestCut {
   std::optional<Candidate> best;
   bool unique = false;
 };
-BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, int ring_id,
-                      int index, const ResolveOptions& options) {
+BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
+                      const RingBlocks& blocks, int ring_id, int index,
+                      const ResolveOptions& options) {
   const CutScorer scorer(polygon, concavity, ring_id, index, options);
   const Ring2d& outer = polygon.outer;
   const int m = static_cast<int>(outer.size());
@@ -461,72 +484,77 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
   // 1 + s_c concavity / unit, to within rounding (the bounds below have slack for it).
   const double per_unit = options.score_concavity / options.concavity_unit;
   auto relative = [&](double c) { return 1.0 + per_unit * c; };
-  // Pass 1: the guess, and the bisector's first hit over the outer edges, in ring order.
-  // Without a diagonal that must win, the bisector's hit is always wanted, and taking it here
-  // over every edge saves a pass (the first hit is the same; see BisectorHit()). Most edges do
-  // not cross the ray's line; they are told by the sides of their ends, computed once per vertex.
-  const Point2d in = r - scorer.Before(), out = scorer.After() - r;
-  int guess = -1;
-  double guess_value = 0.0;    // (s_d score)^2 without the bonus.
   double max_concavity = 0.0;  // Over all vertices, for the bound on points on edges below.
+  for (int b = 0; b < blocks.Count(); ++b) max_concavity = std::max(max_concavity, blocks[b].top);
+  // The bisector's first hit over the outer edges, in ring order. Without a diagonal that must
+  // win, the bisector's hit is always wanted, and taken here (the first hit is the same; see
+  // BisectorHit()). Most edges do not cross the ray's line; they are told by the sides of their
+  // ends, and whole blocks by the sides of their boxes' corners.
   const bool ray_here = !options.double_resolves_first;
   BisectorRay ray(polygon, ring_id, index);
-  const bool ray_outer = ray_here && ray.Valid() && m > 0;
-  // One margin for every edge, at least the sum of its ends' SideNoise(): the noise grows with
-  // |to.x| + |to.y|, whose rounded terms are largest, each, at vertices of the hull (the
-  // roundings are monotone), so one bound from the hull serves every vertex. An edge within
-  // it of the line is offered, to be told by Offer() as before.
-  double margin = std::numeric_limits<double>::infinity();
-  if (ray_outer && !concavity.hull.empty()) {
-    Point2d largest = Point2d::Zero();
-    for (const int i : concavity.hull) largest = largest.cwiseMax((outer[i] - r).cwiseAbs());
-    margin = 2.0 * ray.SideNoise(largest);
-  }
-  double side_prev = 0.0;  // Of vertex i - 1.
-  auto offer_edge = [&](int i, int j, double side_i, double side_j) {
-    if ((side_i > margin && side_j > margin) || (side_i < -margin && side_j < -margin)) return;
-    ray.Offer(-1, outer, i, j);
-  };
-  // Pass 2 tests every vertex's bound against the floor; without a diagonal that must win
-  // (no rank 1) pass 1 keeps each vertex's bound^2 / dist^2 for it, so that pass 2 reads one
-  // number per vertex and runs the full test only near the floor.
-  constexpr double kSlack = 1.0 + 1e-9;  // Against rounding in the bounds.
-  const double bonus = std::max(1.0, options.double_resolve_bonus);
-  auto bound = [&](double c) { return relative(c) * (c > options.tau ? bonus : 1.0) * kSlack; };
-  const bool keyed = !options.double_resolves_first;
-  // Not zeroed: pass 1 writes every entry before pass 2 reads it.
-  const std::unique_ptr<double[]> key(keyed ? new double[m] : nullptr);
-  for (int i = 0; i < m; ++i) {
-    const double c = concavity.outer[i];
-    max_concavity = std::max(max_concavity, c);
-    const Point2d to = outer[i] - r;  // r is the ray's origin.
-    if (ray_outer) {
-      const double side_i = ray.Side(to);
-      if (i > 0) offer_edge(i - 1, i, side_prev, side_i);
-      side_prev = side_i;
+  if (ray_here && ray.Valid() && m > 0) {
+    // One margin for every edge, at least the sum of its ends' SideNoise(): the noise grows
+    // with |to.x| + |to.y|, whose rounded terms are largest, each, at vertices of the hull (the
+    // roundings are monotone), so one bound from the hull serves every vertex. An edge within
+    // it of the line is offered, to be told by Offer() as before.
+    double margin = std::numeric_limits<double>::infinity();
+    if (!concavity.hull.empty()) {
+      Point2d largest = Point2d::Zero();
+      for (const int i : concavity.hull) largest = largest.cwiseMax((outer[i] - r).cwiseAbs());
+      margin = 2.0 * ray.SideNoise(largest);
     }
-    const double d2 = to.squaredNorm();
-    if (keyed) {
-      const double f = bound(c);
-      key[i] = f * f / d2;  // +inf at r itself.
+    // A block's corners lie in the hull's box, so their sides and its vertices' err by far less
+    // than a millionth of the margin: beyond 1.001 margins at every corner, every vertex of the
+    // block is beyond one margin on that side.
+    const double block_margin = 1.001 * margin;
+    for (int b = 0; b < blocks.Count(); ++b) {
+      const RingBlocks::Block& box = blocks[b];
+      const double corners[4] = {ray.Side(box.min - r), ray.Side(box.max - r),
+                                 ray.Side(Point2d(box.min.x(), box.max.y()) - r),
+                                 ray.Side(Point2d(box.max.x(), box.min.y()) - r)};
+      const auto [low, high] = std::minmax_element(corners, corners + 4);
+      if (*low > block_margin || *high < -block_margin) continue;
+      double side_i = ray.Side(outer[blocks.Begin(b)] - r);
+      for (int i = blocks.Begin(b); i < blocks.End(b); ++i) {
+        const int j = Next(i, m);
+        const double side_j = ray.Side(outer[j] - r);
+        if ((side_i <= margin || side_j <= margin) && (side_i >= -margin || side_j >= -margin)) {
+          ray.Offer(-1, outer, i, j);
+        }
+        side_i = side_j;
+      }
     }
-    if (cross(in, to) < 0.0 || cross(out, to) < 0.0 || scorer.Skips(i)) continue;
-    const double f = relative(c);
-    if (d2 > 0.0 && f * f > guess_value * d2) {
-      guess = i;
-      guess_value = f * f / d2;
-    }
-  }
-  if (ray_outer) {
-    const Point2d to = outer[0] - r;
-    offer_edge(m - 1, 0, side_prev, ray.Side(to));
     for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
       const Ring2d& hole = polygon.holes[k];
       const int h = static_cast<int>(hole.size());
       for (int i = 0; i < h; ++i) ray.Offer(k, hole, i, Next(i, h));
     }
   }
-  // Pass 2: every candidate that may reach the floor, the best candidate known so far.
+  // The blocks by distance from r; the guess from the kGuessBlocks nearest.
+  std::vector<std::pair<double, int>> by_distance(blocks.Count());
+  for (int b = 0; b < blocks.Count(); ++b) by_distance[b] = {blocks.SquaredDistance(b, r), b};
+  std::sort(by_distance.begin(), by_distance.end());
+  constexpr int kGuessBlocks = 3;
+  const Point2d in = r - scorer.Before(), out = scorer.After() - r;
+  int guess = -1;
+  double guess_value = 0.0;  // (s_d score)^2 without the bonus.
+  for (int k = 0; k < std::min(kGuessBlocks, blocks.Count()); ++k) {
+    const int b = by_distance[k].second;
+    for (int i = blocks.Begin(b); i < blocks.End(b); ++i) {
+      const Point2d to = outer[i] - r;
+      if (cross(in, to) < 0.0 || cross(out, to) < 0.0 || scorer.Skips(i)) continue;
+      const double d2 = to.squaredNorm();
+      const double f = relative(concavity.outer[i]);
+      if (d2 > 0.0 && f * f > guess_value * d2) {
+        guess = i;
+        guess_value = f * f / d2;
+      }
+    }
+  }
+  // Every candidate that may reach the floor, the best candidate known so far.
+  constexpr double kSlack = 1.0 + 1e-9;  // Against rounding in the bounds.
+  const double bonus = std::max(1.0, options.double_resolve_bonus);
+  auto bound = [&](double c) { return relative(c) * (c > options.tau ? bonus : 1.0) * kSlack; };
   const double edge_bound = relative(max_concavity) * bonus * kSlack / options.score_distance;
   Candidate floor;
   floor.score = -std::numeric_limits<double>::infinity();
@@ -576,12 +604,23 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity, in
       consider(candidate);
     }
   };
-  if (keyed) {
-    // key < floor2 (1 - 1e-12) implies f^2 < floor2 d2 (the division rounds by half an ulp):
-    // the full test skips such a vertex too; the others go through it.
-    for (int i = 0; i < m; ++i) {
-      if (key[i] < floor2 * (1.0 - 1e-12)) continue;
-      visit(i);
+  if (!options.double_resolves_first) {
+    // No candidate ranks 1: a vertex, or a block, whose bound^2 / dist^2 is below
+    // floor2 (1 - 1e-12) is skipped, as the test in visit() would skip it (the division rounds
+    // by half an ulp); a block's bound is at least each of its vertices' (rounding is monotone).
+    // Nearest blocks first, so that the floor rises early; once the largest concavity's bound
+    // fails at a block's distance, it fails for every block after it.
+    const double top_bound = bound(max_concavity);
+    for (const auto& [distance2, b] : by_distance) {
+      const double threshold = floor2 * (1.0 - 1e-12);
+      if (top_bound * top_bound / distance2 < threshold) break;
+      const double block_bound = bound(blocks[b].top);
+      if (block_bound * block_bound / distance2 < threshold) continue;
+      for (int i = blocks.Begin(b); i < blocks.End(b); ++i) {
+        const double f = bound(concavity.outer[i]);
+        if (f * f / (outer[i] - r).squaredNorm() < floor2 * (1.0 - 1e-12)) continue;
+        visit(i);
+      }
     }
   } else {
     for (int i = 0; i < m; ++i) visit(i);
@@ -630,10 +669,11 @@ std::optional<Endpoint> FirstAccepted(std::vector<Candidate> candidates, Accept 
 // FirstAccepted(ScoredCandidates(...), accept), listing the candidates only when the best one
 // (BestCandidate()) ties with another or is refused.
 template <typename Accept>
-std::optional<Endpoint> FirstAcceptedCut(const Polygon2d& polygon, const Concavity2d& concavity,
-                                         int ring_id, int index, const ResolveOptions& options,
-                                         Accept accept) {
-  const BestCut quick = BestCandidate(polygon, concavity, ring_id, index, options);
+std::optional<Endpoint> FirstAcceptedCut(const Polygon2d& polygon, const EdgeQuery& grid,
+                                         const Concavity2d& concavity, int ring_id, int index,
+                                         const ResolveOptions& options, Accept accept) {
+  const BestCut quick =
+      BestCandidate(polygon, concavity, grid.OuterBlocks(), ring_id, index, options);
   if (!quick.best) return std::nullopt;
   if (quick.unique && accept(quick.best->end)) return quick.best->end;
   return FirstAccepted(ScoredCandidates(polygon, concavity, ring_id, index, options), accept,
@@ -797,7 +837,7 @@ bool ResolveOuterNotch(const Polygon2d& polygon, const EdgeQuery& grid,
     SplitAlong(polygon, from, x, resolution);
     return PiecesAreSimple(*resolution);
   };
-  std::optional<Endpoint> to = FirstAcceptedCut(polygon, concavity, -1, r, options, accept);
+  std::optional<Endpoint> to = FirstAcceptedCut(polygon, grid, concavity, -1, r, options, accept);
   if (!to && last_resort) {
     to = FirstAccepted(NearestCandidates(polygon, from.point, /*edge_points=*/false), accept);
   }
@@ -820,7 +860,7 @@ std::optional<Endpoint> FirstHoleCut(const Polygon2d& polygon, const EdgeQuery& 
   auto clear = [&](const Endpoint& e) { return IsClearCut(polygon, grid, from, e); };
   ResolveOptions closest = options;
   closest.score_concavity = 0.0;
-  std::optional<Endpoint> x = FirstAcceptedCut(polygon, concavity, h, a, closest, clear);
+  std::optional<Endpoint> x = FirstAcceptedCut(polygon, grid, concavity, h, a, closest, clear);
   if (!x) x = FirstAccepted(NearestCandidates(polygon, from.point), clear);
   return x;
 }
@@ -838,7 +878,7 @@ std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const EdgeQuery&
            IsClearCut(polygon, grid, from, y);
   };
   std::optional<Endpoint> y;
-  if (thorough) y = FirstAcceptedCut(polygon, concavity, h, b, options, compatible);
+  if (thorough) y = FirstAcceptedCut(polygon, grid, concavity, h, b, options, compatible);
   if (y) return y;
   std::vector<Candidate> nearest = NearestCandidates(polygon, from.point);
   if (!thorough && nearest.size() > 8) {
@@ -1044,7 +1084,8 @@ bool ResolveHole(const Polygon2d& polygon, const EdgeQuery& grid, const Concavit
 
 bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const ResolveOptions& options,
              Resolution* resolution) {
-  const EdgeQuery grid(polygon);
+  const RingBlocks outer_blocks(polygon.outer, &concavity.outer);
+  const EdgeQuery grid(polygon, outer_blocks);
   if (concavity.witness_hole >= 0) {
     // The witness hole first, then the others by decreasing concavity; each with either
     // antipode connecting first.
