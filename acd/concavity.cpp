@@ -23,13 +23,21 @@ namespace {
 using internal::IsNotchInline;
 using internal::Orientation;
 
-double DistanceToSegment(const Point2d& p, const Point2d& a, const Point2d& b) {
-  const Point2d ab = b - a;
-  const double length2 = ab.squaredNorm();
-  if (length2 == 0.0) return (p - a).norm();
-  const double t = std::clamp((p - a).dot(ab) / length2, 0.0, 1.0);
-  return (p - (a + t * ab)).norm();
-}
+// The distance from points to the segment a-b (a bridge), its terms computed once per segment.
+class DistanceToSegment {
+ public:
+  DistanceToSegment(const Point2d& a, const Point2d& b)
+      : a_(a), ab_(b - a), length2_(ab_.squaredNorm()) {}
+  double operator()(const Point2d& p) const {
+    if (length2_ == 0.0) return (p - a_).norm();
+    const double t = std::clamp((p - a_).dot(ab_) / length2_, 0.0, 1.0);
+    return (p - (a_ + t * ab_)).norm();
+  }
+
+ private:
+  Point2d a_, ab_;
+  double length2_;
+};
 
 // A pocket: the ring from hull vertex `begin` forward to hull vertex `end` (the bridge is
 // end -> begin across the hull), with at least one vertex in between.
@@ -537,13 +545,14 @@ void MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOpti
   const Point2d& from = ring[pocket.begin];
   const Point2d& to = ring[pocket.end];
   const Point2d bridge = to - from;
+  const DistanceToSegment distance(from, to);
   bool hazard = false;
   double sl_max = 0.0;
   for (int i = pocket.begin; i != pocket.end;) {
     const int next = i + 1 == n ? 0 : i + 1;
     hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
     if (i != pocket.begin) {
-      result->outer[i] = DistanceToSegment(ring[i], from, to);
+      result->outer[i] = distance(ring[i]);
       sl_max = std::max(sl_max, result->outer[i]);
     }
     i = next;
@@ -573,6 +582,7 @@ double MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions
   const Point2d& from = ring[begin];
   const Point2d& to = ring[end];
   const Point2d bridge = to - from;
+  const DistanceToSegment distance(from, to);
   const double on_bridge = 1e-9 * (MaxAbs(from) + MaxAbs(to) + MaxAbs(bridge));
   bool hazard = false;
   double sl_max = 0.0;
@@ -580,7 +590,7 @@ double MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions
     const int next = i + 1 == n ? 0 : i + 1;
     hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
     if (i != begin) {
-      const double d = DistanceToSegment(ring[i], from, to);
+      const double d = distance(ring[i]);
       if (d <= on_bridge && Orientation(from, to, ring[i]) == 0) {  // Several pockets.
         std::vector<Pocket> pockets;
         AppendGapPockets(ring, begin, end, &pockets);

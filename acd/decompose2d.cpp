@@ -84,16 +84,19 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   const long budget = 4L * (VertexCount(polygon) + static_cast<long>(polygon.holes.size())) + 16;
   long splits = 0;
   internal::PocketCache cache;
-  std::vector<int> stack = {root};
-  // Pieces waiting on the stack are measured when they are cut from their parent, while the
-  // parent's measure is at hand to reuse (MeasureChildConcavity()); indexed by node - root.
-  std::vector<Concavity2d> measured(1);
+  // Pieces waiting to be resolved, depth first, with their measures: a piece is measured when
+  // it is cut from its parent, while the parent's measure is at hand to reuse
+  // (MeasureChildConcavity()).
+  struct Pending {
+    int id;
+    Concavity2d concavity;
+  };
+  std::vector<Pending> stack;
+  stack.push_back({root, internal::MeasureConcavityCached(polygon, measure, &cache)});
   while (!stack.empty()) {
-    const int id = stack.back();
+    const int id = stack.back().id;
+    const Concavity2d concavity = std::move(stack.back().concavity);
     stack.pop_back();
-    const Concavity2d concavity =
-        id == root ? internal::MeasureConcavityCached(out->tree[id].piece, measure, &cache)
-                   : std::move(measured[id - root]);
     out->tree[id].concavity = concavity.value;
     if (IsAccepted(out->tree[id].piece, concavity, options)) {
       HierarchyNode2d& node = out->tree[id];
@@ -102,8 +105,10 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
       double area = 0.0;
       const Point2d centroid = internal::CentroidAndArea(node.piece, &area);
       areas->push_back(area);
-      out->components.push_back({node.piece, HullOf(node.piece.outer, concavity.hull), centroid,
-                                 concavity.value, source});
+      Ring2d hull = HullOf(node.piece.outer, concavity.hull);
+      out->components.push_back(
+          {options.keep_pieces || id == root ? node.piece : std::move(node.piece), std::move(hull),
+           centroid, concavity.value, source});
       continue;
     }
     internal::Resolution resolution;
@@ -118,17 +123,17 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
     out->tree[id].cuts = resolution.cuts;
     for (int side = 1; side >= 0; --side) {  // Child 0 is processed first (depth-first order).
       const int child = static_cast<int>(out->tree.size());
-      measured.resize(child - root + 1);
-      measured[child - root] = internal::MeasureChildConcavity(
-          resolution.pieces[side], resolution.inherited[side], concavity, measure, &cache);
+      stack.push_back({child, internal::MeasureChildConcavity(resolution.pieces[side],
+                                                              resolution.inherited[side], concavity,
+                                                              measure, &cache)});
       HierarchyNode2d node;
       node.piece = std::move(resolution.pieces[side]);
       node.parent = id;
       node.depth = out->tree[id].depth + 1;
       out->tree.push_back(std::move(node));
       out->tree[id].children[side] = child;
-      stack.push_back(child);
     }
+    if (!options.keep_pieces && id != root) out->tree[id].piece = Polygon2d{};
   }
 }
 

@@ -23,6 +23,11 @@ struct Decompose2dOptions {
   double score_concavity = 0.1;
   double score_distance = 1.0;  ///< s_d of the diagonal score; > 0.
   bool steiner_cuts = true;     ///< Let a cut end on an edge (a new vertex) when it scores best.
+  /// Keep every node's piece in the hierarchy (HierarchyNode2d::piece). Without it a root keeps
+  /// its input and the other nodes keep none (a leaf's piece is its component's polygon): the
+  /// pieces of all levels add up to the input's size times the tree's depth, and writing them
+  /// took a fifth of the time of a decomposition started with cold caches.
+  bool keep_pieces = false;
 };
 
 /// Splits `polygon` (prepared by PreparePolygon()) into components whose concavity is at most

@@ -29,10 +29,13 @@ struct Cut2d {
   Point2d from, to;
 };
 
-/// A node of the hierarchy tree (Ch. III, Fig. 9(b)). Internal nodes keep their piece and the
-/// cut(s) that split it, so coarser levels of detail can be read back.
+/// A node of the hierarchy tree (Ch. III, Fig. 9(b)). Internal nodes keep the cut(s) that split
+/// them, and with Decompose2dOptions::keep_pieces their pieces, so coarser levels of detail can
+/// be read back.
 struct HierarchyNode2d {
-  Polygon2d piece;         ///< The piece at this node.
+  /// The piece at this node: at a root always (the input); elsewhere with keep_pieces only (a
+  /// leaf's piece is components[component].polygon in any case).
+  Polygon2d piece;
   double concavity = 0.0;  ///< Its concavity [units].
   /// At a leaf, the piece's most concave point; at an internal node, the feature its cut(s)
   /// resolved (the most concave point unless no valid cut started there).

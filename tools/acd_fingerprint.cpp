@@ -148,6 +148,7 @@ int Run(const std::vector<std::string>& paths, const std::vector<std::string>& m
         acd::Decompose2dOptions options;
         options.measure = acd::ParseConcavityMeasure(name);
         options.tau = tau_rel * radius;
+        options.keep_pieces = true;  // Every node's piece goes into the hash.
         char line[512];
         try {
           const acd::Decomposition2d d = Decompose2d(polygons, options);

@@ -430,17 +430,47 @@ void ExpectConsistentTree(const std::vector<Polygon2d>& input, const Decompositi
 }
 
 TEST(Decompose2dTest, TreeIsConsistent) {
+  Decompose2dOptions keep;
+  keep.keep_pieces = true;
   const std::vector<Polygon2d> monkey =
       ReadPolygons((kAcd2d / "nazca" / "nazca_monkey.poly").string());
-  ExpectConsistentTree(monkey, Decompose2d(monkey));
+  ExpectConsistentTree(monkey, Decompose2d(monkey, keep));
   const std::vector<Polygon2d> neuron = ReadPolygons((kAcd2d / "neuron" / "neuron.poly").string());
-  Decompose2dOptions sl;
+  Decompose2dOptions sl = keep;
   sl.measure = ConcavityMeasure::kStraightLine;
   ExpectConsistentTree(neuron, Decompose2d(neuron, sl));
   // 234 polygons in one call: one root each, components keep their source.
   const std::vector<Polygon2d> nacd = ReadPolygons((kAcd2d / "neuron" / "nacd.poly").string());
-  ExpectConsistentTree(nacd, Decompose2d(nacd));
-  ExpectConsistentTree({LShape()}, Decompose2d(LShape()));
+  ExpectConsistentTree(nacd, Decompose2d(nacd, keep));
+  ExpectConsistentTree({LShape()}, Decompose2d(LShape(), keep));
+}
+
+TEST(Decompose2dTest, WithoutKeepPiecesOnlyRootsKeepTheirPieces) {
+  const std::vector<Polygon2d> neuron = ReadPolygons((kAcd2d / "neuron" / "neuron.poly").string());
+  for (const ConcavityMeasure measure :
+       {ConcavityMeasure::kStraightLine, ConcavityMeasure::kShortestPath}) {
+    Decompose2dOptions options;
+    options.measure = measure;
+    options.tau = 0.01 * ReferenceRadius(neuron.front());
+    const Decomposition2d light = Decompose2d(neuron, options);
+    options.keep_pieces = true;
+    const Decomposition2d kept = Decompose2d(neuron, options);
+    // The same decomposition; the tree without the pieces below its roots.
+    ASSERT_EQ(light.components.size(), kept.components.size());
+    for (size_t k = 0; k < kept.components.size(); ++k) {
+      EXPECT_EQ(light.components[k].polygon.outer, kept.components[k].polygon.outer);
+      EXPECT_EQ(light.components[k].hull, kept.components[k].hull);
+    }
+    ASSERT_EQ(light.tree.size(), kept.tree.size());
+    ASSERT_GT(light.tree.size(), 100u);
+    for (size_t n = 0; n < light.tree.size(); ++n) {
+      const bool root = light.tree[n].parent < 0;
+      EXPECT_EQ(light.tree[n].piece.outer.empty(), !root) << "node " << n;
+      EXPECT_EQ(light.tree[n].cuts.size(), kept.tree[n].cuts.size()) << "node " << n;
+      EXPECT_FALSE(kept.tree[n].piece.outer.empty()) << "node " << n;
+    }
+    EXPECT_EQ(light.openings.size(), kept.openings.size());
+  }
 }
 
 // Reproduction, found on star6.poly (SL/SP/H1/H2, tau 0) at commit 06938f8: the quadrilateral
