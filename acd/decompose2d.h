@@ -25,8 +25,9 @@ struct Decompose2dOptions {
   bool steiner_cuts = true;     ///< Let a cut end on an edge (a new vertex) when it scores best.
   /// Keep every node's piece in the hierarchy (HierarchyNode2d::piece). Without it a root keeps
   /// its input and the other nodes keep none (a leaf's piece is its component's polygon): the
-  /// pieces of all levels add up to the input's size times the tree's depth, and writing them
-  /// took a fifth of the time of a decomposition started with cold caches.
+  /// pieces of all levels add up to the input's size times the tree's depth, and their first
+  /// writes were a quarter of the cache misses of a decomposition started with cold caches
+  /// (nazca_monkey, callgrind's cache model).
   bool keep_pieces = false;
 };
 
