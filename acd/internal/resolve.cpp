@@ -59,11 +59,12 @@ bool IsIncident(const Endpoint& e, int ring, int edge, int n) {
 }
 
 // The boundary edges a cut is tested against. Most notches are resolved by their first or
-// second candidate, so the first few queries scan the edges (one pass, a box test each), which
-// is cheaper than building the grid (several passes and allocations); the grid is built once
-// queries keep coming (a hole's fallbacks try many pairs), or when asked for (a hole path's
-// nearest-point searches). Both report every edge whose box meets the padded box of the
-// segment, so the cut tests that follow decide alike.
+// second candidate, so the first few queries scan the edges (one pass, a box test each; the
+// outer ring's by blocks, skipping those whose box misses the query's), which is cheaper than
+// building the grid (several passes and allocations); the grid is built once queries keep
+// coming (a hole's fallbacks try many pairs), or when asked for (a hole path's nearest-point
+// searches). Both report every edge whose box meets the padded box of the segment, so the cut
+// tests that follow decide alike.
 class EdgeQuery {
  public:
   /// `outer_blocks`: of polygon.outer, with the concavities (they serve BestCandidate() too).
