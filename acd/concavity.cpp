@@ -720,15 +720,40 @@ Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOpti
 }
 
 Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& chain,
-                                  const Concavity2d& parent, const ConcavityOptions& options,
-                                  PocketCache* cache) {
+                                  const Ring2d& parent_ring, const Concavity2d& parent,
+                                  const ConcavityOptions& options, PocketCache* cache) {
   const Ring2d& ring = piece.outer;
   const int n = static_cast<int>(ring.size());
   const int parent_n = static_cast<int>(parent.outer.size());
   const int parent_h = static_cast<int>(parent.hull.size());
   if (chain.length < 2 || chain.begin < 0 || chain.begin + chain.length > n ||
       chain.length > parent_n || chain.parent_begin < 0 || chain.parent_begin >= parent_n ||
-      static_cast<int>(parent.bridge_max.size()) != parent_h || parent_h == 0) {
+      static_cast<int>(parent.bridge_max.size()) != parent_h || parent_h < 3 ||
+      static_cast<int>(parent_ring.size()) != parent_n) {
+    return MeasureConcavityCached(piece, options, cache);
+  }
+  // What follows rests on the piece lying in the parent's hull, so that the parent's hull
+  // vertices on the chain stay strict hull vertices of the piece. Its other vertices are holes'
+  // (inside) and the cut's ends on edges, which are rounded: one rounded out of the hull next to
+  // a hull vertex with a nearly flat angle turned that vertex into a point on the piece's hull
+  // edge (fuzz_decompose2d). Such a piece is measured whole. The test, exact, finds the hull's
+  // wedge around its vertex 0 that holds the point by bisection.
+  auto in_parent_hull = [&](const Point2d& p) {
+    const Point2d& pivot = parent_ring[parent.hull[0]];
+    auto at = [&](int k) -> const Point2d& { return parent_ring[parent.hull[k]]; };
+    if (Orientation(pivot, at(1), p) < 0 || Orientation(pivot, at(parent_h - 1), p) > 0) {
+      return false;
+    }
+    int lo = 1, hi = parent_h - 1;  // orient(pivot, at(lo), p) >= 0 > orient(pivot, at(hi), p).
+    while (hi - lo > 1) {
+      const int mid = (lo + hi) / 2;
+      (Orientation(pivot, at(mid), p) >= 0 ? lo : hi) = mid;
+    }
+    return Orientation(at(lo), at(lo + 1), p) >= 0;
+  };
+  const int after = chain.begin + chain.length;
+  if ((chain.begin == 1 && !in_parent_hull(ring[0])) ||
+      (after < n && !in_parent_hull(ring[after]))) {
     return MeasureConcavityCached(piece, options, cache);
   }
   // The parent's hull vertices on the chain, in chain order: parent.hull increases, so they are

@@ -123,9 +123,9 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
     out->tree[id].cuts = resolution.cuts;
     for (int side = 1; side >= 0; --side) {  // Child 0 is processed first (depth-first order).
       const int child = static_cast<int>(out->tree.size());
-      stack.push_back({child, internal::MeasureChildConcavity(resolution.pieces[side],
-                                                              resolution.inherited[side], concavity,
-                                                              measure, &cache)});
+      stack.push_back({child, internal::MeasureChildConcavity(
+                                  resolution.pieces[side], resolution.inherited[side],
+                                  out->tree[id].piece.outer, concavity, measure, &cache)});
       HierarchyNode2d node;
       node.piece = std::move(resolution.pieces[side]);
       node.parent = id;

@@ -53,11 +53,12 @@ Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOpti
                                    PocketCache* cache);
 
 /// MeasureConcavityCached() of a piece cut from a measured parent, the same result for less work:
-/// `chain` is the part of the piece's outer ring that copies the parent's. Hull gaps of the
-/// parent on the chain keep their vertices' concavity and stay hull gaps of the piece, so only
-/// the gaps next to the cuts are measured again and the hull is built over the other vertices.
+/// `chain` is the part of the piece's outer ring that copies the parent's (`parent_ring`, whose
+/// measure is `parent`). Hull gaps of the parent on the chain keep their vertices' concavity and
+/// stay hull gaps of the piece, so only the gaps next to the cuts are measured again and the
+/// hull is built over the other vertices.
 Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& chain,
-                                  const Concavity2d& parent, const ConcavityOptions& options,
-                                  PocketCache* cache);
+                                  const Ring2d& parent_ring, const Concavity2d& parent,
+                                  const ConcavityOptions& options, PocketCache* cache);
 
 }  // namespace acdplan::acd::internal

@@ -60,8 +60,8 @@ int CompareAlongDecomposition(const Polygon2d& polygon, const ConcavityOptions& 
         const int from = (chain.parent_begin + k) % static_cast<int>(top.piece.outer.size());
         EXPECT_EQ(piece.outer[chain.begin + k], top.piece.outer[from]) << "split " << splits;
       }
-      Concavity2d child =
-          internal::MeasureChildConcavity(piece, chain, top.concavity, measure, nullptr);
+      Concavity2d child = internal::MeasureChildConcavity(piece, chain, top.piece.outer,
+                                                          top.concavity, measure, nullptr);
       ExpectSameMeasure(MeasureConcavity(piece, measure), child,
                         "split " + std::to_string(splits) + " side " + std::to_string(side));
       ++compared;
@@ -88,12 +88,38 @@ TEST(ChildConcavityTest, EqualsAFullMeasureOnEveryPieceOfRealPolygons) {
   }
 }
 
+// Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-cut-end-outside-parent-
+// hull.poly): a cut ending on the parent's hull edge next to a hull vertex whose angle is nearly
+// flat; the end, rounded, lay outside the parent's hull, so that vertex was no strict hull
+// vertex of the piece, and the inherited gaps were put on the wrong hull edges (a component of
+// H1-concavity 1.75 accepted at tau 0.76).
+TEST(ChildConcavityTest, CutEndRoundedOutOfTheParentsHull) {
+  ReadPolygonsOptions repair;
+  repair.repair = true;
+  const std::vector<Polygon2d> polygons =
+      ReadPolygons(acdplan::test::SourceDir() +
+                       "/fuzz/corpus/decompose2d/regression-cut-end-outside-parent-hull.poly",
+                   nullptr, repair);
+  ASSERT_EQ(polygons.size(), 13u);
+  for (const ConcavityMeasure m : {ConcavityMeasure::kStraightLine, ConcavityMeasure::kShortestPath,
+                                   ConcavityMeasure::kHybrid1, ConcavityMeasure::kHybrid2}) {
+    for (const Polygon2d& polygon : polygons) {
+      ConcavityOptions measure;
+      measure.measure = m;
+      measure.tau = 0.05 * ReferenceRadius(polygon);
+      SCOPED_TRACE("measure " + std::to_string(static_cast<int>(m)));
+      CompareAlongDecomposition(polygon, measure, 50);
+    }
+  }
+}
+
 TEST(ChildConcavityTest, MeasuresEverythingWhenNothingIsInherited) {
   // A piece that shares no edge with its "parent": every gap is measured.
   const Polygon2d square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}};
   const Polygon2d dented{{{0, 0}, {4, 0}, {4, 4}, {2, 1}, {0, 4}}, {}};
   const Concavity2d parent = MeasureConcavity(square);
-  const Concavity2d child = internal::MeasureChildConcavity(dented, {}, parent, {}, nullptr);
+  const Concavity2d child =
+      internal::MeasureChildConcavity(dented, {}, square.outer, parent, {}, nullptr);
   ExpectSameMeasure(MeasureConcavity(dented), child, "dented");
   EXPECT_GT(child.value, 0.0);
   EXPECT_EQ(child.witness_vertex, 3);
@@ -105,7 +131,8 @@ TEST(ChildConcavityTest, FallsBackOnAChainThatDoesNotFit) {
   for (const internal::InheritedChain chain :
        {internal::InheritedChain{3, 0, 3}, internal::InheritedChain{0, 5, 3},
         internal::InheritedChain{0, 0, 6}, internal::InheritedChain{-1, 0, 2}}) {
-    const Concavity2d child = internal::MeasureChildConcavity(dented, chain, parent, {}, nullptr);
+    const Concavity2d child =
+        internal::MeasureChildConcavity(dented, chain, dented.outer, parent, {}, nullptr);
     ExpectSameMeasure(parent, child, "same piece");
   }
 }
@@ -120,7 +147,8 @@ TEST(ChildConcavityTest, InheritsTheGapsBetweenParentHullVertices) {
   const Concavity2d parent = MeasureConcavity(parent_polygon);
   ASSERT_EQ(parent.hull, (std::vector<int>{0, 1, 2, 4, 5, 7}));
   const Polygon2d piece{{{5, 1}, {4, 4}, {2, 4}, {1, 2}, {0, 3.5}, {0, 0}, {5, 0}}, {}};
-  const Concavity2d child = internal::MeasureChildConcavity(piece, {0, 3, 6}, parent, {}, nullptr);
+  const Concavity2d child =
+      internal::MeasureChildConcavity(piece, {0, 3, 6}, parent_polygon.outer, parent, {}, nullptr);
   ExpectSameMeasure(MeasureConcavity(piece), child, "left piece");
   EXPECT_EQ(child.witness_vertex, 3);
   EXPECT_EQ(child.value, parent.outer[6]);
