@@ -5,7 +5,6 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -16,6 +15,7 @@
 #include "acd/internal/point_tree.h"
 #include "acd/internal/rounding_noise.h"
 #include "acd/internal/shortest_paths.h"
+#include "base/bit_hash.h"
 
 namespace acdplan::acd {
 namespace {
@@ -328,10 +328,7 @@ bool IsNotch(const Point2d& prev, const Point2d& v, const Point2d& next) {
 int CountNotches(const Polygon2d& polygon) {
   int count = 0;
   auto count_ring = [&count](const Ring2d& ring) {
-    const size_t n = ring.size();
-    for (size_t i = 0, before = n - 1; i < n; before = i++) {  // No division per vertex.
-      if (internal::IsNotchInline(ring[before], ring[i], ring[i + 1 == n ? 0 : i + 1])) ++count;
-    }
+    for (int i = 0; i < static_cast<int>(ring.size()); ++i) count += internal::IsNotchAt(ring, i);
   };
   count_ring(polygon.outer);
   for (const Ring2d& hole : polygon.holes) count_ring(hole);
@@ -473,15 +470,8 @@ Concavity2d MeasureConcavity(const Polygon2d& polygon, const ConcavityOptions& o
 namespace internal {
 
 std::uint64_t PocketCache::Hash(const Ring2d& chain) {
-  std::uint64_t h = 1469598103934665603ull ^ chain.size();
-  for (const Point2d& p : chain) {
-    for (const double c : {p.x(), p.y()}) {
-      std::uint64_t bits;
-      std::memcpy(&bits, &c, sizeof bits);
-      h = (h ^ bits) * 1099511628211ull;
-      h ^= h >> 29;
-    }
-  }
+  std::uint64_t h = kBitHashSeed ^ chain.size();
+  for (const Point2d& p : chain) h = BitHash(BitHash(h, p.x()), p.y());
   return h;
 }
 
@@ -614,10 +604,7 @@ void FindWitnessNotch(const Ring2d& ring, Concavity2d* result) {
   // largest value left replace a notch test on every vertex that tops the notches before it
   // in ring order (most do, going down into a pocket). After kRounds values, the ring order.
   const std::vector<double>& concavity = result->outer;
-  auto is_notch = [&](int i) {
-    return internal::IsNotchInline(ring[i == 0 ? n - 1 : i - 1], ring[i],
-                                   ring[i + 1 == n ? 0 : i + 1]);
-  };
+  auto is_notch = [&](int i) { return internal::IsNotchAt(ring, i); };
   constexpr int kRounds = 3;
   double below = std::numeric_limits<double>::infinity();  // Values tried so far are >= this.
   bool settled = false;
@@ -656,8 +643,7 @@ int FirstNotchAtTop(const Ring2d& ring, const Concavity2d& result, double top) {
   const int h = static_cast<int>(result.hull.size());
   auto first_in = [&](int from, int to) {  // Over [from, to).
     for (int i = from; i < to; ++i) {
-      if (result.outer[i] == top && internal::IsNotchInline(ring[i == 0 ? n - 1 : i - 1], ring[i],
-                                                            ring[i + 1 == n ? 0 : i + 1])) {
+      if (result.outer[i] == top && internal::IsNotchAt(ring, i)) {
         return i;
       }
     }

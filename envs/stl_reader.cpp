@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "acd/internal/text_parsing.h"
+#include "base/bit_hash.h"
 #include "base/input_error.h"
 #include "envs/internal/polygon_soup.h"
 #include "envs/internal/text_words.h"
@@ -43,14 +44,7 @@ class Corners {
   using Key = std::array<double, 3>;
   struct Hash {
     size_t operator()(const Key& key) const {
-      std::uint64_t h = 1469598103934665603ull;
-      for (const double c : key) {
-        std::uint64_t bits;
-        std::memcpy(&bits, &c, sizeof bits);
-        h = (h ^ bits) * 1099511628211ull;
-        h ^= h >> 29;
-      }
-      return static_cast<size_t>(h);
+      return static_cast<size_t>(BitHash(BitHash(BitHash(kBitHashSeed, key[0]), key[1]), key[2]));
     }
   };
   PolygonSoup* soup_;

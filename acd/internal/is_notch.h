@@ -35,4 +35,10 @@ inline bool IsNotchInline(const Point2d& prev, const Point2d& v, const Point2d& 
   return std::abs(cross) / length > noise;
 }
 
+/// IsNotchInline() at vertex `i` of `ring`, between its ring neighbours.
+inline bool IsNotchAt(const Ring2d& ring, int i) {
+  const int n = static_cast<int>(ring.size());
+  return IsNotchInline(ring[i == 0 ? n - 1 : i - 1], ring[i], ring[i + 1 == n ? 0 : i + 1]);
+}
+
 }  // namespace acdplan::acd::internal

@@ -1111,8 +1111,7 @@ bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const Resol
   const int n = static_cast<int>(outer.size());
   std::vector<int> notches;
   for (int i = 0; i < n; ++i) {
-    if (i != concavity.witness_vertex &&
-        IsNotchInline(outer[Prev(i, n)], outer[i], outer[Next(i, n)])) {
+    if (i != concavity.witness_vertex && IsNotchAt(outer, i)) {
       notches.push_back(i);
     }
   }
