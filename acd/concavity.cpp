@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <numeric>
 
 #include "acd/internal/exact_predicates.h"
@@ -340,17 +339,18 @@ namespace {
 // Melkman's linear-time hull of a simple polygonal chain: the points ring[index(k)],
 // k = 0..count-1, in ring order (increasing indices), started at `start` if it is known to be a
 // strict hull vertex, else at the lexicographically smallest point (always one), with exact
-// orientation; strict turns only. Returns ring indices in increasing order. `convex_prefix`:
-// how many points from `start` on are known to be consecutive strict hull vertices (as the
-// parent's hull vertices a piece inherits); at least 3 of them start the deque as they are.
+// orientation; strict turns only. Puts ring indices in increasing order into `hull` (in the
+// storage it holds). `convex_prefix`: how many points from `start` on are known to be
+// consecutive strict hull vertices (as the parent's hull vertices a piece inherits); at least 3
+// of them start the deque as they are.
 template <typename Index>
-std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int start = -1,
-                             int convex_prefix = 0) {
+void MelkmanHull(const Ring2d& ring, int count, Index index, std::vector<int>* hull, int start = -1,
+                 int convex_prefix = 0) {
   const int n = count;
+  hull->clear();
   if (n < 3) {
-    std::vector<int> all(n);
-    for (int k = 0; k < n; ++k) all[k] = index(k);
-    return all;
+    for (int k = 0; k < n; ++k) hull->push_back(index(k));
+    return;
   }
   if (start < 0) {
     start = 0;
@@ -362,9 +362,12 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int sta
   }
   auto at = [&](int k) { return index(start + k < n ? start + k : start + k - n); };
   auto turn = [&](int a, int b, int c) { return Orientation(ring[a], ring[b], ring[c]); };
-  // A deque in a flat array: [bottom, top] with room to grow both ways.
-  // Not zeroed (a memset of 8n bytes per hull): every slot is written before it is read.
-  const std::unique_ptr<int[]> deque(new int[2 * n + 3]);
+  // A deque in a flat array: [bottom, top] with room to grow both ways. The thread's buffer
+  // from the last hull: this runs for every piece, and its allocation cost more than the rest
+  // on small pieces. Not zeroed: every slot is written before it is read.
+  thread_local std::vector<int> deque_buffer;
+  if (deque_buffer.size() < static_cast<size_t>(2 * n + 3)) deque_buffer.resize(2 * n + 3);
+  int* const deque = deque_buffer.data();
   int bottom = n, top = n - 1;
   auto push_top = [&](int v) { deque[++top] = v; };
   auto push_bottom = [&](int v) { deque[--bottom] = v; };
@@ -379,7 +382,10 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int sta
     // Skip vertices collinear with the first edge: they lie on it (the chain is simple).
     int second = at(1);
     while (k < n && turn(at(0), second, at(k)) == 0) second = at(k++);
-    if (k == n) return {std::min(at(0), second), std::max(at(0), second)};
+    if (k == n) {
+      *hull = {std::min(at(0), second), std::max(at(0), second)};
+      return;
+    }
     const int third = at(k);
     push_top(third);
     if (turn(at(0), second, third) > 0) {
@@ -434,21 +440,21 @@ std::vector<int> MelkmanHull(const Ring2d& ring, int count, Index index, int sta
   }
   // The deque runs counter-clockwise, which for a counter-clockwise ring is the ring order from
   // some vertex on: rotated to start at the least index, unless the ring turns the other way.
-  const int* hull_begin = deque.get() + bottom;
-  const int* hull_end = deque.get() + top;  // Drops the repeated end.
+  const int* hull_begin = deque + bottom;
+  const int* hull_end = deque + top;  // Drops the repeated end.
   const int* least = std::min_element(hull_begin, hull_end);
-  std::vector<int> hull;
-  hull.reserve(hull_end - hull_begin);
-  hull.insert(hull.end(), least, hull_end);
-  hull.insert(hull.end(), hull_begin, least);
-  if (!std::is_sorted(hull.begin(), hull.end())) std::sort(hull.begin(), hull.end());
-  return hull;
+  hull->insert(hull->end(), least, hull_end);
+  hull->insert(hull->end(), hull_begin, least);
+  if (!std::is_sorted(hull->begin(), hull->end())) std::sort(hull->begin(), hull->end());
 }
 
 }  // namespace
 
 std::vector<int> ConvexHullIndices(const Ring2d& ring) {
-  return MelkmanHull(ring, static_cast<int>(ring.size()), [](int k) { return k; });
+  std::vector<int> hull;
+  MelkmanHull(
+      ring, static_cast<int>(ring.size()), [](int k) { return k; }, &hull);
+  return hull;
 }
 
 Ring2d ConvexHull(const Ring2d& points) {
@@ -689,25 +695,57 @@ void FinishMeasure(const Polygon2d& polygon, const ConcavityOptions& options, Po
 
 }  // namespace
 
+namespace {
+
+// An empty measure that holds the storage of `spare` (if any), to be filled without allocating
+// as long as the storage suffices: pieces are measured one after another, each needing about
+// the storage of the one before.
+Concavity2d Recycled(Concavity2d* spare) {
+  Concavity2d result;
+  if (spare == nullptr) return result;
+  result.outer = std::move(spare->outer);
+  result.hull = std::move(spare->hull);
+  result.bridge_max = std::move(spare->bridge_max);
+  result.outer.clear();
+  result.hull.clear();
+  result.bridge_max.clear();
+  return result;
+}
+
+// MeasureConcavityCached() into `result`, empty.
+void MeasureWhole(const Polygon2d& polygon, const ConcavityOptions& options, PocketCache* cache,
+                  Concavity2d* result) {
+  const Ring2d& ring = polygon.outer;
+  result->outer.assign(ring.size(), 0.0);
+  MelkmanHull(
+      ring, static_cast<int>(ring.size()), [](int k) { return k; }, &result->hull);
+  const int h = static_cast<int>(result->hull.size());
+  result->bridge_max.resize(h);
+  for (int k = 0; k < h; ++k) {
+    result->bridge_max[k] = MeasureGap(ring, result->hull[k], result->hull[k + 1 == h ? 0 : k + 1],
+                                       options, cache, result);
+  }
+  FinishMeasure(polygon, options, cache, result);
+}
+
+}  // namespace
+
 Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOptions& options,
                                    PocketCache* cache) {
   Concavity2d result;
-  const Ring2d& ring = polygon.outer;
-  result.outer.assign(ring.size(), 0.0);
-  result.hull = ConvexHullIndices(ring);
-  const int h = static_cast<int>(result.hull.size());
-  result.bridge_max.resize(h);
-  for (int k = 0; k < h; ++k) {
-    result.bridge_max[k] = MeasureGap(ring, result.hull[k], result.hull[k + 1 == h ? 0 : k + 1],
-                                      options, cache, &result);
-  }
-  FinishMeasure(polygon, options, cache, &result);
+  MeasureWhole(polygon, options, cache, &result);
   return result;
 }
 
 Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& chain,
                                   const Ring2d& parent_ring, const Concavity2d& parent,
-                                  const ConcavityOptions& options, PocketCache* cache) {
+                                  const ConcavityOptions& options, PocketCache* cache,
+                                  Concavity2d* spare) {
+  Concavity2d result = Recycled(spare);
+  auto measure_whole = [&] {
+    MeasureWhole(piece, options, cache, &result);
+    return std::move(result);
+  };
   const Ring2d& ring = piece.outer;
   const int n = static_cast<int>(ring.size());
   const int parent_n = static_cast<int>(parent.outer.size());
@@ -716,7 +754,7 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
       chain.length > parent_n || chain.parent_begin < 0 || chain.parent_begin >= parent_n ||
       static_cast<int>(parent.bridge_max.size()) != parent_h || parent_h < 3 ||
       static_cast<int>(parent_ring.size()) != parent_n) {
-    return MeasureConcavityCached(piece, options, cache);
+    return measure_whole();
   }
   // What follows rests on the piece lying in the parent's hull, so that the parent's hull
   // vertices on the chain stay strict hull vertices of the piece. Its other vertices are holes'
@@ -740,7 +778,7 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
   const int after = chain.begin + chain.length;
   if ((chain.begin == 1 && !in_parent_hull(ring[0])) ||
       (after < n && !in_parent_hull(ring[after]))) {
-    return MeasureConcavityCached(piece, options, cache);
+    return measure_whole();
   }
   // The parent's hull vertices on the chain, in chain order: parent.hull increases, so they are
   // those from the first at or after parent_begin on, cyclically, while on the chain. Each is a
@@ -759,16 +797,17 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
   auto position = [&](int t) { return chain.begin + chain_offset(parent.hull[hull_k(t)]); };
   int m = 0;  // How many are on the chain.
   while (m < parent_h && chain_offset(parent.hull[hull_k(m)]) < chain.length) ++m;
-  if (m < 2) return MeasureConcavityCached(piece, options, cache);
+  if (m < 2) return measure_whole();
   // A gap of the parent's hull between two of them is inherited whole and keeps its bridge: its
   // vertices keep their concavity, and none is a vertex of the piece's hull (the chain lies
   // strictly inside the union of the piece and the pocket, whose hull is the piece's). The hull
   // is built over the other vertices, starting at the first parent hull vertex on the chain.
-  Concavity2d result;
   result.outer.assign(n, 0.0);
   const int first = position(0), last = position(m - 1);
   const int kept_size = m + (n - 1 - last) + first;
-  const std::unique_ptr<int[]> kept(new int[kept_size]);
+  thread_local std::vector<int> kept_buffer;  // Reused, as MelkmanHull()'s deque.
+  if (kept_buffer.size() < static_cast<size_t>(kept_size)) kept_buffer.resize(kept_size);
+  int* const kept = kept_buffer.data();
   for (int t = 0; t < m; ++t) {
     const int at = position(t);
     kept[t] = at;
@@ -779,10 +818,10 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
     std::copy_n(parent.outer.begin() + from, run, result.outer.begin() + at + 1);
     std::copy_n(parent.outer.begin(), count - run, result.outer.begin() + at + 1 + run);
   }
-  std::iota(kept.get() + m, kept.get() + m + (n - 1 - last), last + 1);
-  std::iota(kept.get() + m + (n - 1 - last), kept.get() + kept_size, 0);
-  result.hull = MelkmanHull(
-      ring, kept_size, [&](int k) { return kept[k]; }, 0, m);
+  std::iota(kept + m, kept + m + (n - 1 - last), last + 1);
+  std::iota(kept + m + (n - 1 - last), kept + kept_size, 0);
+  MelkmanHull(
+      ring, kept_size, [&](int k) { return kept[k]; }, &result.hull, 0, m);
   // The piece's hull edges, the inherited ones (from one parent hull vertex on the chain to the
   // next: m - 1 edges in a row, from the first's place in the sorted hull) with their bridge_max.
   const int h = static_cast<int>(result.hull.size());

@@ -93,9 +93,12 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   };
   std::vector<Pending> stack;
   stack.push_back({root, internal::MeasureConcavityCached(polygon, measure, &cache)});
+  // Measures done with: their storage serves the next pieces' (as many are done with as made).
+  std::vector<Concavity2d> spares;
+  std::vector<Ring2d> spare_rings;  // Likewise the outer rings of pieces split.
   while (!stack.empty()) {
     const int id = stack.back().id;
-    const Concavity2d concavity = std::move(stack.back().concavity);
+    Concavity2d concavity = std::move(stack.back().concavity);
     stack.pop_back();
     out->tree[id].concavity = concavity.value;
     if (IsAccepted(out->tree[id].piece, concavity, options)) {
@@ -109,9 +112,15 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
       out->components.push_back(
           {options.keep_pieces || id == root ? node.piece : std::move(node.piece), std::move(hull),
            centroid, concavity.value, source});
+      spares.push_back(std::move(concavity));
       continue;
     }
     internal::Resolution resolution;
+    for (Polygon2d& piece : resolution.pieces) {
+      if (spare_rings.empty()) break;
+      piece.outer = std::move(spare_rings.back());
+      spare_rings.pop_back();
+    }
     if (++splits > budget || !Resolve(out->tree[id].piece, concavity, resolve, &resolution)) {
       std::ostringstream message;
       message << "Decompose2d(): could not resolve a piece with "
@@ -120,12 +129,14 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
       throw std::logic_error(message.str());
     }
     out->tree[id].witness = resolution.witness;
-    out->tree[id].cuts = resolution.cuts;
+    out->tree[id].cuts = std::move(resolution.cuts);
     for (int side = 1; side >= 0; --side) {  // Child 0 is processed first (depth-first order).
       const int child = static_cast<int>(out->tree.size());
+      Concavity2d* spare = spares.empty() ? nullptr : &spares.back();
       stack.push_back({child, internal::MeasureChildConcavity(
                                   resolution.pieces[side], resolution.inherited[side],
-                                  out->tree[id].piece.outer, concavity, measure, &cache)});
+                                  out->tree[id].piece.outer, concavity, measure, &cache, spare)});
+      if (spare != nullptr) spares.pop_back();
       HierarchyNode2d node;
       node.piece = std::move(resolution.pieces[side]);
       node.parent = id;
@@ -133,7 +144,11 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
       out->tree.push_back(std::move(node));
       out->tree[id].children[side] = child;
     }
-    if (!options.keep_pieces && id != root) out->tree[id].piece = Polygon2d{};
+    if (!options.keep_pieces && id != root) {
+      spare_rings.push_back(std::move(out->tree[id].piece.outer));
+      out->tree[id].piece = Polygon2d{};
+    }
+    spares.push_back(std::move(concavity));
   }
 }
 

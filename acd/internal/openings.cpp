@@ -27,14 +27,14 @@ Box BoxOf(const Ring2d& ring) {
 }
 
 // The parameter intervals, along cut `from` -> `to`, of outer edges of components
-// [first, last) that lie on the cut. `boxes`: the components' outer boxes; one that keeps
-// clear of the cut by more than the tolerance has no edge on it.
-std::vector<Interval> IntervalsOnCut(const Decomposition2d& d, const std::vector<Box>& boxes,
-                                     const Cut2d& cut, int first, int last) {
+// [first, last) that lie on the cut, into `intervals`. `boxes`: the components' outer boxes;
+// one that keeps clear of the cut by more than the tolerance has no edge on it.
+void IntervalsOnCut(const Decomposition2d& d, const std::vector<Box>& boxes, const Cut2d& cut,
+                    int first, int last, std::vector<Interval>* intervals) {
+  intervals->clear();
   const Point2d axis = cut.to - cut.from;
   const double length = axis.norm();
-  std::vector<Interval> intervals;
-  if (length == 0.0) return intervals;
+  if (length == 0.0) return;
   const Point2d unit = axis / length;
   // An edge lies on the cut when its ends do to within rounding: the cut's own ends, and points
   // later cuts constructed on it, are off its line by a few ulps of the coordinates. Not more: a
@@ -66,12 +66,11 @@ std::vector<Interval> IntervalsOnCut(const Decomposition2d& d, const std::vector
       if (t0 > t1) std::swap(t0, t1);
       t0 = std::max(t0, 0.0);
       t1 = std::min(t1, 1.0);
-      if ((t1 - t0) * length > tolerance) intervals.push_back({t0, t1, c});
+      if ((t1 - t0) * length > tolerance) intervals->push_back({t0, t1, c});
     }
   }
-  std::sort(intervals.begin(), intervals.end(),
+  std::sort(intervals->begin(), intervals->end(),
             [](const Interval& a, const Interval& b) { return a.t0 < b.t0; });
-  return intervals;
 }
 
 // First and one-past-last component index of the leaves below `node` (leaves are numbered in
@@ -90,17 +89,19 @@ std::vector<Opening2d> FindOpenings(const Decomposition2d& d) {
   std::vector<Box> boxes;
   boxes.reserve(d.components.size());
   for (const Component2d& c : d.components) boxes.push_back(BoxOf(c.polygon.outer));
+  std::vector<Interval> left, right;  // Per cut; kept for their capacity.
+  std::vector<Opening2d> found;
   for (int id = 0; id < static_cast<int>(d.tree.size()); ++id) {
     const HierarchyNode2d& node = d.tree[id];
     if (node.children[0] < 0) continue;
     const auto [a0, a1] = LeafRange(d, node.children[0]);
     const auto [b0, b1] = LeafRange(d, node.children[1]);
     for (const Cut2d& cut : node.cuts) {
-      const std::vector<Interval> left = IntervalsOnCut(d, boxes, cut, a0, a1);
-      const std::vector<Interval> right = IntervalsOnCut(d, boxes, cut, b0, b1);
+      IntervalsOnCut(d, boxes, cut, a0, a1, &left);
+      IntervalsOnCut(d, boxes, cut, b0, b1, &right);
       const double length = (cut.to - cut.from).norm();
       const double tolerance = 1e-9 * std::max(1.0, length);
-      std::vector<Opening2d> found;
+      found.clear();
       double last_t1 = 0.0;
       for (const Interval& l : left) {
         for (const Interval& r : right) {

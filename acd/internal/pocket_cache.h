@@ -56,9 +56,11 @@ Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOpti
 /// `chain` is the part of the piece's outer ring that copies the parent's (`parent_ring`, whose
 /// measure is `parent`). Hull gaps of the parent on the chain keep their vertices' concavity and
 /// stay hull gaps of the piece, so only the gaps next to the cuts are measured again and the
-/// hull is built over the other vertices.
+/// hull is built over the other vertices. `spare`: a measure no longer needed, or nullptr; the
+/// result takes over its storage (it is left empty).
 Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& chain,
                                   const Ring2d& parent_ring, const Concavity2d& parent,
-                                  const ConcavityOptions& options, PocketCache* cache);
+                                  const ConcavityOptions& options, PocketCache* cache,
+                                  Concavity2d* spare = nullptr);
 
 }  // namespace acdplan::acd::internal

@@ -531,8 +531,10 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
       for (int i = 0; i < h; ++i) ray.Offer(k, hole, i, Next(i, h));
     }
   }
-  // The blocks by distance from r; the guess from the kGuessBlocks nearest.
-  std::vector<std::pair<double, int>> by_distance(blocks.Count());
+  // The blocks by distance from r; the guess from the kGuessBlocks nearest. (The thread's
+  // buffer from the last call: this runs for every cut.)
+  thread_local std::vector<std::pair<double, int>> by_distance;
+  by_distance.resize(blocks.Count());
   for (int b = 0; b < blocks.Count(); ++b) by_distance[b] = {blocks.SquaredDistance(b, r), b};
   std::sort(by_distance.begin(), by_distance.end());
   constexpr int kGuessBlocks = 3;
@@ -606,22 +608,19 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
     }
   };
   if (!options.double_resolves_first) {
-    // No candidate ranks 1: a vertex, or a block, whose bound^2 / dist^2 is below
-    // floor2 (1 - 1e-12) is skipped, as the test in visit() would skip it (the division rounds
-    // by half an ulp); a block's bound is at least each of its vertices' (rounding is monotone).
+    // No candidate ranks 1: a block whose bound^2 / dist^2 is below floor2 (1 - 1e-12) is
+    // skipped, as the test in visit() would skip each of its vertices (the division rounds by
+    // half an ulp; a block's bound is at least each of its vertices', as rounding is monotone).
     // Nearest blocks first, so that the floor rises early; once the largest concavity's bound
-    // fails at a block's distance, it fails for every block after it.
+    // fails at a block's distance, it fails for every block after it. Vertices are left to
+    // visit()'s test, which multiplies where a test here would divide.
     const double top_bound = bound(max_concavity);
     for (const auto& [distance2, b] : by_distance) {
       const double threshold = floor2 * (1.0 - 1e-12);
       if (top_bound * top_bound / distance2 < threshold) break;
       const double block_bound = bound(blocks[b].top);
       if (block_bound * block_bound / distance2 < threshold) continue;
-      for (int i = blocks.Begin(b); i < blocks.End(b); ++i) {
-        const double f = bound(concavity.outer[i]);
-        if (f * f / (outer[i] - r).squaredNorm() < floor2 * (1.0 - 1e-12)) continue;
-        visit(i);
-      }
+      for (int i = blocks.Begin(b); i < blocks.End(b); ++i) visit(i);
     }
   } else {
     for (int i = 0; i < m; ++i) visit(i);
@@ -797,10 +796,19 @@ void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
   }
 }
 
+// Empties resolution->pieces, keeping their outer rings' storage (Decompose2d() hands in that
+// of pieces split before).
+void ClearPieces(Resolution* resolution) {
+  for (Polygon2d& piece : resolution->pieces) {
+    piece.outer.clear();
+    piece.holes.clear();
+  }
+}
+
 // Splits `polygon` along the cut from -> to into resolution->pieces.
 void SplitAlong(const Polygon2d& polygon, const Endpoint& from, const Endpoint& to,
                 Resolution* resolution) {
-  resolution->pieces = {};
+  ClearPieces(resolution);
   for (int side = 0; side < 2; ++side) {
     AppendOuterChain(polygon.outer, side == 0 ? from : to, side == 0 ? to : from,
                      &resolution->pieces[side].outer, &resolution->inherited[side]);
@@ -895,7 +903,7 @@ std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const EdgeQuery&
 void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x, int b,
                       const Endpoint& y, Resolution* resolution) {
   const Ring2d& hole = polygon.holes[h];
-  resolution->pieces = {};
+  ClearPieces(resolution);
   // Piece 0: outer x..y, cut to b, hole b..a (forward keeps the interior on the left), cut to x.
   AppendOuterChain(polygon.outer, x, y, &resolution->pieces[0].outer, &resolution->inherited[0]);
   AppendChain(hole, b, a, &resolution->pieces[0].outer);
@@ -924,7 +932,7 @@ struct HolePath {
 // hole keeps the interior on the left, so each piece stays on one side of every cut).
 void SplitAlongPath(const Polygon2d& polygon, const HolePath& path, const Point2d& witness,
                     Resolution* resolution) {
-  resolution->pieces = {};
+  ClearPieces(resolution);
   AppendOuterChain(polygon.outer, path.x, path.y, &resolution->pieces[0].outer,
                    &resolution->inherited[0]);
   for (auto it = path.holes.rbegin(); it != path.holes.rend(); ++it) {
@@ -1085,7 +1093,8 @@ bool ResolveHole(const Polygon2d& polygon, const EdgeQuery& grid, const Concavit
 
 bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const ResolveOptions& options,
              Resolution* resolution) {
-  const RingBlocks outer_blocks(polygon.outer, &concavity.outer);
+  thread_local RingBlocks outer_blocks;  // Its storage outlives the call: Resolve runs per split.
+  outer_blocks.Assign(polygon.outer, &concavity.outer);
   const EdgeQuery grid(polygon, outer_blocks);
   if (concavity.witness_hole >= 0) {
     // The witness hole first, then the others by decreasing concavity; each with either

@@ -58,6 +58,7 @@ struct Resolution {
 ///    Fig. 19).
 /// Both pieces are simple, counter-clockwise, with the remaining holes distributed.
 /// Returns false only when no valid cut exists for any notch or hole (never for valid input).
+/// The pieces are built in the storage `resolution` holds.
 bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const ResolveOptions& options,
              Resolution* resolution);
 

@@ -23,8 +23,12 @@ class RingBlocks {
     double top;
   };
 
+  RingBlocks() = default;
   /// `values`: one per vertex of `ring`, or nullptr.
-  RingBlocks(const Ring2d& ring, const std::vector<double>* values) {
+  RingBlocks(const Ring2d& ring, const std::vector<double>* values) { Assign(ring, values); }
+
+  /// As the constructor, into the storage already held (Resolve keeps one per thread).
+  void Assign(const Ring2d& ring, const std::vector<double>* values) {
     const int n = static_cast<int>(ring.size());
     n_ = n;
     blocks_.resize((n + kSize - 1) / kSize);
