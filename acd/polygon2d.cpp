@@ -145,7 +145,7 @@ Point2d RingMoment(const Ring2d& ring, double signed_area) {
   const Point2d origin = ring.empty() ? Point2d::Zero() : ring.front();
   for (size_t i = 0; i < n; ++i) {
     const Point2d a = ring[i] - origin;
-    const Point2d b = ring[(i + 1) % n] - origin;
+    const Point2d b = ring[i + 1 == n ? 0 : i + 1] - origin;  // (No division per vertex.)
     const double cross = a.x() * b.y() - a.y() * b.x();
     moment += (a + b) * cross;
   }
@@ -188,9 +188,11 @@ double ReferenceRadius(const Polygon2d& polygon) {
   Point2d mean = Point2d::Zero();
   for (const Point2d& p : polygon.outer) mean += p;
   mean /= static_cast<double>(polygon.outer.size());
-  double radius = 0.0;
-  for (const Point2d& p : polygon.outer) radius = std::max(radius, (p - mean).norm());
-  return radius;
+  // One square root of the largest square: the root is monotone and correctly rounded, so this
+  // is the largest of the roots, to the bit.
+  double radius2 = 0.0;
+  for (const Point2d& p : polygon.outer) radius2 = std::max(radius2, (p - mean).squaredNorm());
+  return std::sqrt(radius2);
 }
 
 Ring2d Reversed(const Ring2d& ring) { return Ring2d(ring.rbegin(), ring.rend()); }

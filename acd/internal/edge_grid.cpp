@@ -6,7 +6,7 @@
 
 namespace acdplan::acd::internal {
 
-EdgeGrid::EdgeGrid(const Polygon2d& polygon) {
+void EdgeGrid::Build(const Polygon2d& polygon) {
   size_t total = polygon.outer.size();
   for (const Ring2d& hole : polygon.holes) total += hole.size();
   // Stores through a local pointer and bounds in scalars: with push_back() the compiler reloaded
@@ -45,8 +45,10 @@ EdgeGrid::EdgeGrid(const Polygon2d& polygon) {
   // are monotone, so the cell of a box corner is the least or greatest of the ends' cells. So
   // each pass rounds every vertex once rather than every box corner.
   const int edge_total = static_cast<int>(edges_.size());
-  std::vector<int> vertex_cells(2 * edges_.size());  // Per vertex, in edge order: column, row.
-  std::vector<int> ranges(4 * edges_.size());        // Per edge: first and last column and row.
+  // Per vertex, in edge order: column, row; per edge: first and last column and row.
+  scratch_.resize(6 * edges_.size());
+  int* const vertex_cells = scratch_.data();
+  int* const ranges = vertex_cells + 2 * edges_.size();
   // Long slanted edges cover many cells with their boxes: coarsen until the lists stay linear.
   for (;; cell *= 2.0) {
     inverse_cell_ = 1.0 / cell;
@@ -80,7 +82,7 @@ EdgeGrid::EdgeGrid(const Polygon2d& polygon) {
   // Local copies: the compiler cannot keep members in registers across stores through int
   // pointers (they may alias columns_).
   const int columns = columns_;
-  auto for_each_cell = [&ranges, columns](int k, auto f) {
+  auto for_each_cell = [ranges, columns](int k, auto f) {
     const int* range = &ranges[4 * k];
     for (int r = range[2]; r <= range[3]; ++r) {
       for (int c = range[0]; c <= range[1]; ++c) f(r * columns + c);
@@ -91,8 +93,8 @@ EdgeGrid::EdgeGrid(const Polygon2d& polygon) {
   for (int k = 0; k < edge_total; ++k) for_each_cell(k, [count](int cell) { ++count[cell]; });
   for (size_t i = 1; i < cell_begin_.size(); ++i) cell_begin_[i] += cell_begin_[i - 1];
   cell_edges_.resize(cell_begin_.back());
-  std::vector<int> fill(cell_begin_.begin(), cell_begin_.end() - 1);
-  int* const next = fill.data();
+  next_slot_.assign(cell_begin_.begin(), cell_begin_.end() - 1);
+  int* const next = next_slot_.data();
   int* const listed = cell_edges_.data();
   for (int k = 0; k < edge_total; ++k) {
     for_each_cell(k, [next, listed, k](int cell) { listed[next[cell]++] = k; });

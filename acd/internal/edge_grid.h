@@ -27,7 +27,13 @@ class EdgeGrid {
     int index;
   };
 
-  explicit EdgeGrid(const Polygon2d& polygon);
+  EdgeGrid() = default;
+  explicit EdgeGrid(const Polygon2d& polygon) { Build(polygon); }
+
+  /// Builds the grid over `polygon` anew, in the storage already held (Resolve keeps one grid
+  /// per thread: a fresh one's storage came from memory not touched lately, at a cache miss
+  /// per line).
+  void Build(const Polygon2d& polygon);
 
   /// Calls `visit(edge)` for every edge that may come within `pad` of the segment a-b, cells
   /// from a toward b, until `visit` returns true (then returns true). Not thread-safe (a scratch
@@ -56,6 +62,8 @@ class EdgeGrid {
   int columns_ = 1, rows_ = 1;
   std::vector<int> cell_begin_;  // CSR offsets into cell_edges_, columns_ * rows_ + 1 entries.
   std::vector<int> cell_edges_;
+  // Build()'s: per vertex its cell, per edge its cell range; per cell its next free slot.
+  std::vector<int> scratch_, next_slot_;
   mutable std::vector<std::uint32_t> stamp_;  // Per edge: the query that last reported it.
   mutable std::uint32_t query_ = 0;
 };

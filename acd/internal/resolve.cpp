@@ -75,8 +75,8 @@ class EdgeQuery {
   // the box of a-b grown by `pad`.
   template <typename Visit>
   bool AnyNear(const Point2d& a, const Point2d& b, double pad, Visit visit) const {
-    if (!grid_ && ++scans_ > kScansBeforeGrid) grid_.emplace(polygon_);
-    if (grid_) return grid_->AnyNear(a, b, pad, visit);
+    if (grid_ == nullptr && ++scans_ > kScansBeforeGrid) BuildGrid();
+    if (grid_ != nullptr) return grid_->AnyNear(a, b, pad, visit);
     const double xmin = std::min(a.x(), b.x()) - pad, xmax = std::max(a.x(), b.x()) + pad;
     const double ymin = std::min(a.y(), b.y()) - pad, ymax = std::max(a.y(), b.y()) + pad;
     auto scan = [&](int ring, const Ring2d& points, int from, int to) {
@@ -112,16 +112,24 @@ class EdgeQuery {
   const RingBlocks& OuterBlocks() const { return outer_blocks_; }
 
   const EdgeGrid& Grid() const {
-    if (!grid_) grid_.emplace(polygon_);
+    if (grid_ == nullptr) BuildGrid();
     return *grid_;
   }
 
  private:
+  // The thread's grid, built anew in its storage: one query object is alive at a time (in
+  // Resolve()).
+  void BuildGrid() const {
+    thread_local EdgeGrid grid;
+    grid.Build(polygon_);
+    grid_ = &grid;
+  }
+
   static constexpr int kScansBeforeGrid = 6;
   const Polygon2d& polygon_;
   const RingBlocks& outer_blocks_;
   mutable int scans_ = 0;
-  mutable std::optional<EdgeGrid> grid_;
+  mutable const EdgeGrid* grid_ = nullptr;
 };
 
 // |v|, also where its squares underflow: a cut 1e-194 long (a vertex that close to a notch, in
