@@ -76,11 +76,17 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   resolve.tau = options.min_convexity > 0.0 ? 0.0 : options.tau;
   resolve.double_resolves_first = options.tau == 0.0 && options.min_convexity == 0.0;
   const int root = static_cast<int>(out->tree.size());
+  // Each resolution removes a notch or a hole and creates no new ones but rounding-level
+  // vertices on edges, so the number of splits is bounded by notches + holes (Theorem C.4):
+  // room for that many nodes and leaves, so that the tree is not copied as it grows.
+  const int notches = CountNotches(polygon);
+  out->stats.notches += notches;
+  const size_t splits_bound = static_cast<size_t>(notches) + polygon.holes.size();
+  out->tree.reserve(out->tree.size() + 2 * splits_bound + 1);
+  out->components.reserve(out->components.size() + splits_bound + 1);
   out->roots.push_back(root);
   out->tree.push_back({});
   out->tree[root].piece = polygon;
-  // Each resolution removes a notch or a hole and creates no new ones but rounding-level
-  // vertices on edges, so the number of splits is bounded by notches + holes (Theorem C.4).
   const long budget = 4L * (VertexCount(polygon) + static_cast<long>(polygon.holes.size())) + 16;
   long splits = 0;
   internal::PocketCache cache;
@@ -178,10 +184,7 @@ Decomposition2d Decompose2d(const std::vector<Polygon2d>& polygons,
   }
   out.stats.convexity = hull_area > 0.0 ? area / hull_area : 1.0;  // Eqn. 4.4.
   out.stats.components = static_cast<int>(out.components.size());
-  for (const Polygon2d& p : polygons) {
-    out.stats.vertices += VertexCount(p);
-    out.stats.notches += CountNotches(p);
-  }
+  for (const Polygon2d& p : polygons) out.stats.vertices += VertexCount(p);
   return out;
 }
 

@@ -55,8 +55,22 @@ bool LeavesInward(const Polygon2d& polygon, const Endpoint& e, const Point2d& ta
 bool IsIncident(const Endpoint& e, int ring, int edge, int n) {
   if (e.ring != ring) return false;
   if (e.on_edge) return edge == e.index;
-  return edge == e.index || Next(edge, n) == e.index;
+  return (edge == e.index) | (Next(edge, n) == e.index);
 }
+
+// A query's box, for the scans that test it against every edge's or block's box. The four
+// comparisons are taken without short circuits: which side a box misses on varies from one to
+// the next and defeats branch prediction, whether it misses mostly does not.
+struct QueryBox {
+  double xmin, xmax, ymin, ymax;
+  bool Misses(const Point2d& lo, const Point2d& hi) const {
+    return (hi.x() < xmin) | (lo.x() > xmax) | (hi.y() < ymin) | (lo.y() > ymax);
+  }
+  // The box of the edge u-w.
+  bool MissesEdge(const Point2d& u, const Point2d& w) const {
+    return Misses(u.cwiseMin(w), u.cwiseMax(w));
+  }
+};
 
 // The boundary edges a cut is tested against. Most notches are resolved by their first or
 // second candidate, so the first few queries scan the edges (one pass, a box test each; the
@@ -77,17 +91,12 @@ class EdgeQuery {
   bool AnyNear(const Point2d& a, const Point2d& b, double pad, Visit visit) const {
     if (grid_ == nullptr && ++scans_ > kScansBeforeGrid) BuildGrid();
     if (grid_ != nullptr) return grid_->AnyNear(a, b, pad, visit);
-    const double xmin = std::min(a.x(), b.x()) - pad, xmax = std::max(a.x(), b.x()) + pad;
-    const double ymin = std::min(a.y(), b.y()) - pad, ymax = std::max(a.y(), b.y()) + pad;
+    const QueryBox query{std::min(a.x(), b.x()) - pad, std::max(a.x(), b.x()) + pad,
+                         std::min(a.y(), b.y()) - pad, std::max(a.y(), b.y()) + pad};
     auto scan = [&](int ring, const Ring2d& points, int from, int to) {
       const int n = static_cast<int>(points.size());
       for (int i = from; i < to; ++i) {
-        const Point2d& u = points[i];
-        const Point2d& w = points[i + 1 == n ? 0 : i + 1];
-        if (std::max(u.x(), w.x()) < xmin || std::min(u.x(), w.x()) > xmax ||
-            std::max(u.y(), w.y()) < ymin || std::min(u.y(), w.y()) > ymax) {
-          continue;
-        }
+        if (query.MissesEdge(points[i], points[i + 1 == n ? 0 : i + 1])) continue;
         if (visit(EdgeGrid::Edge{ring, i})) return true;
       }
       return false;
@@ -95,11 +104,7 @@ class EdgeQuery {
     // The outer ring's edges block by block: a block whose box misses the query's holds none
     // that meets it.
     for (int k = 0; k < outer_blocks_.Count(); ++k) {
-      const RingBlocks::Block& block = outer_blocks_[k];
-      if (block.max.x() < xmin || block.min.x() > xmax || block.max.y() < ymin ||
-          block.min.y() > ymax) {
-        continue;
-      }
+      if (query.Misses(outer_blocks_[k].min, outer_blocks_[k].max)) continue;
       if (scan(-1, polygon_.outer, outer_blocks_.Begin(k), outer_blocks_.End(k))) return true;
     }
     for (int ring = 0; ring < static_cast<int>(polygon_.holes.size()); ++ring) {
@@ -164,10 +169,9 @@ bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint&
       constructed ? kRoundingNoise * std::max(MaxAbs(a.point), MaxAbs(b.point)) : 0.0;
   const double noise_squared = noise * noise;
   const double pad = 2.0 * noise;
-  const double xmin = std::min(a.point.x(), b.point.x()) - pad;
-  const double xmax = std::max(a.point.x(), b.point.x()) + pad;
-  const double ymin = std::min(a.point.y(), b.point.y()) - pad;
-  const double ymax = std::max(a.point.y(), b.point.y()) + pad;
+  const QueryBox query{
+      std::min(a.point.x(), b.point.x()) - pad, std::max(a.point.x(), b.point.x()) + pad,
+      std::min(a.point.y(), b.point.y()) - pad, std::max(a.point.y(), b.point.y()) + pad};
   // Whether p lies within `noise` of the segment s0-s1: the floating-point distance settles the
   // clear cases (it errs by far less than `screen`), the exact comparison the rest.
   auto near = [&](const Point2d& p, const Point2d& s0, const Point2d& s1, double screen) {
@@ -184,10 +188,7 @@ bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint&
     const int i = edge.index;
     const Point2d& u = ring[i];
     const Point2d& w = ring[Next(i, n)];
-    if (std::max(u.x(), w.x()) < xmin || std::min(u.x(), w.x()) > xmax ||
-        std::max(u.y(), w.y()) < ymin || std::min(u.y(), w.y()) > ymax) {
-      return false;
-    }
+    if (query.MissesEdge(u, w)) return false;
     const bool at_a = IsIncident(a, edge.ring, i, n), at_b = IsIncident(b, edge.ring, i, n);
     if (!at_a && !at_b && CGAL::do_intersect(cut, Kernel::Segment_2(ToCgal(u), ToCgal(w)))) {
       return true;
@@ -522,12 +523,14 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
                                  ray.Side(Point2d(box.min.x(), box.max.y()) - r),
                                  ray.Side(Point2d(box.max.x(), box.min.y()) - r)};
       const auto [low, high] = std::minmax_element(corners, corners + 4);
-      if (*low > block_margin || *high < -block_margin) continue;
+      if ((*low > block_margin) | (*high < -block_margin)) continue;
       double side_i = ray.Side(outer[blocks.Begin(b)] - r);
       for (int i = blocks.Begin(b); i < blocks.End(b); ++i) {
         const int j = Next(i, m);
         const double side_j = ray.Side(outer[j] - r);
-        if ((side_i <= margin || side_j <= margin) && (side_i >= -margin || side_j >= -margin)) {
+        // (Without short circuits: the sides alternate unpredictably along the ring.)
+        if (((side_i <= margin) | (side_j <= margin)) &
+            ((side_i >= -margin) | (side_j >= -margin))) {
           ray.Offer(-1, outer, i, j);
         }
         side_i = side_j;
@@ -553,7 +556,7 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
     const int b = by_distance[k].second;
     for (int i = blocks.Begin(b); i < blocks.End(b); ++i) {
       const Point2d to = outer[i] - r;
-      if (cross(in, to) < 0.0 || cross(out, to) < 0.0 || scorer.Skips(i)) continue;
+      if ((cross(in, to) < 0.0) | (cross(out, to) < 0.0) || scorer.Skips(i)) continue;
       const double d2 = to.squaredNorm();
       const double f = relative(concavity.outer[i]);
       if (d2 > 0.0 && f * f > guess_value * d2) {
@@ -565,7 +568,10 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
   // Every candidate that may reach the floor, the best candidate known so far.
   constexpr double kSlack = 1.0 + 1e-9;  // Against rounding in the bounds.
   const double bonus = std::max(1.0, options.double_resolve_bonus);
-  auto bound = [&](double c) { return relative(c) * (c > options.tau ? bonus : 1.0) * kSlack; };
+  // relative(c), times the bonus above tau: picked from a table, as a branch on c > tau would
+  // be taken at random along the ring.
+  const double factor[2] = {1.0, bonus};
+  auto bound = [&](double c) { return relative(c) * factor[c > options.tau] * kSlack; };
   const double edge_bound = relative(max_concavity) * bonus * kSlack / options.score_distance;
   Candidate floor;
   floor.score = -std::numeric_limits<double>::infinity();
