@@ -14,6 +14,7 @@
 #include "acd/internal/point_tree.h"
 #include "acd/internal/rounding_noise.h"
 #include "acd/internal/shortest_paths.h"
+#include "acd/internal/thread_scratch.h"
 #include "base/bit_hash.h"
 
 namespace acdplan::acd {
@@ -363,9 +364,11 @@ void MelkmanHull(const Ring2d& ring, int count, Index index, std::vector<int>* h
   auto at = [&](int k) { return index(start + k < n ? start + k : start + k - n); };
   auto turn = [&](int a, int b, int c) { return Orientation(ring[a], ring[b], ring[c]); };
   // A deque in a flat array: [bottom, top] with room to grow both ways. The thread's buffer
-  // from the last hull: this runs for every piece, and its allocation cost more than the rest
-  // on small pieces. Not zeroed: every slot is written before it is read.
+  // from the last hull (acd/internal/thread_scratch.h): this runs for every piece, and its
+  // allocation cost more than the rest on small pieces. Not zeroed: every slot is written
+  // before it is read.
   thread_local std::vector<int> deque_buffer;
+  const internal::ScratchScope deque_scope(deque_buffer);
   if (deque_buffer.size() < static_cast<size_t>(2 * n + 3)) deque_buffer.resize(2 * n + 3);
   int* const deque = deque_buffer.data();
   int bottom = n, top = n - 1;
@@ -806,6 +809,7 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
   const int first = position(0), last = position(m - 1);
   const int kept_size = m + (n - 1 - last) + first;
   thread_local std::vector<int> kept_buffer;  // Reused, as MelkmanHull()'s deque.
+  const ScratchScope kept_scope(kept_buffer);
   if (kept_buffer.size() < static_cast<size_t>(kept_size)) kept_buffer.resize(kept_size);
   int* const kept = kept_buffer.data();
   for (int t = 0; t < m; ++t) {

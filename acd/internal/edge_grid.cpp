@@ -102,4 +102,12 @@ void EdgeGrid::Build(const Polygon2d& polygon) {
   stamp_.assign(edges_.size(), 0);
 }
 
+std::size_t EdgeGrid::HeldBytes() const {
+  return edges_.capacity() * sizeof(Edge) +
+         (cell_begin_.capacity() + cell_edges_.capacity() + scratch_.capacity() +
+          next_slot_.capacity()) *
+             sizeof(int) +
+         stamp_.capacity() * sizeof(std::uint32_t);
+}
+
 }  // namespace acdplan::acd::internal

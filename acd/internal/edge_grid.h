@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -48,6 +49,10 @@ class EdgeGrid {
   /// rounding in assigning cells), or +infinity once those rings cover the grid. Thread-safe.
   template <typename Visit>
   double VisitRing(const Point2d& p, int ring, Visit visit) const;
+
+  /// The storage held, and its release (acd/internal/thread_scratch.h).
+  std::size_t HeldBytes() const;
+  void Release() { *this = EdgeGrid(); }
 
   /// The largest magnitude of a vertex coordinate: the scale of rounding noise.
   double Magnitude() const { return magnitude_; }

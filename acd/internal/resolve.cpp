@@ -16,6 +16,7 @@
 #include "acd/internal/ring_blocks.h"
 #include "acd/internal/ring_locator.h"
 #include "acd/internal/rounding_noise.h"
+#include "acd/internal/thread_scratch.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -81,9 +82,10 @@ struct QueryBox {
 // tests that follow decide alike.
 class EdgeQuery {
  public:
-  /// `outer_blocks`: of polygon.outer, with the concavities (they serve BestCandidate() too).
-  EdgeQuery(const Polygon2d& polygon, const RingBlocks& outer_blocks)
-      : polygon_(polygon), outer_blocks_(outer_blocks) {}
+  /// `outer_blocks`: of polygon.outer, with the concavities (they serve BestCandidate() too);
+  /// `grid`: storage for the grid (Resolve keeps one per thread).
+  EdgeQuery(const Polygon2d& polygon, const RingBlocks& outer_blocks, EdgeGrid* grid)
+      : polygon_(polygon), outer_blocks_(outer_blocks), grid_storage_(grid) {}
 
   // As EdgeGrid::AnyNear(); `visit` is called at least on every edge whose bounding box meets
   // the box of a-b grown by `pad`.
@@ -122,19 +124,17 @@ class EdgeQuery {
   }
 
  private:
-  // The thread's grid, built anew in its storage: one query object is alive at a time (in
-  // Resolve()).
   void BuildGrid() const {
-    thread_local EdgeGrid grid;
-    grid.Build(polygon_);
-    grid_ = &grid;
+    grid_storage_->Build(polygon_);
+    grid_ = grid_storage_;
   }
 
   static constexpr int kScansBeforeGrid = 6;
   const Polygon2d& polygon_;
   const RingBlocks& outer_blocks_;
+  EdgeGrid* grid_storage_;
   mutable int scans_ = 0;
-  mutable const EdgeGrid* grid_ = nullptr;
+  mutable const EdgeGrid* grid_ = nullptr;  // Once built.
 };
 
 // |v|, also where its squares underflow: a cut 1e-194 long (a vertex that close to a notch, in
@@ -545,6 +545,7 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
   // The blocks by distance from r; the guess from the kGuessBlocks nearest. (The thread's
   // buffer from the last call: this runs for every cut.)
   thread_local std::vector<std::pair<double, int>> by_distance;
+  const ScratchScope by_distance_scope(by_distance);
   by_distance.resize(blocks.Count());
   for (int b = 0; b < blocks.Count(); ++b) by_distance[b] = {blocks.SquaredDistance(b, r), b};
   std::sort(by_distance.begin(), by_distance.end());
@@ -1107,9 +1108,14 @@ bool ResolveHole(const Polygon2d& polygon, const EdgeQuery& grid, const Concavit
 
 bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const ResolveOptions& options,
              Resolution* resolution) {
-  thread_local RingBlocks outer_blocks;  // Its storage outlives the call: Resolve runs per split.
+  // Storage the thread keeps from one split to the next (a fresh grid's arrays came from memory
+  // not touched lately); one Resolve() runs at a time per thread.
+  thread_local RingBlocks outer_blocks;
+  thread_local EdgeGrid grid_storage;
+  const ScratchScope blocks_scope(outer_blocks);
+  const ScratchScope grid_scope(grid_storage);
   outer_blocks.Assign(polygon.outer, &concavity.outer);
-  const EdgeQuery grid(polygon, outer_blocks);
+  const EdgeQuery grid(polygon, outer_blocks, &grid_storage);
   if (concavity.witness_hole >= 0) {
     // The witness hole first, then the others by decreasing concavity; each with either
     // antipode connecting first.

@@ -3,6 +3,7 @@
 // Resolve that visit every vertex or edge of a piece. Internal.
 
 #include <algorithm>
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -46,6 +47,9 @@ class RingBlocks {
   }
 
   int Count() const { return static_cast<int>(blocks_.size()); }
+  /// The storage held, and its release (acd/internal/thread_scratch.h).
+  std::size_t HeldBytes() const { return blocks_.capacity() * sizeof(Block); }
+  void Release() { std::vector<Block>().swap(blocks_); }
   int Begin(int b) const { return b * kSize; }
   int End(int b) const { return std::min(n_, (b + 1) * kSize); }
   const Block& operator[](int b) const { return blocks_[b]; }
