@@ -56,7 +56,8 @@ bool LeavesInward(const Polygon2d& polygon, const Endpoint& e, const Point2d& ta
 bool IsIncident(const Endpoint& e, int ring, int edge, int n) {
   if (e.ring != ring) return false;
   if (e.on_edge) return edge == e.index;
-  return (edge == e.index) | (Next(edge, n) == e.index);
+  const bool from_e = edge == e.index, to_e = Next(edge, n) == e.index;
+  return from_e | to_e;  // (No short circuit: which one holds varies at random.)
 }
 
 // A query's box, for the scans that test it against every edge's or block's box. The four
@@ -65,7 +66,9 @@ bool IsIncident(const Endpoint& e, int ring, int edge, int n) {
 struct QueryBox {
   double xmin, xmax, ymin, ymax;
   bool Misses(const Point2d& lo, const Point2d& hi) const {
-    return (hi.x() < xmin) | (lo.x() > xmax) | (hi.y() < ymin) | (lo.y() > ymax);
+    const bool left = hi.x()<xmin, right = lo.x()> xmax;
+    const bool below = hi.y()<ymin, above = lo.y()> ymax;
+    return left | right | below | above;
   }
   // The box of the edge u-w.
   bool MissesEdge(const Point2d& u, const Point2d& w) const {
@@ -557,7 +560,8 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
     const int b = by_distance[k].second;
     for (int i = blocks.Begin(b); i < blocks.End(b); ++i) {
       const Point2d to = outer[i] - r;
-      if ((cross(in, to) < 0.0) | (cross(out, to) < 0.0) || scorer.Skips(i)) continue;
+      const bool before_in = cross(in, to) < 0.0, after_out = cross(out, to) < 0.0;
+      if ((before_in | after_out) || scorer.Skips(i)) continue;
       const double d2 = to.squaredNorm();
       const double f = relative(concavity.outer[i]);
       if (d2 > 0.0 && f * f > guess_value * d2) {
