@@ -107,9 +107,8 @@ double SignedArea(const Ring2d& ring) {
     const double left = a.x() * b.y(), right = a.y() * b.x();
     const double term = left - right;
     const double sum = twice_area + term;
-    // Both candidates first, so that the choice compiles to a select, not a branch.
-    const double if_larger = (twice_area - sum) + term, if_smaller = (term - sum) + twice_area;
-    compensation += std::abs(twice_area) >= std::abs(term) ? if_larger : if_smaller;
+    compensation += std::abs(twice_area) >= std::abs(term) ? (twice_area - sum) + term
+                                                           : (term - sum) + twice_area;
     twice_area = sum;
     magnitude += std::abs(left) + std::abs(right);
   }

@@ -66,8 +66,10 @@ bool IsIncident(const Endpoint& e, int ring, int edge, int n) {
 struct QueryBox {
   double xmin, xmax, ymin, ymax;
   bool Misses(const Point2d& lo, const Point2d& hi) const {
-    const bool left = hi.x()<xmin, right = lo.x()> xmax;
-    const bool below = hi.y()<ymin, above = lo.y()> ymax;
+    const bool left = hi.x() < xmin;
+    const bool right = lo.x() > xmax;
+    const bool below = hi.y() < ymin;
+    const bool above = lo.y() > ymax;
     return left | right | below | above;
   }
   // The box of the edge u-w.
