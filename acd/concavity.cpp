@@ -513,15 +513,15 @@ namespace {
 // The concavity of the vertices of `pocket` for the measures beyond SL, given its SL distances
 // in result->outer and whether it has a hazard: SL distances are final for SL, for H2 when they
 // exceed tau, and for SP and H1 when the pocket has no hazard (see PocketConcavity()). Returns
-// whether it replaced them.
-bool FinishPocket(const Ring2d& ring, const Pocket& pocket, bool hazard, double sl_max,
-                  const ConcavityOptions& options, PocketCache* cache, Concavity2d* result) {
+// the largest final concavity in the pocket (`sl_max` where the SL distances stay).
+double FinishPocket(const Ring2d& ring, const Pocket& pocket, bool hazard, double sl_max,
+                    const ConcavityOptions& options, PocketCache* cache, Concavity2d* result) {
   const int n = static_cast<int>(ring.size());
   const bool needs_sp =
       hazard && (options.measure == ConcavityMeasure::kShortestPath ||
                  options.measure == ConcavityMeasure::kHybrid1 ||
                  (options.measure == ConcavityMeasure::kHybrid2 && sl_max <= options.tau));
-  if (!needs_sp) return false;
+  if (!needs_sp) return sl_max;
   const Ring2d chain = PocketChain(ring, pocket);
   const std::vector<double>* cached = cache != nullptr ? cache->Find(chain) : nullptr;
   std::vector<double> computed;
@@ -530,15 +530,18 @@ bool FinishPocket(const Ring2d& ring, const Pocket& pocket, bool hazard, double 
     if (cache != nullptr) cache->Insert(chain, computed);
   }
   const std::vector<double>& d = cached != nullptr ? *cached : computed;
+  double largest = 0.0;
   for (size_t k = 1; k + 1 < chain.size(); ++k) {
     result->outer[(pocket.begin + static_cast<int>(k)) % n] = d[k];
+    largest = std::max(largest, d[k]);
   }
-  return true;
+  return largest;
 }
 
-// The concavity of every vertex of `pocket` into result->outer (Ch. IV.A.1).
-void MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOptions& options,
-                   PocketCache* cache, Concavity2d* result) {
+// The concavity of every vertex of `pocket` into result->outer (Ch. IV.A.1); returns the
+// largest.
+double MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOptions& options,
+                     PocketCache* cache, Concavity2d* result) {
   const int n = static_cast<int>(ring.size());
   // SL distances straight off the ring: no copy, no lookup.
   const Point2d& from = ring[pocket.begin];
@@ -556,7 +559,7 @@ void MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOpti
     }
     i = next;
   }
-  FinishPocket(ring, pocket, hazard, sl_max, options, cache, result);
+  return FinishPocket(ring, pocket, hazard, sl_max, options, cache, result);
 }
 
 // The pockets of the hull gap from hull vertex `begin` to hull vertex `end` (the bridges and
@@ -570,14 +573,6 @@ double MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions
                   PocketCache* cache, Concavity2d* result) {
   const int n = static_cast<int>(ring.size());
   if ((end - begin + n) % n <= 1) return -std::numeric_limits<double>::infinity();
-  // The largest of the final values, once a pocket's SL distances were replaced.
-  auto largest = [&] {
-    double top = 0.0;
-    for (int i = begin + 1 == n ? 0 : begin + 1; i != end; i = i + 1 == n ? 0 : i + 1) {
-      top = std::max(top, result->outer[i]);
-    }
-    return top;
-  };
   const Point2d& from = ring[begin];
   const Point2d& to = ring[end];
   const Point2d bridge = to - from;
@@ -593,16 +588,18 @@ double MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions
       if (d <= on_bridge && Orientation(from, to, ring[i]) == 0) {  // Several pockets.
         std::vector<Pocket> pockets;
         AppendGapPockets(ring, begin, end, &pockets);
-        for (const Pocket& pocket : pockets) MeasurePocket(ring, pocket, options, cache, result);
-        return largest();
+        double largest = 0.0;  // (A vertex on the bridge, between pockets, has concavity 0.)
+        for (const Pocket& pocket : pockets) {
+          largest = std::max(largest, MeasurePocket(ring, pocket, options, cache, result));
+        }
+        return largest;
       }
       result->outer[i] = d;
       sl_max = std::max(sl_max, d);
     }
     i = next;
   }
-  return FinishPocket(ring, {begin, end}, hazard, sl_max, options, cache, result) ? largest()
-                                                                                  : sl_max;
+  return FinishPocket(ring, {begin, end}, hazard, sl_max, options, cache, result);
 }
 
 // The witness notch by the outer concavities alone, into result->value and witness_vertex.
@@ -695,10 +692,6 @@ void FinishMeasure(const Polygon2d& polygon, const ConcavityOptions& options, Po
     }
   }
 }
-
-}  // namespace
-
-namespace {
 
 // An empty measure that holds the storage of `spare` (if any), to be filled without allocating
 // as long as the storage suffices: pieces are measured one after another, each needing about

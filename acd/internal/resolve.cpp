@@ -90,14 +90,14 @@ class EdgeQuery {
   /// `outer_blocks`: of polygon.outer, with the concavities (they serve BestCandidate() too);
   /// `grid`: storage for the grid (Resolve keeps one per thread).
   EdgeQuery(const Polygon2d& polygon, const RingBlocks& outer_blocks, EdgeGrid* grid)
-      : polygon_(polygon), outer_blocks_(outer_blocks), grid_storage_(grid) {}
+      : polygon_(polygon), outer_blocks_(outer_blocks), grid_(*grid) {}
 
   // As EdgeGrid::AnyNear(); `visit` is called at least on every edge whose bounding box meets
   // the box of a-b grown by `pad`.
   template <typename Visit>
   bool AnyNear(const Point2d& a, const Point2d& b, double pad, Visit visit) const {
-    if (grid_ == nullptr && ++scans_ > kScansBeforeGrid) BuildGrid();
-    if (grid_ != nullptr) return grid_->AnyNear(a, b, pad, visit);
+    if (!grid_built_ && ++scans_ > kScansBeforeGrid) BuildGrid();
+    if (grid_built_) return grid_.AnyNear(a, b, pad, visit);
     const QueryBox query{std::min(a.x(), b.x()) - pad, std::max(a.x(), b.x()) + pad,
                          std::min(a.y(), b.y()) - pad, std::max(a.y(), b.y()) + pad};
     auto scan = [&](int ring, const Ring2d& points, int from, int to) {
@@ -124,22 +124,22 @@ class EdgeQuery {
   const RingBlocks& OuterBlocks() const { return outer_blocks_; }
 
   const EdgeGrid& Grid() const {
-    if (grid_ == nullptr) BuildGrid();
-    return *grid_;
+    if (!grid_built_) BuildGrid();
+    return grid_;
   }
 
  private:
   void BuildGrid() const {
-    grid_storage_->Build(polygon_);
-    grid_ = grid_storage_;
+    grid_.Build(polygon_);
+    grid_built_ = true;
   }
 
   static constexpr int kScansBeforeGrid = 6;
   const Polygon2d& polygon_;
   const RingBlocks& outer_blocks_;
-  EdgeGrid* grid_storage_;
+  EdgeGrid& grid_;
   mutable int scans_ = 0;
-  mutable const EdgeGrid* grid_ = nullptr;  // Once built.
+  mutable bool grid_built_ = false;
 };
 
 // |v|, also where its squares underflow: a cut 1e-194 long (a vertex that close to a notch, in
