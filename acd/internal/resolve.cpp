@@ -78,28 +78,32 @@ struct QueryBox {
   }
 };
 
-// The boundary edges a cut is tested against. Most notches are resolved by their first or
-// second candidate, so the first few queries scan the edges (one pass, a box test each; the
-// outer ring's by blocks, skipping those whose box misses the query's), which is cheaper than
-// building the grid (several passes and allocations); the grid is built once queries keep
-// coming (a hole's fallbacks try many pairs), or when asked for (a hole path's nearest-point
-// searches). Both report every edge whose box meets the padded box of the segment, so the cut
-// tests that follow decide alike.
+// The boundary edges a cut is tested against, and the boundary points nearest to a point. Most
+// notches are resolved by their first or second candidate, and a hole path makes a few links, so
+// the first few queries scan blocks of edges (the outer ring's and the holes', skipping those
+// whose box misses the query's; a nearest-point search takes the blocks by distance), which is
+// cheaper than building the grid (several passes and allocations); the grid is built once
+// queries keep coming (a hole's fallbacks try many pairs). Both report every edge whose box
+// meets the padded box of the segment, and offer the same points in the same order, so what
+// follows decides alike.
 class EdgeQuery {
  public:
   /// `outer_blocks`: of polygon.outer, with the concavities (they serve BestCandidate() too);
-  /// `grid`: storage for the grid (Resolve keeps one per thread).
-  EdgeQuery(const Polygon2d& polygon, const RingBlocks& outer_blocks, EdgeGrid* grid)
-      : polygon_(polygon), outer_blocks_(outer_blocks), grid_(*grid) {}
+  /// `hole_blocks`, `grid`: storage for the holes' blocks and the grid (Resolve keeps them per
+  /// thread).
+  EdgeQuery(const Polygon2d& polygon, const RingBlocks& outer_blocks, HoleBlocks* hole_blocks,
+            EdgeGrid* grid)
+      : polygon_(polygon), outer_blocks_(outer_blocks), hole_blocks_(*hole_blocks), grid_(*grid) {}
 
   // As EdgeGrid::AnyNear(); `visit` is called at least on every edge whose bounding box meets
   // the box of a-b grown by `pad`.
   template <typename Visit>
   bool AnyNear(const Point2d& a, const Point2d& b, double pad, Visit visit) const {
-    if (!grid_built_ && ++scans_ > kScansBeforeGrid) BuildGrid();
+    if (!grid_built_) Charge(1);
     if (grid_built_) return grid_.AnyNear(a, b, pad, visit);
     const QueryBox query{std::min(a.x(), b.x()) - pad, std::max(a.x(), b.x()) + pad,
                          std::min(a.y(), b.y()) - pad, std::max(a.y(), b.y()) + pad};
+    // The edges block by block: a block whose box misses the query's holds none that meets it.
     auto scan = [&](int ring, const Ring2d& points, int from, int to) {
       const int n = static_cast<int>(points.size());
       for (int i = from; i < to; ++i) {
@@ -108,38 +112,75 @@ class EdgeQuery {
       }
       return false;
     };
-    // The outer ring's edges block by block: a block whose box misses the query's holds none
-    // that meets it.
     for (int k = 0; k < outer_blocks_.Count(); ++k) {
       if (query.Misses(outer_blocks_[k].min, outer_blocks_[k].max)) continue;
       if (scan(-1, polygon_.outer, outer_blocks_.Begin(k), outer_blocks_.End(k))) return true;
     }
-    for (int ring = 0; ring < static_cast<int>(polygon_.holes.size()); ++ring) {
-      const Ring2d& hole = polygon_.holes[ring];
-      if (scan(ring, hole, 0, static_cast<int>(hole.size()))) return true;
+    const HoleBlocks& holes = HoleBlocksBuilt();
+    for (int k = 0; k < holes.Count(); ++k) {
+      const HoleBlocks::Block& block = holes[k];
+      if (query.Misses(block.min, block.max)) continue;
+      if (scan(block.hole, polygon_.holes[block.hole], block.begin, block.end)) return true;
     }
     return false;
   }
 
-  const RingBlocks& OuterBlocks() const { return outer_blocks_; }
-
-  const EdgeGrid& Grid() const {
-    if (!grid_built_) BuildGrid();
-    return grid_;
+  // NearestAccepted() (acd/internal/nearest_boundary.h) on the polygon.
+  template <typename SkipHole, typename Accept>
+  std::optional<BoundaryPoint> Nearest(const Point2d& p, SkipHole skip_hole, Accept accept) const {
+    if (!grid_built_) Charge(3);
+    if (grid_built_) return NearestAccepted(polygon_, grid_, p, skip_hole, accept);
+    const HoleBlocks& holes = HoleBlocksBuilt();
+    if (magnitude_ < 0.0) {  // The largest magnitude of a vertex coordinate: the blocks bound them.
+      Point2d largest = Point2d::Zero();
+      auto bound = [&](const RunBounds& b) {
+        largest = largest.cwiseMax(b.min.cwiseAbs()).cwiseMax(b.max.cwiseAbs());
+      };
+      for (int k = 0; k < outer_blocks_.Count(); ++k) bound(outer_blocks_[k]);
+      for (int k = 0; k < holes.Count(); ++k) bound(holes[k]);
+      magnitude_ = largest.maxCoeff();
+    }
+    return NearestAccepted(polygon_, outer_blocks_, holes, magnitude_, p, skip_hole, accept);
   }
 
+  const RingBlocks& OuterBlocks() const { return outer_blocks_; }
+
  private:
+  // Counts what a scan of the blocks costs, `weight` per block (a box test: 1; a nearest-point
+  // search, which also orders them: 3), and builds the grid once the scans have cost about what
+  // building it does (kGridCost per edge; measured, 60 - 100 instructions per edge against about
+  // 8 per box test). Rent or buy: whatever the number of queries, at most about twice the
+  // cost of the better choice.
+  void Charge(int weight) const {
+    const HoleBlocks& holes = HoleBlocksBuilt();
+    if (edges_ == 0) {
+      edges_ = polygon_.outer.size();
+      for (const Ring2d& hole : polygon_.holes) edges_ += hole.size();
+    }
+    spent_ += weight * (outer_blocks_.Count() + holes.Count());
+    if (spent_ > kGridCost * edges_) BuildGrid();
+  }
+
   void BuildGrid() const {
     grid_.Build(polygon_);
     grid_built_ = true;
   }
 
-  static constexpr int kScansBeforeGrid = 6;
+  const HoleBlocks& HoleBlocksBuilt() const {
+    if (!hole_blocks_built_) hole_blocks_.Assign(polygon_.holes);
+    hole_blocks_built_ = true;
+    return hole_blocks_;
+  }
+
+  static constexpr double kGridCost = 8;
   const Polygon2d& polygon_;
   const RingBlocks& outer_blocks_;
+  HoleBlocks& hole_blocks_;
   EdgeGrid& grid_;
-  mutable int scans_ = 0;
+  mutable double spent_ = 0.0, edges_ = 0.0;
+  mutable double magnitude_ = -1.0;  // Not known yet.
   mutable bool grid_built_ = false;
+  mutable bool hole_blocks_built_ = false;
 };
 
 // |v|, also where its squares underflow: a cut 1e-194 long (a vertex that close to a notch, in
@@ -1010,8 +1051,8 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
       return IsClearCut(polygon, grid, from, e);
     };
     // Nearest first, ties by ring, index and kind; outer vertices and feet on outer edges.
-    return NearestAccepted(
-        polygon, grid.Grid(), from.point, [&](int hole) { return crossed[hole] != 0; }, accept);
+    return grid.Nearest(
+        from.point, [&](int hole) { return crossed[hole] != 0; }, accept);
   };
   // One side of the path, from vertex `start` of hole h to the outer boundary: the holes
   // crossed (entered at the vertex reached, left at `leave`) and the outer end.
@@ -1117,11 +1158,13 @@ bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const Resol
   // Storage the thread keeps from one split to the next (a fresh grid's arrays came from memory
   // not touched lately); one Resolve() runs at a time per thread.
   thread_local RingBlocks outer_blocks;
+  thread_local HoleBlocks hole_blocks;
   thread_local EdgeGrid grid_storage;
   const ScratchScope blocks_scope(outer_blocks);
+  const ScratchScope hole_blocks_scope(hole_blocks);
   const ScratchScope grid_scope(grid_storage);
   outer_blocks.Assign(polygon.outer, &concavity.outer);
-  const EdgeQuery grid(polygon, outer_blocks, &grid_storage);
+  const EdgeQuery grid(polygon, outer_blocks, &hole_blocks, &grid_storage);
   if (concavity.witness_hole >= 0) {
     // The witness hole first, then the others by decreasing concavity; each with either
     // antipode connecting first.

@@ -1,6 +1,7 @@
-// NearestAccepted: it offers exactly the points a sort of all of them would, in the same order
-// (ties by ring, index and kind), on point sets full of ties (small integer lattices), far from
-// the origin (rounding in the grid's cells), with long edges (coarse grids) and skipped holes.
+// NearestAccepted, on the grid and on the rings' blocks: it offers exactly the points a sort of
+// all of them would, in the same order (ties by ring, index and kind), on point sets full of ties
+// (small integer lattices), far from the origin (rounding in the grid's cells), with long edges
+// (coarse grids) and skipped holes.
 
 #include "acd/internal/nearest_boundary.h"
 
@@ -8,11 +9,13 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <tuple>
 #include <utility>
 #include <vector>
 
 #include "acd/internal/edge_grid.h"
+#include "acd/internal/ring_blocks.h"
 #include "base/random.h"
 #include "tests/polygon_fixtures.h"
 
@@ -52,6 +55,28 @@ std::vector<BoundaryPoint> SortedScan(const Polygon2d& polygon, const Point2d& p
   return order;
 }
 
+// The two indexes NearestAccepted() searches.
+enum class Index { kGrid, kBlocks };
+
+template <typename SkipHole, typename Accept>
+std::optional<BoundaryPoint> Search(Index index, const Polygon2d& polygon, const Point2d& p,
+                                    SkipHole skip_hole, Accept accept) {
+  if (index == Index::kGrid) {
+    return NearestAccepted(polygon, EdgeGrid(polygon), p, skip_hole, accept);
+  }
+  const RingBlocks outer(polygon.outer, nullptr);
+  HoleBlocks holes;
+  holes.Assign(polygon.holes);
+  double magnitude = 0.0;
+  for (const Point2d& v : polygon.outer) magnitude = std::max(magnitude, v.cwiseAbs().maxCoeff());
+  for (const Ring2d& hole : polygon.holes) {
+    for (const Point2d& v : hole) magnitude = std::max(magnitude, v.cwiseAbs().maxCoeff());
+  }
+  return NearestAccepted(polygon, outer, holes, magnitude, p, skip_hole, accept);
+}
+
+const char* Name(Index index) { return index == Index::kGrid ? "grid" : "blocks"; }
+
 bool Same(const BoundaryPoint& a, const BoundaryPoint& b) {
   return a.ring == b.ring && a.index == b.index && a.on_edge == b.on_edge && a.point == b.point;
 }
@@ -66,7 +91,6 @@ TEST(NearestBoundaryTest, OffersEveryPointInTheOrderOfASort) {
   for (int trial = 0; trial < 300; ++trial) {
     const auto& [origin, step] = frames[trial % frames.size()];
     const Polygon2d polygon = acdplan::test::RandomRings(rng, origin, step, true);
-    const EdgeGrid grid(polygon);
     std::vector<char> skip(polygon.holes.size());
     for (char& s : skip) s = UniformIndex(rng, 3) == 0 ? 1 : 0;
     for (int q = 0; q < 10; ++q) {
@@ -81,20 +105,23 @@ TEST(NearestBoundaryTest, OffersEveryPointInTheOrderOfASort) {
                                                          UniformReal(rng, -5.0, 40.0)));
       }
       const std::vector<BoundaryPoint> expected = SortedScan(polygon, p, skip);
-      std::vector<BoundaryPoint> offered;
-      const auto none = NearestAccepted(
-          polygon, grid, p, [&](int k) { return skip[k] != 0; },
-          [&](const BoundaryPoint& b) {
-            offered.push_back(b);
-            return false;
-          });
-      EXPECT_FALSE(none.has_value());
-      ASSERT_EQ(offered.size(), expected.size()) << "trial " << trial << " query " << q;
-      for (size_t i = 0; i < expected.size(); ++i) {
-        ASSERT_TRUE(Same(offered[i], expected[i]))
-            << "trial " << trial << " query " << q << " position " << i << ": ring "
-            << offered[i].ring << " index " << offered[i].index << " instead of ring "
-            << expected[i].ring << " index " << expected[i].index;
+      for (const Index index : {Index::kGrid, Index::kBlocks}) {
+        std::vector<BoundaryPoint> offered;
+        const auto none = Search(
+            index, polygon, p, [&](int k) { return skip[k] != 0; },
+            [&](const BoundaryPoint& b) {
+              offered.push_back(b);
+              return false;
+            });
+        EXPECT_FALSE(none.has_value());
+        ASSERT_EQ(offered.size(), expected.size())
+            << Name(index) << " trial " << trial << " query " << q;
+        for (size_t i = 0; i < expected.size(); ++i) {
+          ASSERT_TRUE(Same(offered[i], expected[i]))
+              << Name(index) << " trial " << trial << " query " << q << " position " << i
+              << ": ring " << offered[i].ring << " index " << offered[i].index
+              << " instead of ring " << expected[i].ring << " index " << expected[i].index;
+        }
       }
     }
   }
@@ -105,7 +132,6 @@ TEST(NearestBoundaryTest, ReturnsTheFirstPointAccepted) {
   for (int trial = 0; trial < 200; ++trial) {
     const Polygon2d polygon =
         acdplan::test::RandomRings(rng, Point2d(3.0, -2.0), trial % 2 == 0 ? 1.0 : 1e4, true);
-    const EdgeGrid grid(polygon);
     const std::vector<char> skip(polygon.holes.size(), 0);
     const Point2d p = polygon.outer[UniformIndex(rng, polygon.outer.size())];
     const std::vector<BoundaryPoint> expected = SortedScan(polygon, p, skip);
@@ -116,21 +142,24 @@ TEST(NearestBoundaryTest, ReturnsTheFirstPointAccepted) {
                  modulus ==
              0;
     };
-    int calls = 0;
-    const auto got = NearestAccepted(
-        polygon, grid, p, [](int) { return false; },
-        [&](const BoundaryPoint& b) {
-          ++calls;
-          return rule(b);
-        });
     const auto first = std::find_if(expected.begin(), expected.end(), rule);
-    if (first == expected.end()) {
-      EXPECT_FALSE(got.has_value()) << "trial " << trial;
-      EXPECT_EQ(calls, static_cast<int>(expected.size()));
-    } else {
-      ASSERT_TRUE(got.has_value()) << "trial " << trial;
-      EXPECT_TRUE(Same(*got, *first)) << "trial " << trial;
-      EXPECT_EQ(calls, static_cast<int>(first - expected.begin()) + 1) << "trial " << trial;
+    for (const Index index : {Index::kGrid, Index::kBlocks}) {
+      int calls = 0;
+      const auto got = Search(
+          index, polygon, p, [](int) { return false; },
+          [&](const BoundaryPoint& b) {
+            ++calls;
+            return rule(b);
+          });
+      if (first == expected.end()) {
+        EXPECT_FALSE(got.has_value()) << Name(index) << " trial " << trial;
+        EXPECT_EQ(calls, static_cast<int>(expected.size())) << Name(index) << " trial " << trial;
+      } else {
+        ASSERT_TRUE(got.has_value()) << Name(index) << " trial " << trial;
+        EXPECT_TRUE(Same(*got, *first)) << Name(index) << " trial " << trial;
+        EXPECT_EQ(calls, static_cast<int>(first - expected.begin()) + 1)
+            << Name(index) << " trial " << trial;
+      }
     }
   }
 }
