@@ -147,10 +147,10 @@ class EdgeQuery {
 
  private:
   // Counts what a scan of the blocks costs, `weight` per block (a box test: 1; a nearest-point
-  // search, which also orders them: 3), and builds the grid once the scans have cost about what
-  // building it does (kGridCost per edge; measured, 60 - 100 instructions per edge against about
-  // 8 per box test). Rent or buy: whatever the number of queries, at most about twice the
-  // cost of the better choice.
+  // search, which also orders them: 3), and builds the grid once the scans have cost kGridCost
+  // per edge. A build costs 60 - 100 instructions per edge, 8 - 12 box tests; buying at about
+  // half that (rent or buy) since queries come in runs: a hole path across many holes makes
+  // dozens (the GIS tile of decompose2d_gis_test: ~70 per path; neuron.poly: 7 - 22).
   void Charge(int weight) const {
     const HoleBlocks& holes = HoleBlocksBuilt();
     if (edges_ == 0) {
@@ -172,7 +172,7 @@ class EdgeQuery {
     return hole_blocks_;
   }
 
-  static constexpr double kGridCost = 8;
+  static constexpr double kGridCost = 4;
   const Polygon2d& polygon_;
   const RingBlocks& outer_blocks_;
   HoleBlocks& hole_blocks_;
