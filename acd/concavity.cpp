@@ -752,37 +752,46 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
       static_cast<int>(parent_ring.size()) != parent_n) {
     return measure_whole();
   }
-  // What follows rests on the piece lying in the parent's hull, so that the parent's hull
-  // vertices on the chain stay strict hull vertices of the piece. Its other vertices are holes'
-  // (inside) and the cut's ends on edges, which are rounded: one rounded out of the hull next to
-  // a hull vertex with a nearly flat angle turned that vertex into a point on the piece's hull
-  // edge (fuzz_decompose2d). Such a piece is measured whole. The test, exact, finds the hull's
-  // wedge around its vertex 0 that holds the point by bisection.
-  auto in_parent_hull = [&](const Point2d& p) {
+  // What follows rests on the parent's hull vertices on the chain staying strict hull vertices
+  // of the piece, with the parent's hull edges between them. The piece's other vertices are
+  // holes' (inside the parent's hull) and the cut's ends on edges, which are rounded and may lie
+  // just outside it: one rounded out next to a hull vertex with a nearly flat angle turned that
+  // vertex into a point on the piece's hull edge (fuzz_decompose2d). A point outside beyond a
+  // single hull edge, strictly inside the lines of the two edges beside it, keeps every hull
+  // vertex strict (the hull grows by a triangle on that edge); one beyond more edges, or two
+  // ends outside, and the piece is measured whole. The test, exact, finds the hull's wedge
+  // around its vertex 0 that holds the point by bisection. Returns 0 inside or on the hull, 1
+  // outside beyond one edge that the chain does not inherit, -1 otherwise.
+  auto chain_offset = [&](int j) {  // Of parent vertex j, from the chain's first.
+    const int d = j - chain.parent_begin;
+    return d < 0 ? d + parent_n : d;
+  };
+  auto on_chain = [&](int k) { return chain_offset(parent.hull[k]) < chain.length; };
+  auto against_parent_hull = [&](const Point2d& p) {
     const Point2d& pivot = parent_ring[parent.hull[0]];
     auto at = [&](int k) -> const Point2d& { return parent_ring[parent.hull[k]]; };
     if (Orientation(pivot, at(1), p) < 0 || Orientation(pivot, at(parent_h - 1), p) > 0) {
-      return false;
+      return -1;
     }
     int lo = 1, hi = parent_h - 1;  // orient(pivot, at(lo), p) >= 0 > orient(pivot, at(hi), p).
     while (hi - lo > 1) {
       const int mid = (lo + hi) / 2;
       (Orientation(pivot, at(mid), p) >= 0 ? lo : hi) = mid;
     }
-    return Orientation(at(lo), at(lo + 1), p) >= 0;
+    const int next = lo + 1, after_next = next + 1 == parent_h ? 0 : next + 1;
+    if (Orientation(at(lo), at(next), p) >= 0) return 0;
+    const bool single = Orientation(at(lo - 1), at(lo), p) > 0 &&
+                        Orientation(at(next), at(after_next), p) > 0 &&
+                        !(on_chain(lo) && on_chain(next));
+    return single ? 1 : -1;
   };
   const int after = chain.begin + chain.length;
-  if ((chain.begin == 1 && !in_parent_hull(ring[0])) ||
-      (after < n && !in_parent_hull(ring[after]))) {
-    return measure_whole();
-  }
+  const int start_side = chain.begin == 1 ? against_parent_hull(ring[0]) : 0;
+  const int end_side = after < n ? against_parent_hull(ring[after]) : 0;
+  if (start_side < 0 || end_side < 0 || start_side + end_side > 1) return measure_whole();
   // The parent's hull vertices on the chain, in chain order: parent.hull increases, so they are
   // those from the first at or after parent_begin on, cyclically, while on the chain. Each is a
-  // strict hull vertex of the piece too (the piece lies in the parent).
-  auto chain_offset = [&](int j) {
-    const int d = j - chain.parent_begin;
-    return d < 0 ? d + parent_n : d;
-  };
+  // strict hull vertex of the piece too (see above).
   const int first_k = static_cast<int>(
       std::lower_bound(parent.hull.begin(), parent.hull.end(), chain.parent_begin) -
       parent.hull.begin());
