@@ -2,6 +2,7 @@
 // piece gives: Decompose2d() relies on it for every piece it cuts.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,29 @@ TEST(ChildConcavityTest, CutEndRoundedOutOfTheParentsHull) {
       CompareAlongDecomposition(polygon, measure, 50);
     }
   }
+}
+
+// A cut end rounded just outside a single hull edge of the parent, clear of the edges beside
+// it: the hull grows by a sliver and every parent hull vertex stays strict, so the parent's
+// measure is reused, and must still equal a full measure. The parent: a rectangle with a pocket
+// in its bottom edge (notch 2); the cut runs from the notch up to the top hull edge, at a point
+// one ulp above it.
+TEST(ChildConcavityTest, CutEndJustOutsideOneHullEdge) {
+  const Polygon2d parent_polygon{{{0, 0}, {2, 0}, {3, 2}, {4, 0}, {6, 0}, {6, 4}, {0, 4}}, {}};
+  const Concavity2d parent = MeasureConcavity(parent_polygon);
+  ASSERT_EQ(parent.hull, (std::vector<int>{0, 4, 5, 6}));
+  const Point2d end(3.0, std::nextafter(4.0, 5.0));
+  // Right: parent vertices 2 ... 5, then the end. Left: the end, then parent vertices 6, 0, 1, 2.
+  const Polygon2d right{{{3, 2}, {4, 0}, {6, 0}, {6, 4}, end}, {}};
+  const Polygon2d left{{end, {0, 4}, {0, 0}, {2, 0}, {3, 2}}, {}};
+  ExpectSameMeasure(
+      MeasureConcavity(right),
+      internal::MeasureChildConcavity(right, {0, 2, 4}, parent_polygon.outer, parent, {}, nullptr),
+      "right piece");
+  ExpectSameMeasure(
+      MeasureConcavity(left),
+      internal::MeasureChildConcavity(left, {1, 6, 4}, parent_polygon.outer, parent, {}, nullptr),
+      "left piece");
 }
 
 TEST(ChildConcavityTest, MeasuresEverythingWhenNothingIsInherited) {
