@@ -93,7 +93,10 @@ class EdgeQuery {
   /// thread).
   EdgeQuery(const Polygon2d& polygon, const RingBlocks& outer_blocks, HoleBlocks* hole_blocks,
             EdgeGrid* grid)
-      : polygon_(polygon), outer_blocks_(outer_blocks), hole_blocks_(*hole_blocks), grid_(*grid) {}
+      : polygon_(polygon), outer_blocks_(outer_blocks), hole_blocks_(*hole_blocks), grid_(*grid) {
+    hole_blocks_.Assign(polygon.holes);
+    edges_ = static_cast<double>(VertexCount(polygon));
+  }
 
   // As EdgeGrid::AnyNear(); `visit` is called at least on every edge whose bounding box meets
   // the box of a-b grown by `pad`.
@@ -116,9 +119,8 @@ class EdgeQuery {
       if (query.Misses(outer_blocks_[k].min, outer_blocks_[k].max)) continue;
       if (scan(-1, polygon_.outer, outer_blocks_.Begin(k), outer_blocks_.End(k))) return true;
     }
-    const HoleBlocks& holes = HoleBlocksBuilt();
-    for (int k = 0; k < holes.Count(); ++k) {
-      const HoleBlocks::Block& block = holes[k];
+    for (int k = 0; k < hole_blocks_.Count(); ++k) {
+      const HoleBlocks::Block& block = hole_blocks_[k];
       if (query.Misses(block.min, block.max)) continue;
       if (scan(block.hole, polygon_.holes[block.hole], block.begin, block.end)) return true;
     }
@@ -130,17 +132,16 @@ class EdgeQuery {
   std::optional<BoundaryPoint> Nearest(const Point2d& p, SkipHole skip_hole, Accept accept) const {
     if (!grid_built_) Charge(3);
     if (grid_built_) return NearestAccepted(polygon_, grid_, p, skip_hole, accept);
-    const HoleBlocks& holes = HoleBlocksBuilt();
     if (magnitude_ < 0.0) {  // The largest magnitude of a vertex coordinate: the blocks bound them.
       Point2d largest = Point2d::Zero();
       auto bound = [&](const RunBounds& b) {
         largest = largest.cwiseMax(b.min.cwiseAbs()).cwiseMax(b.max.cwiseAbs());
       };
       for (int k = 0; k < outer_blocks_.Count(); ++k) bound(outer_blocks_[k]);
-      for (int k = 0; k < holes.Count(); ++k) bound(holes[k]);
+      for (int k = 0; k < hole_blocks_.Count(); ++k) bound(hole_blocks_[k]);
       magnitude_ = largest.maxCoeff();
     }
-    return NearestAccepted(polygon_, outer_blocks_, holes, magnitude_, p, skip_hole, accept);
+    return NearestAccepted(polygon_, outer_blocks_, hole_blocks_, magnitude_, p, skip_hole, accept);
   }
 
   const RingBlocks& OuterBlocks() const { return outer_blocks_; }
@@ -152,12 +153,7 @@ class EdgeQuery {
   // half that (rent or buy) since queries come in runs: a hole path across many holes makes
   // dozens (the GIS tile of decompose2d_gis_test: ~70 per path; neuron.poly: 7 - 22).
   void Charge(int weight) const {
-    const HoleBlocks& holes = HoleBlocksBuilt();
-    if (edges_ == 0) {
-      edges_ = polygon_.outer.size();
-      for (const Ring2d& hole : polygon_.holes) edges_ += hole.size();
-    }
-    spent_ += weight * (outer_blocks_.Count() + holes.Count());
+    spent_ += weight * (outer_blocks_.Count() + hole_blocks_.Count());
     if (spent_ > kGridCost * edges_) BuildGrid();
   }
 
@@ -166,21 +162,15 @@ class EdgeQuery {
     grid_built_ = true;
   }
 
-  const HoleBlocks& HoleBlocksBuilt() const {
-    if (!hole_blocks_built_) hole_blocks_.Assign(polygon_.holes);
-    hole_blocks_built_ = true;
-    return hole_blocks_;
-  }
-
   static constexpr double kGridCost = 4;
   const Polygon2d& polygon_;
   const RingBlocks& outer_blocks_;
   HoleBlocks& hole_blocks_;
   EdgeGrid& grid_;
-  mutable double spent_ = 0.0, edges_ = 0.0;
+  double edges_;
+  mutable double spent_ = 0.0;
   mutable double magnitude_ = -1.0;  // Not known yet.
   mutable bool grid_built_ = false;
-  mutable bool hole_blocks_built_ = false;
 };
 
 // |v|, also where its squares underflow: a cut 1e-194 long (a vertex that close to a notch, in
