@@ -451,12 +451,17 @@ void MelkmanHull(const Ring2d& ring, int count, Index index, std::vector<int>* h
   if (!std::is_sorted(hull->begin(), hull->end())) std::sort(hull->begin(), hull->end());
 }
 
+// ConvexHullIndices() into `hull`, in the storage it holds.
+void RingHull(const Ring2d& ring, std::vector<int>* hull) {
+  MelkmanHull(
+      ring, static_cast<int>(ring.size()), [](int k) { return k; }, hull);
+}
+
 }  // namespace
 
 std::vector<int> ConvexHullIndices(const Ring2d& ring) {
   std::vector<int> hull;
-  MelkmanHull(
-      ring, static_cast<int>(ring.size()), [](int k) { return k; }, &hull);
+  RingHull(ring, &hull);
   return hull;
 }
 
@@ -713,8 +718,7 @@ void MeasureWhole(const Polygon2d& polygon, const ConcavityOptions& options, Poc
                   Concavity2d* result) {
   const Ring2d& ring = polygon.outer;
   result->outer.assign(ring.size(), 0.0);
-  MelkmanHull(
-      ring, static_cast<int>(ring.size()), [](int k) { return k; }, &result->hull);
+  RingHull(ring, &result->hull);
   const int h = static_cast<int>(result->hull.size());
   result->bridge_max.resize(h);
   for (int k = 0; k < h; ++k) {
@@ -760,18 +764,18 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
   // single hull edge, strictly inside the lines of the two edges beside it, keeps every hull
   // vertex strict (the hull grows by a triangle on that edge); one beyond more edges, or two
   // ends outside, and the piece is measured whole. The test, exact, finds the hull's wedge
-  // around its vertex 0 that holds the point by bisection. Returns 0 inside or on the hull, 1
-  // outside beyond one edge that the chain does not inherit, -1 otherwise.
+  // around its vertex 0 that holds the point by bisection.
   auto chain_offset = [&](int j) {  // Of parent vertex j, from the chain's first.
     const int d = j - chain.parent_begin;
     return d < 0 ? d + parent_n : d;
   };
   auto on_chain = [&](int k) { return chain_offset(parent.hull[k]) < chain.length; };
+  enum class Side { kInside, kBeyondOneEdge, kElsewhere };  // Of the parent's hull.
   auto against_parent_hull = [&](const Point2d& p) {
     const Point2d& pivot = parent_ring[parent.hull[0]];
     auto at = [&](int k) -> const Point2d& { return parent_ring[parent.hull[k]]; };
     if (Orientation(pivot, at(1), p) < 0 || Orientation(pivot, at(parent_h - 1), p) > 0) {
-      return -1;
+      return Side::kElsewhere;
     }
     int lo = 1, hi = parent_h - 1;  // orient(pivot, at(lo), p) >= 0 > orient(pivot, at(hi), p).
     while (hi - lo > 1) {
@@ -779,16 +783,19 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
       (Orientation(pivot, at(mid), p) >= 0 ? lo : hi) = mid;
     }
     const int next = lo + 1, after_next = next + 1 == parent_h ? 0 : next + 1;
-    if (Orientation(at(lo), at(next), p) >= 0) return 0;
+    if (Orientation(at(lo), at(next), p) >= 0) return Side::kInside;
     const bool single = Orientation(at(lo - 1), at(lo), p) > 0 &&
                         Orientation(at(next), at(after_next), p) > 0 &&
                         !(on_chain(lo) && on_chain(next));
-    return single ? 1 : -1;
+    return single ? Side::kBeyondOneEdge : Side::kElsewhere;
   };
   const int after = chain.begin + chain.length;
-  const int start_side = chain.begin == 1 ? against_parent_hull(ring[0]) : 0;
-  const int end_side = after < n ? against_parent_hull(ring[after]) : 0;
-  if (start_side < 0 || end_side < 0 || start_side + end_side > 1) return measure_whole();
+  const Side start = chain.begin == 1 ? against_parent_hull(ring[0]) : Side::kInside;
+  const Side end = after < n ? against_parent_hull(ring[after]) : Side::kInside;
+  if (start == Side::kElsewhere || end == Side::kElsewhere ||
+      (start == Side::kBeyondOneEdge && end == Side::kBeyondOneEdge)) {
+    return measure_whole();
+  }
   // The parent's hull vertices on the chain, in chain order: parent.hull increases, so they are
   // those from the first at or after parent_begin on, cyclically, while on the chain. Each is a
   // strict hull vertex of the piece too (see above).
@@ -801,7 +808,7 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
   };
   auto position = [&](int t) { return chain.begin + chain_offset(parent.hull[hull_k(t)]); };
   int m = 0;  // How many are on the chain.
-  while (m < parent_h && chain_offset(parent.hull[hull_k(m)]) < chain.length) ++m;
+  while (m < parent_h && on_chain(hull_k(m))) ++m;
   if (m < 2) return measure_whole();
   // A gap of the parent's hull between two of them is inherited whole and keeps its bridge: its
   // vertices keep their concavity, and none is a vertex of the piece's hull (the chain lies

@@ -65,6 +65,11 @@ bool IsIncident(const Endpoint& e, int ring, int edge, int n) {
 // the next and defeats branch prediction, whether it misses mostly does not.
 struct QueryBox {
   double xmin, xmax, ymin, ymax;
+  // The box of the segment a-b grown by `pad`.
+  static QueryBox Around(const Point2d& a, const Point2d& b, double pad) {
+    return {std::min(a.x(), b.x()) - pad, std::max(a.x(), b.x()) + pad,
+            std::min(a.y(), b.y()) - pad, std::max(a.y(), b.y()) + pad};
+  }
   bool Misses(const Point2d& lo, const Point2d& hi) const {
     const bool left = hi.x() < xmin;
     const bool right = lo.x() > xmax;
@@ -104,8 +109,7 @@ class EdgeQuery {
   bool AnyNear(const Point2d& a, const Point2d& b, double pad, Visit visit) const {
     if (!grid_built_) Charge(1);
     if (grid_built_) return grid_.AnyNear(a, b, pad, visit);
-    const QueryBox query{std::min(a.x(), b.x()) - pad, std::max(a.x(), b.x()) + pad,
-                         std::min(a.y(), b.y()) - pad, std::max(a.y(), b.y()) + pad};
+    const QueryBox query = QueryBox::Around(a, b, pad);
     // The edges block by block: a block whose box misses the query's holds none that meets it.
     auto scan = [&](int ring, const Ring2d& points, int from, int to) {
       const int n = static_cast<int>(points.size());
@@ -205,9 +209,7 @@ bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint&
       constructed ? kRoundingNoise * std::max(MaxAbs(a.point), MaxAbs(b.point)) : 0.0;
   const double noise_squared = noise * noise;
   const double pad = 2.0 * noise;
-  const QueryBox query{
-      std::min(a.point.x(), b.point.x()) - pad, std::max(a.point.x(), b.point.x()) + pad,
-      std::min(a.point.y(), b.point.y()) - pad, std::max(a.point.y(), b.point.y()) + pad};
+  const QueryBox query = QueryBox::Around(a.point, b.point, pad);
   // Whether p lies within `noise` of the segment s0-s1: the floating-point distance settles the
   // clear cases (it errs by far less than `screen`), the exact comparison the rest.
   auto near = [&](const Point2d& p, const Point2d& s0, const Point2d& s1, double screen) {
