@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include "acd/internal/exact_predicates.h"
 #include "acd/internal/is_notch.h"
@@ -137,47 +138,148 @@ bool UseGeodesic(const ConcavityOptions& options) {
          options.measure == ConcavityMeasure::kHybrid1;
 }
 
-// A vertex closest to a point: ring (-1 outer, k hole k; INT_MAX none), index, squared
-// distance and distance.
-struct HoleLinkCandidate {
-  int ring = std::numeric_limits<int>::max();
-  int vertex = 0;
-  double d2 = std::numeric_limits<double>::infinity();
-  double distance = std::numeric_limits<double>::infinity();
+// What MeasureHoles() may take over from the parent's searches (nothing for a whole measure):
+// the parent's per hole, which of them the piece's holes are, and which outer vertices the
+// piece copies (InheritedChain).
+class HoleSources {
+ public:
+  HoleSources() = default;
+  HoleSources(const Polygon2d& piece, const internal::InheritedHoles& holes,
+              const internal::InheritedChain& chain, int parent_n)
+      : chain_(chain), parent_n_(parent_n) {
+    const int n = static_cast<int>(piece.outer.size());
+    chain_valid_ = chain.begin >= 0 && chain.length >= 0 && chain.begin + chain.length <= n &&
+                   chain.length <= parent_n && chain.parent_begin >= 0 &&
+                   chain.parent_begin < parent_n;
+    if (holes.parent == nullptr || holes.origin == nullptr ||
+        holes.origin->size() != piece.holes.size()) {
+      return;
+    }
+    const int parent_k = static_cast<int>(holes.parent->size());
+    hole_at_.assign(parent_k, -1);
+    int previous = -1;
+    for (int i = 0; i < static_cast<int>(holes.origin->size()); ++i) {
+      const int j = (*holes.origin)[i];
+      // Increasing, so that the piece orders its holes as the parent did (searches break ties
+      // by ring).
+      if (j <= previous || j >= parent_k) {
+        hole_at_.clear();
+        return;
+      }
+      hole_at_[j] = i;
+      previous = j;
+    }
+    holes_ = holes;
+  }
+
+  // The parent's searches for hole i of the piece, or nullptr.
+  const internal::HoleNeighbours* Parent(int i) const {
+    return hole_at_.empty() ? nullptr : &(*holes_.parent)[(*holes_.origin)[i]];
+  }
+  // Where the piece holds the parent's hole j, or -1.
+  int HoleAt(int j) const {
+    return j >= 0 && j < static_cast<int>(hole_at_.size()) ? hole_at_[j] : -1;
+  }
+  // Where the piece's outer ring holds the parent's outer vertex j, or -1.
+  int CopiedAt(int j) const {
+    if (!chain_valid_) return -1;
+    const int offset =
+        j >= chain_.parent_begin ? j - chain_.parent_begin : j + parent_n_ - chain_.parent_begin;
+    return offset < chain_.length ? chain_.begin + offset : -1;
+  }
+  // The piece's outer vertices the chain does not copy: [0, NewBegin()) and [NewEnd(), n).
+  int NewEnd() const { return chain_valid_ ? chain_.begin + chain_.length : 0; }
+  int NewBegin() const { return chain_valid_ ? chain_.begin : 0; }
+
+ private:
+  internal::InheritedHoles holes_;
+  std::vector<int> hole_at_;  // Per parent hole; empty: nothing inherited.
+  internal::InheritedChain chain_;
+  int parent_n_ = 0;
+  bool chain_valid_ = false;
 };
 
-// The vertex searches of MeasureHoles(): one tree over the outer ring, one over all holes.
+// The vertex searches of MeasureHoles(), each tree built when first needed: over the whole
+// outer ring, over the outer vertices a piece does not copy from its parent, over all holes.
 // Each search returns what a scan of the rings in order (outer first, then hole 0, 1, ...)
 // would: the closest vertex of each ring (lowest index on equal squared distance), and of
 // those the one at the smallest distance, the first ring on equal distance.
 class VertexSearch {
  public:
-  explicit VertexSearch(const Polygon2d& polygon)
-      : outer_(polygon.outer), holes_(HoleTree(polygon, &ring_, &index_)) {}
+  VertexSearch(const Polygon2d& polygon, const HoleSources& sources)
+      : polygon_(polygon), sources_(sources) {}
 
-  // The closest outer vertex to `p`: index and squared distance.
-  std::pair<int, double> ClosestOuter(const Point2d& p) const {
-    int best = -1;
-    double best_d2 = std::numeric_limits<double>::infinity();
-    double radius = best_d2;
-    outer_.Search(p, &radius, [&](int id, double d2) {
-      if (d2 < best_d2 || (d2 == best_d2 && id < best)) {
-        best = id;
-        best_d2 = d2;
-        radius = std::sqrt(d2);
-      }
+  // What a search from antipode `p` of hole `hole` finds, taking over what the parent's
+  // search `parent` found where the piece cannot change it (nullptr: nothing to take over).
+  internal::AntipodeNeighbours Find(const Point2d& p, int hole,
+                                    const internal::AntipodeNeighbours* parent) {
+    internal::AntipodeNeighbours found;
+    // The parent's outer vertex, if the piece has it and nothing else was as near, unless one
+    // of the piece's new vertices is nearer.
+    const int copied =
+        parent != nullptr && !parent->outer.tie ? sources_.CopiedAt(parent->outer.vertex) : -1;
+    if (copied >= 0) {
+      found.outer = {copied, parent->outer.d2, false};
+      Offer(NewVertices(), sources_.NewBegin(), sources_.NewEnd(), p, &found.outer);
+    } else {
+      Offer(WholeRing(), 0, 0, p, &found.outer);
+    }
+    const double d = std::sqrt(found.outer.d2);
+    // The parent's hole vertex holds if it was the nearest of all the parent's other holes
+    // (it lay within the parent's outer distance) and is on a hole of the piece; if every other
+    // hole lay farther than the parent's outer vertex, they lie farther than this one too.
+    const double parent_d = parent != nullptr ? std::sqrt(parent->outer.d2) : 0.0;
+    const bool parent_nearest = parent != nullptr && parent->hole.distance <= parent_d;
+    const int ring = parent_nearest ? sources_.HoleAt(parent->hole.ring) : -1;
+    if (ring >= 0) {
+      found.hole = parent->hole;
+      found.hole.ring = ring;
+    } else if (parent != nullptr && !parent_nearest && d <= parent_d) {
+      found.hole = {};
+    } else {
+      found.hole = ClosestOnHoles(p, hole, d);
+    }
+    return found;
+  }
+
+ private:
+  // A tree over the outer vertices but [begin, end), whose ids count the others in order.
+  static internal::PointTree OuterTree(const Ring2d& ring, int begin, int end) {
+    std::vector<Point2d> points(ring.begin(), ring.begin() + begin);
+    points.insert(points.end(), ring.begin() + end, ring.end());
+    return internal::PointTree(points, {begin});
+  }
+  const internal::PointTree& WholeRing() {
+    if (!whole_ring_) whole_ring_.emplace(OuterTree(polygon_.outer, 0, 0));
+    return *whole_ring_;
+  }
+  const internal::PointTree& NewVertices() {
+    if (!new_vertices_) {
+      new_vertices_.emplace(OuterTree(polygon_.outer, sources_.NewBegin(), sources_.NewEnd()));
+    }
+    return *new_vertices_;
+  }
+
+  // Offers `nearest` the vertices of `tree` (an OuterTree() without [begin, end)) that may
+  // be as near to `p`.
+  static void Offer(const internal::PointTree& tree, int begin, int end, const Point2d& p,
+                    internal::NearestVertex* nearest) {
+    double radius = std::sqrt(nearest->d2);
+    tree.Search(p, &radius, [&](int id, double d2) {
+      nearest->Offer(id < begin ? id : id + end - begin, d2);
+      radius = std::sqrt(nearest->d2);
     });
-    return {best, best_d2};
   }
 
   // The closest vertex to `p` on a hole other than `skip`, ordered by distance, then ring, then
   // squared distance, then index: the scan's choice among the holes, if it lies within `limit`
   // (any vertex or none otherwise). The limit prunes the search from the start, which matters
   // because the vertices of hole `skip` lie nearest and are all passed over.
-  HoleLinkCandidate ClosestOnHoles(const Point2d& p, int skip, double limit) const {
-    HoleLinkCandidate best;
+  internal::HoleVertex ClosestOnHoles(const Point2d& p, int skip, double limit) {
+    if (!holes_) holes_.emplace(HoleTree());
+    internal::HoleVertex best;
     double radius = limit;
-    holes_.Search(p, &radius, [&](int id, double d2) {
+    holes_->Search(p, &radius, [&](int id, double d2) {
       const int ring = ring_[id];
       if (ring == skip) return;
       const double d = std::sqrt(d2);
@@ -192,26 +294,25 @@ class VertexSearch {
     return best;
   }
 
- private:
   // A tree over the vertices of all holes, runs split at each hole's first vertex.
-  static internal::PointTree HoleTree(const Polygon2d& polygon, std::vector<int>* ring,
-                                      std::vector<int>* index) {
+  internal::PointTree HoleTree() {
     std::vector<Point2d> points;
     std::vector<int> ring_begin;
-    for (int k = 0; k < static_cast<int>(polygon.holes.size()); ++k) {
+    for (int k = 0; k < static_cast<int>(polygon_.holes.size()); ++k) {
       ring_begin.push_back(static_cast<int>(points.size()));
-      for (int i = 0; i < static_cast<int>(polygon.holes[k].size()); ++i) {
-        points.push_back(polygon.holes[k][i]);
-        ring->push_back(k);
-        index->push_back(i);
+      for (int i = 0; i < static_cast<int>(polygon_.holes[k].size()); ++i) {
+        points.push_back(polygon_.holes[k][i]);
+        ring_.push_back(k);
+        index_.push_back(i);
       }
     }
     return internal::PointTree(points, ring_begin);
   }
 
-  internal::PointTree outer_;
+  const Polygon2d& polygon_;
+  const HoleSources& sources_;
+  std::optional<internal::PointTree> whole_ring_, new_vertices_, holes_;
   std::vector<int> ring_, index_;  // Per hole vertex of holes_: its hole and index.
-  internal::PointTree holes_;
 };
 
 // Where a hole meets the rest of the polygon: the vertex x of another ring closest to one of
@@ -229,33 +330,36 @@ struct HoleLink {
 // open (two holes closest to each other); see the loop below.
 std::vector<HoleConcavity> MeasureHoles(const Polygon2d& polygon,
                                         const std::vector<double>& outer_concavity, double delta,
-                                        const ConcavityOptions& options,
-                                        internal::PocketCache* cache) {
+                                        const ConcavityOptions& options, const HoleSources& sources,
+                                        std::vector<internal::HoleNeighbours>* found) {
   const int k = static_cast<int>(polygon.holes.size());
   std::vector<HoleConcavity> holes(k);
+  found->resize(k);
   if (k == 0) return holes;
   const bool geodesic = UseGeodesic(options);
   std::vector<HoleLink> nearest(k), nearest_outer(k);
-  const VertexSearch search(polygon);
+  VertexSearch search(polygon, sources);
   for (int i = 0; i < k; ++i) {
     const Ring2d& hole = polygon.holes[i];
-    const Antipodes* cached = cache != nullptr ? cache->FindAntipodes(hole) : nullptr;
-    const Antipodes pair = cached != nullptr ? *cached
-                           : geodesic        ? GeodesicAntipodes(hole)
-                                             : PrincipalAxisAntipodes(hole);
-    if (cache != nullptr && cached == nullptr) cache->InsertAntipodes(hole, pair);
+    const internal::HoleNeighbours* parent = sources.Parent(i);
+    internal::HoleNeighbours& mine = (*found)[i];
+    mine.antipodes = parent != nullptr ? parent->antipodes
+                     : geodesic        ? GeodesicAntipodes(hole)
+                                       : PrincipalAxisAntipodes(hole);
+    const Antipodes& pair = mine.antipodes;
     holes[i].p = pair.a;
     holes[i].cw_p = pair.b;
     holes[i].diameter = pair.distance;
     for (int end = 0; end < 2; ++end) {
       const Point2d& a = hole[end == 0 ? pair.a : pair.b];
-      const auto [x, d2] = search.ClosestOuter(a);
-      const double d = std::sqrt(d2);
+      const internal::AntipodeNeighbours& near = mine.ends[end] =
+          search.Find(a, i, parent != nullptr ? &parent->ends[end] : nullptr);
+      const int x = near.outer.vertex;
+      const double d = std::sqrt(near.outer.d2);
       // The outer ring comes first: a hole replaces it only when strictly closer.
-      const HoleLinkCandidate on_hole = search.ClosestOnHoles(a, i, d);
-      const HoleLink link = on_hole.distance < d
-                                ? HoleLink{on_hole.ring, on_hole.vertex, end, on_hole.distance}
-                                : HoleLink{-1, x, end, d};
+      const HoleLink link = near.hole.distance < d ? HoleLink{near.hole.ring, near.hole.vertex, end,
+                                                              near.hole.distance}
+                                                   : HoleLink{-1, x, end, d};
       if (link.distance < nearest[i].distance) nearest[i] = link;
       if (d < nearest_outer[i].distance) nearest_outer[i] = {-1, x, end, d};
     }
@@ -501,18 +605,6 @@ void PocketCache::Insert(const Ring2d& chain, std::vector<double> distances) {
   entries_.emplace(Hash(chain), Entry{chain, std::move(distances)});
 }
 
-const HoleAntipodes* PocketCache::FindAntipodes(const Ring2d& hole) const {
-  const auto [first, last] = antipodes_.equal_range(Hash(hole));
-  for (auto it = first; it != last; ++it) {
-    if (it->second.hole == hole) return &it->second.antipodes;
-  }
-  return nullptr;
-}
-
-void PocketCache::InsertAntipodes(const Ring2d& hole, const HoleAntipodes& antipodes) {
-  antipodes_.emplace(Hash(hole), AntipodesEntry{hole, antipodes});
-}
-
 namespace {
 
 // The concavity of the vertices of `pocket` for the measures beyond SL, given its SL distances
@@ -671,8 +763,9 @@ int FirstNotchAtTop(const Ring2d& ring, const Concavity2d& result, double top) {
 }
 
 // The witness notch and the holes, once result->outer and result->bridge_max are complete.
-void FinishMeasure(const Polygon2d& polygon, const ConcavityOptions& options, PocketCache* cache,
-                   Concavity2d* result) {
+void FinishMeasure(const Polygon2d& polygon, const ConcavityOptions& options,
+                   const HoleSources& sources, Concavity2d* result,
+                   std::vector<HoleNeighbours>* neighbours) {
   const Ring2d& ring = polygon.outer;
   // The maximum over notches only (Lemma C.2: the most concave point is a notch), the first
   // notch in ring order on equal concavity. The deepest vertex of a pocket is extreme in the
@@ -688,7 +781,9 @@ void FinishMeasure(const Polygon2d& polygon, const ConcavityOptions& options, Po
     FindWitnessNotch(ring, result);
   }
   const double delta = result->value;
-  result->holes = MeasureHoles(polygon, result->outer, delta, options, cache);
+  std::vector<HoleNeighbours> unused;
+  result->holes = MeasureHoles(polygon, result->outer, delta, options, sources,
+                               neighbours != nullptr ? neighbours : &unused);
   for (int i = 0; i < static_cast<int>(result->holes.size()); ++i) {
     if (result->holes[i].concavity >= result->value) {
       result->value = result->holes[i].concavity;
@@ -715,7 +810,8 @@ Concavity2d Recycled(Concavity2d* spare) {
 
 // MeasureConcavityCached() into `result`, empty.
 void MeasureWhole(const Polygon2d& polygon, const ConcavityOptions& options, PocketCache* cache,
-                  Concavity2d* result) {
+                  const HoleSources& sources, Concavity2d* result,
+                  std::vector<HoleNeighbours>* neighbours) {
   const Ring2d& ring = polygon.outer;
   result->outer.assign(ring.size(), 0.0);
   RingHull(ring, &result->hull);
@@ -725,30 +821,32 @@ void MeasureWhole(const Polygon2d& polygon, const ConcavityOptions& options, Poc
     result->bridge_max[k] = MeasureGap(ring, result->hull[k], result->hull[k + 1 == h ? 0 : k + 1],
                                        options, cache, result);
   }
-  FinishMeasure(polygon, options, cache, result);
+  FinishMeasure(polygon, options, sources, result, neighbours);
 }
 
 }  // namespace
 
 Concavity2d MeasureConcavityCached(const Polygon2d& polygon, const ConcavityOptions& options,
-                                   PocketCache* cache) {
+                                   PocketCache* cache, std::vector<HoleNeighbours>* neighbours) {
   Concavity2d result;
-  MeasureWhole(polygon, options, cache, &result);
+  MeasureWhole(polygon, options, cache, HoleSources(), &result, neighbours);
   return result;
 }
 
 Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& chain,
                                   const Ring2d& parent_ring, const Concavity2d& parent,
                                   const ConcavityOptions& options, PocketCache* cache,
-                                  Concavity2d* spare) {
+                                  Concavity2d* spare, const InheritedHoles& holes,
+                                  std::vector<HoleNeighbours>* neighbours) {
   Concavity2d result = Recycled(spare);
+  const int parent_n = static_cast<int>(parent.outer.size());
+  const HoleSources sources(piece, holes, chain, parent_n);
   auto measure_whole = [&] {
-    MeasureWhole(piece, options, cache, &result);
+    MeasureWhole(piece, options, cache, sources, &result, neighbours);
     return std::move(result);
   };
   const Ring2d& ring = piece.outer;
   const int n = static_cast<int>(ring.size());
-  const int parent_n = static_cast<int>(parent.outer.size());
   const int parent_h = static_cast<int>(parent.hull.size());
   if (chain.length < 2 || chain.begin < 0 || chain.begin + chain.length > n ||
       chain.length > parent_n || chain.parent_begin < 0 || chain.parent_begin >= parent_n ||
@@ -850,7 +948,7 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
                                         options, cache, &result);
     }
   }
-  FinishMeasure(piece, options, cache, &result);
+  FinishMeasure(piece, options, sources, &result, neighbours);
   return result;
 }
 

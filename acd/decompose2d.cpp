@@ -90,21 +90,25 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   const long budget = 4L * (VertexCount(polygon) + static_cast<long>(polygon.holes.size())) + 16;
   long splits = 0;
   internal::PocketCache cache;
-  // Pieces waiting to be resolved, depth first, with their measures: a piece is measured when
-  // it is cut from its parent, while the parent's measure is at hand to reuse
-  // (MeasureChildConcavity()).
+  // Pieces waiting to be resolved, depth first, with their measures and the searches behind
+  // their holes' links: a piece is measured when it is cut from its parent, while the parent's
+  // measure is at hand to reuse (MeasureChildConcavity()).
   struct Pending {
     int id;
     Concavity2d concavity;
+    std::vector<internal::HoleNeighbours> neighbours;
   };
-  std::vector<Pending> stack;
-  stack.push_back({root, internal::MeasureConcavityCached(polygon, measure, &cache)});
+  std::vector<Pending> stack(1);
+  stack[0].id = root;
+  stack[0].concavity =
+      internal::MeasureConcavityCached(polygon, measure, &cache, &stack[0].neighbours);
   // Measures done with: their storage serves the next pieces' (as many are done with as made).
   std::vector<Concavity2d> spares;
   std::vector<Ring2d> spare_rings;  // Likewise the outer rings of pieces split.
   while (!stack.empty()) {
     const int id = stack.back().id;
     Concavity2d concavity = std::move(stack.back().concavity);
+    const std::vector<internal::HoleNeighbours> neighbours = std::move(stack.back().neighbours);
     stack.pop_back();
     out->tree[id].concavity = concavity.value;
     if (IsAccepted(out->tree[id].piece, concavity, options)) {
@@ -139,9 +143,12 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
     for (int side = 1; side >= 0; --side) {  // Child 0 is processed first (depth-first order).
       const int child = static_cast<int>(out->tree.size());
       Concavity2d* spare = spares.empty() ? nullptr : &spares.back();
-      stack.push_back({child, internal::MeasureChildConcavity(
-                                  resolution.pieces[side], resolution.inherited[side],
-                                  out->tree[id].piece.outer, concavity, measure, &cache, spare)});
+      Pending& pending = stack.emplace_back();
+      pending.id = child;
+      pending.concavity = internal::MeasureChildConcavity(
+          resolution.pieces[side], resolution.inherited[side], out->tree[id].piece.outer, concavity,
+          measure, &cache, spare, {&neighbours, &resolution.hole_origins[side]},
+          &pending.neighbours);
       if (spare != nullptr) spares.pop_back();
       HierarchyNode2d node;
       node.piece = std::move(resolution.pieces[side]);

@@ -795,7 +795,8 @@ void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b,
 // rounding noise of the ring (never the case for a valid cut) is decided by CGAL's exact
 // bounded_side_2 instead.
 void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
-                     std::array<Polygon2d, 2>* pieces) {
+                     Resolution* resolution) {
+  std::array<Polygon2d, 2>* const pieces = &resolution->pieces;
   if (polygon.holes.size() <= skip.size()) return;
   const int tested = (*pieces)[0].outer.size() <= (*pieces)[1].outer.size() ? 0 : 1;
   const Ring2d& ring = (*pieces)[tested].outer;
@@ -846,16 +847,19 @@ void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
       inside = CGAL::bounded_side_2(boundary.begin(), boundary.end(), ToCgal(q.point), Kernel()) ==
                CGAL::ON_BOUNDED_SIDE;
     }
-    (*pieces)[inside ? tested : 1 - tested].holes.push_back(polygon.holes[q.hole]);
+    const int side = inside ? tested : 1 - tested;
+    (*pieces)[side].holes.push_back(polygon.holes[q.hole]);
+    resolution->hole_origins[side].push_back(q.hole);
   }
 }
 
 // Empties resolution->pieces, keeping their outer rings' storage (Decompose2d() hands in that
 // of pieces split before).
 void ClearPieces(Resolution* resolution) {
-  for (Polygon2d& piece : resolution->pieces) {
-    piece.outer.clear();
-    piece.holes.clear();
+  for (int side = 0; side < 2; ++side) {
+    resolution->pieces[side].outer.clear();
+    resolution->pieces[side].holes.clear();
+    resolution->hole_origins[side].clear();
   }
 }
 
@@ -867,7 +871,7 @@ void SplitAlong(const Polygon2d& polygon, const Endpoint& from, const Endpoint& 
     AppendOuterChain(polygon.outer, side == 0 ? from : to, side == 0 ? to : from,
                      &resolution->pieces[side].outer, &resolution->inherited[side]);
   }
-  DistributeHoles(polygon, {}, &resolution->pieces);
+  DistributeHoles(polygon, {}, resolution);
 }
 
 // Whether both pieces' outer rings are simple, exactly.
@@ -963,7 +967,7 @@ void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x,
   AppendChain(hole, b, a, &resolution->pieces[0].outer);
   AppendOuterChain(polygon.outer, y, x, &resolution->pieces[1].outer, &resolution->inherited[1]);
   AppendChain(hole, a, b, &resolution->pieces[1].outer);
-  DistributeHoles(polygon, {h}, &resolution->pieces);
+  DistributeHoles(polygon, {h}, resolution);
   resolution->cuts = {{hole[a], x.point}, {hole[b], y.point}};
   resolution->witness = hole[a];
 }
@@ -999,7 +1003,7 @@ void SplitAlongPath(const Polygon2d& polygon, const HolePath& path, const Point2
   }
   std::vector<int> crossed;
   for (const HoleCrossing& c : path.holes) crossed.push_back(c.hole);
-  DistributeHoles(polygon, crossed, &resolution->pieces);
+  DistributeHoles(polygon, crossed, resolution);
   resolution->cuts.clear();
   Point2d from = path.x.point;
   for (const HoleCrossing& c : path.holes) {

@@ -37,6 +37,8 @@ struct Resolution {
   std::array<Polygon2d, 2> pieces;
   /// Per piece, the outer vertices it copies from the resolved polygon's outer ring.
   std::array<InheritedChain, 2> inherited;
+  /// Per piece, per hole, the resolved polygon's hole it copies (increasing).
+  std::array<std::vector<int>, 2> hole_origins;
   std::vector<Cut2d> cuts;
   Point2d witness;  ///< The feature resolved.
 };

@@ -11,6 +11,7 @@
 #include "acd/internal/resolve.h"
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
+#include "base/random.h"
 #include "tests/data_paths.h"
 
 namespace acdplan::acd {
@@ -25,13 +26,17 @@ void ExpectSameMeasure(const Concavity2d& full, const Concavity2d& child, const 
   EXPECT_EQ(full.witness_hole, child.witness_hole) << what;
   ASSERT_EQ(full.holes.size(), child.holes.size()) << what;
   for (size_t k = 0; k < full.holes.size(); ++k) {
+    EXPECT_EQ(full.holes[k].p, child.holes[k].p) << what << " hole " << k;
+    EXPECT_EQ(full.holes[k].cw_p, child.holes[k].cw_p) << what << " hole " << k;
+    EXPECT_EQ(full.holes[k].diameter, child.holes[k].diameter) << what << " hole " << k;
+    EXPECT_EQ(full.holes[k].depth, child.holes[k].depth) << what << " hole " << k;
     EXPECT_EQ(full.holes[k].concavity, child.holes[k].concavity) << what << " hole " << k;
   }
 }
 
 // Cuts `polygon` as Decompose2d() does (the witness first, depth first, until convex or
-// `max_splits`) and compares each piece's incremental measure with a full one. Returns the
-// number of pieces compared.
+// `max_splits`) and compares each piece's incremental measure, which inherits the parent's hole
+// searches, with a full one. Returns the number of pieces compared.
 int CompareAlongDecomposition(const Polygon2d& polygon, const ConcavityOptions& measure,
                               int max_splits) {
   internal::ResolveOptions resolve;
@@ -39,8 +44,12 @@ int CompareAlongDecomposition(const Polygon2d& polygon, const ConcavityOptions& 
   struct Pending {
     Polygon2d piece;
     Concavity2d concavity;
+    std::vector<internal::HoleNeighbours> neighbours;
   };
-  std::vector<Pending> stack = {{polygon, MeasureConcavity(polygon, measure)}};
+  std::vector<Pending> stack(1);
+  stack[0].piece = polygon;
+  stack[0].concavity =
+      internal::MeasureConcavityCached(polygon, measure, nullptr, &stack[0].neighbours);
   int compared = 0;
   for (int splits = 0; !stack.empty() && splits < max_splits; ++splits) {
     Pending top = std::move(stack.back());
@@ -61,12 +70,24 @@ int CompareAlongDecomposition(const Polygon2d& polygon, const ConcavityOptions& 
         const int from = (chain.parent_begin + k) % static_cast<int>(top.piece.outer.size());
         EXPECT_EQ(piece.outer[chain.begin + k], top.piece.outer[from]) << "split " << splits;
       }
+      // So do the holes.
+      const std::vector<int>& origins = resolution.hole_origins[side];
+      EXPECT_EQ(origins.size(), piece.holes.size());
+      for (size_t k = 0; k < origins.size() && k < piece.holes.size(); ++k) {
+        const bool known = origins[k] < static_cast<int>(top.piece.holes.size());
+        EXPECT_TRUE(known) << "split " << splits;
+        if (known) {
+          EXPECT_EQ(piece.holes[k], top.piece.holes[origins[k]]) << "split " << splits;
+        }
+      }
+      std::vector<internal::HoleNeighbours> neighbours;
       Concavity2d child = internal::MeasureChildConcavity(piece, chain, top.piece.outer,
-                                                          top.concavity, measure, nullptr);
+                                                          top.concavity, measure, nullptr, nullptr,
+                                                          {&top.neighbours, &origins}, &neighbours);
       ExpectSameMeasure(MeasureConcavity(piece, measure), child,
                         "split " + std::to_string(splits) + " side " + std::to_string(side));
       ++compared;
-      stack.push_back({piece, std::move(child)});
+      stack.push_back({piece, std::move(child), std::move(neighbours)});
     }
   }
   return compared;
@@ -87,6 +108,91 @@ TEST(ChildConcavityTest, EqualsAFullMeasureOnEveryPieceOfRealPolygons) {
       EXPECT_GT(CompareAlongDecomposition(polygons.front(), measure, 120), 20);
     }
   }
+}
+
+// Holes in exact rows and columns, as on grid maps and in clipped tiles: an antipode lies as
+// near to several vertices of the outer ring or of other holes, which is where a piece may
+// order them differently from its parent. Square holes on an integer lattice, and the same
+// lattice with the holes' corners jittered (ties only in places), under a saw-tooth edge.
+TEST(ChildConcavityTest, InheritedHoleSearchesEqualFreshOnesOnLatticesOfHoles) {
+  for (const double jitter : {0.0, 0.3}) {
+    RandomEngine rng(11);
+    auto wiggle = [&] { return jitter * static_cast<double>(UniformIndex(rng, 9)) / 8.0; };
+    Polygon2d polygon;
+    polygon.outer = {{0, 0}, {36, 0}};
+    for (int i = 0; i <= 12; ++i) polygon.outer.emplace_back(36 - 3 * i, i % 2 == 0 ? 36 : 37);
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j < 6; ++j) {
+        const double x = 6 * i + 2, y = 6 * j + 2;
+        // Clockwise.
+        polygon.holes.push_back({{x + wiggle(), y + wiggle()},
+                                 {x + wiggle(), y + 2 + wiggle()},
+                                 {x + 2 + wiggle(), y + 2 + wiggle()},
+                                 {x + 2 + wiggle(), y + wiggle()}});
+      }
+    }
+    for (const ConcavityMeasure m : {ConcavityMeasure::kStraightLine,
+                                     ConcavityMeasure::kShortestPath, ConcavityMeasure::kHybrid2}) {
+      ConcavityOptions measure;
+      measure.measure = m;
+      measure.tau = 0.01 * ReferenceRadius(polygon);
+      SCOPED_TRACE("jitter " + std::to_string(jitter) + " measure " +
+                   std::to_string(static_cast<int>(m)));
+      EXPECT_GT(CompareAlongDecomposition(polygon, measure, 200), 60);
+    }
+  }
+}
+
+// An antipode of a hole, (3, 5), lies 5 from two outer vertices: the parent's 0, on its hull,
+// and 2, a notch. The parent links to vertex 0, the lower index; the piece copies both, but
+// its ring starts at the notch, so it links there, and the hole sits deeper by the notch's
+// concavity. The tie must send the piece to a search of its own.
+TEST(ChildConcavityTest, AntipodeAsNearToTwoOuterVerticesOfTheParent) {
+  const Polygon2d parent_polygon{{{0, 1}, {1, -3}, {3, 0}, {5, -3}, {12, -3}, {12, 10}, {0, 10}},
+                                 {{{3, 5}, {5, 5.2}, {7, 5}, {5, 4.8}}}};
+  ConcavityOptions measure;
+  measure.measure = ConcavityMeasure::kStraightLine;
+  std::vector<internal::HoleNeighbours> neighbours;
+  const Concavity2d parent =
+      internal::MeasureConcavityCached(parent_polygon, measure, nullptr, &neighbours);
+  ASSERT_EQ(neighbours.size(), 1u);
+  EXPECT_EQ(parent.holes[0].depth, 5.0);
+  // The cut from notch 2 to (0.5, -1) on the edge 0 -> 1; the piece copies parent vertices
+  // 2 ... 6, 0.
+  const Polygon2d piece{{{3, 0}, {5, -3}, {12, -3}, {12, 10}, {0, 10}, {0, 1}, {0.5, -1}},
+                        parent_polygon.holes};
+  const std::vector<int> origins = {0};
+  const Concavity2d child =
+      internal::MeasureChildConcavity(piece, {0, 2, 6}, parent_polygon.outer, parent, measure,
+                                      nullptr, nullptr, {&neighbours, &origins});
+  ExpectSameMeasure(MeasureConcavity(piece, measure), child, "piece");
+  EXPECT_EQ(child.holes[0].depth, child.outer[0] + 5.0);
+  EXPECT_GT(child.outer[0], 0.0);
+}
+
+// Hole 0's antipode (10, 5) lies 1 from the parent's spike tip (10, 4) and 1.5 from hole 1:
+// the parent links it to the tip, and its search, bounded by 1, saw no hole. The piece loses the
+// tip; its nearest outer vertices lie 5.1 away, so hole 1 is now the nearer, which the parent's
+// search could not know.
+TEST(ChildConcavityTest, AHoleNearerThanTheOuterVertexTheCutRemoved) {
+  const Polygon2d parent_polygon{
+      {{0, 0}, {9, 0}, {10, 4}, {11, 0}, {20, 0}, {20, 10}, {0, 10}},
+      {{{10, 5}, {12, 5.2}, {14, 5}, {12, 4.8}}, {{5, 5}, {6.75, 5.2}, {8.5, 5}, {6.75, 4.8}}}};
+  ConcavityOptions measure;
+  measure.measure = ConcavityMeasure::kStraightLine;
+  std::vector<internal::HoleNeighbours> neighbours;
+  const Concavity2d parent =
+      internal::MeasureConcavityCached(parent_polygon, measure, nullptr, &neighbours);
+  ASSERT_EQ(neighbours.size(), 2u);
+  // The cut (9, 0) - (11, 0) takes off the spike; the piece copies parent vertices 3 ... 6, 0, 1.
+  const Polygon2d piece{{{11, 0}, {20, 0}, {20, 10}, {0, 10}, {0, 0}, {9, 0}},
+                        parent_polygon.holes};
+  const std::vector<int> origins = {0, 1};
+  const Concavity2d child =
+      internal::MeasureChildConcavity(piece, {0, 3, 6}, parent_polygon.outer, parent, measure,
+                                      nullptr, nullptr, {&neighbours, &origins});
+  ExpectSameMeasure(MeasureConcavity(piece, measure), child, "piece");
+  EXPECT_EQ(child.holes[0].depth, child.holes[1].concavity + 1.5);
 }
 
 // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-cut-end-outside-parent-
