@@ -62,10 +62,37 @@ Point2d WitnessPoint(const Polygon2d& piece, const Concavity2d& concavity) {
   return piece.outer.front();
 }
 
-// Algorithm 1 (or 9) on one input polygon, appending its nodes and leaves to `out` and the
-// leaves' areas to `areas`.
+// What Decompose2d() keeps of the leaves besides their Component2d: per leaf its area, for the
+// statistics, and its outer edges on cuts, for the openings (FindOpenings()).
+struct LeafExtras {
+  std::vector<double> areas;
+  std::vector<internal::CutEdge> cut_edges;
+  std::vector<int> first_cut_edge{0};
+};
+
+// The outer edges on cuts of a piece cut from node `id`, by edge: those of the parent
+// (`parent`, of a ring of `parent_n` vertices) that it keeps, then the cuts' own.
+void PieceCutEdges(const std::vector<internal::CutEdge>& parent, int parent_n, int id,
+                   const internal::PieceEdges& edges, std::vector<internal::CutEdge>* cut_edges) {
+  cut_edges->clear();
+  const int f = edges.first_outer_edge;
+  auto keep = [&](const internal::CutEdge& e, int t) {
+    if (t < edges.outer_count) cut_edges->push_back({t, e.node, e.cut});
+  };
+  // The piece's edge t lies on the parent's edge f + t (cyclically): from f on first.
+  for (const internal::CutEdge& e : parent) {
+    if (e.edge >= f) keep(e, e.edge - f);
+  }
+  for (const internal::CutEdge& e : parent) {
+    if (e.edge < f) keep(e, e.edge + parent_n - f);
+  }
+  for (const auto& [edge, cut] : edges.cuts) cut_edges->push_back({edge, id, cut});
+}
+
+// Algorithm 1 (or 9) on one input polygon, appending its nodes and leaves to `out` and what
+// else is kept of the leaves to `leaves`.
 void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions& options,
-                  Decomposition2d* out, std::vector<double>* areas) {
+                  Decomposition2d* out, LeafExtras* leaves) {
   const ConcavityOptions measure{options.measure, options.hole_diameter, options.tau};
   internal::ResolveOptions resolve;
   resolve.score_concavity = options.score_concavity;
@@ -90,13 +117,14 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   const long budget = 4L * (VertexCount(polygon) + static_cast<long>(polygon.holes.size())) + 16;
   long splits = 0;
   internal::PocketCache cache;
-  // Pieces waiting to be resolved, depth first, with their measures and the searches behind
-  // their holes' links: a piece is measured when it is cut from its parent, while the parent's
-  // measure is at hand to reuse (MeasureChildConcavity()).
+  // Pieces waiting to be resolved, depth first, with their measures, the searches behind their
+  // holes' links and the cuts their edges lie on: a piece is measured when it is cut from its
+  // parent, while the parent's measure is at hand to reuse (MeasureChildConcavity()).
   struct Pending {
     int id;
     Concavity2d concavity;
     std::vector<internal::HoleNeighbours> neighbours;
+    std::vector<internal::CutEdge> cut_edges;
   };
   std::vector<Pending> stack(1);
   stack[0].id = root;
@@ -104,11 +132,15 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
       internal::MeasureConcavityCached(polygon, measure, &cache, &stack[0].neighbours);
   // Measures done with: their storage serves the next pieces' (as many are done with as made).
   std::vector<Concavity2d> spares;
-  std::vector<Ring2d> spare_rings;  // Likewise the outer rings of pieces split.
+  std::vector<Ring2d> spare_rings;  // Likewise the outer rings of pieces split,
+  std::vector<std::vector<internal::CutEdge>> spare_cut_edges;  // and their edges on cuts.
+  // Kept for the storage of what it holds besides the pieces.
+  internal::Resolution resolution;
   while (!stack.empty()) {
     const int id = stack.back().id;
     Concavity2d concavity = std::move(stack.back().concavity);
     const std::vector<internal::HoleNeighbours> neighbours = std::move(stack.back().neighbours);
+    std::vector<internal::CutEdge> cut_edges = std::move(stack.back().cut_edges);
     stack.pop_back();
     out->tree[id].concavity = concavity.value;
     if (IsAccepted(out->tree[id].piece, concavity, options)) {
@@ -117,7 +149,10 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
       node.witness = WitnessPoint(node.piece, concavity);
       double area = 0.0;
       const Point2d centroid = internal::CentroidAndArea(node.piece, &area);
-      areas->push_back(area);
+      leaves->areas.push_back(area);
+      leaves->cut_edges.insert(leaves->cut_edges.end(), cut_edges.begin(), cut_edges.end());
+      leaves->first_cut_edge.push_back(static_cast<int>(leaves->cut_edges.size()));
+      spare_cut_edges.push_back(std::move(cut_edges));
       Ring2d hull = HullOf(node.piece.outer, concavity.hull);
       out->components.push_back(
           {options.keep_pieces || id == root ? node.piece : std::move(node.piece), std::move(hull),
@@ -125,7 +160,6 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
       spares.push_back(std::move(concavity));
       continue;
     }
-    internal::Resolution resolution;
     for (Polygon2d& piece : resolution.pieces) {
       if (spare_rings.empty()) break;
       piece.outer = std::move(spare_rings.back());
@@ -150,6 +184,12 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
           measure, &cache, spare, {&neighbours, &resolution.hole_origins[side]},
           &pending.neighbours);
       if (spare != nullptr) spares.pop_back();
+      if (!spare_cut_edges.empty()) {
+        pending.cut_edges = std::move(spare_cut_edges.back());
+        spare_cut_edges.pop_back();
+      }
+      PieceCutEdges(cut_edges, static_cast<int>(out->tree[id].piece.outer.size()), id,
+                    resolution.edges[side], &pending.cut_edges);
       HierarchyNode2d node;
       node.piece = std::move(resolution.pieces[side]);
       node.parent = id;
@@ -162,6 +202,7 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
       out->tree[id].piece = Polygon2d{};
     }
     spares.push_back(std::move(concavity));
+    spare_cut_edges.push_back(std::move(cut_edges));
   }
 }
 
@@ -175,17 +216,17 @@ Decomposition2d Decompose2d(const std::vector<Polygon2d>& polygons,
   out.tau = options.tau;
   out.min_convexity = options.min_convexity;
   const Stopwatch stopwatch;
-  std::vector<double> areas;  // Per component.
+  LeafExtras leaves;
   for (int i = 0; i < static_cast<int>(polygons.size()); ++i) {
-    DecomposeOne(polygons[i], i, options, &out, &areas);
+    DecomposeOne(polygons[i], i, options, &out, &leaves);
   }
-  out.openings = internal::FindOpenings(out);
+  out.openings = internal::FindOpenings(out, leaves.cut_edges, leaves.first_cut_edge);
   out.stats.time_ms = stopwatch.Milliseconds();
 
   double area = 0.0, hull_area = 0.0;
   for (size_t k = 0; k < out.components.size(); ++k) {
     const Component2d& c = out.components[k];
-    area += areas[k];
+    area += leaves.areas[k];
     hull_area += std::abs(SignedArea(c.hull));
     out.stats.max_concavity = std::max(out.stats.max_concavity, c.concavity);
   }

@@ -13,64 +13,34 @@ struct Interval {
   int component;
 };
 
-// The bounding box of a ring.
-struct Box {
-  Point2d min, max;
+// A cut as a parameter line: t = 0 at `from`, 1 at `to`.
+struct CutFrame {
+  Point2d from, unit;
+  double length, tolerance;
 };
-Box BoxOf(const Ring2d& ring) {
-  Box box{ring.front(), ring.front()};
-  for (const Point2d& p : ring) {
-    box.min = box.min.cwiseMin(p);
-    box.max = box.max.cwiseMax(p);
-  }
-  return box;
-}
 
-// The parameter intervals, along cut `from` -> `to`, of outer edges of components
-// [first, last) that lie on the cut, into `intervals`. `boxes`: the components' outer boxes;
-// one that keeps clear of the cut by more than the tolerance has no edge on it.
-void IntervalsOnCut(const Decomposition2d& d, const std::vector<Box>& boxes, const Cut2d& cut,
-                    int first, int last, std::vector<Interval>* intervals) {
-  intervals->clear();
+CutFrame FrameOf(const Cut2d& cut) {
   const Point2d axis = cut.to - cut.from;
   const double length = axis.norm();
-  if (length == 0.0) return;
-  const Point2d unit = axis / length;
-  // An edge lies on the cut when its ends do to within rounding: the cut's own ends, and points
-  // later cuts constructed on it, are off its line by a few ulps of the coordinates. Not more: a
-  // later cut from one end to a point 1e-8 beside the other (fuzz_decompose2d) runs 1e-3 rad
-  // off this one, and its piece, which touches this cut at that end alone, was paired across it.
+  // The cut's own ends, and points later cuts constructed on it, are off its line by a few ulps
+  // of the coordinates: intervals shorter than that are no part of it.
   const double scale = std::max({length, MaxAbs(cut.from), MaxAbs(cut.to)});
-  const double tolerance = kRoundingNoise * scale;
-  const Point2d pad = Point2d::Constant(2.0 * tolerance);
-  const Point2d cut_min = cut.from.cwiseMin(cut.to) - pad;
-  const Point2d cut_max = cut.from.cwiseMax(cut.to) + pad;
-  for (int c = first; c < last; ++c) {
-    const Box& box = boxes[c];
-    if ((box.min.array() > cut_max.array()).any() || (box.max.array() < cut_min.array()).any()) {
-      continue;
-    }
-    const Ring2d& ring = d.components[c].polygon.outer;
-    const size_t n = ring.size();
-    // Each vertex's offset from the cut's line is computed once, for both of its edges.
-    auto offset = [&unit](const Point2d& v) { return unit.x() * v.y() - unit.y() * v.x(); };
-    Point2d next = ring[0] - cut.from;
-    double off_next = offset(next);
-    for (size_t i = 0; i < n; ++i) {  // Edge u -> w, relative to the cut's start.
-      const Point2d u = next;
-      const bool u_on_line = std::abs(off_next) <= tolerance;
-      const Point2d w = next = ring[i + 1 == n ? 0 : i + 1] - cut.from;
-      off_next = offset(w);
-      if (!u_on_line || std::abs(off_next) > tolerance) continue;
-      double t0 = u.dot(unit) / length, t1 = w.dot(unit) / length;
-      if (t0 > t1) std::swap(t0, t1);
-      t0 = std::max(t0, 0.0);
-      t1 = std::min(t1, 1.0);
-      if ((t1 - t0) * length > tolerance) intervals->push_back({t0, t1, c});
-    }
-  }
-  std::sort(intervals->begin(), intervals->end(),
-            [](const Interval& a, const Interval& b) { return a.t0 < b.t0; });
+  return {cut.from, length > 0.0 ? Point2d(axis / length) : Point2d::Zero(), length,
+          kRoundingNoise * scale};
+}
+
+// The parameter interval of edge u -> w, which lies on the cut, clipped to the cut; false if
+// nothing of it is left.
+bool IntervalOf(const CutFrame& frame, const Point2d& u, const Point2d& w, Interval* interval) {
+  if (frame.length == 0.0) return false;
+  double t0 = (u - frame.from).dot(frame.unit) / frame.length;
+  double t1 = (w - frame.from).dot(frame.unit) / frame.length;
+  if (t0 > t1) std::swap(t0, t1);
+  t0 = std::max(t0, 0.0);
+  t1 = std::min(t1, 1.0);
+  interval->t0 = t0;
+  interval->t1 = t1;
+  return (t1 - t0) * frame.length > frame.tolerance;
 }
 
 // First and one-past-last component index of the leaves below `node` (leaves are numbered in
@@ -84,22 +54,54 @@ std::pair<int, int> LeafRange(const Decomposition2d& d, int node) {
 
 }  // namespace
 
-std::vector<Opening2d> FindOpenings(const Decomposition2d& d) {
+std::vector<Opening2d> FindOpenings(const Decomposition2d& d, const std::vector<CutEdge>& cut_edges,
+                                    const std::vector<int>& first) {
+  // The cuts in node order, node `id`'s from first_cut[id] on.
+  std::vector<int> first_cut(d.tree.size() + 1, 0);
+  std::vector<CutFrame> frames;
+  for (size_t id = 0; id < d.tree.size(); ++id) {
+    first_cut[id + 1] = first_cut[id] + static_cast<int>(d.tree[id].cuts.size());
+    for (const Cut2d& cut : d.tree[id].cuts) frames.push_back(FrameOf(cut));
+  }
+  // The intervals of the leaf edges on each cut, in component and edge order; those of cut k
+  // from begin[k] on (counted first, then filled).
+  std::vector<int> begin(frames.size() + 1, 0);
+  for (const CutEdge& e : cut_edges) ++begin[first_cut[e.node] + e.cut + 1];
+  for (size_t k = 0; k < frames.size(); ++k) begin[k + 1] += begin[k];
+  std::vector<int> end(begin.begin(), begin.end() - 1);
+  std::vector<Interval> intervals(begin.back());
+  for (int c = 0; c < static_cast<int>(d.components.size()); ++c) {
+    const Ring2d& ring = d.components[c].polygon.outer;
+    const int n = static_cast<int>(ring.size());
+    for (int j = first[c]; j < first[c + 1]; ++j) {
+      const CutEdge& e = cut_edges[j];
+      const int k = first_cut[e.node] + e.cut;
+      Interval& interval = intervals[end[k]];
+      if (IntervalOf(frames[k], ring[e.edge], ring[e.edge + 1 == n ? 0 : e.edge + 1], &interval)) {
+        interval.component = c;
+        ++end[k];
+      }
+    }
+  }
   std::vector<Opening2d> openings;
-  std::vector<Box> boxes;
-  boxes.reserve(d.components.size());
-  for (const Component2d& c : d.components) boxes.push_back(BoxOf(c.polygon.outer));
   std::vector<Interval> left, right;  // Per cut; kept for their capacity.
   std::vector<Opening2d> found;
+  auto by_start = [](const Interval& a, const Interval& b) { return a.t0 < b.t0; };
   for (int id = 0; id < static_cast<int>(d.tree.size()); ++id) {
     const HierarchyNode2d& node = d.tree[id];
     if (node.children[0] < 0) continue;
     const auto [a0, a1] = LeafRange(d, node.children[0]);
-    const auto [b0, b1] = LeafRange(d, node.children[1]);
-    for (const Cut2d& cut : node.cuts) {
-      IntervalsOnCut(d, boxes, cut, a0, a1, &left);
-      IntervalsOnCut(d, boxes, cut, b0, b1, &right);
-      const double length = (cut.to - cut.from).norm();
+    for (int k = first_cut[id]; k < first_cut[id + 1]; ++k) {
+      left.clear();
+      right.clear();
+      for (int j = begin[k]; j < end[k]; ++j) {
+        const Interval& interval = intervals[j];
+        (a0 <= interval.component && interval.component < a1 ? left : right).push_back(interval);
+      }
+      std::sort(left.begin(), left.end(), by_start);
+      std::sort(right.begin(), right.end(), by_start);
+      const Cut2d& cut = node.cuts[k - first_cut[id]];
+      const double length = frames[k].length;
       const double tolerance = 1e-9 * std::max(1.0, length);
       found.clear();
       double last_t1 = 0.0;

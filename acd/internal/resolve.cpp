@@ -751,23 +751,27 @@ std::vector<Candidate> NearestCandidates(const Polygon2d& polygon, const Point2d
   return candidates;
 }
 
-// The ring `ring` from index `from` forward to index `to`, both included.
-template <typename Ring>
-void AppendChain(const Ring& ring, int from, int to, Ring* out) {
-  const int n = static_cast<int>(ring.size());
-  out->reserve(out->size() + (to - from + n) % n + 1);
+// Appends hole `h` of `polygon` from index `from` forward to index `to`, both included, to
+// `ring`; the edge from there on lies on cut `cut_after`.
+void AppendHoleChain(const Polygon2d& polygon, int h, int from, int to, int cut_after, Ring2d* ring,
+                     PieceEdges* edges) {
+  const Ring2d& hole = polygon.holes[h];
+  const int n = static_cast<int>(hole.size());
+  ring->reserve(ring->size() + (to - from + n) % n + 1);
   for (int i = from;; i = Next(i, n)) {
-    out->push_back(ring[i]);
+    ring->push_back(hole[i]);
     if (i == to) break;
   }
+  edges->cuts.push_back({static_cast<int>(ring->size()) - 1, cut_after});
 }
 
 // Appends the outer ring from cut end `a` forward to cut end `b`, both included, to `ring`,
-// an empty ring, and sets `chain` to the outer vertices it copies. Ends are ordered along the
-// ring by position: vertex k at 2k, a point on edge k at 2k + 1 (two ends on one edge never
-// occur: such a cut would run along the edge).
-void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b, Ring2d* ring,
-                      InheritedChain* chain) {
+// an empty ring; the edge from there on lies on cut `cut_after`. Sets `chain` to the outer
+// vertices it copies and `edges` to where the edges lie. Ends are ordered along the ring by
+// position: vertex k at 2k, a point on edge k at 2k + 1 (two ends on one edge never occur: such
+// a cut would run along the edge).
+void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b, int cut_after,
+                      Ring2d* ring, InheritedChain* chain, PieceEdges* edges) {
   const int n = static_cast<int>(outer.size());
   const int pos_a = 2 * a.index + (a.on_edge ? 1 : 0);
   const int pos_b = 2 * b.index + (b.on_edge ? 1 : 0);
@@ -781,6 +785,10 @@ void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b,
   ring->insert(ring->end(), outer.begin() + first, outer.begin() + first + run);
   ring->insert(ring->end(), outer.begin(), outer.begin() + (between - run));
   ring->push_back(b.on_edge ? b.point : outer[b.index]);
+  // Edge t from a lies on outer edge a.index + t (the first only in part if a is on it).
+  edges->first_outer_edge = a.index;
+  edges->outer_count = between + 1;
+  edges->cuts.assign(1, {between + 1, cut_after});
   chain->begin = a.on_edge ? 1 : 0;
   chain->parent_begin = a.on_edge ? first : a.index;
   chain->length = between + (a.on_edge ? 0 : 1) + (b.on_edge ? 0 : 1);
@@ -860,6 +868,7 @@ void ClearPieces(Resolution* resolution) {
     resolution->pieces[side].outer.clear();
     resolution->pieces[side].holes.clear();
     resolution->hole_origins[side].clear();
+    resolution->edges[side].cuts.clear();
   }
 }
 
@@ -868,8 +877,9 @@ void SplitAlong(const Polygon2d& polygon, const Endpoint& from, const Endpoint& 
                 Resolution* resolution) {
   ClearPieces(resolution);
   for (int side = 0; side < 2; ++side) {
-    AppendOuterChain(polygon.outer, side == 0 ? from : to, side == 0 ? to : from,
-                     &resolution->pieces[side].outer, &resolution->inherited[side]);
+    AppendOuterChain(polygon.outer, side == 0 ? from : to, side == 0 ? to : from, 0,
+                     &resolution->pieces[side].outer, &resolution->inherited[side],
+                     &resolution->edges[side]);
   }
   DistributeHoles(polygon, {}, resolution);
 }
@@ -962,11 +972,14 @@ void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x,
                       const Endpoint& y, Resolution* resolution) {
   const Ring2d& hole = polygon.holes[h];
   ClearPieces(resolution);
-  // Piece 0: outer x..y, cut to b, hole b..a (forward keeps the interior on the left), cut to x.
-  AppendOuterChain(polygon.outer, x, y, &resolution->pieces[0].outer, &resolution->inherited[0]);
-  AppendChain(hole, b, a, &resolution->pieces[0].outer);
-  AppendOuterChain(polygon.outer, y, x, &resolution->pieces[1].outer, &resolution->inherited[1]);
-  AppendChain(hole, a, b, &resolution->pieces[1].outer);
+  // Piece 0: outer x..y, cut 1 to b, hole b..a (forward keeps the interior on the left), cut 0
+  // to x; piece 1 the other way round.
+  Polygon2d* const pieces = resolution->pieces.data();
+  PieceEdges* const edges = resolution->edges.data();
+  AppendOuterChain(polygon.outer, x, y, 1, &pieces[0].outer, &resolution->inherited[0], &edges[0]);
+  AppendHoleChain(polygon, h, b, a, 0, &pieces[0].outer, &edges[0]);
+  AppendOuterChain(polygon.outer, y, x, 0, &pieces[1].outer, &resolution->inherited[1], &edges[1]);
+  AppendHoleChain(polygon, h, a, b, 1, &pieces[1].outer, &edges[1]);
   DistributeHoles(polygon, {h}, resolution);
   resolution->cuts = {{hole[a], x.point}, {hole[b], y.point}};
   resolution->witness = hole[a];
@@ -991,15 +1004,21 @@ struct HolePath {
 void SplitAlongPath(const Polygon2d& polygon, const HolePath& path, const Point2d& witness,
                     Resolution* resolution) {
   ClearPieces(resolution);
-  AppendOuterChain(polygon.outer, path.x, path.y, &resolution->pieces[0].outer,
-                   &resolution->inherited[0]);
-  for (auto it = path.holes.rbegin(); it != path.holes.rend(); ++it) {
-    AppendChain(polygon.holes[it->hole], it->leave, it->enter, &resolution->pieces[0].outer);
+  // Cut i ends at the i-th hole crossed (cut m, the last, at y).
+  const int m = static_cast<int>(path.holes.size());
+  Polygon2d* const pieces = resolution->pieces.data();
+  PieceEdges* const edges = resolution->edges.data();
+  AppendOuterChain(polygon.outer, path.x, path.y, m, &pieces[0].outer, &resolution->inherited[0],
+                   &edges[0]);
+  for (int i = m - 1; i >= 0; --i) {
+    const HoleCrossing& c = path.holes[i];
+    AppendHoleChain(polygon, c.hole, c.leave, c.enter, i, &pieces[0].outer, &edges[0]);
   }
-  AppendOuterChain(polygon.outer, path.y, path.x, &resolution->pieces[1].outer,
-                   &resolution->inherited[1]);
-  for (const HoleCrossing& c : path.holes) {
-    AppendChain(polygon.holes[c.hole], c.enter, c.leave, &resolution->pieces[1].outer);
+  AppendOuterChain(polygon.outer, path.y, path.x, 0, &pieces[1].outer, &resolution->inherited[1],
+                   &edges[1]);
+  for (int i = 0; i < m; ++i) {
+    const HoleCrossing& c = path.holes[i];
+    AppendHoleChain(polygon, c.hole, c.enter, c.leave, i + 1, &pieces[1].outer, &edges[1]);
   }
   std::vector<int> crossed;
   for (const HoleCrossing& c : path.holes) crossed.push_back(c.hole);

@@ -2,6 +2,7 @@
 // Resolve (dissertation Algorithm 5): the cut(s) that remove the most concave feature.
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "acd/concavity.h"
@@ -32,6 +33,16 @@ struct ResolveOptions {
   bool double_resolves_first = false;
 };
 
+/// Where the outer edges of a piece lie (edge i runs from vertex i to the next): edges 0 ...
+/// outer_count - 1 on the resolved polygon's outer edges first_outer_edge, first_outer_edge + 1,
+/// ... (cyclically; the first and the last perhaps in part), those `cuts` lists on cuts, the
+/// others on holes.
+struct PieceEdges {
+  int first_outer_edge = 0;
+  int outer_count = 0;
+  std::vector<std::pair<int, int>> cuts;  ///< (edge, index into Resolution::cuts), by edge.
+};
+
 /// Two pieces and the cut(s) between them.
 struct Resolution {
   std::array<Polygon2d, 2> pieces;
@@ -39,6 +50,8 @@ struct Resolution {
   std::array<InheritedChain, 2> inherited;
   /// Per piece, per hole, the resolved polygon's hole it copies (increasing).
   std::array<std::vector<int>, 2> hole_origins;
+  /// Per piece, where its outer edges lie.
+  std::array<PieceEdges, 2> edges;
   std::vector<Cut2d> cuts;
   Point2d witness;  ///< The feature resolved.
 };

@@ -9,6 +9,7 @@
 #include "acd/concavity.h"
 #include "acd/internal/pocket_cache.h"
 #include "acd/internal/resolve.h"
+#include "acd/internal/ring_locator.h"
 #include "acd/polygon2d.h"
 #include "acd/read_polygons.h"
 #include "base/random.h"
@@ -69,6 +70,43 @@ int CompareAlongDecomposition(const Polygon2d& polygon, const ConcavityOptions& 
            ++k) {
         const int from = (chain.parent_begin + k) % static_cast<int>(top.piece.outer.size());
         EXPECT_EQ(piece.outer[chain.begin + k], top.piece.outer[from]) << "split " << splits;
+      }
+      // Its edges lie where the resolution says: the first outer_count on the parent's outer
+      // edges from first_outer_edge on (inner vertices copied, ends on those edges), those
+      // listed on the cuts (end to end), the others on the parent's holes.
+      const internal::PieceEdges& edges = resolution.edges[side];
+      const int n = static_cast<int>(piece.outer.size());
+      const int parent_n = static_cast<int>(top.piece.outer.size());
+      auto vertex = [&](int i) { return piece.outer[i % n]; };
+      for (int t = 0; t < edges.outer_count; ++t) {
+        const Point2d& u = top.piece.outer[(edges.first_outer_edge + t) % parent_n];
+        const Point2d& w = top.piece.outer[(edges.first_outer_edge + t + 1) % parent_n];
+        for (const Point2d& p : {vertex(t), vertex(t + 1)}) {
+          EXPECT_LE(internal::SegmentDistance(p, u, w), 1e-12 * ReferenceRadius(top.piece))
+              << "split " << splits << " side " << side << " edge " << t;
+        }
+      }
+      std::vector<bool> on_cut(n, false);
+      for (const auto& [edge, cut] : edges.cuts) {
+        if (cut >= static_cast<int>(resolution.cuts.size())) {
+          ADD_FAILURE() << "no cut " << cut;
+          continue;
+        }
+        const Cut2d& c = resolution.cuts[cut];
+        const bool along = vertex(edge) == c.from && vertex(edge + 1) == c.to;
+        const bool against = vertex(edge) == c.to && vertex(edge + 1) == c.from;
+        EXPECT_TRUE(along || against) << "split " << splits << " side " << side << " edge " << edge;
+        on_cut[edge] = true;
+      }
+      for (int i = edges.outer_count; i < n; ++i) {
+        if (on_cut[i]) continue;
+        bool on_hole = false;
+        for (const Ring2d& hole : top.piece.holes) {
+          for (size_t j = 0; j < hole.size() && !on_hole; ++j) {
+            on_hole = hole[j] == vertex(i) && hole[(j + 1) % hole.size()] == vertex(i + 1);
+          }
+        }
+        EXPECT_TRUE(on_hole) << "split " << splits << " side " << side << " edge " << i;
       }
       // So do the holes.
       const std::vector<int>& origins = resolution.hole_origins[side];
