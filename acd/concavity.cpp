@@ -245,9 +245,11 @@ class VertexSearch {
  private:
   // A tree over the outer vertices but [begin, end), whose ids count the others in order.
   static internal::PointTree OuterTree(const Ring2d& ring, int begin, int end) {
-    std::vector<Point2d> points(ring.begin(), ring.begin() + begin);
+    std::vector<Point2d> points;
+    points.reserve(ring.size() - (end - begin));
+    points.insert(points.end(), ring.begin(), ring.begin() + begin);
     points.insert(points.end(), ring.begin() + end, ring.end());
-    return internal::PointTree(points, {begin});
+    return internal::PointTree(std::move(points), {begin});
   }
   const internal::PointTree& WholeRing() {
     if (!whole_ring_) whole_ring_.emplace(OuterTree(polygon_.outer, 0, 0));
@@ -298,6 +300,11 @@ class VertexSearch {
   internal::PointTree HoleTree() {
     std::vector<Point2d> points;
     std::vector<int> ring_begin;
+    size_t count = 0;
+    for (const Ring2d& hole : polygon_.holes) count += hole.size();
+    points.reserve(count);
+    ring_.reserve(count);
+    index_.reserve(count);
     for (int k = 0; k < static_cast<int>(polygon_.holes.size()); ++k) {
       ring_begin.push_back(static_cast<int>(points.size()));
       for (int i = 0; i < static_cast<int>(polygon_.holes[k].size()); ++i) {
@@ -306,7 +313,7 @@ class VertexSearch {
         index_.push_back(i);
       }
     }
-    return internal::PointTree(points, ring_begin);
+    return internal::PointTree(std::move(points), ring_begin);
   }
 
   const Polygon2d& polygon_;

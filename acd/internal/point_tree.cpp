@@ -1,6 +1,7 @@
 #include "acd/internal/point_tree.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace acdplan::acd::internal {
 namespace {
@@ -10,18 +11,18 @@ constexpr int kLeafRuns = 2;    // Runs per leaf.
 
 }  // namespace
 
-PointTree::PointTree(const std::vector<Point2d>& points, const std::vector<int>& ring_begin)
-    : points_(points) {
-  const int n = static_cast<int>(points.size());
+PointTree::PointTree(std::vector<Point2d> points, const std::vector<int>& ring_begin)
+    : points_(std::move(points)) {
+  const int n = static_cast<int>(points_.size());
   size_t next_ring = 0;
   for (int begin = 0; begin < n;) {
     while (next_ring < ring_begin.size() && ring_begin[next_ring] <= begin) ++next_ring;
     const int ring_end = next_ring < ring_begin.size() ? ring_begin[next_ring] : n;
     const int end = std::min(begin + kRunLength, ring_end);
-    Box box{points[begin], points[begin]};
+    Box box{points_[begin], points_[begin]};
     for (int k = begin + 1; k < end; ++k) {
-      box.lower = box.lower.cwiseMin(points[k]);
-      box.upper = box.upper.cwiseMax(points[k]);
+      box.lower = box.lower.cwiseMin(points_[k]);
+      box.upper = box.upper.cwiseMax(points_[k]);
     }
     runs_.push_back({box, begin, end});
     begin = end;

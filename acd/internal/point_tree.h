@@ -17,7 +17,7 @@ namespace acdplan::acd::internal {
 class PointTree {
  public:
   /// `ring_begin`: the positions where a ring starts (runs never span two rings); may be empty.
-  explicit PointTree(const std::vector<Point2d>& points, const std::vector<int>& ring_begin = {});
+  explicit PointTree(std::vector<Point2d> points, const std::vector<int>& ring_begin = {});
 
   /// Calls `visit(id, d2)`, d2 = (point - p).squaredNorm(), for every point that can lie
   /// within `*radius` of `p`: a box is skipped only when sqrt(d2) > *radius is certain for
