@@ -810,6 +810,34 @@ TEST(Decompose2dTest, OpeningsPairOnlyPiecesAlongTheCut) {
   }
 }
 
+// Slivers whose coordinates reach 5e58 and 5.6e22: the rounding tolerance of a cut's line is
+// then far wider than the slivers, and while FindOpenings() took every edge within it for an
+// edge on the cut, it listed one opening four times, and paired pieces that share no cut (0 and
+// 2 of the second input, whose edge runs 1e-21 rad off the cut). Edges on a cut are those the
+// cut made, so each shared segment is listed once, between the pieces on either side of it.
+TEST(Decompose2dTest, OpeningsOfSliversAreListedOnce) {
+  const std::vector<std::vector<Polygon2d>> inputs = {
+      FuzzRegressionInput("regression-zero-area-component.wkt"),
+      FuzzRegressionInput("regression-vertex-near-split-edge.wkt")};
+  for (const std::vector<Polygon2d>& input : inputs) {
+    for (const ConcavityMeasure measure : kMeasures) {
+      Decompose2dOptions options;
+      options.measure = measure;
+      options.tau = 0.0;
+      const Decomposition2d d = Decompose2d(input, options);
+      EXPECT_TRUE(CheckDecomposition(input, d).ok()) << ToString(measure);
+      std::set<std::pair<int, int>> pairs;
+      for (const Opening2d& opening : d.openings) {
+        EXPECT_TRUE(pairs.insert({opening.component_a, opening.component_b}).second)
+            << ToString(measure) << ": openings between " << opening.component_a << " and "
+            << opening.component_b << " listed more than once";
+      }
+      // Every piece of these lies next to another along its cut, and to no other.
+      EXPECT_EQ(d.openings.size(), d.components.size() - 1) << ToString(measure);
+    }
+  }
+}
+
 // At tau = 0 every notch needs a cut, so a diagonal resolving two notches saves a piece and
 // outranks every cut resolving one (ResolveOptions::double_resolves_first). texas.poly: CGAL's
 // optimal convex partition has 38 pieces; the target is 1.3 x that (51 before the rule, 45 with
