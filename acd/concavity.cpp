@@ -642,46 +642,22 @@ double FinishPocket(const Ring2d& ring, const Pocket& pocket, bool hazard, doubl
   return largest;
 }
 
-// The concavity of every vertex of `pocket` into result->outer (Ch. IV.A.1); returns the
-// largest.
-double MeasurePocket(const Ring2d& ring, const Pocket& pocket, const ConcavityOptions& options,
-                     PocketCache* cache, Concavity2d* result) {
+// The concavity of every vertex strictly between ring vertices `begin` and `end` (Ch. IV.A.1)
+// into result->outer; returns the largest. `whole_gap`: the two are consecutive hull vertices,
+// whose gap holds several pockets (the bridges and pockets of Ch. III.B, Observation B.3) where
+// vertices lie on the bridge: then it is split by AppendGapPockets() and each pocket measured on
+// its own. A vertex on the bridge lies between its ends (every vertex lies in the hull), so its
+// SL distance is rounding noise, far below `on_bridge`: the exact test runs only for distances
+// that small, in the pass that takes the SL distances.
+double MeasureSpan(const Ring2d& ring, int begin, int end, bool whole_gap,
+                   const ConcavityOptions& options, PocketCache* cache, Concavity2d* result) {
   const int n = static_cast<int>(ring.size());
-  // SL distances straight off the ring: no copy, no lookup.
-  const Point2d& from = ring[pocket.begin];
-  const Point2d& to = ring[pocket.end];
-  const Point2d bridge = to - from;
-  const DistanceToSegment distance(from, to);
-  bool hazard = false;
-  double sl_max = 0.0;
-  for (int i = pocket.begin; i != pocket.end;) {
-    const int next = i + 1 == n ? 0 : i + 1;
-    hazard = hazard || (ring[next] - ring[i]).dot(bridge) < 0.0;
-    if (i != pocket.begin) {
-      result->outer[i] = distance(ring[i]);
-      sl_max = std::max(sl_max, result->outer[i]);
-    }
-    i = next;
-  }
-  return FinishPocket(ring, pocket, hazard, sl_max, options, cache, result);
-}
-
-// The pockets of the hull gap from hull vertex `begin` to hull vertex `end` (the bridges and
-// pockets of Ch. III.B, Observation B.3) measured:
-// AppendGapPockets() and MeasurePocket() on each, in one pass where no vertex lies on the
-// bridge (then the gap is one pocket). A vertex on the bridge lies between its ends (every
-// vertex lies in the hull), so its SL distance is rounding noise, far below `on_bridge`:
-// the exact test runs only for distances that small. Returns the largest concavity in the gap
-// (Concavity2d::bridge_max).
-double MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions& options,
-                  PocketCache* cache, Concavity2d* result) {
-  const int n = static_cast<int>(ring.size());
-  if ((end - begin + n) % n <= 1) return -std::numeric_limits<double>::infinity();
   const Point2d& from = ring[begin];
   const Point2d& to = ring[end];
   const Point2d bridge = to - from;
   const DistanceToSegment distance(from, to);
-  const double on_bridge = 1e-9 * (MaxAbs(from) + MaxAbs(to) + MaxAbs(bridge));
+  // Distances are never negative: a pocket is never split.
+  const double on_bridge = whole_gap ? 1e-9 * (MaxAbs(from) + MaxAbs(to) + MaxAbs(bridge)) : -1.0;
   bool hazard = false;
   double sl_max = 0.0;
   for (int i = begin; i != end;) {
@@ -694,7 +670,8 @@ double MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions
         AppendGapPockets(ring, begin, end, &pockets);
         double largest = 0.0;  // (A vertex on the bridge, between pockets, has concavity 0.)
         for (const Pocket& pocket : pockets) {
-          largest = std::max(largest, MeasurePocket(ring, pocket, options, cache, result));
+          largest = std::max(largest, MeasureSpan(ring, pocket.begin, pocket.end,
+                                                  /*whole_gap=*/false, options, cache, result));
         }
         return largest;
       }
@@ -704,6 +681,15 @@ double MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions
     i = next;
   }
   return FinishPocket(ring, {begin, end}, hazard, sl_max, options, cache, result);
+}
+
+// MeasureSpan() of the hull gap from hull vertex `begin` to hull vertex `end`: the largest
+// concavity in it (Concavity2d::bridge_max), -infinity if it is empty.
+double MeasureGap(const Ring2d& ring, int begin, int end, const ConcavityOptions& options,
+                  PocketCache* cache, Concavity2d* result) {
+  const int n = static_cast<int>(ring.size());
+  if ((end - begin + n) % n <= 1) return -std::numeric_limits<double>::infinity();
+  return MeasureSpan(ring, begin, end, /*whole_gap=*/true, options, cache, result);
 }
 
 // The witness notch by the outer concavities alone, into result->value and witness_vertex.
