@@ -181,30 +181,53 @@ TEST(ChildConcavityTest, InheritedHoleSearchesEqualFreshOnesOnLatticesOfHoles) {
   }
 }
 
+// A parent measured by SL with the searches behind its holes' links, which the pieces below
+// inherit.
+struct MeasuredParent {
+  Polygon2d polygon;
+  Concavity2d concavity;
+  std::vector<internal::HoleNeighbours> neighbours;
+};
+
+ConcavityOptions StraightLine() {
+  ConcavityOptions measure;
+  measure.measure = ConcavityMeasure::kStraightLine;
+  return measure;
+}
+
+MeasuredParent MeasureParent(const Polygon2d& polygon) {
+  MeasuredParent parent{polygon, {}, {}};
+  parent.concavity =
+      internal::MeasureConcavityCached(polygon, StraightLine(), nullptr, &parent.neighbours);
+  return parent;
+}
+
+// The measure of `piece` (whose holes are the parent's `origins`) that inherits from `parent`,
+// checked against a full one.
+Concavity2d MeasureChild(const MeasuredParent& parent, const Polygon2d& piece,
+                         const internal::InheritedChain& chain, const std::vector<int>& origins) {
+  const Concavity2d child = internal::MeasureChildConcavity(
+      piece, chain, parent.polygon.outer, parent.concavity, StraightLine(), nullptr, nullptr,
+      {&parent.neighbours, &origins});
+  ExpectSameMeasure(MeasureConcavity(piece, StraightLine()), child, "piece");
+  return child;
+}
+
 // An antipode of a hole, (3, 5), lies 5 from two outer vertices: the parent's 0, on its hull,
 // and 2, a notch. The parent links to vertex 0, the lower index; the piece copies both, but
 // its ring starts at the notch, so it links there, and the hole sits deeper by the notch's
 // concavity. The tie must send the piece to a search of its own.
 TEST(ChildConcavityTest, AntipodeAsNearToTwoOuterVerticesOfTheParent) {
-  const Polygon2d parent_polygon{{{0, 1}, {1, -3}, {3, 0}, {5, -3}, {12, -3}, {12, 10}, {0, 10}},
-                                 {{{3, 5}, {5, 5.2}, {7, 5}, {5, 4.8}}}};
-  ConcavityOptions measure;
-  measure.measure = ConcavityMeasure::kStraightLine;
-  std::vector<internal::HoleNeighbours> neighbours;
-  const Concavity2d parent =
-      internal::MeasureConcavityCached(parent_polygon, measure, nullptr, &neighbours);
-  ASSERT_EQ(neighbours.size(), 1u);
-  EXPECT_EQ(parent.holes[0].depth, 5.0);
+  const MeasuredParent parent =
+      MeasureParent({{{0, 1}, {1, -3}, {3, 0}, {5, -3}, {12, -3}, {12, 10}, {0, 10}},
+                     {{{3, 5}, {5, 5.2}, {7, 5}, {5, 4.8}}}});
+  EXPECT_EQ(parent.concavity.holes.at(0).depth, 5.0);
   // The cut from notch 2 to (0.5, -1) on the edge 0 -> 1; the piece copies parent vertices
   // 2 ... 6, 0.
   const Polygon2d piece{{{3, 0}, {5, -3}, {12, -3}, {12, 10}, {0, 10}, {0, 1}, {0.5, -1}},
-                        parent_polygon.holes};
-  const std::vector<int> origins = {0};
-  const Concavity2d child =
-      internal::MeasureChildConcavity(piece, {0, 2, 6}, parent_polygon.outer, parent, measure,
-                                      nullptr, nullptr, {&neighbours, &origins});
-  ExpectSameMeasure(MeasureConcavity(piece, measure), child, "piece");
-  EXPECT_EQ(child.holes[0].depth, child.outer[0] + 5.0);
+                        parent.polygon.holes};
+  const Concavity2d child = MeasureChild(parent, piece, {0, 2, 6}, {0});
+  EXPECT_EQ(child.holes.at(0).depth, child.outer[0] + 5.0);
   EXPECT_GT(child.outer[0], 0.0);
 }
 
@@ -213,24 +236,14 @@ TEST(ChildConcavityTest, AntipodeAsNearToTwoOuterVerticesOfTheParent) {
 // tip; its nearest outer vertices lie 5.1 away, so hole 1 is now the nearer, which the parent's
 // search could not know.
 TEST(ChildConcavityTest, AHoleNearerThanTheOuterVertexTheCutRemoved) {
-  const Polygon2d parent_polygon{
-      {{0, 0}, {9, 0}, {10, 4}, {11, 0}, {20, 0}, {20, 10}, {0, 10}},
-      {{{10, 5}, {12, 5.2}, {14, 5}, {12, 4.8}}, {{5, 5}, {6.75, 5.2}, {8.5, 5}, {6.75, 4.8}}}};
-  ConcavityOptions measure;
-  measure.measure = ConcavityMeasure::kStraightLine;
-  std::vector<internal::HoleNeighbours> neighbours;
-  const Concavity2d parent =
-      internal::MeasureConcavityCached(parent_polygon, measure, nullptr, &neighbours);
-  ASSERT_EQ(neighbours.size(), 2u);
+  const MeasuredParent parent = MeasureParent(
+      {{{0, 0}, {9, 0}, {10, 4}, {11, 0}, {20, 0}, {20, 10}, {0, 10}},
+       {{{10, 5}, {12, 5.2}, {14, 5}, {12, 4.8}}, {{5, 5}, {6.75, 5.2}, {8.5, 5}, {6.75, 4.8}}}});
   // The cut (9, 0) - (11, 0) takes off the spike; the piece copies parent vertices 3 ... 6, 0, 1.
   const Polygon2d piece{{{11, 0}, {20, 0}, {20, 10}, {0, 10}, {0, 0}, {9, 0}},
-                        parent_polygon.holes};
-  const std::vector<int> origins = {0, 1};
-  const Concavity2d child =
-      internal::MeasureChildConcavity(piece, {0, 3, 6}, parent_polygon.outer, parent, measure,
-                                      nullptr, nullptr, {&neighbours, &origins});
-  ExpectSameMeasure(MeasureConcavity(piece, measure), child, "piece");
-  EXPECT_EQ(child.holes[0].depth, child.holes[1].concavity + 1.5);
+                        parent.polygon.holes};
+  const Concavity2d child = MeasureChild(parent, piece, {0, 3, 6}, {0, 1});
+  EXPECT_EQ(child.holes.at(0).depth, child.holes.at(1).concavity + 1.5);
 }
 
 // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-cut-end-outside-parent-
