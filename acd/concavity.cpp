@@ -439,7 +439,16 @@ bool IsNotch(const Point2d& prev, const Point2d& v, const Point2d& next) {
 int CountNotches(const Polygon2d& polygon) {
   int count = 0;
   auto count_ring = [&count](const Ring2d& ring) {
-    for (int i = 0; i < static_cast<int>(ring.size()); ++i) count += internal::IsNotchAt(ring, i);
+    if (ring.empty()) return;
+    // Walks the ring with its three vertices at hand (no index arithmetic per vertex).
+    const Point2d* prev = &ring.back();
+    const Point2d* v = &ring.front();
+    for (size_t i = 1; i <= ring.size(); ++i) {
+      const Point2d* next = &ring[i == ring.size() ? 0 : i];
+      count += internal::IsNotchInline(*prev, *v, *next);
+      prev = v;
+      v = next;
+    }
   };
   count_ring(polygon.outer);
   for (const Ring2d& hole : polygon.holes) count_ring(hole);
