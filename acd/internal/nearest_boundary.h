@@ -13,6 +13,7 @@
 
 #include "acd/internal/edge_grid.h"
 #include "acd/internal/ring_blocks.h"
+#include "acd/internal/thread_scratch.h"
 #include "acd/polygon2d.h"
 
 namespace acdplan::acd::internal {
@@ -64,7 +65,11 @@ std::optional<BoundaryPoint> NearestAccepted(const Polygon2d& polygon, double ma
   // A foot is a few roundings off its edge's box; this allows for a thousand times that.
   const double foot_noise = 1e-12 * std::max(magnitude, p.cwiseAbs().maxCoeff());
   double offered = -kInfinity;  // Every point with d2 <= offered has been offered.
-  std::vector<Near> found;      // A heap, nearest on top: points found and not offered yet.
+  // A heap, nearest on top: points found and not offered yet. (The thread's buffer from the
+  // last call: hole paths search once per link.)
+  thread_local std::vector<Near> found;
+  const ScratchScope found_scope(found);
+  found.clear();
   auto push = [&](const Near& near) {
     found.push_back(near);
     std::push_heap(found.begin(), found.end(), later);
@@ -124,8 +129,9 @@ std::optional<BoundaryPoint> NearestAccepted(const Polygon2d& polygon, const Rin
   // The blocks not searched yet: (squared distance, id), id < outer.Count() for the outer
   // ring's. Most searches end within a few blocks, so the nearest is found by a scan for the
   // first few, and the rest become a heap (nearest on top) only after that.
-  std::vector<std::pair<double, int>> queue;
-  queue.reserve(outer.Count() + holes.Count());
+  thread_local std::vector<std::pair<double, int>> queue;  // (As `found` above.)
+  const ScratchScope queue_scope(queue);
+  queue.clear();
   for (int b = 0; b < outer.Count(); ++b) {
     queue.emplace_back(BoxSquaredDistance(outer[b].min, outer[b].max, p), b);
   }

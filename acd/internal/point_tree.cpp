@@ -14,6 +14,7 @@ constexpr int kLeafRuns = 2;    // Runs per leaf.
 PointTree::PointTree(std::vector<Point2d> points, const std::vector<int>& ring_begin)
     : points_(std::move(points)) {
   const int n = static_cast<int>(points_.size());
+  runs_.reserve(n / kRunLength + ring_begin.size() + 1);
   size_t next_ring = 0;
   for (int begin = 0; begin < n;) {
     while (next_ring < ring_begin.size() && ring_begin[next_ring] <= begin) ++next_ring;
