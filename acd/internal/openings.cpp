@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "acd/internal/rounding_noise.h"
+#include "acd/internal/thread_scratch.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -43,6 +44,20 @@ bool IntervalOf(const CutFrame& frame, const Point2d& u, const Point2d& w, Inter
   return (t1 - t0) * frame.length > frame.tolerance;
 }
 
+// FindOpenings()'s working storage.
+struct FindScratch {
+  std::vector<int> first_cut, begin, end;
+  std::vector<CutFrame> frames;
+  std::vector<Interval> intervals, left, right;
+
+  size_t HeldBytes() const {
+    return (first_cut.capacity() + begin.capacity() + end.capacity()) * sizeof(int) +
+           frames.capacity() * sizeof(CutFrame) +
+           (intervals.capacity() + left.capacity() + right.capacity()) * sizeof(Interval);
+  }
+  void Release() { *this = FindScratch(); }
+};
+
 // First and one-past-last component index of the leaves below `node` (leaves are numbered in
 // depth-first order, so they are contiguous).
 std::pair<int, int> LeafRange(const Decomposition2d& d, int node) {
@@ -56,20 +71,29 @@ std::pair<int, int> LeafRange(const Decomposition2d& d, int node) {
 
 std::vector<Opening2d> FindOpenings(const Decomposition2d& d, const std::vector<CutEdge>& cut_edges,
                                     const std::vector<int>& first) {
+  // The working storage, kept per thread: one call per decomposition, but a small one would
+  // spend a good part of its time allocating it.
+  thread_local FindScratch scratch;
+  const ScratchScope scope(scratch);
   // The cuts in node order, node `id`'s from first_cut[id] on.
-  std::vector<int> first_cut(d.tree.size() + 1, 0);
-  std::vector<CutFrame> frames;
+  std::vector<int>& first_cut = scratch.first_cut;
+  std::vector<CutFrame>& frames = scratch.frames;
+  first_cut.assign(d.tree.size() + 1, 0);
+  frames.clear();
   for (size_t id = 0; id < d.tree.size(); ++id) {
     first_cut[id + 1] = first_cut[id] + static_cast<int>(d.tree[id].cuts.size());
     for (const Cut2d& cut : d.tree[id].cuts) frames.push_back(FrameOf(cut));
   }
   // The intervals of the leaf edges on each cut, in component and edge order; those of cut k
-  // from begin[k] on (counted first, then filled).
-  std::vector<int> begin(frames.size() + 1, 0);
+  // from begin[k] to end[k] (counted first, then filled).
+  std::vector<int>& begin = scratch.begin;
+  std::vector<int>& end = scratch.end;
+  std::vector<Interval>& intervals = scratch.intervals;
+  begin.assign(frames.size() + 1, 0);
   for (const CutEdge& e : cut_edges) ++begin[first_cut[e.node] + e.cut + 1];
   for (size_t k = 0; k < frames.size(); ++k) begin[k + 1] += begin[k];
-  std::vector<int> end(begin.begin(), begin.end() - 1);
-  std::vector<Interval> intervals(begin.back());
+  end.assign(begin.begin(), begin.end() - 1);
+  intervals.resize(begin.back());
   for (int c = 0; c < static_cast<int>(d.components.size()); ++c) {
     const Ring2d& ring = d.components[c].polygon.outer;
     const int n = static_cast<int>(ring.size());
@@ -84,8 +108,8 @@ std::vector<Opening2d> FindOpenings(const Decomposition2d& d, const std::vector<
     }
   }
   std::vector<Opening2d> openings;
-  std::vector<Interval> left, right;  // Per cut; kept for their capacity.
-  std::vector<Opening2d> found;
+  std::vector<Interval>& left = scratch.left;
+  std::vector<Interval>& right = scratch.right;
   auto by_start = [](const Interval& a, const Interval& b) { return a.t0 < b.t0; };
   for (int id = 0; id < static_cast<int>(d.tree.size()); ++id) {
     const HierarchyNode2d& node = d.tree[id];
@@ -103,7 +127,7 @@ std::vector<Opening2d> FindOpenings(const Decomposition2d& d, const std::vector<
       const Cut2d& cut = node.cuts[k - first_cut[id]];
       const double length = frames[k].length;
       const double tolerance = 1e-9 * std::max(1.0, length);
-      found.clear();
+      const size_t first_found = openings.size();  // This cut's openings from here on.
       double last_t1 = 0.0;
       for (const Interval& l : left) {
         for (const Interval& r : right) {
@@ -112,17 +136,16 @@ std::vector<Opening2d> FindOpenings(const Decomposition2d& d, const std::vector<
           const int ca = std::min(l.component, r.component);
           const int cb = std::max(l.component, r.component);
           // Merge with the previous piece of this cut when it continues it.
-          if (!found.empty() && found.back().component_a == ca && found.back().component_b == cb &&
-              std::abs(t0 - last_t1) * length <= tolerance) {
-            found.back().b = cut.from + t1 * (cut.to - cut.from);
+          if (openings.size() > first_found && openings.back().component_a == ca &&
+              openings.back().component_b == cb && std::abs(t0 - last_t1) * length <= tolerance) {
+            openings.back().b = cut.from + t1 * (cut.to - cut.from);
           } else {
-            found.push_back(
+            openings.push_back(
                 {cut.from + t0 * (cut.to - cut.from), cut.from + t1 * (cut.to - cut.from), ca, cb});
           }
           last_t1 = t1;
         }
       }
-      openings.insert(openings.end(), found.begin(), found.end());
     }
   }
   return openings;
