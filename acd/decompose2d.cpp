@@ -70,23 +70,27 @@ struct LeafExtras {
   std::vector<int> first_cut_edge{0};
 };
 
-// The outer edges on cuts of a piece cut from node `id`, by edge: those of the parent
-// (`parent`, of a ring of `parent_n` vertices) that it keeps, then the cuts' own.
-void PieceCutEdges(const std::vector<internal::CutEdge>& parent, int parent_n, int id,
-                   const internal::PieceEdges& edges, std::vector<internal::CutEdge>* cut_edges) {
-  cut_edges->clear();
+// Appends to `buffer` the outer edges on cuts of a piece cut from node `id`, by edge: those of
+// the parent (buffer[parent_begin, parent_end), of a ring of `parent_n` vertices) that it keeps,
+// then the cuts' own. (By index: appending may move the parent's.)
+void AppendPieceCutEdges(int parent_begin, int parent_end, int parent_n, int id,
+                         const internal::PieceEdges& edges,
+                         std::vector<internal::CutEdge>* buffer) {
   const int f = edges.first_outer_edge;
-  auto keep = [&](const internal::CutEdge& e, int t) {
-    if (t < edges.outer_count) cut_edges->push_back({t, e.node, e.cut});
+  auto keep = [&](int j, int t) {
+    const internal::CutEdge e = (*buffer)[j];
+    if (t < edges.outer_count) buffer->push_back({t, e.node, e.cut});
   };
   // The piece's edge t lies on the parent's edge f + t (cyclically): from f on first.
-  for (const internal::CutEdge& e : parent) {
-    if (e.edge >= f) keep(e, e.edge - f);
+  for (int j = parent_begin; j < parent_end; ++j) {
+    const int edge = (*buffer)[j].edge;
+    if (edge >= f) keep(j, edge - f);
   }
-  for (const internal::CutEdge& e : parent) {
-    if (e.edge < f) keep(e, e.edge + parent_n - f);
+  for (int j = parent_begin; j < parent_end; ++j) {
+    const int edge = (*buffer)[j].edge;
+    if (edge < f) keep(j, edge + parent_n - f);
   }
-  for (const auto& [edge, cut] : edges.cuts) cut_edges->push_back({edge, id, cut});
+  for (const auto& [edge, cut] : edges.cuts) buffer->push_back({edge, id, cut});
 }
 
 // Algorithm 1 (or 9) on one input polygon, appending its nodes and leaves to `out` and what
@@ -111,6 +115,8 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   const size_t splits_bound = static_cast<size_t>(notches) + polygon.holes.size();
   out->tree.reserve(out->tree.size() + 2 * splits_bound + 1);
   out->components.reserve(out->components.size() + splits_bound + 1);
+  leaves->areas.reserve(leaves->areas.size() + splits_bound + 1);
+  leaves->first_cut_edge.reserve(leaves->first_cut_edge.size() + splits_bound + 1);
   out->roots.push_back(root);
   out->tree.push_back({});
   out->tree[root].piece = polygon;
@@ -118,29 +124,30 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   long splits = 0;
   internal::PocketCache cache;
   // Pieces waiting to be resolved, depth first, with their measures, the searches behind their
-  // holes' links and the cuts their edges lie on: a piece is measured when it is cut from its
-  // parent, while the parent's measure is at hand to reuse (MeasureChildConcavity()).
+  // holes' links and their edges on cuts: a piece is measured when it is cut from its parent,
+  // while the parent's measure is at hand to reuse (MeasureChildConcavity()). The edges on cuts
+  // of all of them lie in one buffer, a range each, in stack order (the top piece's last).
   struct Pending {
     int id;
     Concavity2d concavity;
     std::vector<internal::HoleNeighbours> neighbours;
-    std::vector<internal::CutEdge> cut_edges;
+    int cut_edges_begin = 0, cut_edges_end = 0;
   };
+  std::vector<internal::CutEdge> cut_edges;
   std::vector<Pending> stack(1);
   stack[0].id = root;
   stack[0].concavity =
       internal::MeasureConcavityCached(polygon, measure, &cache, &stack[0].neighbours);
   // Measures done with: their storage serves the next pieces' (as many are done with as made).
   std::vector<Concavity2d> spares;
-  std::vector<Ring2d> spare_rings;  // Likewise the outer rings of pieces split,
-  std::vector<std::vector<internal::CutEdge>> spare_cut_edges;  // and their edges on cuts.
+  std::vector<Ring2d> spare_rings;  // Likewise the outer rings of pieces split.
   // Kept for the storage of what it holds besides the pieces.
   internal::Resolution resolution;
   while (!stack.empty()) {
     const int id = stack.back().id;
     Concavity2d concavity = std::move(stack.back().concavity);
     const std::vector<internal::HoleNeighbours> neighbours = std::move(stack.back().neighbours);
-    std::vector<internal::CutEdge> cut_edges = std::move(stack.back().cut_edges);
+    const int begin = stack.back().cut_edges_begin, end = stack.back().cut_edges_end;
     stack.pop_back();
     out->tree[id].concavity = concavity.value;
     if (IsAccepted(out->tree[id].piece, concavity, options)) {
@@ -150,9 +157,10 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
       double area = 0.0;
       const Point2d centroid = internal::CentroidAndArea(node.piece, &area);
       leaves->areas.push_back(area);
-      leaves->cut_edges.insert(leaves->cut_edges.end(), cut_edges.begin(), cut_edges.end());
+      leaves->cut_edges.insert(leaves->cut_edges.end(), cut_edges.begin() + begin,
+                               cut_edges.begin() + end);
       leaves->first_cut_edge.push_back(static_cast<int>(leaves->cut_edges.size()));
-      spare_cut_edges.push_back(std::move(cut_edges));
+      cut_edges.resize(begin);
       Ring2d hull = HullOf(node.piece.outer, concavity.hull);
       out->components.push_back(
           {options.keep_pieces || id == root ? node.piece : std::move(node.piece), std::move(hull),
@@ -184,12 +192,10 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
           measure, &cache, spare, {&neighbours, &resolution.hole_origins[side]},
           &pending.neighbours);
       if (spare != nullptr) spares.pop_back();
-      if (!spare_cut_edges.empty()) {
-        pending.cut_edges = std::move(spare_cut_edges.back());
-        spare_cut_edges.pop_back();
-      }
-      PieceCutEdges(cut_edges, static_cast<int>(out->tree[id].piece.outer.size()), id,
-                    resolution.edges[side], &pending.cut_edges);
+      pending.cut_edges_begin = static_cast<int>(cut_edges.size());
+      AppendPieceCutEdges(begin, end, static_cast<int>(out->tree[id].piece.outer.size()), id,
+                          resolution.edges[side], &cut_edges);
+      pending.cut_edges_end = static_cast<int>(cut_edges.size());
       HierarchyNode2d node;
       node.piece = std::move(resolution.pieces[side]);
       node.parent = id;
@@ -201,8 +207,13 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
       spare_rings.push_back(std::move(out->tree[id].piece.outer));
       out->tree[id].piece = Polygon2d{};
     }
+    // The children's edges on cuts take the place of the parent's.
+    cut_edges.erase(cut_edges.begin() + begin, cut_edges.begin() + end);
+    for (size_t k = stack.size() - 2; k < stack.size(); ++k) {
+      stack[k].cut_edges_begin -= end - begin;
+      stack[k].cut_edges_end -= end - begin;
+    }
     spares.push_back(std::move(concavity));
-    spare_cut_edges.push_back(std::move(cut_edges));
   }
 }
 
