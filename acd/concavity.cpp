@@ -146,11 +146,10 @@ class HoleSources {
   HoleSources() = default;
   HoleSources(const Polygon2d& piece, const internal::InheritedHoles& holes,
               const internal::InheritedChain& chain, int parent_n)
-      : chain_(chain), parent_n_(parent_n) {
-    const int n = static_cast<int>(piece.outer.size());
-    chain_valid_ = chain.begin >= 0 && chain.length >= 0 && chain.begin + chain.length <= n &&
-                   chain.length <= parent_n && chain.parent_begin >= 0 &&
-                   chain.parent_begin < parent_n;
+      : chain_(chain), n_(static_cast<int>(piece.outer.size())), parent_n_(parent_n) {
+    chain_fits_ = chain.begin >= 0 && chain.length >= 0 && chain.begin + chain.length <= n_ &&
+                  chain.length <= parent_n && chain.parent_begin >= 0 &&
+                  chain.parent_begin < parent_n;
     if (holes.parent == nullptr || holes.origin == nullptr ||
         holes.origin->size() != piece.holes.size()) {
       return;
@@ -180,23 +179,27 @@ class HoleSources {
   int HoleAt(int j) const {
     return j >= 0 && j < static_cast<int>(hole_at_.size()) ? hole_at_[j] : -1;
   }
+  // Whether the chain fits the piece's and the parent's outer rings.
+  bool ChainFits() const { return chain_fits_; }
+  // Whether the piece's outer ring holds vertices the chain does not copy.
+  bool HasNewVertices() const { return NewBegin() > 0 || NewEnd() < n_; }
   // Where the piece's outer ring holds the parent's outer vertex j, or -1.
   int CopiedAt(int j) const {
-    if (!chain_valid_) return -1;
+    if (!chain_fits_) return -1;
     const int offset =
         j >= chain_.parent_begin ? j - chain_.parent_begin : j + parent_n_ - chain_.parent_begin;
     return offset < chain_.length ? chain_.begin + offset : -1;
   }
   // The piece's outer vertices the chain does not copy: [0, NewBegin()) and [NewEnd(), n).
-  int NewEnd() const { return chain_valid_ ? chain_.begin + chain_.length : 0; }
-  int NewBegin() const { return chain_valid_ ? chain_.begin : 0; }
+  int NewEnd() const { return chain_fits_ ? chain_.begin + chain_.length : 0; }
+  int NewBegin() const { return chain_fits_ ? chain_.begin : 0; }
 
  private:
   internal::InheritedHoles holes_;
   std::vector<int> hole_at_;  // Per parent hole; empty: nothing inherited.
   internal::InheritedChain chain_;
-  int parent_n_ = 0;
-  bool chain_valid_ = false;
+  int n_ = 0, parent_n_ = 0;  // The piece's and the parent's outer vertices.
+  bool chain_fits_ = false;
 };
 
 // The vertex searches of MeasureHoles(), each tree built when first needed: over the whole
@@ -220,7 +223,9 @@ class VertexSearch {
         parent != nullptr && !parent->outer.tie ? sources_.CopiedAt(parent->outer.vertex) : -1;
     if (copied >= 0) {
       found.outer = {copied, parent->outer.d2, false};
-      Offer(NewVertices(), sources_.NewBegin(), sources_.NewEnd(), p, &found.outer);
+      if (sources_.HasNewVertices()) {
+        Offer(NewVertices(), sources_.NewBegin(), sources_.NewEnd(), p, &found.outer);
+      }
     } else {
       Offer(WholeRing(), 0, 0, p, &found.outer);
     }
@@ -850,8 +855,7 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
   const Ring2d& ring = piece.outer;
   const int n = static_cast<int>(ring.size());
   const int parent_h = static_cast<int>(parent.hull.size());
-  if (chain.length < 2 || chain.begin < 0 || chain.begin + chain.length > n ||
-      chain.length > parent_n || chain.parent_begin < 0 || chain.parent_begin >= parent_n ||
+  if (!sources.ChainFits() || chain.length < 2 ||
       static_cast<int>(parent.bridge_max.size()) != parent_h || parent_h < 3 ||
       static_cast<int>(parent_ring.size()) != parent_n) {
     return measure_whole();

@@ -804,10 +804,10 @@ void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b,
 // bounded_side_2 instead.
 void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
                      Resolution* resolution) {
-  std::array<Polygon2d, 2>* const pieces = &resolution->pieces;
   if (polygon.holes.size() <= skip.size()) return;
-  const int tested = (*pieces)[0].outer.size() <= (*pieces)[1].outer.size() ? 0 : 1;
-  const Ring2d& ring = (*pieces)[tested].outer;
+  std::array<Polygon2d, 2>& pieces = resolution->pieces;
+  const int tested = pieces[0].outer.size() <= pieces[1].outer.size() ? 0 : 1;
+  const Ring2d& ring = pieces[tested].outer;
   double scale = 0.0;
   for (const Point2d& p : ring) scale = std::max(scale, MaxAbs(p));
   const double noise = kRoundingNoise * std::max(1.0, scale);
@@ -856,7 +856,7 @@ void DistributeHoles(const Polygon2d& polygon, const std::vector<int>& skip,
                CGAL::ON_BOUNDED_SIDE;
     }
     const int side = inside ? tested : 1 - tested;
-    (*pieces)[side].holes.push_back(polygon.holes[q.hole]);
+    pieces[side].holes.push_back(polygon.holes[q.hole]);
     resolution->hole_origins[side].push_back(q.hole);
   }
 }
