@@ -557,11 +557,16 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
     const double block_margin = 1.001 * margin;
     for (int b = 0; b < blocks.Count(); ++b) {
       const RingBlocks::Block& box = blocks[b];
-      const double corners[4] = {ray.Side(box.min - r), ray.Side(box.max - r),
-                                 ray.Side(Point2d(box.min.x(), box.max.y()) - r),
-                                 ray.Side(Point2d(box.max.x(), box.min.y()) - r)};
-      const auto [low, high] = std::minmax_element(corners, corners + 4);
-      if ((*low > block_margin) | (*high < -block_margin)) continue;
+      const double c0 = ray.Side(box.min - r), c1 = ray.Side(box.max - r);
+      const double c2 = ray.Side(Point2d(box.min.x(), box.max.y()) - r);
+      const double c3 = ray.Side(Point2d(box.max.x(), box.min.y()) - r);
+      // All four beyond the margin on one side, without branches (a min and max of the four
+      // took several, and whether a block lies across the line comes at random).
+      const double above = block_margin, below = -block_margin;
+      if (((c0 > above) & (c1 > above) & (c2 > above) & (c3 > above)) |
+          ((c0 < below) & (c1 < below) & (c2 < below) & (c3 < below))) {
+        continue;
+      }
       double side_i = ray.Side(outer[blocks.Begin(b)] - r);
       for (int i = blocks.Begin(b); i < blocks.End(b); ++i) {
         const int j = Next(i, m);
@@ -751,13 +756,20 @@ std::vector<Candidate> NearestCandidates(const Polygon2d& polygon, const Point2d
   return candidates;
 }
 
+// How many vertices hole `h` of `polygon` has from index `from` forward to index `to`, both
+// included.
+int HoleArcSize(const Polygon2d& polygon, int h, int from, int to) {
+  const int n = static_cast<int>(polygon.holes[h].size());
+  return (to - from + n) % n + 1;
+}
+
 // Appends hole `h` of `polygon` from index `from` forward to index `to`, both included, to
-// `ring`; the edge from there on lies on cut `cut_after`.
+// `ring` (with room for them: see AppendOuterChain()); the edge from there on lies on cut
+// `cut_after`.
 void AppendHoleChain(const Polygon2d& polygon, int h, int from, int to, int cut_after, Ring2d* ring,
                      PieceEdges* edges) {
   const Ring2d& hole = polygon.holes[h];
   const int n = static_cast<int>(hole.size());
-  ring->reserve(ring->size() + (to - from + n) % n + 1);
   for (int i = from;; i = Next(i, n)) {
     ring->push_back(hole[i]);
     if (i == to) break;
@@ -766,18 +778,19 @@ void AppendHoleChain(const Polygon2d& polygon, int h, int from, int to, int cut_
 }
 
 // Appends the outer ring from cut end `a` forward to cut end `b`, both included, to `ring`,
-// an empty ring; the edge from there on lies on cut `cut_after`. Sets `chain` to the outer
-// vertices it copies and `edges` to where the edges lie. Ends are ordered along the ring by
-// position: vertex k at 2k, a point on edge k at 2k + 1 (two ends on one edge never occur: such
-// a cut would run along the edge).
+// an empty ring, with room for `hole_arcs` more vertices (the arcs of holes the piece runs over
+// next: a ring grown for each would be copied each time); the edge from there on lies on cut
+// `cut_after`. Sets `chain` to the outer vertices it copies and `edges` to where the edges lie.
+// Ends are ordered along the ring by position: vertex k at 2k, a point on edge k at 2k + 1 (two
+// ends on one edge never occur: such a cut would run along the edge).
 void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b, int cut_after,
-                      Ring2d* ring, InheritedChain* chain, PieceEdges* edges) {
+                      int hole_arcs, Ring2d* ring, InheritedChain* chain, PieceEdges* edges) {
   const int n = static_cast<int>(outer.size());
   const int pos_a = 2 * a.index + (a.on_edge ? 1 : 0);
   const int pos_b = 2 * b.index + (b.on_edge ? 1 : 0);
   const int span = (pos_b - pos_a + 2 * n) % (2 * n);
   const int between = (span - 1 + (pos_a & 1)) / 2;  // Vertices strictly between a and b.
-  ring->reserve(ring->size() + between + 2);
+  ring->reserve(ring->size() + between + 2 + hole_arcs);
   ring->push_back(a.on_edge ? a.point : outer[a.index]);
   // The vertices between, in at most two runs of the outer ring.
   const int first = Next(a.index, n);
@@ -878,7 +891,7 @@ void SplitAlong(const Polygon2d& polygon, const Endpoint& from, const Endpoint& 
   ClearPieces(resolution);
   for (int side = 0; side < 2; ++side) {
     AppendOuterChain(polygon.outer, side == 0 ? from : to, side == 0 ? to : from, 0,
-                     &resolution->pieces[side].outer, &resolution->inherited[side],
+                     /*hole_arcs=*/0, &resolution->pieces[side].outer, &resolution->inherited[side],
                      &resolution->edges[side]);
   }
   DistributeHoles(polygon, {}, resolution);
@@ -976,9 +989,11 @@ void SplitThroughHole(const Polygon2d& polygon, int h, int a, const Endpoint& x,
   // to x; piece 1 the other way round.
   Polygon2d* const pieces = resolution->pieces.data();
   PieceEdges* const edges = resolution->edges.data();
-  AppendOuterChain(polygon.outer, x, y, 1, &pieces[0].outer, &resolution->inherited[0], &edges[0]);
+  AppendOuterChain(polygon.outer, x, y, 1, HoleArcSize(polygon, h, b, a), &pieces[0].outer,
+                   &resolution->inherited[0], &edges[0]);
   AppendHoleChain(polygon, h, b, a, 0, &pieces[0].outer, &edges[0]);
-  AppendOuterChain(polygon.outer, y, x, 0, &pieces[1].outer, &resolution->inherited[1], &edges[1]);
+  AppendOuterChain(polygon.outer, y, x, 0, HoleArcSize(polygon, h, a, b), &pieces[1].outer,
+                   &resolution->inherited[1], &edges[1]);
   AppendHoleChain(polygon, h, a, b, 1, &pieces[1].outer, &edges[1]);
   DistributeHoles(polygon, {h}, resolution);
   resolution->cuts = {{hole[a], x.point}, {hole[b], y.point}};
@@ -1008,14 +1023,19 @@ void SplitAlongPath(const Polygon2d& polygon, const HolePath& path, const Point2
   const int m = static_cast<int>(path.holes.size());
   Polygon2d* const pieces = resolution->pieces.data();
   PieceEdges* const edges = resolution->edges.data();
-  AppendOuterChain(polygon.outer, path.x, path.y, m, &pieces[0].outer, &resolution->inherited[0],
-                   &edges[0]);
+  int arcs[2] = {0, 0};  // The holes' vertices on each piece.
+  for (const HoleCrossing& c : path.holes) {
+    arcs[0] += HoleArcSize(polygon, c.hole, c.leave, c.enter);
+    arcs[1] += HoleArcSize(polygon, c.hole, c.enter, c.leave);
+  }
+  AppendOuterChain(polygon.outer, path.x, path.y, m, arcs[0], &pieces[0].outer,
+                   &resolution->inherited[0], &edges[0]);
   for (int i = m - 1; i >= 0; --i) {
     const HoleCrossing& c = path.holes[i];
     AppendHoleChain(polygon, c.hole, c.leave, c.enter, i, &pieces[0].outer, &edges[0]);
   }
-  AppendOuterChain(polygon.outer, path.y, path.x, 0, &pieces[1].outer, &resolution->inherited[1],
-                   &edges[1]);
+  AppendOuterChain(polygon.outer, path.y, path.x, 0, arcs[1], &pieces[1].outer,
+                   &resolution->inherited[1], &edges[1]);
   for (int i = 0; i < m; ++i) {
     const HoleCrossing& c = path.holes[i];
     AppendHoleChain(polygon, c.hole, c.enter, c.leave, i + 1, &pieces[1].outer, &edges[1]);
