@@ -728,6 +728,27 @@ TEST(Decompose2dTest, PointsNearANeedleEdgeAddNoSliver) {
   ExpectEveryMeasureDecomposes(inputs, 0.05);
 }
 
+// Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-needle-foot-cut-sliver.wkt,
+// one of six polygons RepairPolygon() made of a ring crossing itself): a needle up to y = 5516,
+// its sides 1e-14 apart at its foot, is cut off by a diagonal from its foot; a second cut ends on
+// that diagonal at a point 1e-12 off the needle's edge, within that edge's noise, and the
+// diagonal's end is on the edge too. The exact areas of the components sum to the input's, but
+// CheckDecomposition() credited the sliver from that point to the needle's edge, 2.9e-9 (of an
+// area of 1e-3), and failed the tiling. The same needle 10 to 10,000 times as long.
+TEST(Decompose2dTest, CutFromTheFootOfANeedleAddsNoSliver) {
+  std::vector<std::vector<Polygon2d>> inputs = {
+      FuzzRegressionInput("regression-needle-foot-cut-sliver.wkt")};
+  const Ring2d found = inputs[0][0].outer;
+  ASSERT_EQ(found.size(), 9u);
+  for (const double stretch : {10.0, 100.0, 1000.0, 1e4}) {  // The needle's sides from its foot.
+    Ring2d ring = found;
+    ring[7] = ring[6] + stretch * (found[7] - found[6]);
+    ring[8] = ring[0] + stretch * (found[8] - found[0]);
+    inputs.push_back(PreparePolygons({ring, {}}, "needle"));
+  }
+  ExpectEveryMeasureDecomposes(inputs, 0.05);
+}
+
 // Found by fuzz/fuzz_decompose2d (fuzz/corpus/decompose2d/regression-underflowing-cut-length.wkt):
 // in (1 0, 9 90, 1 2, 1 1e-194, 0 0) the only cut that resolves the notch (1, 1e-194) goes to
 // the vertex (1, 0) straight below it, 1e-194 away, whose squared length underflows to 0: the
