@@ -740,6 +740,7 @@ TEST(Decompose2dTest, CutFromTheFootOfANeedleAddsNoSliver) {
       FuzzRegressionInput("regression-needle-foot-cut-sliver.wkt")};
   const Ring2d found = inputs[0][0].outer;
   ASSERT_EQ(found.size(), 9u);
+  ASSERT_GT(std::min(found[7].y(), found[8].y()), 5000.0);   // The needle's tip, as in the file.
   for (const double stretch : {10.0, 100.0, 1000.0, 1e4}) {  // The needle's sides from its foot.
     Ring2d ring = found;
     ring[7] = ring[6] + stretch * (found[7] - found[6]);
