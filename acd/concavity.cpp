@@ -869,11 +869,9 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
   // vertex strict (the hull grows by a triangle on that edge); one beyond more edges, or two
   // ends outside, and the piece is measured whole. The test, exact, finds the hull's wedge
   // around its vertex 0 that holds the point by bisection.
-  auto chain_offset = [&](int j) {  // Of parent vertex j, from the chain's first.
-    const int d = j - chain.parent_begin;
-    return d < 0 ? d + parent_n : d;
-  };
-  auto on_chain = [&](int k) { return chain_offset(parent.hull[k]) < chain.length; };
+  // Where the piece holds the parent's hull vertex k, or -1 (off the chain).
+  auto copied_hull = [&](int k) { return sources.CopiedAt(parent.hull[k]); };
+  auto on_chain = [&](int k) { return copied_hull(k) >= 0; };
   enum class Side { kInside, kBeyondOneEdge, kElsewhere };  // Of the parent's hull.
   auto against_parent_hull = [&](const Point2d& p) {
     const Point2d& pivot = parent_ring[parent.hull[0]];
@@ -910,7 +908,7 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
     const int k = first_k + t;
     return k < parent_h ? k : k - parent_h;
   };
-  auto position = [&](int t) { return chain.begin + chain_offset(parent.hull[hull_k(t)]); };
+  auto position = [&](int t) { return copied_hull(hull_k(t)); };
   int m = 0;  // How many are on the chain.
   while (m < parent_h && on_chain(hull_k(m))) ++m;
   if (m < 2) return measure_whole();
