@@ -77,18 +77,15 @@ void AppendPieceCutEdges(int parent_begin, int parent_end, int parent_n, int id,
                          const internal::PieceEdges& edges,
                          std::vector<internal::CutEdge>* buffer) {
   const int f = edges.first_outer_edge;
-  auto keep = [&](int j, int t) {
-    const internal::CutEdge e = (*buffer)[j];
-    if (t < edges.outer_count) buffer->push_back({t, e.node, e.cut});
-  };
-  // The piece's edge t lies on the parent's edge f + t (cyclically): from f on first.
-  for (int j = parent_begin; j < parent_end; ++j) {
-    const int edge = (*buffer)[j].edge;
-    if (edge >= f) keep(j, edge - f);
-  }
-  for (int j = parent_begin; j < parent_end; ++j) {
-    const int edge = (*buffer)[j].edge;
-    if (edge < f) keep(j, edge + parent_n - f);
+  // The piece's edge t lies on the parent's edge f + t (cyclically): in the piece's order, the
+  // parent's edges from f on, then those before f.
+  for (const bool before_f : {false, true}) {
+    for (int j = parent_begin; j < parent_end; ++j) {
+      const internal::CutEdge e = (*buffer)[j];
+      if ((e.edge < f) != before_f) continue;
+      const int t = before_f ? e.edge + parent_n - f : e.edge - f;
+      if (t < edges.outer_count) buffer->push_back({t, e.node, e.cut});
+    }
   }
   for (const auto& [edge, cut] : edges.cuts) buffer->push_back({edge, id, cut});
 }
