@@ -339,6 +339,21 @@ uint64_t EdgeKey(int a, int b) {
   return (static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32) | static_cast<uint32_t>(b);
 }
 
+// Breadth first over the triangles from `start`: for each triangle f reached and each of its
+// edges i, `enter(f, i)` decides whether the walk goes on into f->neighbor(i), marking it so
+// that it is entered once. `queue`: storage, empty on return.
+template <typename Enter>
+void WalkTriangles(const FaceHandle& start, Enter enter, std::deque<FaceHandle>* queue) {
+  queue->push_back(start);
+  while (!queue->empty()) {
+    const FaceHandle f = queue->front();
+    queue->pop_front();
+    for (int i = 0; i < 3; ++i) {
+      if (enter(f, i)) queue->push_back(f->neighbor(i));
+    }
+  }
+}
+
 // The first vertex of ring `r` that is not on `other` (a ring's points), with its bounded side;
 // ON_BOUNDARY when all are on it.
 CGAL::Bounded_side SideOfRing(const IndexedRing& ring, const std::vector<CgalPoint>& other,
@@ -489,20 +504,18 @@ std::vector<Polygon2d> PrepareTouching(std::vector<IndexedRing> rings, const std
   // left) to the right decreases the winding by net(a -> b).
   std::deque<FaceHandle> queue;
   cdt.infinite_face()->info().winding = 0;
-  queue.push_back(cdt.infinite_face());
-  while (!queue.empty()) {
-    const FaceHandle f = queue.front();
-    queue.pop_front();
-    for (int i = 0; i < 3; ++i) {
-      const FaceHandle g = f->neighbor(i);
-      if (g->info().winding != INT_MIN) continue;
-      const VertexHandle a = f->vertex(TouchCdt::ccw(i));
-      const VertexHandle b = f->vertex(TouchCdt::cw(i));
-      const bool infinite = cdt.is_infinite(a) || cdt.is_infinite(b);
-      g->info().winding = f->info().winding - (infinite ? 0 : net_of(a, b));
-      queue.push_back(g);
-    }
-  }
+  WalkTriangles(
+      cdt.infinite_face(),
+      [&](const FaceHandle& f, int i) {
+        const FaceHandle g = f->neighbor(i);
+        if (g->info().winding != INT_MIN) return false;
+        const VertexHandle a = f->vertex(TouchCdt::ccw(i));
+        const VertexHandle b = f->vertex(TouchCdt::cw(i));
+        const bool infinite = cdt.is_infinite(a) || cdt.is_infinite(b);
+        g->info().winding = f->info().winding - (infinite ? 0 : net_of(a, b));
+        return true;
+      },
+      &queue);
   auto point_of = [](const VertexHandle& v) { return Point2d(v->point().x(), v->point().y()); };
   auto rings_at = [&](const VertexHandle& v) {
     const std::vector<int>& o = owners[static_cast<size_t>(v->info())];
@@ -543,19 +556,17 @@ std::vector<Polygon2d> PrepareTouching(std::vector<IndexedRing> rings, const std
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (f->info().winding != 1 || f->info().component >= 0) continue;
     f->info().component = components;
-    queue.push_back(f);
-    while (!queue.empty()) {
-      const FaceHandle g = queue.front();
-      queue.pop_front();
-      for (int i = 0; i < 3; ++i) {
-        const FaceHandle h = g->neighbor(i);
-        if (h->info().winding != 1 || h->info().component >= 0 || cdt.is_constrained({g, i})) {
-          continue;
-        }
-        h->info().component = components;
-        queue.push_back(h);
-      }
-    }
+    WalkTriangles(
+        f,
+        [&](const FaceHandle& g, int i) {
+          const FaceHandle h = g->neighbor(i);
+          if (h->info().winding != 1 || h->info().component >= 0 || cdt.is_constrained({g, i})) {
+            return false;
+          }
+          h->info().component = components;
+          return true;
+        },
+        &queue);
     ++components;
   }
   // A hole bordering two parts closes a chain of touching rings across the interior.
@@ -643,20 +654,18 @@ std::vector<Polygon2d> PrepareTouching(std::vector<IndexedRing> rings, const std
     }
     const int piece = pieces++;
     add(f, piece);
-    queue.push_back(f);
-    while (!queue.empty()) {
-      const FaceHandle g = queue.front();
-      queue.pop_front();
-      for (int i = 0; i < 3; ++i) {
-        const FaceHandle h = g->neighbor(i);
-        if (h->info().component != c || h->info().piece >= 0 || cdt.is_constrained({g, i})) {
-          continue;
-        }
-        if (!may_join(h, piece)) continue;  // Tried again when another neighbour joins.
-        add(h, piece);
-        queue.push_back(h);
-      }
-    }
+    WalkTriangles(
+        f,
+        [&](const FaceHandle& g, int i) {
+          const FaceHandle h = g->neighbor(i);
+          if (h->info().component != c || h->info().piece >= 0 || cdt.is_constrained({g, i})) {
+            return false;
+          }
+          if (!may_join(h, piece)) return false;  // Tried again when another neighbour joins.
+          add(h, piece);
+          return true;
+        },
+        &queue);
   }
 
   // Rings of each piece: its boundary edges, piece on the left, chained (one out-edge per
