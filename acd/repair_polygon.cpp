@@ -4,13 +4,16 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "acd/internal/even_odd_regions.h"
 #include "acd/internal/ring_name.h"
 #include "acd/internal/text_parsing.h"
 #include "acd/prepare_polygon.h"
+#include "base/bit_hash.h"
 #include "base/format.h"
 #include "base/input_error.h"
 
@@ -31,6 +34,54 @@ int DistinctNonCollinear(const Ring2d& ring, bool* spans_area) {
     *spans_area = !CGAL::collinear(points[0], points[1], points[i]);
   }
   return static_cast<int>(points.size());
+}
+
+// `ring` without a vertex equal to the one before it (cyclically).
+Ring2d WithoutRepeatedVertices(const Ring2d& ring) {
+  Ring2d out;
+  for (const Point2d& p : ring) {
+    if (out.empty() || p != out.back()) out.push_back(p);
+  }
+  while (out.size() > 1 && out.back() == out.front()) out.pop_back();
+  return out;
+}
+
+// The fewest leading vertices of `ring` (no vertex equal to the one before it) that the ring
+// repeats to its end: its size unless it runs around the same vertices more than once.
+size_t Period(const Ring2d& ring) {
+  const size_t n = ring.size();
+  for (size_t p = 1; p < n; ++p) {
+    if (n % p != 0) continue;
+    bool repeats = true;
+    for (size_t i = p; i < n && repeats; ++i) repeats = ring[i] == ring[i - p];
+    if (repeats) return p;
+  }
+  return n;
+}
+
+// Whether rings `a` and `b` (no vertex equal to the one before it) have the same vertices in
+// the same cyclic order, in either direction.
+bool SameRing(const Ring2d& a, const Ring2d& b) {
+  const size_t n = a.size();
+  if (b.size() != n || n == 0) return false;
+  for (size_t s = 0; s < n; ++s) {
+    if (b[s] != a[0]) continue;
+    bool forward = true, backward = true;
+    for (size_t i = 1; i < n && (forward || backward); ++i) {
+      forward = forward && a[i] == b[(s + i) % n];
+      backward = backward && a[i] == b[(s + n - i) % n];
+    }
+    if (forward || backward) return true;
+  }
+  return false;
+}
+
+// A hash of the vertices of `ring` that ignores their order (so also where the ring starts and
+// which way it runs); -0 counts as 0.
+std::uint64_t VertexSetHash(const Ring2d& ring) {
+  std::uint64_t sum = ring.size();
+  for (const Point2d& p : ring) sum += BitHash(BitHash(kBitHashSeed, p.x() + 0.0), p.y() + 0.0);
+  return sum;
 }
 
 // The message of `error` without the "<where>: " it starts with.
@@ -95,20 +146,53 @@ RepairedPolygon RepairPolygon(const Polygon2d& raw, const std::string& where) {
     result.changes.push_back(where + ": repaired: nothing remains without the outer ring");
     return result;
   }
-  Polygon2d rest{raw.outer, {}};
-  for (size_t k = 1; k < kept.size(); ++k) rest.holes.push_back(ring_at(kept[k]));
-  if (kept.size() < ring_count) {
+
+  // 2. Rings given more than once. The even-odd rule counts every ring edge, so a ring that runs
+  // around twice, or a hole listed twice, would cancel itself out; GEOS's make-valid takes
+  // coincident edges once. Each is taken once here.
+  bool changed = kept.size() < ring_count;
+  std::vector<size_t> sources;   // The input's number of each ring in `rings`.
+  std::vector<Ring2d> rings;     // As given, unless it ran around more than once.
+  std::vector<Ring2d> distinct;  // `rings` without a vertex equal to the one before it.
+  std::unordered_map<std::uint64_t, std::vector<size_t>> holes_by_vertices;  // Into `rings`.
+  for (const size_t r : kept) {
+    Ring2d ring = WithoutRepeatedVertices(ring_at(r));
+    const size_t period = Period(ring);
+    const bool runs_around = period < ring.size();
+    if (runs_around) {
+      result.changes.push_back(where + ": repaired: " + RingName(r) + " runs around its first " +
+                               std::to_string(period) + " distinct vertices " +
+                               std::to_string(ring.size() / period) + " times: taken once");
+      ring.resize(period);
+      changed = true;
+    }
+    if (r > 0) {
+      std::vector<size_t>& same_vertices = holes_by_vertices[VertexSetHash(ring)];
+      const auto earlier = std::find_if(same_vertices.begin(), same_vertices.end(),
+                                        [&](size_t k) { return SameRing(distinct[k], ring); });
+      if (earlier != same_vertices.end()) {
+        result.changes.push_back(where + ": repaired: " + RingName(r) + " repeats " +
+                                 RingName(sources[*earlier]) + ": dropped");
+        changed = true;
+        continue;
+      }
+      same_vertices.push_back(rings.size());
+    }
+    sources.push_back(r);
+    rings.push_back(runs_around ? ring : ring_at(r));
+    distinct.push_back(std::move(ring));
+  }
+  if (changed) {
+    const Polygon2d rest{rings[0], std::vector<Ring2d>(rings.begin() + 1, rings.end())};
     try {
       result.polygons = PreparePolygons(rest, where);
       return result;
     } catch (const InputError& error) {
-      rule = WithInputHoleNumbers(Rule(error, where), kept);
+      rule = WithInputHoleNumbers(Rule(error, where), sources);
     }
   }
 
-  // 2. Even-odd rule over the exact arrangement of all ring edges.
-  std::vector<Ring2d> rings;
-  for (const size_t r : kept) rings.push_back(ring_at(r));
+  // 3. Even-odd rule over the exact arrangement of all ring edges.
   const std::vector<Polygon2d> parts = internal::EvenOddRegions({rings});
   size_t holes = 0;
   double area = 0.0;

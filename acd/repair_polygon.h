@@ -19,13 +19,21 @@ struct RepairedPolygon {
 /// change. Otherwise:
 ///  1. each ring that cleans to fewer than 3 distinct, non-collinear vertices (e.g. a hole with
 ///     two vertices) is dropped: "hole 2 has 2 distinct, non-collinear vertices: dropped";
-///  2. if the rest is still invalid, the rings' even-odd region (internal::EvenOddRegions():
+///  2. a ring given more than once is taken once: a ring that runs around the same vertices
+///     k times ("hole 1 runs around its first 4 distinct vertices 2 times: taken once"), a hole
+///     with the vertices of an earlier one in the same cyclic order, either way round ("hole 3
+///     repeats hole 0: dropped");
+///  3. if the rest is still invalid, the rings' even-odd region (internal::EvenOddRegions():
 ///     an exact arrangement of all ring edges; a face is inside when an odd number of ring
-///     edges separates it from the unbounded face, as GEOS's "linework" make-valid: a bow tie
-///     gives its two triangles, a hole crossing the outer ring gives the symmetric difference)
-///     is returned as polygons with holes: "<the rule broken>: rebuilt by the even-odd rule
-///     into N polygon(s) with H hole(s), area A";
-///  3. the result goes through PreparePolygons() (points where parts touch are handled there).
+///     edges separates it from the unbounded face: a bow tie gives its two triangles, a hole
+///     crossing the outer ring gives the symmetric difference, a spike out and back adds
+///     nothing) is returned as polygons with holes: "<the rule broken>: rebuilt by the even-odd
+///     rule into N polygon(s) with H hole(s), area A";
+///  4. the result goes through PreparePolygons() (points where parts touch are handled there).
+/// Where no two ring edges overlap, the area is GEOS's make-valid's ("linework", GEOS 3.11:
+/// 4,500 random self-crossing polygons with crossing holes, all equal to 1e-9); where edges
+/// overlap, GEOS merges them before it builds faces, and keeps area that spikes and holes
+/// sharing an edge with the outer ring enclose, which the even-odd rule does not.
 /// Crossing points are rounded to doubles at the end; a rounding that makes rings cross is
 /// reported as an InputError ("repair failed: ..."), not hidden.
 /// O((n + k) log n) for n edges crossing k times, plus PreparePolygons().
