@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -17,7 +18,7 @@ namespace {
 //               | MULTIPOLYGON [dim] (EMPTY | '(' (EMPTY | polygon) (',' (EMPTY | polygon))* ')')
 //               | GEOMETRYCOLLECTION [dim] (EMPTY | '(' geometry (',' geometry)* ')')
 //   polygon    := '(' ring (',' ring)* ')'   first ring outer, the others holes
-//   ring       := '(' point (',' point)* ')' closed: the last point repeats the first
+//   ring       := EMPTY | '(' point (',' point)* ')' closed: the last point repeats the first
 //   point      := number number [number [number]]   z and m are ignored
 //   dim        := Z | M | ZM
 class WktParser {
@@ -163,16 +164,32 @@ class WktParser {
     }
   }
 
+  // An EMPTY hole adds nothing; an EMPTY exterior ring leaves no polygon, and no hole may
+  // follow it (OGC 06-103r4 7.2.4 lets any ring be EMPTY; GEOS refuses holes in an empty shell).
   void ParsePolygon() {
     Expect('(');
+    SkipSpace();
+    const size_t start = pos_;
+    std::optional<Ring2d> outer = ParseRing();
     Polygon2d polygon;
-    polygon.outer = ParseRing();
-    while (CommaOr(')', "a ring")) polygon.holes.push_back(ParseRing());
+    while (CommaOr(')', "a ring")) {
+      if (std::optional<Ring2d> hole = ParseRing()) polygon.holes.push_back(std::move(*hole));
+    }
     Expect(')');
+    if (!outer) {
+      if (!polygon.holes.empty()) FailAt(start, "a polygon with an EMPTY exterior ring has a hole");
+      return;
+    }
+    polygon.outer = std::move(*outer);
     polygons_.push_back(std::move(polygon));
   }
 
-  Ring2d ParseRing() {
+  // A ring, or nothing for EMPTY.
+  std::optional<Ring2d> ParseRing() {
+    if (const std::string word = PeekWord(); word == "empty") {
+      pos_ += word.size();
+      return std::nullopt;
+    }
     Expect('(');
     const size_t start = pos_;
     Ring2d ring;

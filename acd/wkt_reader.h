@@ -9,7 +9,8 @@
 namespace acdplan::acd {
 
 /// Parses Well-Known Text: one or more POLYGON or MULTIPOLYGON geometries (GEOMETRYCOLLECTION of
-/// them too), case-insensitive, EMPTY allowed and skipped (also as a member of a MULTIPOLYGON),
+/// them too), case-insensitive, EMPTY allowed and skipped (also as a member of a MULTIPOLYGON,
+/// and as a hole; a polygon whose exterior ring is EMPTY must have no other ring),
 /// each optionally with PostGIS's EWKT prefix "SRID=<integer>;" (skipped). Rings must be closed
 /// (the last point repeats the first; it is dropped); z and m values are ignored. Messages read
 /// "<source>: <rule> at line L, column C, found '<word>'". Returns the polygons as written (not yet

@@ -61,6 +61,21 @@ TEST(WktReaderTest, ReadsPostgisEwktAndEmptyMembers) {
               HasSubstr("expected ';' at line 1, column 11, found 'POLYGON'"));
 }
 
+// OGC 06-103r4 lets a ring be EMPTY: an empty hole is skipped, an empty exterior ring leaves no
+// polygon; holes in an empty polygon are an error (GEOS: "shell is empty but holes are not").
+TEST(WktReaderTest, EmptyRingsAreSkipped) {
+  const std::vector<Polygon2d> polygons = WktOf(
+      "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), EMPTY, (1 1, 1 2, 2 2, 1 1), empty)\n"
+      "POLYGON (EMPTY)\nMULTIPOLYGON ((EMPTY), ((5 5, 6 5, 6 6, 5 5)))");
+  ASSERT_EQ(polygons.size(), 2u);
+  ASSERT_EQ(polygons[0].holes.size(), 1u);
+  EXPECT_EQ(polygons[0].holes[0], Ring2d({{1, 1}, {1, 2}, {2, 2}}));
+  EXPECT_EQ(polygons[1].outer, Ring2d({{5, 5}, {6, 5}, {6, 6}}));
+  EXPECT_THAT(WktErrorOf("POLYGON ( EMPTY, (1 1, 1 2, 2 2, 1 1))"),
+              HasSubstr("shape.wkt: a polygon with an EMPTY exterior ring has a hole at line 1, "
+                        "column 11, found 'EMPTY'"));
+}
+
 TEST(WktReaderTest, SyntaxErrorsNameLineColumnAndRule) {
   EXPECT_THAT(WktErrorOf("POLYGON 0 0, 1 0"),
               HasSubstr("shape.wkt: expected '(' at line 1, column 9, found '0'"));
