@@ -54,12 +54,15 @@ class GeoJsonWalker {
     if (type == "Polygon") {
       const Json& coordinates =
           Require(value, path, "coordinates", Json::value_t::array, "an array");
-      polygons_.push_back(Polygon(coordinates, Member(path, "coordinates")));
+      // RFC 7946 3.1: empty "coordinates" may stand for an empty geometry (WKT's POLYGON EMPTY).
+      if (!coordinates.empty())
+        polygons_.push_back(Polygon(coordinates, Member(path, "coordinates")));
     } else if (type == "MultiPolygon") {
       const Json& coordinates =
           Require(value, path, "coordinates", Json::value_t::array, "an array");
       const std::string member = Member(path, "coordinates");
       for (size_t i = 0; i < coordinates.size(); ++i) {
+        if (coordinates[i].is_array() && coordinates[i].empty()) continue;  // An empty member.
         polygons_.push_back(Polygon(coordinates[i], Index(member, i)));
       }
     } else if (type == "GeometryCollection") {
@@ -97,7 +100,7 @@ class GeoJsonWalker {
   Polygon2d Polygon(const Json& rings, const std::string& path) const {
     if (!rings.is_array())
       Fail(path, std::string("expected an array of rings, found ") + rings.type_name());
-    if (rings.empty()) Fail(path, "a polygon needs at least its exterior ring");
+    if (rings.empty()) Fail(path, "a polygon needs at least its exterior ring");  // Callers skip.
     Polygon2d polygon;
     polygon.outer = Ring(rings[0], Index(path, 0));
     for (size_t i = 1; i < rings.size(); ++i)

@@ -11,7 +11,8 @@ namespace acdplan::acd {
 /// Parses GeoJSON (RFC 7946): a Polygon, MultiPolygon, Feature or FeatureCollection (features of
 /// other geometry types are an error naming the feature index), or a GeometryCollection of those.
 /// Rings must be closed (the last position repeats the first; it is dropped); a third or
-/// further coordinate is ignored; a Feature with a null geometry holds no polygon. Messages
+/// further coordinate is ignored; a Feature with a null geometry holds no polygon, nor does a
+/// Polygon with empty "coordinates" or an empty member of a MultiPolygon's. Messages
 /// read "<source>: <element path>: <rule>", e.g.
 /// "shape.geojson: features[2].geometry: unsupported type 'LineString' (...)".
 /// Returns the polygons as written (not yet cleaned or validated: see PreparePolygon()).

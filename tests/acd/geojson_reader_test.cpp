@@ -53,6 +53,18 @@ TEST(GeoJsonReaderTest, ReadsFeatureCollectionMultiPolygonAndGeometryCollection)
   EXPECT_EQ(polygons[3].outer, Ring2d({{0, 0}, {2, 0}, {2, 2}}));
 }
 
+// RFC 7946 3.1: empty "coordinates" may be read as an empty geometry (shapely reads an empty
+// Polygon so); an empty member of a MultiPolygon is skipped as WKT's EMPTY member is.
+TEST(GeoJsonReaderTest, EmptyCoordinatesHoldNoPolygon) {
+  const std::vector<Polygon2d> polygons =
+      GeoJsonOf(R"({"type": "GeometryCollection", "geometries": [
+      {"type": "Polygon", "coordinates": []},
+      {"type": "MultiPolygon", "coordinates": [[], [[[0,0],[1,0],[1,1],[0,0]]]]},
+      {"type": "MultiPolygon", "coordinates": []}]})");
+  ASSERT_EQ(polygons.size(), 1u);
+  EXPECT_EQ(polygons[0].outer, Ring2d({{0, 0}, {1, 0}, {1, 1}}));
+}
+
 TEST(GeoJsonReaderTest, UnsupportedTypeNamesElementPath) {
   EXPECT_EQ(GeoJsonErrorOf(R"({"type": "FeatureCollection", "features": [
       {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,0]]]}},
