@@ -12,7 +12,7 @@ namespace acdplan::acd {
 /// other geometry types are an error naming the feature index), or a GeometryCollection of those.
 /// Rings must be closed (the last position repeats the first; it is dropped); a third or
 /// further coordinate is ignored; a Feature with a null geometry holds no polygon, nor does a
-/// Polygon with empty "coordinates" or an empty member of a MultiPolygon's. Messages
+/// Polygon with empty "coordinates" or an empty polygon in a MultiPolygon's. Messages
 /// read "<source>: <element path>: <rule>", e.g.
 /// "shape.geojson: features[2].geometry: unsupported type 'LineString' (...)".
 /// Returns the polygons as written (not yet cleaned or validated: see PreparePolygon()).

@@ -32,8 +32,9 @@ struct RepairedPolygon {
 ///  4. the result goes through PreparePolygons() (points where parts touch are handled there).
 /// Where no two ring edges overlap, the area is GEOS's make-valid's ("linework", GEOS 3.11:
 /// 4,500 random self-crossing polygons with crossing holes, all equal to 1e-9); where edges
-/// overlap, GEOS merges them before it builds faces, and keeps area that spikes and holes
-/// sharing an edge with the outer ring enclose, which the even-odd rule does not.
+/// overlap, GEOS merges them before it builds faces and keeps area that the even-odd rule
+/// leaves out: what a spike closes off, and a hole that shares part of an edge with the outer
+/// ring (kept filled).
 /// Crossing points are rounded to doubles at the end; a rounding that makes rings cross is
 /// reported as an InputError ("repair failed: ..."), not hidden.
 /// O((n + k) log n) for n edges crossing k times, plus PreparePolygons().
