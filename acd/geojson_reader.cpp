@@ -54,17 +54,12 @@ class GeoJsonWalker {
     if (type == "Polygon") {
       const Json& coordinates =
           Require(value, path, "coordinates", Json::value_t::array, "an array");
-      // RFC 7946 3.1: empty "coordinates" may stand for an empty geometry (WKT's POLYGON EMPTY).
-      if (!coordinates.empty())
-        polygons_.push_back(Polygon(coordinates, Member(path, "coordinates")));
+      AddPolygon(coordinates, Member(path, "coordinates"));
     } else if (type == "MultiPolygon") {
       const Json& coordinates =
           Require(value, path, "coordinates", Json::value_t::array, "an array");
       const std::string member = Member(path, "coordinates");
-      for (size_t i = 0; i < coordinates.size(); ++i) {
-        if (coordinates[i].is_array() && coordinates[i].empty()) continue;  // An empty member.
-        polygons_.push_back(Polygon(coordinates[i], Index(member, i)));
-      }
+      for (size_t i = 0; i < coordinates.size(); ++i) AddPolygon(coordinates[i], Index(member, i));
     } else if (type == "GeometryCollection") {
       const Json& geometries = Require(value, path, "geometries", Json::value_t::array, "an array");
       const std::string member = Member(path, "geometries");
@@ -96,16 +91,17 @@ class GeoJsonWalker {
     }
   }
 
-  // RFC 7946 3.1.6: an array of linear rings, the first the exterior, the others holes.
-  Polygon2d Polygon(const Json& rings, const std::string& path) const {
+  // RFC 7946 3.1.6: an array of linear rings, the first the exterior, the others holes. An empty
+  // array adds nothing (3.1: empty "coordinates" may stand for an empty geometry, as WKT's EMPTY).
+  void AddPolygon(const Json& rings, const std::string& path) {
     if (!rings.is_array())
       Fail(path, std::string("expected an array of rings, found ") + rings.type_name());
-    if (rings.empty()) Fail(path, "a polygon needs at least its exterior ring");  // Callers skip.
+    if (rings.empty()) return;
     Polygon2d polygon;
     polygon.outer = Ring(rings[0], Index(path, 0));
     for (size_t i = 1; i < rings.size(); ++i)
       polygon.holes.push_back(Ring(rings[i], Index(path, i)));
-    return polygon;
+    polygons_.push_back(std::move(polygon));
   }
 
   // A closed ring: the last position repeats the first and is dropped.
