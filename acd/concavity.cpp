@@ -923,15 +923,13 @@ Concavity2d MeasureChildConcavity(const Polygon2d& piece, const InheritedChain& 
   const ScratchScope kept_scope(kept_buffer);
   if (kept_buffer.size() < static_cast<size_t>(kept_size)) kept_buffer.resize(kept_size);
   int* const kept = kept_buffer.data();
-  for (int t = 0; t < m; ++t) {
-    const int at = position(t);
-    kept[t] = at;
-    if (t + 1 == m) break;
-    const int count = position(t + 1) - at - 1;  // The gap's vertices.
-    const int from = parent.hull[hull_k(t)] + 1;
+  for (int t = 0; t < m; ++t) kept[t] = position(t);
+  {  // The inherited gaps, and the hull vertices between them (0 in both), in one run.
+    const int count = last - first + 1;
+    const int from = parent.hull[hull_k(0)];
     const int run = std::min(count, parent_n - from);  // Before the parent's ring wraps.
-    std::copy_n(parent.outer.begin() + from, run, result.outer.begin() + at + 1);
-    std::copy_n(parent.outer.begin(), count - run, result.outer.begin() + at + 1 + run);
+    std::copy_n(parent.outer.begin() + from, run, result.outer.begin() + first);
+    std::copy_n(parent.outer.begin(), count - run, result.outer.begin() + first + run);
   }
   std::iota(kept + m, kept + m + (n - 1 - last), last + 1);
   std::iota(kept + m + (n - 1 - last), kept + kept_size, 0);

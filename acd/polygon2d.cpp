@@ -9,6 +9,15 @@ namespace acdplan::acd {
 
 namespace {
 
+// a + b = *sum + *error exactly (Knuth's TwoSum: no branch on which of a, b is larger, which
+// comes at random along a ring).
+void TwoSum(double a, double b, double* sum, double* error) {
+  const double s = a + b;
+  const double virtual_b = s - a;
+  *error = (a - (s - virtual_b)) + (b - virtual_b);
+  *sum = s;
+}
+
 // Exact twice the signed area of `ring` (Shewchuk, "Adaptive precision floating-point arithmetic
 // and fast robust geometric predicates", 1997): every cross product x_i y_j - y_i x_j is split
 // into four doubles by TwoProduct (std::fma gives the rounding error of a product exactly) and
@@ -23,10 +32,8 @@ double ExactTwiceSignedArea(const Ring2d& ring) {
     double q = b;
     size_t out = 0;
     for (size_t i = 0; i < expansion.size(); ++i) {
-      const double sum = q + expansion[i];  // TwoSum(q, e_i) = sum + error, exactly.
-      const double virtual_b = sum - q;
-      const double error = (q - (sum - virtual_b)) + (expansion[i] - virtual_b);
-      q = sum;
+      double error;
+      TwoSum(q, expansion[i], &q, &error);
       if (error != 0.0) expansion[out++] = error;
     }
     expansion.resize(out);
@@ -69,10 +76,9 @@ double CompensatedTwiceSignedArea(const Ring2d& ring, double* error_bound) {
   const size_t n = ring.size();
   double sum = 0.0, compensation = 0.0, magnitude = 0.0;
   auto add = [&](double x) {
-    const double s = sum + x;
-    const double virtual_x = s - sum;
-    compensation += (sum - (s - virtual_x)) + (x - virtual_x);
-    sum = s;
+    double error;
+    TwoSum(sum, x, &sum, &error);
+    compensation += error;
   };
   for (size_t i = 0; i < n; ++i) {
     const Point2d& a = ring[i];
@@ -99,17 +105,16 @@ double SignedArea(const Ring2d& ring) {
   if (n < 3) return 0.0;
   // Relative to the first vertex: far from the origin the plain shoelace sum cancels.
   const Point2d origin = ring.front();
-  double twice_area = 0.0, compensation = 0.0;  // Neumaier's compensated sum.
+  double twice_area = 0.0, compensation = 0.0;  // A compensated sum (Neumaier's).
   double magnitude = 0.0;
   for (size_t i = 1; i + 1 < n; ++i) {
     const Point2d a = ring[i] - origin;
     const Point2d b = ring[i + 1] - origin;
     const double left = a.x() * b.y(), right = a.y() * b.x();
     const double term = left - right;
-    const double sum = twice_area + term;
-    compensation += std::abs(twice_area) >= std::abs(term) ? (twice_area - sum) + term
-                                                           : (term - sum) + twice_area;
-    twice_area = sum;
+    double error;
+    TwoSum(twice_area, term, &twice_area, &error);
+    compensation += error;
     magnitude += std::abs(left) + std::abs(right);
   }
   twice_area += compensation;
