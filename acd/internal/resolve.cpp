@@ -1061,21 +1061,42 @@ void SplitAlongPath(const Polygon2d& polygon, const HolePath& path, const Point2
 // where it was entered, again to the closest visible point, until the outer boundary is
 // reached. The piece splits in two along this path and every hole on it is resolved by the one
 // split: where holes lie closer to each other than to the outer boundary (cells separated by
-// thin walls), the path crosses walls instead of running around them. Returns false, leaving
-// the choice to ResolveHole(), when no hole is reached or the path cannot be completed.
+// thin walls), the path crosses walls instead of running around them. Among many holes (a
+// noisy occupancy grid) such a walk can curl round and shut itself in, and its failed search
+// has offered every boundary point. Then both sides walk again, each only ever ahead, along
+// p - cw(p) on p's side and back along it on cw(p)'s, starting from h's vertex farthest that
+// way, entering each hole below its top and leaving it from its vertex farthest ahead: no link
+// goes back past another, so no side shuts itself in (a hole one side crosses may still reach
+// into the other's way). Returns false, leaving the choice to ResolveHole(), when no hole is
+// reached or the path cannot be completed.
 bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
                           const Concavity2d& concavity, int h, Resolution* resolution) {
   const int k = static_cast<int>(polygon.holes.size());
   if (k < 2) return false;
   std::vector<char> crossed(k, 0);
-  crossed[h] = 1;
   std::vector<std::pair<Point2d, Point2d>> cuts;  // Made so far, for the crossing test.
   std::optional<Endpoint> outer_end;              // The first side's end.
   // Links `from` (a vertex of a crossed hole) to the closest visible point not on a crossed
-  // hole and crossing no cut made so far; an outer end other than the first side's vertex or
-  // edge (AppendOuterChain() orders ends by vertex and edge).
-  auto link = [&](const Endpoint& from) -> std::optional<Endpoint> {
+  // hole, crossing no cut made so far and, given `ahead`, lying ahead of `from` along it; an
+  // outer end other than the first side's vertex or edge (AppendOuterChain() orders ends by
+  // vertex and edge).
+  std::vector<double> hole_top;  // Per hole, its farthest reach along `ahead`, once needed.
+  auto link = [&](const Endpoint& from, const Point2d* ahead) -> std::optional<Endpoint> {
     auto accept = [&](const Endpoint& e) {
+      if (ahead != nullptr) {
+        // Ahead of `from`, and on a hole only below the hole's top: the walk leaves from there,
+        // ahead of the cut that enters (left from a vertex behind that cut, it was shut in).
+        if (!((e.point - from.point).dot(*ahead) > 0.0)) return false;
+        if (e.ring >= 0) {
+          if (hole_top.empty()) hole_top.assign(k, std::numeric_limits<double>::quiet_NaN());
+          double& top = hole_top[e.ring];
+          if (std::isnan(top)) {
+            top = -std::numeric_limits<double>::infinity();
+            for (const Point2d& v : polygon.holes[e.ring]) top = std::max(top, v.dot(*ahead));
+          }
+          if (!(e.point.dot(*ahead) < top)) return false;
+        }
+      }
       if (e.ring < 0 && outer_end && e.index == outer_end->index &&
           e.on_edge == outer_end->on_edge) {
         return false;
@@ -1095,10 +1116,11 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
     std::vector<HoleCrossing> holes;
     Endpoint end;
   };
-  auto walk = [&](int start, Side* side) {
+  auto walk = [&](int start, const Point2d* ahead, Side* side) {
+    hole_top.clear();  // (Along this side's `ahead`.)
     Endpoint from{h, start, false, polygon.holes[h][start]};
     for (;;) {
-      const std::optional<Endpoint> to = link(from);
+      const std::optional<Endpoint> to = link(from, ahead);
       if (!to) return false;
       cuts.emplace_back(from.point, to->point);
       if (to->ring < 0) {
@@ -1106,22 +1128,45 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
         outer_end = *to;
         return true;
       }
+      // Left from its vertex farthest from the entry, or farthest ahead; not the entry.
       const Ring2d& hole = polygon.holes[to->ring];
-      int farthest = to->index == 0 ? 1 : 0;
+      auto reach = [&](int i) {
+        return ahead != nullptr ? hole[i].dot(*ahead) : (hole[i] - to->point).squaredNorm();
+      };
+      int leave = to->index == 0 ? 1 : 0;
       for (int i = 0; i < static_cast<int>(hole.size()); ++i) {
-        if ((hole[i] - to->point).squaredNorm() > (hole[farthest] - to->point).squaredNorm()) {
-          farthest = i;
-        }
+        if (i != to->index && reach(i) > reach(leave)) leave = i;
       }
       crossed[to->ring] = 1;
-      side->holes.push_back({to->ring, to->index, farthest});
-      from = {to->ring, farthest, false, hole[farthest]};
+      side->holes.push_back({to->ring, to->index, leave});
+      from = {to->ring, leave, false, hole[leave]};
     }
   };
   const HoleConcavity& antipodes = concavity.holes[h];
   if (antipodes.p == antipodes.cw_p) return false;
   Side a, b;
-  if (!walk(antipodes.p, &a) || !walk(antipodes.cw_p, &b)) return false;
+  int start_a = antipodes.p, start_b = antipodes.cw_p;  // Where the sides leave hole h.
+  auto walk_both = [&](const Point2d* ahead_a, const Point2d* ahead_b) {
+    std::fill(crossed.begin(), crossed.end(), 0);
+    crossed[h] = 1;
+    cuts.clear();
+    outer_end.reset();
+    a = Side();
+    b = Side();
+    return walk(start_a, ahead_a, &a) && walk(start_b, ahead_b, &b);
+  };
+  if (!walk_both(nullptr, nullptr)) {
+    // Along p - cw(p), from h's vertices farthest ahead and farthest behind: then h, too, lies
+    // behind both sides (a hole curled round may reach past p and cw(p)).
+    const Ring2d& ring = polygon.holes[h];
+    const Point2d ahead = ring[antipodes.p] - ring[antipodes.cw_p];
+    const Point2d behind = -ahead;
+    for (int i = 0; i < static_cast<int>(ring.size()); ++i) {
+      if (ring[i].dot(ahead) > ring[start_a].dot(ahead)) start_a = i;
+      if (ring[i].dot(behind) > ring[start_b].dot(behind)) start_b = i;
+    }
+    if (!walk_both(&ahead, &behind)) return false;
+  }
   if (a.holes.empty() && b.holes.empty()) return false;  // ResolveHole()'s two cuts.
   const Endpoint& x = a.end;
   const Endpoint& y = b.end;
@@ -1130,9 +1175,9 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
   for (auto it = a.holes.rbegin(); it != a.holes.rend(); ++it) {
     path.holes.push_back({it->hole, it->leave, it->enter});
   }
-  path.holes.push_back({h, antipodes.p, antipodes.cw_p});
+  path.holes.push_back({h, start_a, start_b});
   path.holes.insert(path.holes.end(), b.holes.begin(), b.holes.end());
-  SplitAlongPath(polygon, path, polygon.holes[h][antipodes.p], resolution);
+  SplitAlongPath(polygon, path, polygon.holes[h][start_a], resolution);
   return true;
 }
 

@@ -66,7 +66,8 @@ struct Resolution {
 ///    is cut along a path: p and cw(p) each link to the closest visible point of another ring
 ///    (Eqn. 4.2's link), a hole reached is left at its vertex farthest from where it was entered
 ///    (its cw, Fig. 19) and linked on, until both ends reach the outer boundary; every hole on
-///    the path is resolved by the one split.
+///    the path is resolved by the one split. Should that walk shut itself in (among many holes),
+///    each end walks again only ever ahead, away from the other.
 ///  - Otherwise a hole is connected at p to the closest visible outer vertex x (Algorithm 5)
 ///    and, so that the piece splits in two, at cw(p) by the best-scoring cut to the outer
 ///    boundary (the cut the next iteration would make at cw(p), the pocket's deepest point,

@@ -3,8 +3,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
+#include "acd/concavity.h"
 #include "envs/occupancy_grid.h"
 #include "test_util.h"
 
@@ -194,6 +196,42 @@ TEST(FreeSpace2dTest, RandomGridsGiveValidFreeSpace) {
     EXPECT_LE(TotalArea(free), expected + 1e-9) << "seed " << seed;
     EXPECT_GE(TotalArea(free), expected - pinch * grid.width * grid.height) << "seed " << seed;
     ExpectValidAndDecomposes(free);
+  }
+}
+
+TEST(FreeSpace2dTest, NoisyGridIsSplitAtEachPiecesWitness) {
+  // The free space of a noisy occupancy grid is one region with holes on every side of every
+  // hole. Each split resolves its piece's most concave feature (Algorithm 1): a hole is cut
+  // along a path through its neighbours to the outer boundary even where a walk from hole to
+  // nearest hole curls round and shuts itself in. (Before, such a split went to another
+  // feature after searches of every boundary point: a 256 x 256 grid took minutes. Not
+  // guaranteed: at 35% blocked cells 7 of 27,000 splits of such grids still go elsewhere.)
+  acd::Decompose2dOptions options;
+  options.measure = acd::ConcavityMeasure::kStraightLine;
+  options.keep_pieces = true;
+  options.tau = 0.02 * 48.0 * std::sqrt(2.0);  // As `acdplan env` takes it: 2% of the diagonal.
+  acd::ConcavityOptions measure;
+  measure.measure = options.measure;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    std::mt19937_64 rng(seed);
+    OccupancyGrid grid;
+    grid.width = grid.height = 48;
+    for (int i = 0; i < grid.width * grid.height; ++i) grid.blocked.push_back(rng() % 4 == 0);
+    const std::vector<acd::Polygon2d> free = FreeSpace2d(GridWorkspace(grid));
+    const acd::Decomposition2d d = acd::Decompose2d(free, options);
+    const acd::DecompositionCheck check = acd::CheckDecomposition(free, d);
+    EXPECT_TRUE(check.ok()) << "seed " << seed << ": " << (check.ok() ? "" : check.problems[0]);
+    for (const acd::HierarchyNode2d& node : d.tree) {
+      if (node.children[0] < 0) continue;
+      const acd::Concavity2d c = acd::MeasureConcavity(node.piece, measure);
+      // A hole's split names one of the hole's vertices, where its cuts leave it.
+      const acd::Ring2d witnesses = c.witness_hole >= 0
+                                        ? node.piece.holes[c.witness_hole]
+                                        : acd::Ring2d{node.piece.outer[c.witness_vertex]};
+      EXPECT_THAT(witnesses, ::testing::Contains(node.witness))
+          << "seed " << seed << ": a piece of " << acd::VertexCount(node.piece) << " vertices and "
+          << node.piece.holes.size() << " holes";
+    }
   }
 }
 
