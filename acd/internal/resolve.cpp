@@ -38,6 +38,16 @@ const Ring2d& RingOf(const Polygon2d& polygon, int ring) {
 int Next(int i, int n) { return i + 1 == n ? 0 : i + 1; }
 int Prev(int i, int n) { return i == 0 ? n - 1 : i - 1; }
 
+// The vertex of `ring` farthest along `along`: `preferred` unless one lies farther, then the
+// first of those farthest.
+int FarthestAlong(const Ring2d& ring, const Point2d& along, int preferred = 0) {
+  int farthest = preferred;
+  for (int i = 0; i < static_cast<int>(ring.size()); ++i) {
+    if (ring[i].dot(along) > ring[farthest].dot(along)) farthest = i;
+  }
+  return farthest;
+}
+
 // Whether a segment leaving `e` toward `target` starts strictly into the interior. Every ring
 // keeps the interior on its left (outer counter-clockwise, holes clockwise).
 bool LeavesInward(const Polygon2d& polygon, const Endpoint& e, const Point2d& target) {
@@ -1080,7 +1090,13 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
   // hole, crossing no cut made so far and, given `ahead`, lying ahead of `from` along it; an
   // outer end other than the first side's vertex or edge (AppendOuterChain() orders ends by
   // vertex and edge).
-  std::vector<double> hole_top;  // Per hole, its farthest reach along `ahead`, once needed.
+  // Per hole, its vertex farthest along `ahead` (-1: not found yet), where a walk leaves it.
+  std::vector<int> hole_top;
+  auto top_of = [&](int hole, const Point2d& ahead) {
+    if (hole_top.empty()) hole_top.assign(k, -1);
+    if (hole_top[hole] < 0) hole_top[hole] = FarthestAlong(polygon.holes[hole], ahead);
+    return hole_top[hole];
+  };
   auto link = [&](const Endpoint& from, const Point2d* ahead) -> std::optional<Endpoint> {
     auto accept = [&](const Endpoint& e) {
       if (ahead != nullptr) {
@@ -1088,13 +1104,8 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
         // ahead of the cut that enters (left from a vertex behind that cut, it was shut in).
         if (!((e.point - from.point).dot(*ahead) > 0.0)) return false;
         if (e.ring >= 0) {
-          if (hole_top.empty()) hole_top.assign(k, std::numeric_limits<double>::quiet_NaN());
-          double& top = hole_top[e.ring];
-          if (std::isnan(top)) {
-            top = -std::numeric_limits<double>::infinity();
-            for (const Point2d& v : polygon.holes[e.ring]) top = std::max(top, v.dot(*ahead));
-          }
-          if (!(e.point.dot(*ahead) < top)) return false;
+          const Point2d& top = polygon.holes[e.ring][top_of(e.ring, *ahead)];
+          if (!(e.point.dot(*ahead) < top.dot(*ahead))) return false;
         }
       }
       if (e.ring < 0 && outer_end && e.index == outer_end->index &&
@@ -1128,14 +1139,17 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
         outer_end = *to;
         return true;
       }
-      // Left from its vertex farthest from the entry, or farthest ahead; not the entry.
+      // Left from its vertex farthest from the entry, or its top (the entry lies below it).
       const Ring2d& hole = polygon.holes[to->ring];
-      auto reach = [&](int i) {
-        return ahead != nullptr ? hole[i].dot(*ahead) : (hole[i] - to->point).squaredNorm();
-      };
       int leave = to->index == 0 ? 1 : 0;
-      for (int i = 0; i < static_cast<int>(hole.size()); ++i) {
-        if (i != to->index && reach(i) > reach(leave)) leave = i;
+      if (ahead != nullptr) {
+        leave = top_of(to->ring, *ahead);
+      } else {
+        for (int i = 0; i < static_cast<int>(hole.size()); ++i) {
+          if ((hole[i] - to->point).squaredNorm() > (hole[leave] - to->point).squaredNorm()) {
+            leave = i;
+          }
+        }
       }
       crossed[to->ring] = 1;
       side->holes.push_back({to->ring, to->index, leave});
@@ -1161,10 +1175,8 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
     const Ring2d& ring = polygon.holes[h];
     const Point2d ahead = ring[antipodes.p] - ring[antipodes.cw_p];
     const Point2d behind = -ahead;
-    for (int i = 0; i < static_cast<int>(ring.size()); ++i) {
-      if (ring[i].dot(ahead) > ring[start_a].dot(ahead)) start_a = i;
-      if (ring[i].dot(behind) > ring[start_b].dot(behind)) start_b = i;
-    }
+    start_a = FarthestAlong(ring, ahead, antipodes.p);
+    start_b = FarthestAlong(ring, behind, antipodes.cw_p);
     if (!walk_both(&ahead, &behind)) return false;
   }
   if (a.holes.empty() && b.holes.empty()) return false;  // ResolveHole()'s two cuts.
