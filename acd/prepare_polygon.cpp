@@ -21,6 +21,7 @@
 #include <string>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "acd/internal/ring_name.h"
@@ -370,13 +371,15 @@ CGAL::Bounded_side SideOfRing(const IndexedRing& ring, const std::vector<CgalPoi
 }
 
 // Disjoint (or only touching) holes are nested when one's vertex off the other's ring lies
-// inside the other. Bounding boxes filter the O(h^2) pairs.
+// inside the other. Bounding boxes filter the O(h^2) pairs: with the holes sorted by their boxes'
+// left sides, a hole's box can only lie in the boxes whose left side is at most its own. Where
+// several pairs nest, the first in (inner, outer) hole order is named.
 void RejectNestedHoles(const std::vector<IndexedRing>& rings, const std::string& where) {
-  // Disjoint holes are nested when one vertex of one lies inside the other.
   struct Box {
     double xmin, xmax, ymin, ymax;
   };
   std::vector<Box> boxes(rings.size());
+  std::vector<size_t> by_xmin;
   for (size_t r = 1; r < rings.size(); ++r) {
     Box b{HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
     for (const CgalPoint& p : rings[r].points) {
@@ -384,21 +387,33 @@ void RejectNestedHoles(const std::vector<IndexedRing>& rings, const std::string&
            std::max(b.ymax, p.y())};
     }
     boxes[r] = b;
+    by_xmin.push_back(r);
   }
-  for (size_t a = 1; a < rings.size(); ++a) {
-    for (size_t b = 1; b < rings.size(); ++b) {
-      if (a == b) continue;
-      const Box& box = boxes[b];
+  std::sort(by_xmin.begin(), by_xmin.end(),
+            [&](size_t a, size_t b) { return boxes[a].xmin < boxes[b].xmin; });
+  std::pair<size_t, size_t> nested{rings.size(), rings.size()};  // (inner, outer)
+  for (size_t k = 0; k < by_xmin.size(); ++k) {
+    const size_t b = by_xmin[k];
+    const Box& box = boxes[b];
+    // Holes whose boxes start at or right of b's, up to its right side (ties on either side).
+    size_t first = k;
+    while (first > 0 && boxes[by_xmin[first - 1]].xmin == box.xmin) --first;
+    for (size_t j = first; j < by_xmin.size() && boxes[by_xmin[j]].xmin <= box.xmax; ++j) {
+      const size_t a = by_xmin[j];
       const Box& inner = boxes[a];
-      if (inner.xmin < box.xmin || inner.xmax > box.xmax || inner.ymin < box.ymin ||
-          inner.ymax > box.ymax) {
+      if (a == b || inner.xmax > box.xmax || inner.ymin < box.ymin || inner.ymax > box.ymax ||
+          std::make_pair(a, b) > nested) {
         continue;
       }
       size_t vertex = 0;
       if (SideOfRing(rings[a], rings[b].points, &vertex) == CGAL::ON_BOUNDED_SIDE) {
-        Fail(where, RingName(a) + " lies inside " + RingName(b) + " (holes must not be nested)");
+        nested = {a, b};
       }
     }
+  }
+  if (nested.first < rings.size()) {
+    Fail(where, RingName(nested.first) + " lies inside " + RingName(nested.second) +
+                    " (holes must not be nested)");
   }
 }
 

@@ -183,6 +183,17 @@ TEST(PreparePolygonTest, RejectsNestedHoles) {
       AllOf(HasSubstr("hole 1 lies inside hole 0"), HasSubstr("nested")));
 }
 
+TEST(PreparePolygonTest, NamesTheFirstNestedHoleAmongMany) {
+  // Holes 0 - 29 in a row; hole 31 lies in hole 5, hole 32 in hole 30, which lies left of hole 5:
+  // the first nested hole in hole order is named, whichever container comes first in space.
+  Polygon2d raw{SquareRing(0, 0, 100), {}};
+  for (int k = 0; k < 30; ++k) raw.holes.push_back(SquareRing(1 + 3 * k, 1, 2));
+  raw.holes.push_back(SquareRing(10, 50, 10));
+  raw.holes.push_back(SquareRing(16.5, 1.5, 1));
+  raw.holes.push_back(SquareRing(12, 52, 2));
+  EXPECT_THAT(PreparePolygonErrorOf(raw), HasSubstr("hole 31 lies inside hole 5 (holes must not"));
+}
+
 TEST(PreparePolygonTest, AcceptsManyDisjointHoles) {
   Polygon2d raw{SquareRing(0, 0, 100), {}};
   for (int i = 0; i < 10; ++i) {
