@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "acd/prepare_polygon.h"
 #include "base/input_error.h"
 #include "envs/internal/exact_polygons.h"
+#include "envs/internal/rectilinear_free_space.h"
 
 namespace acdplan::envs {
 namespace {
@@ -88,17 +90,9 @@ std::vector<Point> HolePinches(const SplitRegion& split) {
   return pinches;
 }
 
-}  // namespace
-
-std::vector<acd::Polygon2d> FreeSpace2d(const Workspace2d& workspace,
-                                        const FreeSpace2dOptions& options) {
-  const Workspace2d prepared = PrepareWorkspace2d(workspace, "FreeSpace2d()");
-  if (!std::isfinite(options.pinch_gap) || !(options.pinch_gap > 0.0)) {
-    throw InputError("FreeSpace2d(): pinch_gap must be finite and > 0, got " +
-                     std::to_string(options.pinch_gap));
-  }
-  const double gap = options.pinch_gap * prepared.bounds.diagonal().norm();
-
+// The free space of `prepared` by exact Boolean operations, pinches closed by diamonds of
+// half-diagonal `gap` and lobes split (FreeSpace2d()), unsorted and not yet prepared.
+std::vector<acd::Polygon2d> BooleanFreeSpace(const Workspace2d& prepared, double gap) {
   std::vector<PolygonWithHoles> obstacles;
   obstacles.reserve(prepared.obstacles.size());
   for (const acd::Polygon2d& obstacle : prepared.obstacles) obstacles.push_back(ToCgal(obstacle));
@@ -165,6 +159,22 @@ std::vector<acd::Polygon2d> FreeSpace2d(const Workspace2d& workspace,
     }
     for (acd::Polygon2d& lobe : lobes) result.push_back(std::move(lobe));
   }
+  return result;
+}
+
+}  // namespace
+
+std::vector<acd::Polygon2d> FreeSpace2d(const Workspace2d& workspace,
+                                        const FreeSpace2dOptions& options) {
+  const Workspace2d prepared = PrepareWorkspace2d(workspace, "FreeSpace2d()");
+  if (!std::isfinite(options.pinch_gap) || !(options.pinch_gap > 0.0)) {
+    throw InputError("FreeSpace2d(): pinch_gap must be finite and > 0, got " +
+                     std::to_string(options.pinch_gap));
+  }
+  const double gap = options.pinch_gap * prepared.bounds.diagonal().norm();
+  std::optional<std::vector<acd::Polygon2d>> traced = internal::RectilinearFreeSpace(prepared, gap);
+  std::vector<acd::Polygon2d> result =
+      traced ? std::move(*traced) : BooleanFreeSpace(prepared, gap);
   auto lowest_left = [](const acd::Polygon2d& polygon) {
     acd::Point2d best = polygon.outer.front();
     for (const acd::Point2d& p : polygon.outer) {

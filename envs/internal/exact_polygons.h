@@ -18,8 +18,9 @@ using ExactPolygon = CGAL::Polygon_2<ExactKernel>;
 using ExactPolygonWithHoles = CGAL::Polygon_with_holes_2<ExactKernel>;
 using ExactPolygonSet = CGAL::Polygon_set_2<ExactKernel>;
 
-/// The ring of `points` (any sequence of ExactPoint) rounded to the nearest doubles, reproducibly
+/// The ring of `points` (any sequence of ExactPoint) rounded to doubles, reproducibly
 /// (acd::internal::RoundToDouble(): CGAL::to_double's result depends on evaluation history).
+/// Not always the nearest double: free-space points were seen 1 ulp toward zero from it.
 template <typename Points>
 acd::Ring2d ToDouble(const Points& points) {
   acd::Ring2d ring;

@@ -62,8 +62,11 @@ class Tracer {
     }
   }
 
-  std::vector<acd::Polygon2d> Trace(const std::vector<double>& xs,
-                                    const std::vector<double>& ys) const {
+  // The boundary rings of every label, keeping the label on the left. A corner where the
+  // label pinches (both passes of its boundary; none is left after CutPinches()) is cut off by
+  // `chamfer`: the ring passes through the points `chamfer` before and after it on its edges.
+  std::vector<acd::Polygon2d> Trace(const std::vector<double>& xs, const std::vector<double>& ys,
+                                    double chamfer) const {
     std::vector<acd::Polygon2d> polygons(cells_.size());
     std::vector<char> has_outer(cells_.size(), 0);
     std::vector<std::uint8_t> visited(label_.size(), 0);  // Bottom edge of a cell walked.
@@ -73,7 +76,10 @@ class Tracer {
         const int label = Label(cx, cy);
         if (label < 0 || Label(cx, cy - 1) == label || visited[Index(cx, cy)]) continue;
         // Walk with the label on the left, starting east along the cell's bottom edge.
-        std::vector<std::array<int, 2>> corners;
+        struct Corner {
+          int x, y, in, out;  // Grid corner; directions of the edges into and out of it.
+        };
+        std::vector<Corner> corners;
         int x = cx, y = cy, d = 0;
         do {
           if (d == 0) visited[Index(x, y)] = 1;
@@ -101,18 +107,26 @@ class Tracer {
           const int next = ahead_left != label    ? (d + 1) % 4
                            : ahead_right == label ? (d + 3) % 4
                                                   : d;
-          if (next != d) corners.push_back({x, y});
+          if (next != d) corners.push_back({x, y, d, next});
           d = next;
         } while (!(x == cx && y == cy && d == 0));
         long long twice_area = 0;
         for (size_t i = 0; i < corners.size(); ++i) {
-          const auto& a = corners[i];
-          const auto& b = corners[(i + 1) % corners.size()];
-          twice_area += static_cast<long long>(a[0]) * b[1] - static_cast<long long>(b[0]) * a[1];
+          const Corner& a = corners[i];
+          const Corner& b = corners[(i + 1) % corners.size()];
+          twice_area += static_cast<long long>(a.x) * b.y - static_cast<long long>(b.x) * a.y;
         }
         acd::Ring2d ring;
         ring.reserve(corners.size());
-        for (const auto& c : corners) ring.emplace_back(xs[c[0]], ys[c[1]]);
+        for (const Corner& c : corners) {
+          const acd::Point2d p(xs[c.x], ys[c.y]);
+          if (PinchLabel(c.x, c.y) != label) {
+            ring.push_back(p);
+            continue;
+          }
+          ring.push_back(p - chamfer * acd::Point2d(kDx[c.in], kDy[c.in]));
+          ring.push_back(p + chamfer * acd::Point2d(kDx[c.out], kDy[c.out]));
+        }
         if (twice_area > 0) {
           if (has_outer[label]) throw std::logic_error("TraceCells: two outer rings");
           has_outer[label] = 1;
@@ -177,18 +191,30 @@ class Tracer {
   std::vector<std::vector<int>> cells_;  // The cells of each label.
 };
 
+void CheckSizes(int w, int h, const std::vector<std::uint8_t>& cells, const std::vector<double>& xs,
+                const std::vector<double>& ys) {
+  if (w < 0 || h < 0 || cells.size() != static_cast<size_t>(w) * h ||
+      xs.size() != static_cast<size_t>(w) + 1 || ys.size() != static_cast<size_t>(h) + 1) {
+    throw std::invalid_argument("TraceCells(): grid sizes do not match");
+  }
+}
+
 }  // namespace
 
 std::vector<acd::Polygon2d> TraceCells(int w, int h, const std::vector<std::uint8_t>& blocked,
                                        const std::vector<double>& xs,
                                        const std::vector<double>& ys) {
-  if (w < 0 || h < 0 || blocked.size() != static_cast<size_t>(w) * h ||
-      xs.size() != static_cast<size_t>(w) + 1 || ys.size() != static_cast<size_t>(h) + 1) {
-    throw std::invalid_argument("TraceCells(): grid sizes do not match");
-  }
+  CheckSizes(w, h, blocked, xs, ys);
   Tracer tracer(w, h, blocked);
   tracer.CutPinches();
-  return tracer.Trace(xs, ys);
+  return tracer.Trace(xs, ys, /*chamfer=*/0.0);
+}
+
+std::vector<acd::Polygon2d> TraceChamfered(int w, int h, const std::vector<std::uint8_t>& cells,
+                                           const std::vector<double>& xs,
+                                           const std::vector<double>& ys, double chamfer) {
+  CheckSizes(w, h, cells, xs, ys);
+  return Tracer(w, h, cells).Trace(xs, ys, chamfer);
 }
 
 }  // namespace acdplan::envs::internal

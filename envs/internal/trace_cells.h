@@ -1,5 +1,5 @@
 #pragma once
-// Contour tracing of blocked cells on a rectilinear grid (possibly non-uniform spacing).
+// Contour tracing of cells on a rectilinear grid (possibly non-uniform spacing).
 
 #include <cstdint>
 #include <vector>
@@ -16,5 +16,17 @@ namespace acdplan::envs::internal {
 std::vector<acd::Polygon2d> TraceCells(int w, int h, const std::vector<std::uint8_t>& blocked,
                                        const std::vector<double>& xs,
                                        const std::vector<double>& ys);
+
+/// The boundaries of the 4-connected components of the cells set in `cells` (same grid as
+/// TraceCells()), one polygon each: the outer ring counter-clockwise, holes clockwise, vertices
+/// only where the boundary turns. Pinches are not cut: where a component's two diagonal cells
+/// meet at a corner (the other two are not in it), each of the two passes of its boundary cuts
+/// the corner off, running through the points `chamfer` before and after it along its edges.
+/// The component loses the square |dx| + |dy| < `chamfer` around the corner, and its rings are
+/// simple and disjoint provided 2 * `chamfer` is below the grid spacing. Components touching
+/// only at a corner stay separate and keep the corner. O(cells).
+std::vector<acd::Polygon2d> TraceChamfered(int w, int h, const std::vector<std::uint8_t>& cells,
+                                           const std::vector<double>& xs,
+                                           const std::vector<double>& ys, double chamfer);
 
 }  // namespace acdplan::envs::internal

@@ -21,12 +21,36 @@ acd::Polygon2d Box(double x0, double y0, double x1, double y1) {
   return acd::Polygon2d{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
 }
 
-Workspace2d WorkspaceWith(std::vector<acd::Polygon2d> obstacles) {
+// How FreeSpace2d() builds the free space: a world whose edges are all axis-parallel is traced
+// on the grid of its coordinates; one slanted edge anywhere (here a triangle outside the
+// bounds, which changes nothing) sends the same world through exact Boolean operations.
+enum class Construction { kTraced, kBoolean };
+
+// The bounds [0, 10]^2 with `obstacles`.
+Workspace2d MakeWorkspace(std::vector<acd::Polygon2d> obstacles,
+                          Construction construction = Construction::kTraced) {
   Workspace2d w;
   w.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(10, 10));
   w.obstacles = std::move(obstacles);
+  if (construction == Construction::kBoolean) {
+    w.obstacles.push_back(acd::Polygon2d{{{20, 20}, {21, 20}, {20, 21}}, {}});
+  }
   return w;
 }
+
+// The tests of what the free space is, run on both constructions.
+class FreeSpace2dBothWaysTest : public ::testing::TestWithParam<Construction> {
+ protected:
+  Workspace2d WorkspaceWith(std::vector<acd::Polygon2d> obstacles) const {
+    return MakeWorkspace(std::move(obstacles), GetParam());
+  }
+};
+
+INSTANTIATE_TEST_SUITE_P(Constructions, FreeSpace2dBothWaysTest,
+                         ::testing::Values(Construction::kTraced, Construction::kBoolean),
+                         [](const ::testing::TestParamInfo<Construction>& info) {
+                           return info.param == Construction::kTraced ? "Traced" : "Boolean";
+                         });
 
 // The free area one hole pinch closes: a diamond of half-diagonal gap * diagonal, half of it in
 // the free space.
@@ -35,14 +59,14 @@ const double kPinchArea = [] {
   return e * e;
 }();
 
-TEST(FreeSpace2dTest, NoObstaclesIsTheBounds) {
+TEST_P(FreeSpace2dBothWaysTest, NoObstaclesIsTheBounds) {
   const std::vector<acd::Polygon2d> free = FreeSpace2d(WorkspaceWith({}));
   ASSERT_EQ(free.size(), 1u);
   EXPECT_NEAR(acd::Area(free[0]), 100.0, 1e-9);
   EXPECT_EQ(free[0].outer.size(), 4u);
 }
 
-TEST(FreeSpace2dTest, InteriorObstacleIsAHole) {
+TEST_P(FreeSpace2dBothWaysTest, InteriorObstacleIsAHole) {
   const std::vector<acd::Polygon2d> free = FreeSpace2d(WorkspaceWith({Box(2, 2, 4, 4)}));
   ASSERT_EQ(free.size(), 1u);
   ASSERT_EQ(free[0].holes.size(), 1u);
@@ -50,7 +74,7 @@ TEST(FreeSpace2dTest, InteriorObstacleIsAHole) {
   ExpectValidAndDecomposes(free);
 }
 
-TEST(FreeSpace2dTest, OverlappingObstaclesAreUnited) {
+TEST_P(FreeSpace2dBothWaysTest, OverlappingObstaclesAreUnited) {
   // Two 3x3 squares overlapping in a 1x1 square, and a clockwise third one inside the first.
   acd::Polygon2d inner = Box(2.5, 2.5, 3, 3);
   std::reverse(inner.outer.begin(), inner.outer.end());
@@ -63,7 +87,7 @@ TEST(FreeSpace2dTest, OverlappingObstaclesAreUnited) {
   ExpectValidAndDecomposes(free);
 }
 
-TEST(FreeSpace2dTest, ObstaclesCrossingOrOutsideTheBounds) {
+TEST_P(FreeSpace2dBothWaysTest, ObstaclesCrossingOrOutsideTheBounds) {
   const std::vector<acd::Polygon2d> free =
       FreeSpace2d(WorkspaceWith({Box(-1, -1, 3, 3), Box(8, 4, 12, 6), Box(20, 20, 21, 21)}));
   ASSERT_EQ(free.size(), 1u);
@@ -72,7 +96,7 @@ TEST(FreeSpace2dTest, ObstaclesCrossingOrOutsideTheBounds) {
   ExpectValidAndDecomposes(free);
 }
 
-TEST(FreeSpace2dTest, ObstacleAlongTheBoundsEdge) {
+TEST_P(FreeSpace2dBothWaysTest, ObstacleAlongTheBoundsEdge) {
   // Shares part of the bottom edge of the bounds: a notch, not a hole.
   const std::vector<acd::Polygon2d> free = FreeSpace2d(WorkspaceWith({Box(3, 0, 5, 2)}));
   ASSERT_EQ(free.size(), 1u);
@@ -81,7 +105,7 @@ TEST(FreeSpace2dTest, ObstacleAlongTheBoundsEdge) {
   EXPECT_NEAR(acd::Area(free[0]), 96.0, 1e-9);
 }
 
-TEST(FreeSpace2dTest, WallSplitsTheFreeSpace) {
+TEST_P(FreeSpace2dBothWaysTest, WallSplitsTheFreeSpace) {
   const std::vector<acd::Polygon2d> free =
       FreeSpace2d(WorkspaceWith({Box(4, -1, 6, 11), Box(1, 1, 2, 2), Box(8, 8, 9, 9)}));
   ASSERT_EQ(free.size(), 2u);
@@ -94,7 +118,7 @@ TEST(FreeSpace2dTest, WallSplitsTheFreeSpace) {
   ExpectValidAndDecomposes(free);
 }
 
-TEST(FreeSpace2dTest, ObstacleWithAHoleEnclosesAFreeRegion) {
+TEST_P(FreeSpace2dBothWaysTest, ObstacleWithAHoleEnclosesAFreeRegion) {
   acd::Polygon2d ring = Box(2, 2, 8, 8);
   ring.holes.push_back(Box(4, 4, 6, 6).outer);
   const std::vector<acd::Polygon2d> free = FreeSpace2d(WorkspaceWith({ring}));
@@ -104,7 +128,7 @@ TEST(FreeSpace2dTest, ObstacleWithAHoleEnclosesAFreeRegion) {
   ExpectValidAndDecomposes(free);
 }
 
-TEST(FreeSpace2dTest, ObstaclesTouchingAlongAnEdge) {
+TEST_P(FreeSpace2dBothWaysTest, ObstaclesTouchingAlongAnEdge) {
   const std::vector<acd::Polygon2d> free =
       FreeSpace2d(WorkspaceWith({Box(2, 2, 4, 4), Box(4, 2, 6, 4)}));
   ASSERT_EQ(free.size(), 1u);
@@ -113,7 +137,7 @@ TEST(FreeSpace2dTest, ObstaclesTouchingAlongAnEdge) {
   EXPECT_NEAR(acd::Area(free[0]), 92.0, 1e-9);
 }
 
-TEST(FreeSpace2dTest, ObstaclesTouchingAtAPointAreClosedByADiamond) {
+TEST_P(FreeSpace2dBothWaysTest, ObstaclesTouchingAtAPointAreClosedByADiamond) {
   // The two holes would touch at (4, 4): the pinch is closed, the holes become one.
   const std::vector<acd::Polygon2d> free =
       FreeSpace2d(WorkspaceWith({Box(2, 2, 4, 4), Box(4, 4, 6, 6)}));
@@ -127,14 +151,14 @@ TEST(FreeSpace2dTest, ObstaclesTouchingAtAPointAreClosedByADiamond) {
 TEST(FreeSpace2dTest, ObstacleTouchingTheBoundsAtAPoint) {
   // A triangle standing on its tip at (5, 0) on the bounds' bottom edge.
   const acd::Polygon2d tip{{{5, 0}, {6, 2}, {4, 2}}, {}};
-  const std::vector<acd::Polygon2d> free = FreeSpace2d(WorkspaceWith({tip}));
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(MakeWorkspace({tip}));
   ASSERT_EQ(free.size(), 1u);
   EXPECT_TRUE(free[0].holes.empty());  // The hole merged into the outer ring at the pinch.
   EXPECT_NEAR(acd::Area(free[0]), 98.0, 1e-9);
   ExpectValidAndDecomposes(free);
 }
 
-TEST(FreeSpace2dTest, LobesMeetingAtAPointBecomeTwoPolygonsExactly) {
+TEST_P(FreeSpace2dBothWaysTest, LobesMeetingAtAPointBecomeTwoPolygonsExactly) {
   // Free space: the bottom-left and top-right quarters, meeting at (5, 5).
   const std::vector<acd::Polygon2d> free =
       FreeSpace2d(WorkspaceWith({Box(0, 5, 5, 10), Box(5, 0, 10, 5)}));
@@ -145,7 +169,7 @@ TEST(FreeSpace2dTest, LobesMeetingAtAPointBecomeTwoPolygonsExactly) {
   ExpectValidAndDecomposes(free);
 }
 
-TEST(FreeSpace2dTest, LobesWithHolesKeepTheirHoles) {
+TEST_P(FreeSpace2dBothWaysTest, LobesWithHolesKeepTheirHoles) {
   const std::vector<acd::Polygon2d> free = FreeSpace2d(
       WorkspaceWith({Box(0, 5, 5, 10), Box(5, 0, 10, 5), Box(1, 1, 2, 2), Box(7, 7, 8, 8)}));
   ASSERT_EQ(free.size(), 2u);
@@ -154,12 +178,32 @@ TEST(FreeSpace2dTest, LobesWithHolesKeepTheirHoles) {
   EXPECT_NEAR(TotalArea(free), 48.0, 1e-9);
 }
 
-TEST(FreeSpace2dTest, ObstaclesCoveringTheBoundsLeaveNothing) {
+TEST_P(FreeSpace2dBothWaysTest, RegionsTouchingAtTwoCornersStayTwoPolygons) {
+  // A pocket [2, 4] x [4, 5] in a C of three boxes, closed on the east by the cell [4, 5] x [4, 5]
+  // that touches the C only at the corners (4, 4) and (4, 5), where the pocket meets the free
+  // space outside. The trace keeps both corners exactly (each region passes them once); the
+  // Boolean construction sees the cell as a hole of one ring through both regions and closes
+  // its two contacts with diamonds.
+  const std::vector<acd::Polygon2d> free = FreeSpace2d(
+      WorkspaceWith({Box(1, 3, 2, 6), Box(2, 5, 4, 6), Box(2, 3, 4, 4), Box(4, 4, 5, 5)}));
+  ASSERT_EQ(free.size(), 2u);
+  const acd::Polygon2d& pocket = free[1];  // Its lowest-left vertex (2, 4) comes after (0, 0).
+  EXPECT_TRUE(pocket.holes.empty());
+  const double lost = GetParam() == Construction::kTraced ? 0.0 : 2.0 * kPinchArea;
+  EXPECT_NEAR(TotalArea(free), 92.0 - lost, 1e-12);
+  EXPECT_NEAR(acd::Area(pocket), 2.0 - lost / 2.0, 1e-12);
+  if (GetParam() == Construction::kTraced) {
+    EXPECT_EQ(pocket.outer.size(), 4u);
+  }
+  ExpectValidAndDecomposes(free);
+}
+
+TEST_P(FreeSpace2dBothWaysTest, ObstaclesCoveringTheBoundsLeaveNothing) {
   EXPECT_TRUE(FreeSpace2d(WorkspaceWith({Box(-1, -1, 11, 11)})).empty());
   EXPECT_TRUE(FreeSpace2d(WorkspaceWith({Box(0, 0, 5, 10), Box(5, 0, 10, 10)})).empty());
 }
 
-TEST(FreeSpace2dTest, TranslatingTheWorldTranslatesTheFreeSpace) {
+TEST_P(FreeSpace2dBothWaysTest, TranslatingTheWorldTranslatesTheFreeSpace) {
   Workspace2d w = WorkspaceWith({Box(2, 2, 4, 4), Box(4, 4, 6, 6), Box(4, -1, 5, 1)});
   const std::vector<acd::Polygon2d> a = FreeSpace2d(w);
   const Eigen::Vector2d shift(100.25, -37.5);
@@ -196,6 +240,70 @@ TEST(FreeSpace2dTest, RandomGridsGiveValidFreeSpace) {
     EXPECT_LE(TotalArea(free), expected + 1e-9) << "seed " << seed;
     EXPECT_GE(TotalArea(free), expected - pinch * grid.width * grid.height) << "seed " << seed;
     ExpectValidAndDecomposes(free);
+  }
+}
+
+// Whether `p` lies inside `polygon` (even-odd over its rings; `p` on no edge).
+bool Inside(const acd::Polygon2d& polygon, const acd::Point2d& p) {
+  bool inside = false;
+  auto cross = [&](const acd::Ring2d& ring) {
+    for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+      const acd::Point2d &a = ring[i], &b = ring[j];
+      if ((a.y() > p.y()) != (b.y() > p.y()) &&
+          p.x() < a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y())) {
+        inside = !inside;
+      }
+    }
+  };
+  cross(polygon.outer);
+  for (const acd::Ring2d& hole : polygon.holes) cross(hole);
+  return inside;
+}
+
+TEST(FreeSpace2dTest, TracedGridFreeSpaceIsItsFreeCells) {
+  // Every free cell's centre in exactly one polygon, no blocked cell's; the area the free cells'
+  // less at most one pinch diamond per grid corner; and the exact Boolean construction of the
+  // same world gives as many polygons, each of the same area up to its pinch diamonds.
+  for (const int percent : {15, 30, 45, 60}) {
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+      std::mt19937_64 rng(seed * 100 + percent);
+      OccupancyGrid grid;
+      grid.width = 17;
+      grid.height = 13;
+      grid.resolution = 0.25;
+      grid.origin = Eigen::Vector2d(-1.5, 3.25);
+      for (int i = 0; i < grid.width * grid.height; ++i) {
+        grid.blocked.push_back(static_cast<int>(rng() % 100) < percent ? 1 : 0);
+      }
+      const Workspace2d world = GridWorkspace(grid);
+      const std::vector<acd::Polygon2d> traced = FreeSpace2d(world);
+      const std::string where = std::to_string(percent) + "% blocked, seed " + std::to_string(seed);
+      double free_area = 0.0;
+      for (int r = 0; r < grid.height; ++r) {
+        for (int c = 0; c < grid.width; ++c) {
+          const acd::Point2d centre =
+              grid.origin + grid.resolution * acd::Point2d(c + 0.5, grid.height - 1 - r + 0.5);
+          int count = 0;
+          for (const acd::Polygon2d& polygon : traced) count += Inside(polygon, centre);
+          EXPECT_EQ(count, grid.Blocked(r, c) ? 0 : 1) << where << ", cell " << r << ", " << c;
+          free_area += grid.Blocked(r, c) ? 0.0 : grid.resolution * grid.resolution;
+        }
+      }
+      const double pinch =
+          std::pow(FreeSpace2dOptions{}.pinch_gap * world.bounds.diagonal().norm(), 2);
+      const double corners = (grid.width - 1) * (grid.height - 1);
+      EXPECT_LE(TotalArea(traced), free_area + 1e-12) << where;
+      EXPECT_GE(TotalArea(traced), free_area - corners * pinch) << where;
+      ExpectValidAndDecomposes(traced);
+
+      Workspace2d slanted = world;
+      slanted.obstacles.push_back(acd::Polygon2d{{{20, 20}, {21, 20}, {20, 21}}, {}});
+      const std::vector<acd::Polygon2d> boolean = FreeSpace2d(slanted);
+      ASSERT_EQ(boolean.size(), traced.size()) << where;
+      for (size_t k = 0; k < traced.size(); ++k) {
+        EXPECT_NEAR(acd::Area(boolean[k]), acd::Area(traced[k]), corners * pinch) << where;
+      }
+    }
   }
 }
 
@@ -236,16 +344,16 @@ TEST(FreeSpace2dTest, NoisyGridIsSplitAtEachPiecesWitness) {
 }
 
 TEST(FreeSpace2dTest, Errors) {
-  Workspace2d empty_bounds = WorkspaceWith({});
+  Workspace2d empty_bounds = MakeWorkspace({});
   empty_bounds.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(1, 1), Eigen::Vector2d(1, 5));
   EXPECT_THAT(testing::ErrorOf([&] { FreeSpace2d(empty_bounds); }),
               HasSubstr("FreeSpace2d(): bounds: expected finite xmin < xmax and ymin < ymax"));
   const acd::Polygon2d bowtie{{{0, 0}, {2, 2}, {2, 0}, {0, 1}}, {}};
   EXPECT_THAT(testing::ErrorOf([&] {
-                FreeSpace2d(WorkspaceWith({Box(1, 1, 2, 2), bowtie}));
+                FreeSpace2d(MakeWorkspace({Box(1, 1, 2, 2), bowtie}));
               }),
               HasSubstr("FreeSpace2d(): obstacle 1: outer ring is not simple"));
-  EXPECT_THAT(testing::ErrorOf([&] { FreeSpace2d(WorkspaceWith({}), {0.0}); }),
+  EXPECT_THAT(testing::ErrorOf([&] { FreeSpace2d(MakeWorkspace({}), {0.0}); }),
               HasSubstr("FreeSpace2d(): pinch_gap must be finite and > 0"));
 }
 
