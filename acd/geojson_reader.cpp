@@ -18,8 +18,10 @@ class GeoJsonWalker {
  public:
   explicit GeoJsonWalker(const std::string& source) : source_(source) {}
 
-  std::vector<Polygon2d> Walk(const Json& root) {
+  // The polygons, and per polygon its MultiPolygon (ReadGeoJson()).
+  std::vector<Polygon2d> Walk(const Json& root, std::vector<int>* multipolygons) {
     Object(root, "");
+    if (multipolygons != nullptr) *multipolygons = std::move(multipolygons_);
     return std::move(polygons_);
   }
 
@@ -59,7 +61,9 @@ class GeoJsonWalker {
       const Json& coordinates =
           Require(value, path, "coordinates", Json::value_t::array, "an array");
       const std::string member = Member(path, "coordinates");
+      multipolygon_ = multipolygon_count_++;
       for (size_t i = 0; i < coordinates.size(); ++i) AddPolygon(coordinates[i], Index(member, i));
+      multipolygon_ = -1;
     } else if (type == "GeometryCollection") {
       const Json& geometries = Require(value, path, "geometries", Json::value_t::array, "an array");
       const std::string member = Member(path, "geometries");
@@ -102,6 +106,7 @@ class GeoJsonWalker {
     for (size_t i = 1; i < rings.size(); ++i)
       polygon.holes.push_back(Ring(rings[i], Index(path, i)));
     polygons_.push_back(std::move(polygon));
+    multipolygons_.push_back(multipolygon_);
   }
 
   // A closed ring: the last position repeats the first and is dropped.
@@ -140,11 +145,15 @@ class GeoJsonWalker {
 
   const std::string& source_;
   std::vector<Polygon2d> polygons_;
+  std::vector<int> multipolygons_;  // Per polygon.
+  int multipolygon_ = -1;           // The MultiPolygon being read, or -1.
+  int multipolygon_count_ = 0;
 };
 
 }  // namespace
 
-std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source) {
+std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source,
+                                   std::vector<int>* multipolygons) {
   Json root;
   try {
     root = Json::parse(in);
@@ -156,7 +165,7 @@ std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source) 
     if (bracket != std::string::npos) message = message.substr(bracket + 2);
     throw InputError(source + ": invalid JSON: " + message);
   }
-  return GeoJsonWalker(source).Walk(root);
+  return GeoJsonWalker(source).Walk(root, multipolygons);
 }
 
 }  // namespace acdplan::acd

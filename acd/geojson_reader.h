@@ -17,8 +17,11 @@ namespace acdplan::acd {
 /// "shape.geojson: features[2].geometry: unsupported type 'LineString' (...)".
 /// Returns the polygons as written (not yet cleaned or validated: see PreparePolygon()).
 /// @param source  the file name used in messages.
+/// @param multipolygons  if given, receives per returned polygon the index of the MultiPolygon
+///        it is a member of (counted in document order), or -1 for a Polygon.
 /// @throws InputError naming `source`, the line (or element) and the rule broken, e.g. a
 ///         malformed or non-finite number, a wrong count, a truncated file.
-std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source);
+std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source,
+                                   std::vector<int>* multipolygons = nullptr);
 
 }  // namespace acdplan::acd

@@ -1,10 +1,16 @@
 #include "acd/read_polygons.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <functional>
+#include <numeric>
 #include <sstream>
+#include <utility>
 
 #include "acd/geojson_reader.h"
+#include "acd/internal/disjoint_sets.h"
+#include "acd/internal/even_odd_regions.h"
 #include "acd/internal/text_parsing.h"
 #include "acd/poly_reader.h"
 #include "acd/prepare_polygon.h"
@@ -14,6 +20,120 @@
 #include "base/input_error.h"
 
 namespace acdplan::acd {
+namespace {
+
+std::vector<Ring2d> RingsOf(const Polygon2d& polygon) {
+  std::vector<Ring2d> rings = {polygon.outer};
+  rings.insert(rings.end(), polygon.holes.begin(), polygon.holes.end());
+  return rings;
+}
+
+// The pairs (i, j), i < j, of valid `polygons` of one group (groups[i] == groups[j] >= 0)
+// whose interiors intersect, in lexicographic order; `first_only`: the first pair only. Pairs
+// whose bounding boxes overlap (found by a sweep over the boxes sorted by their left sides) are
+// decided exactly: the two polygons' common area (internal::EvenOddRegions() with one layer
+// each) is empty or not.
+std::vector<std::pair<size_t, size_t>> OverlappingPairs(const std::vector<Polygon2d>& polygons,
+                                                        const std::vector<int>& groups,
+                                                        bool first_only) {
+  struct Box {
+    double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
+  };
+  std::vector<Box> boxes(polygons.size());
+  for (size_t k = 0; k < polygons.size(); ++k) {
+    for (const Point2d& p : polygons[k].outer) {
+      boxes[k] = {std::min(boxes[k].xmin, p.x()), std::max(boxes[k].xmax, p.x()),
+                  std::min(boxes[k].ymin, p.y()), std::max(boxes[k].ymax, p.y())};
+    }
+  }
+  std::vector<size_t> by_xmin(polygons.size());
+  std::iota(by_xmin.begin(), by_xmin.end(), size_t{0});
+  std::sort(by_xmin.begin(), by_xmin.end(),
+            [&](size_t a, size_t b) { return boxes[a].xmin < boxes[b].xmin; });
+  std::vector<std::pair<size_t, size_t>> candidates;
+  for (size_t k = 0; k < by_xmin.size(); ++k) {
+    const Box& a = boxes[by_xmin[k]];
+    for (size_t m = k + 1; m < by_xmin.size() && boxes[by_xmin[m]].xmin < a.xmax; ++m) {
+      const Box& b = boxes[by_xmin[m]];
+      const int group = groups[by_xmin[k]];
+      if (group >= 0 && groups[by_xmin[m]] == group && b.ymin < a.ymax && a.ymin < b.ymax) {
+        candidates.emplace_back(std::min(by_xmin[k], by_xmin[m]), std::max(by_xmin[k], by_xmin[m]));
+      }
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  std::vector<std::pair<size_t, size_t>> overlapping;
+  for (const auto& [i, j] : candidates) {
+    if (internal::EvenOddRegions({RingsOf(polygons[i]), RingsOf(polygons[j])}).empty()) continue;
+    overlapping.emplace_back(i, j);
+    if (first_only) break;
+  }
+  return overlapping;
+}
+
+// "0 and 1", "0, 1 and 4".
+std::string ListOf(const std::vector<int>& numbers) {
+  std::string text;
+  for (size_t k = 0; k < numbers.size(); ++k) {
+    if (k > 0) text += k + 1 == numbers.size() ? " and " : ", ";
+    text += std::to_string(numbers[k]);
+  }
+  return text;
+}
+
+// Replaces each set of `polygons` joined by `overlapping` pairs with their even-odd region, where
+// the set's first member was, and says so in `notes` (if given). `sources`: per polygon, its
+// polygon in the file (for the messages); `radii` follow the polygons (a set's pieces take its
+// first member's).
+void RebuildOverlapping(const std::string& path,
+                        const std::vector<std::pair<size_t, size_t>>& overlapping,
+                        const std::vector<int>& sources, std::vector<Polygon2d>* polygons,
+                        std::vector<double>* radii, std::vector<std::string>* notes) {
+  const int count = static_cast<int>(polygons->size());
+  internal::DisjointSets sets(count);
+  for (const auto& [i, j] : overlapping) sets.Unite(static_cast<int>(i), static_cast<int>(j));
+  std::vector<std::vector<int>> members(static_cast<size_t>(count));
+  for (int k = 0; k < count; ++k) members[static_cast<size_t>(sets.Find(k))].push_back(k);
+  std::vector<Polygon2d> rebuilt;
+  std::vector<double> rebuilt_radii;
+  for (int k = 0; k < count; ++k) {
+    const std::vector<int>& set = members[static_cast<size_t>(k)];
+    if (set.size() == 1) {
+      rebuilt.push_back(std::move((*polygons)[k]));
+      rebuilt_radii.push_back((*radii)[k]);
+    }
+    if (set.size() <= 1) continue;
+    std::vector<Ring2d> rings;
+    std::vector<int> names;
+    for (const int m : set) {
+      const std::vector<Ring2d> own = RingsOf((*polygons)[m]);
+      rings.insert(rings.end(), own.begin(), own.end());
+      if (names.empty() || names.back() != sources[m]) names.push_back(sources[m]);
+    }
+    const std::string where = path + ": polygons " + ListOf(names);
+    int pieces = 0;
+    double area = 0.0;
+    for (const Polygon2d& region : internal::EvenOddRegions({rings})) {
+      for (Polygon2d& piece : PreparePolygons(region, where)) {
+        area += Area(piece);
+        ++pieces;
+        rebuilt.push_back(std::move(piece));
+        rebuilt_radii.push_back((*radii)[k]);
+      }
+    }
+    if (notes != nullptr) {
+      std::ostringstream change;
+      change << where << ": repaired: they overlap: rebuilt together by the even-odd rule into "
+             << pieces << " polygon(s), area " << area
+             << " (area covered an even number of times left out)";
+      notes->push_back(change.str());
+    }
+  }
+  *polygons = std::move(rebuilt);
+  *radii = std::move(rebuilt_radii);
+}
+
+}  // namespace
 
 std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>* reference_radii,
                                     const ReadPolygonsOptions& options) {
@@ -21,14 +141,19 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
   using Reader = std::function<std::vector<Polygon2d>(std::istream&, const std::string&)>;
   Reader reader = nullptr;
   std::vector<std::string> warnings;
+  std::vector<int> multipolygons;  // Per polygon of the file: its MULTIPOLYGON, or -1.
   if (extension == ".poly") {
     reader = [&](std::istream& in, const std::string& source) {
       return ReadPoly(in, source, &warnings);
     };
   } else if (extension == ".wkt") {
-    reader = &ReadWkt;
+    reader = [&](std::istream& in, const std::string& source) {
+      return ReadWkt(in, source, &multipolygons);
+    };
   } else if (extension == ".geojson" || extension == ".json") {
-    reader = &ReadGeoJson;
+    reader = [&](std::istream& in, const std::string& source) {
+      return ReadGeoJson(in, source, &multipolygons);
+    };
   } else {
     throw InputError(path + ": unknown polygon file extension '" + extension +
                      "' (expected .poly, .wkt, .geojson or .json)");
@@ -36,11 +161,14 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
   std::istringstream in(ReadFile(path));
   std::vector<Polygon2d> polygons = reader(in, path);
   if (polygons.empty()) throw InputError(path + ": no polygon in file");
+  multipolygons.resize(polygons.size(), -1);
   if (options.notes != nullptr) {
     options.notes->insert(options.notes->end(), warnings.begin(), warnings.end());
   }
-  if (reference_radii != nullptr) reference_radii->clear();
   std::vector<Polygon2d> prepared;
+  std::vector<double> radii;  // Per prepared polygon.
+  std::vector<int> sources;   // Per prepared polygon: its polygon in the file.
+  std::vector<int> groups;    // Per prepared polygon: its MULTIPOLYGON, or -1.
   for (size_t k = 0; k < polygons.size(); ++k) {
     const std::string where = path + ": polygon " + std::to_string(k);
     std::vector<Polygon2d> pieces;
@@ -57,11 +185,28 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
     // Every piece keeps the radius of the polygon it comes from, as written in the file.
     const double radius = ReferenceRadius(polygons[k]);
     for (Polygon2d& piece : pieces) {
-      if (reference_radii != nullptr) reference_radii->push_back(radius);
+      radii.push_back(radius);
+      sources.push_back(static_cast<int>(k));
+      groups.push_back(multipolygons[k]);
       prepared.push_back(std::move(piece));
     }
   }
   if (prepared.empty()) throw InputError(path + ": no polygon left after repair");
+  const std::vector<std::pair<size_t, size_t>> overlapping =
+      options.disjoint_members ? OverlappingPairs(prepared, groups, /*first_only=*/!options.repair)
+                               : std::vector<std::pair<size_t, size_t>>{};
+  if (!overlapping.empty() && !options.repair) {
+    const auto [i, j] = overlapping.front();
+    throw InputError(path + ": polygons " + std::to_string(sources[i]) + " and " +
+                     std::to_string(sources[j]) +
+                     " overlap (the members of a MULTIPOLYGON must have disjoint interiors; "
+                     "--repair rebuilds them by the even-odd rule)");
+  }
+  if (!overlapping.empty()) {
+    RebuildOverlapping(path, overlapping, sources, &prepared, &radii, options.notes);
+    if (prepared.empty()) throw InputError(path + ": no polygon left after repair");
+  }
+  if (reference_radii != nullptr) *reference_radii = std::move(radii);
   return prepared;
 }
 

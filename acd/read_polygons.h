@@ -16,6 +16,12 @@ struct ReadPolygonsOptions {
   /// If given, receives one line per warning of the reader (e.g. a .poly file with more chains
   /// than it declares) and per repair change, each naming the file.
   std::vector<std::string>* notes = nullptr;
+  /// Hold the members of each MULTIPOLYGON (GeoJSON MultiPolygon) to OGC's rule that their
+  /// interiors be disjoint (they may touch), as a region to decompose must: overlapping members
+  /// are an error naming the first pair; with `repair`, each set of overlapping members is
+  /// rebuilt together by the even-odd rule (area covered an even number of times is left out,
+  /// as ST_MakeValid's default does). Off for obstacles, which may overlap.
+  bool disjoint_members = false;
 };
 
 /// Reads the polygons in `path`, chosen by extension: `.poly` (Lien's format, see

@@ -25,7 +25,8 @@ class WktParser {
  public:
   WktParser(std::istream& in, const std::string& source) : text_(Text(in)), source_(source) {}
 
-  std::vector<Polygon2d> Parse() {
+  // The polygons, and per polygon its MULTIPOLYGON (ReadWkt()).
+  std::vector<Polygon2d> Parse(std::vector<int>* multipolygons) {
     SkipSpace();
     if (pos_ >= text_.size()) Fail("expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION");
     while (pos_ < text_.size()) {
@@ -38,6 +39,7 @@ class WktParser {
         SkipSpace();
       }
     }
+    if (multipolygons != nullptr) *multipolygons = std::move(multipolygons_);
     return std::move(polygons_);
   }
 
@@ -141,6 +143,7 @@ class WktParser {
       pos_ += word.size();
       if (DimensionThenEmpty()) return;
       Expect('(');
+      multipolygon_ = multipolygon_count_++;
       do {
         if (const std::string word = PeekWord(); word == "empty") {
           pos_ += word.size();
@@ -149,6 +152,7 @@ class WktParser {
         }
       } while (CommaOr(')', "a polygon"));
       Expect(')');
+      multipolygon_ = -1;
     } else if (word == "geometrycollection") {
       pos_ += word.size();
       if (DimensionThenEmpty()) return;
@@ -182,6 +186,7 @@ class WktParser {
     }
     polygon.outer = std::move(*outer);
     polygons_.push_back(std::move(polygon));
+    multipolygons_.push_back(multipolygon_);
   }
 
   // A ring, or nothing for EMPTY.
@@ -230,12 +235,16 @@ class WktParser {
   const std::string& source_;
   size_t pos_ = 0;
   std::vector<Polygon2d> polygons_;
+  std::vector<int> multipolygons_;  // Per polygon.
+  int multipolygon_ = -1;           // The MULTIPOLYGON being read, or -1.
+  int multipolygon_count_ = 0;
 };
 
 }  // namespace
 
-std::vector<Polygon2d> ReadWkt(std::istream& in, const std::string& source) {
-  return WktParser(in, source).Parse();
+std::vector<Polygon2d> ReadWkt(std::istream& in, const std::string& source,
+                               std::vector<int>* multipolygons) {
+  return WktParser(in, source).Parse(multipolygons);
 }
 
 }  // namespace acdplan::acd

@@ -16,8 +16,11 @@ namespace acdplan::acd {
 /// "<source>: <rule> at line L, column C, found '<word>'". Returns the polygons as written (not yet
 /// cleaned or validated: see PreparePolygon()).
 /// @param source  the file name used in messages.
+/// @param multipolygons  if given, receives per returned polygon the index of the MULTIPOLYGON
+///        it is a member of (counted in the order of the text), or -1 for a POLYGON.
 /// @throws InputError naming `source`, the line (or element) and the rule broken, e.g. a
 ///         malformed or non-finite number, a wrong count, a truncated file.
-std::vector<Polygon2d> ReadWkt(std::istream& in, const std::string& source);
+std::vector<Polygon2d> ReadWkt(std::istream& in, const std::string& source,
+                               std::vector<int>* multipolygons = nullptr);
 
 }  // namespace acdplan::acd

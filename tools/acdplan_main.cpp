@@ -153,6 +153,7 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
   acd::ReadPolygonsOptions read_options;
   read_options.repair = args.repair;
   read_options.notes = &notes;
+  read_options.disjoint_members = true;  // A MULTIPOLYGON is one region to decompose.
   const std::vector<acd::Polygon2d> polygons = acd::ReadPolygons(args.input, &radii, read_options);
   for (const std::string& note : notes) std::cerr << "acdplan: " << note << "\n";
   int vertices = 0;

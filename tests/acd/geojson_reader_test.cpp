@@ -53,6 +53,17 @@ TEST(GeoJsonReaderTest, ReadsFeatureCollectionMultiPolygonAndGeometryCollection)
   EXPECT_EQ(polygons[3].outer, Ring2d({{0, 0}, {2, 0}, {2, 2}}));
 }
 
+TEST(GeoJsonReaderTest, SaysWhichMultiPolygonEachPolygonBelongsTo) {
+  std::istringstream in(R"({"type": "GeometryCollection", "geometries": [
+      {"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[1,1],[0,0]]], []]},
+      {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,0]]]},
+      {"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[1,1],[0,0]]],
+                                               [[[5,5],[6,5],[6,6],[5,5]]]]}]})");
+  std::vector<int> multipolygons;
+  EXPECT_EQ(ReadGeoJson(in, "test.geojson", &multipolygons).size(), 4u);
+  EXPECT_EQ(multipolygons, std::vector<int>({0, -1, 1, 1}));
+}
+
 // RFC 7946 3.1: empty "coordinates" may be read as an empty geometry (shapely reads an empty
 // Polygon so); an empty member of a MultiPolygon is skipped as WKT's EMPTY member is.
 TEST(GeoJsonReaderTest, EmptyCoordinatesHoldNoPolygon) {

@@ -113,6 +113,37 @@ TEST(ReadPolygonsTest, RepairOptionRepairsAndReportsChanges) {
   fs::remove(path);
 }
 
+TEST(ReadPolygonsTest, OverlappingMultipolygonMembersAreAnErrorOrRepaired) {
+  // Members 0 and 2 overlap in [1, 2]^2; member 1 touches member 0 along an edge, member 3
+  // touches member 2 at a point (both allowed).
+  const std::string path =
+      WriteTemp("overlap.wkt",
+                "MULTIPOLYGON (((0 0, 2 0, 2 2, 0 2, 0 0)), ((2 0, 4 0, 4 1, 2 1, 2 0)),"
+                " ((1 1, 3 1.5, 3 3, 1 3, 1 1)), ((3 3, 4 3, 4 4, 3 4, 3 3)))");
+  EXPECT_EQ(ReadPolygons(path).size(), 4u);  // As obstacles: overlaps are allowed.
+  ReadPolygonsOptions options;
+  options.disjoint_members = true;
+  EXPECT_THAT(acdplan::test::InputErrorOf([&] { ReadPolygons(path, nullptr, options); }),
+              HasSubstr("overlap.wkt: polygons 0 and 2 overlap (the members of a MULTIPOLYGON "
+                        "must have disjoint interiors"));
+
+  std::vector<std::string> notes;
+  options.repair = true;
+  options.notes = &notes;
+  std::vector<double> radii;
+  const std::vector<Polygon2d> polygons = ReadPolygons(path, &radii, options);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_THAT(notes[0], HasSubstr("overlap.wkt: polygons 0 and 2: repaired: they overlap: rebuilt "
+                                  "together by the even-odd rule into 2 polygon(s)"));
+  ASSERT_EQ(polygons.size(), 4u);  // The even-odd rule splits 0 and 2 where they cross.
+  EXPECT_EQ(radii.size(), polygons.size());
+  double area = 0.0;
+  for (const Polygon2d& polygon : polygons) area += Area(polygon);
+  // 4 + 2 + 3.5 + 1, less twice the common area: the quadrilateral (1,1) (2,1.25) (2,2) (1,2).
+  EXPECT_NEAR(area, 10.5 - 2.0 * 0.875, 1e-12);
+  fs::remove(path);
+}
+
 TEST(ReadPolygonsTest, NazcaMonkeyAndNeuronCounts) {
   const std::vector<Polygon2d> monkey =
       ReadPolygons((kAcd2d / "nazca" / "nazca_monkey.poly").string());

@@ -44,6 +44,16 @@ TEST(WktReaderTest, ReadsMultiPolygonCollectionCaseAndZ) {
   EXPECT_EQ(polygons[2].outer, Ring2d({{0, 0}, {10, 0}, {10, 10}}));
 }
 
+TEST(WktReaderTest, SaysWhichMultipolygonEachPolygonBelongsTo) {
+  std::istringstream in(
+      "POLYGON ((0 0, 1 0, 1 1, 0 0)) MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), EMPTY, ((5 5, 6 5, "
+      "6 6, 5 5))) GEOMETRYCOLLECTION (MULTIPOLYGON EMPTY, MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0))), "
+      "POLYGON ((0 0, 1 0, 1 1, 0 0)))");
+  std::vector<int> multipolygons;
+  EXPECT_EQ(ReadWkt(in, "test.wkt", &multipolygons).size(), 5u);
+  EXPECT_EQ(multipolygons, std::vector<int>({-1, 0, 0, 1, -1}));
+}
+
 TEST(WktReaderTest, ReadsPostgisEwktAndEmptyMembers) {
   // ST_AsEWKT's SRID prefix, and EMPTY polygons inside a MULTIPOLYGON (OGC 06-103r4, 7.2.4).
   const std::vector<Polygon2d> polygons = WktOf(

@@ -314,6 +314,20 @@ TEST_F(CliTest, RepairMakesInvalidPolygonsValidAndSaysWhat) {
   }
 }
 
+TEST_F(CliTest, DecomposeHoldsMultipolygonMembersDisjoint) {
+  // Overlapping members: an error for the region to decompose, fine as obstacles.
+  const fs::path tiles =
+      Write("tiles.wkt", "MULTIPOLYGON (((0 0, 2 0, 2 2, 0 2, 0 0)), ((1 1, 3 1, 3 3, 1 3, 1 1)))");
+  const RunResult strict = Acdplan("decompose " + Quote(tiles.string()));
+  ExpectUsageError(strict);
+  EXPECT_NE(strict.err.find("polygons 0 and 1 overlap"), std::string::npos) << strict.err;
+  const RunResult repaired = Acdplan("decompose " + Quote(tiles.string()) + " --repair --check");
+  EXPECT_EQ(repaired.status, 0) << repaired.err;
+  EXPECT_NE(repaired.err.find("polygons 0 and 1: repaired: they overlap"), std::string::npos)
+      << repaired.err;
+  EXPECT_EQ(Acdplan("env " + Quote(tiles.string())).status, 0);
+}
+
 // ---- decompose MESH -------------------------------------------------------------------------
 
 /// The OBJ lines of an axis-aligned box [lo, hi], 8 shared vertices numbered from `first`
