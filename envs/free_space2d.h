@@ -16,9 +16,9 @@ struct FreeSpace2dOptions {
   double pinch_gap = 1e-7;
 };
 
-/// The free space `workspace.bounds` minus the union of `workspace.obstacles`, passed through
-/// acd::PreparePolygon(): a list of valid polygons with holes, one per connected region, ready
-/// for acd::Decompose2d(). Sorted by their lowest-leftmost vertex.
+/// The free space `workspace.bounds` minus the union of `workspace.obstacles`: a list of valid,
+/// clean polygons with holes (as acd::PreparePolygon() leaves them), one per connected region,
+/// ready for acd::Decompose2d(). Sorted by their lowest-leftmost vertex.
 ///
 /// Obstacles may overlap, touch each other, touch or cross the bounds, or split the free space
 /// into several regions. Pinches (a free region whose boundary passes twice through a point):
@@ -32,8 +32,9 @@ struct FreeSpace2dOptions {
 ///
 /// Construction: when every obstacle edge is axis-parallel (grid maps, box worlds), the free
 /// cells of the grid of the obstacles' coordinates are traced (envs/internal/
-/// rectilinear_free_space.h; linear in the cells); otherwise exact Boolean operations (CGAL
-/// Boolean_set_operations_2, exact constructions) build it, rounded to doubles.
+/// rectilinear_free_space.h; linear in the cells; valid by construction); otherwise exact
+/// Boolean operations (CGAL Boolean_set_operations_2, exact constructions) build it, rounded to
+/// doubles and checked by acd::PreparePolygon().
 /// Both give the same regions; they differ where two regions touch at two or more corners
 /// around an obstacle between them: the trace keeps those corners (each region passes each once,
 /// so nothing needs closing), the Boolean construction describes the two regions as one ring

@@ -261,9 +261,10 @@ bool Inside(const acd::Polygon2d& polygon, const acd::Point2d& p) {
 }
 
 TEST(FreeSpace2dTest, TracedGridFreeSpaceIsItsFreeCells) {
-  // Every free cell's centre in exactly one polygon, no blocked cell's; the area the free cells'
-  // less at most one pinch diamond per grid corner; and the exact Boolean construction of the
-  // same world gives as many polygons, each of the same area up to its pinch diamonds.
+  // Every free cell's centre in exactly one polygon, no blocked cell's; the polygons as
+  // PreparePolygon() leaves them (the trace skips it); the area the free cells' less at most one
+  // pinch diamond per grid corner; and the exact Boolean construction of the same world gives
+  // as many polygons, each of the same area up to its pinch diamonds.
   for (const int percent : {15, 30, 45, 60}) {
     for (std::uint64_t seed = 1; seed <= 6; ++seed) {
       std::mt19937_64 rng(seed * 100 + percent);
@@ -292,6 +293,11 @@ TEST(FreeSpace2dTest, TracedGridFreeSpaceIsItsFreeCells) {
       const double pinch =
           std::pow(FreeSpace2dOptions{}.pinch_gap * world.bounds.diagonal().norm(), 2);
       const double corners = (grid.width - 1) * (grid.height - 1);
+      for (const acd::Polygon2d& polygon : traced) {  // Valid and clean as traced.
+        const acd::Polygon2d again = acd::PreparePolygon(polygon, where);
+        EXPECT_EQ(again.outer, polygon.outer) << where;
+        EXPECT_EQ(again.holes, polygon.holes) << where;
+      }
       EXPECT_LE(TotalArea(traced), free_area + 1e-12) << where;
       EXPECT_GE(TotalArea(traced), free_area - corners * pinch) << where;
       ExpectValidAndDecomposes(traced);
