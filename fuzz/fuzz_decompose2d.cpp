@@ -105,11 +105,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                             ConcavityMeasure::kShortestPath,
                                             ConcavityMeasure::kHybrid1, ConcavityMeasure::kHybrid2};
   const ConcavityMeasure measure = kMeasures[std::accumulate(data, data + size, 0u) % 4];
-  const Reader readers[] = {[](std::istream& in, const std::string& source) {
-                              std::vector<std::string> warnings;
-                              return acdplan::acd::ReadPoly(in, source, &warnings);
-                            },
-                            &acdplan::acd::ReadWkt, &acdplan::acd::ReadGeoJson};
+  const Reader readers[] = {
+      [](std::istream& in, const std::string& source) {
+        std::vector<std::string> warnings;
+        return acdplan::acd::ReadPoly(in, source, &warnings);
+      },
+      [](std::istream& in, const std::string& source) { return acdplan::acd::ReadWkt(in, source); },
+      [](std::istream& in, const std::string& source) {
+        return acdplan::acd::ReadGeoJson(in, source);
+      }};
   for (const Reader& reader : readers) {
     for (const Polygon2d& polygon : ReadValid(text, reader)) {
       DecomposeAndCheck(polygon, measure, 0.0);

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "acd/concavity.h"
+#include "acd/internal/ring_locator.h"
 #include "envs/occupancy_grid.h"
 #include "test_util.h"
 
@@ -243,23 +244,6 @@ TEST(FreeSpace2dTest, RandomGridsGiveValidFreeSpace) {
   }
 }
 
-// Whether `p` lies inside `polygon` (even-odd over its rings; `p` on no edge).
-bool Inside(const acd::Polygon2d& polygon, const acd::Point2d& p) {
-  bool inside = false;
-  auto cross = [&](const acd::Ring2d& ring) {
-    for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-      const acd::Point2d &a = ring[i], &b = ring[j];
-      if ((a.y() > p.y()) != (b.y() > p.y()) &&
-          p.x() < a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y())) {
-        inside = !inside;
-      }
-    }
-  };
-  cross(polygon.outer);
-  for (const acd::Ring2d& hole : polygon.holes) cross(hole);
-  return inside;
-}
-
 TEST(FreeSpace2dTest, TracedGridFreeSpaceIsItsFreeCells) {
   // Every free cell's centre in exactly one polygon, no blocked cell's; the polygons as
   // PreparePolygon() leaves them (the trace skips it); the area the free cells' less at most one
@@ -279,13 +263,16 @@ TEST(FreeSpace2dTest, TracedGridFreeSpaceIsItsFreeCells) {
       const Workspace2d world = GridWorkspace(grid);
       const std::vector<acd::Polygon2d> traced = FreeSpace2d(world);
       const std::string where = std::to_string(percent) + "% blocked, seed " + std::to_string(seed);
+      const std::vector<acd::internal::RingLocator> locators(traced.begin(), traced.end());
       double free_area = 0.0;
       for (int r = 0; r < grid.height; ++r) {
         for (int c = 0; c < grid.width; ++c) {
           const acd::Point2d centre =
               grid.origin + grid.resolution * acd::Point2d(c + 0.5, grid.height - 1 - r + 0.5);
           int count = 0;
-          for (const acd::Polygon2d& polygon : traced) count += Inside(polygon, centre);
+          for (const acd::internal::RingLocator& polygon : locators) {
+            count += polygon.InsideParity(centre);
+          }
           EXPECT_EQ(count, grid.Blocked(r, c) ? 0 : 1) << where << ", cell " << r << ", " << c;
           free_area += grid.Blocked(r, c) ? 0.0 : grid.resolution * grid.resolution;
         }
