@@ -1,18 +1,15 @@
 #include "envs/free_space2d.h"
 
 #include <CGAL/Boolean_set_operations_2.h>
-#include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
-#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "acd/internal/split_at_repeats.h"
 #include "acd/prepare_polygon.h"
 #include "base/input_error.h"
 #include "envs/internal/exact_polygons.h"
@@ -26,14 +23,7 @@ using Point = internal::ExactPoint;
 using Polygon = internal::ExactPolygon;
 using PolygonWithHoles = internal::ExactPolygonWithHoles;
 using PolygonSet = internal::ExactPolygonSet;
-using Loop = std::vector<Point>;
 using internal::ToDouble;
-
-struct PointLess {
-  bool operator()(const Point& a, const Point& b) const {
-    return CGAL::compare_xy(a, b) == CGAL::SMALLER;
-  }
-};
 
 Polygon ToCgal(const acd::Ring2d& ring) {
   Polygon polygon;
@@ -47,51 +37,33 @@ PolygonWithHoles ToCgal(const acd::Polygon2d& polygon) {
   return result;
 }
 
-CGAL::Sign AreaSign(const Loop& loop) {
-  return CGAL::sign(CGAL::polygon_area_2(loop.begin(), loop.end(), Kernel()));
-}
-
-// One region of CGAL's output split into simple loops: counter-clockwise loops bound free
-// lobes, clockwise loops bound holes (the free side is on the left of every loop).
-struct SplitRegion {
-  std::vector<Loop> outers, holes;
-};
-
-SplitRegion Split(const PolygonWithHoles& region) {
-  SplitRegion split;
-  auto add = [&split](const Polygon& ring) {
-    for (Loop& loop : acd::internal::SplitAtRepeats<Point, PointLess>(
-             Loop(ring.vertices_begin(), ring.vertices_end()))) {
-      const CGAL::Sign sign = AreaSign(loop);
-      if (sign == CGAL::POSITIVE) split.outers.push_back(std::move(loop));
-      if (sign == CGAL::NEGATIVE) split.holes.push_back(std::move(loop));
-    }
-  };
-  add(region.outer_boundary());
-  for (auto hole = region.holes_begin(); hole != region.holes_end(); ++hole) add(*hole);
-  return split;
-}
-
-// Vertices where a hole loop meets another loop of the same region: no set of simple,
-// disjoint rings describes the region there.
-std::vector<Point> HolePinches(const SplitRegion& split) {
-  std::map<Point, int, PointLess> uses;
-  for (const auto* loops : {&split.outers, &split.holes}) {
-    for (const Loop& loop : *loops) {
-      for (const Point& p : loop) ++uses[p];
-    }
-  }
+// The vertices of `free`'s arrangement where one free face lies in two of the wedges around the
+// vertex: the face touches itself there (a hole touching the outer ring or another hole at a
+// point), which no set of simple, disjoint rings describes. Two faces meeting at a vertex are
+// no pinch: they are two polygons.
+std::vector<Point> SelfTouches(const PolygonSet& free) {
   std::vector<Point> pinches;
-  for (const Loop& hole : split.holes) {
-    for (const Point& p : hole) {
-      if (uses[p] >= 2) pinches.push_back(p);
+  std::vector<const void*> faces;
+  const PolygonSet::Arrangement_2& arrangement = free.arrangement();
+  for (auto v = arrangement.vertices_begin(); v != arrangement.vertices_end(); ++v) {
+    if (v->degree() < 4) continue;  // Two free wedges need four edges.
+    faces.clear();
+    auto halfedge = v->incident_halfedges();  // Each into v, its left face one wedge.
+    const auto first = halfedge;
+    do {
+      if (halfedge->face()->contained()) faces.push_back(&*halfedge->face());
+    } while (++halfedge != first);
+    std::sort(faces.begin(), faces.end());
+    if (std::adjacent_find(faces.begin(), faces.end()) != faces.end()) {
+      pinches.push_back(v->point());
     }
   }
   return pinches;
 }
 
-// The free space of `prepared` by exact Boolean operations, pinches closed by diamonds of
-// half-diagonal `gap` and lobes split (FreeSpace2d()), unsorted and not yet prepared.
+// The free space of `prepared` by exact Boolean operations, each point where a region touches
+// itself closed by a diamond of half-diagonal `gap`: one polygon per region, checked by
+// acd::PreparePolygon(), unsorted.
 std::vector<acd::Polygon2d> BooleanFreeSpace(const Workspace2d& prepared, double gap) {
   std::vector<PolygonWithHoles> obstacles;
   obstacles.reserve(prepared.obstacles.size());
@@ -101,63 +73,48 @@ std::vector<acd::Polygon2d> BooleanFreeSpace(const Workspace2d& prepared, double
   PolygonSet free(ToCgal(BoundsPolygon(prepared.bounds).outer));
   free.difference(blocked);
 
-  // Close hole pinches with small diamonds of obstacle, region by region (a region without
-  // hole pinches is final; the overlay stays as small as the region), then split the remaining
-  // (lobe) pinches. One round removes every hole pinch; further rounds are a safety net.
-  std::vector<SplitRegion> regions;
-  std::vector<PolygonWithHoles> work;
-  free.polygons_with_holes(std::back_inserter(work));
-  for (int round = 0; !work.empty(); ++round) {
-    if (round == 3) throw std::logic_error("FreeSpace2d(): pinches remain after 3 rounds");
-    std::vector<PolygonWithHoles> next;
-    for (const PolygonWithHoles& part : work) {
-      SplitRegion split = Split(part);
-      std::vector<Point> pinches = HolePinches(split);
-      if (pinches.empty()) {
-        regions.push_back(std::move(split));
-        continue;
-      }
-      std::sort(pinches.begin(), pinches.end(), PointLess());
-      pinches.erase(std::unique(pinches.begin(), pinches.end()), pinches.end());
-      std::vector<Polygon> diamonds;
-      const Kernel::FT e(gap);
-      for (const Point& p : pinches) {
-        Polygon diamond;
-        diamond.push_back(Point(p.x() + e, p.y()));
-        diamond.push_back(Point(p.x(), p.y() + e));
-        diamond.push_back(Point(p.x() - e, p.y()));
-        diamond.push_back(Point(p.x(), p.y() - e));
-        diamonds.push_back(std::move(diamond));
-      }
-      PolygonSet closing;
-      closing.join(diamonds.begin(), diamonds.end());
-      PolygonSet region(part);
-      region.difference(closing);
-      region.polygons_with_holes(std::back_inserter(next));
+  // A diamond lies in the wedges of one point, far from any other vertex, so it makes no new
+  // self-touch: one round closes them all, a second only checks.
+  const Kernel::FT e(gap);
+  for (int round = 0;; ++round) {
+    const std::vector<Point> pinches = SelfTouches(free);
+    if (pinches.empty()) break;
+    if (round == 2) throw std::logic_error("FreeSpace2d(): pinches remain after 2 rounds");
+    std::vector<Polygon> diamonds;
+    for (const Point& p : pinches) {
+      Polygon diamond;
+      diamond.push_back(Point(p.x() + e, p.y()));
+      diamond.push_back(Point(p.x(), p.y() + e));
+      diamond.push_back(Point(p.x() - e, p.y()));
+      diamond.push_back(Point(p.x(), p.y() - e));
+      diamonds.push_back(std::move(diamond));
     }
-    work = std::move(next);
+    PolygonSet closing;
+    closing.join(diamonds.begin(), diamonds.end());
+    free.difference(closing);
   }
 
+  // One polygon per free face of the arrangement: regions that meet at points are faces apart
+  // (as two polygons or a polygon that touches itself there, in CGAL's own output are not), and
+  // with the self-touches closed each face's boundary cycles are simple and disjoint.
+  auto ring = [](PolygonSet::Arrangement_2::Ccb_halfedge_const_circulator first) {
+    std::vector<Point> points;
+    auto halfedge = first;
+    do {
+      points.push_back(halfedge->target()->point());
+    } while (++halfedge != first);
+    return ToDouble(points);
+  };
   std::vector<acd::Polygon2d> result;
-  for (const SplitRegion& region : regions) {
-    std::vector<acd::Polygon2d> lobes;
-    for (const Loop& outer : region.outers) lobes.push_back({ToDouble(outer), {}});
-    for (const Loop& hole : region.holes) {
-      size_t owner = 0;
-      if (region.outers.size() > 1) {
-        // No hole vertex is on another loop now, so any vertex decides.
-        while (owner < region.outers.size() &&
-               CGAL::bounded_side_2(region.outers[owner].begin(), region.outers[owner].end(),
-                                    hole.front(), Kernel()) != CGAL::ON_BOUNDED_SIDE) {
-          ++owner;
-        }
-        if (owner == region.outers.size()) {
-          throw std::logic_error("FreeSpace2d(): a hole lies in no outer loop");
-        }
-      }
-      lobes[owner].holes.push_back(ToDouble(hole));
+  const PolygonSet::Arrangement_2& arrangement = free.arrangement();
+  for (auto face = arrangement.faces_begin(); face != arrangement.faces_end(); ++face) {
+    if (!face->contained() || face->is_unbounded()) continue;
+    acd::Polygon2d region{ring(face->outer_ccb()), {}};
+    for (auto hole = face->inner_ccbs_begin(); hole != face->inner_ccbs_end(); ++hole) {
+      region.holes.push_back(ring(*hole));
     }
-    for (acd::Polygon2d& lobe : lobes) result.push_back(std::move(lobe));
+    result.push_back(acd::PreparePolygon(
+        region, "FreeSpace2d(): free space region " + std::to_string(result.size())));
   }
   return result;
 }
@@ -172,6 +129,10 @@ std::vector<acd::Polygon2d> FreeSpace2d(const Workspace2d& workspace,
                      std::to_string(options.pinch_gap));
   }
   const double gap = options.pinch_gap * prepared.bounds.diagonal().norm();
+  // The trace's polygons are valid by construction (rings along cell sides, corners cut by less
+  // than a quarter of the spacing) and clean (vertices only where the boundary turns), so they
+  // skip the check, which took three quarters of the free-space time of a large map; the
+  // Boolean construction's are rounded from exact points and checked.
   std::optional<std::vector<acd::Polygon2d>> traced = internal::RectilinearFreeSpace(prepared, gap);
   std::vector<acd::Polygon2d> result =
       traced ? std::move(*traced) : BooleanFreeSpace(prepared, gap);
@@ -186,15 +147,6 @@ std::vector<acd::Polygon2d> FreeSpace2d(const Workspace2d& workspace,
     const acd::Point2d pa = lowest_left(a), pb = lowest_left(b);
     return pa.x() < pb.x() || (pa.x() == pb.x() && pa.y() < pb.y());
   });
-  // The trace's polygons are valid by construction (rings along cell sides, corners cut by less
-  // than a quarter of the spacing) and clean (vertices only where the boundary turns): checked
-  // again, they took three quarters of the free-space time of a large map. The Boolean
-  // construction's are rounded from exact points, so they are checked.
-  if (traced) return result;
-  for (size_t k = 0; k < result.size(); ++k) {
-    result[k] =
-        acd::PreparePolygon(result[k], "FreeSpace2d(): free space polygon " + std::to_string(k));
-  }
   return result;
 }
 

@@ -21,11 +21,13 @@ struct FreeSpace2dOptions {
 /// ready for acd::Decompose2d(). Sorted by their lowest-leftmost vertex.
 ///
 /// Obstacles may overlap, touch each other, touch or cross the bounds, or split the free space
-/// into several regions. Pinches (a free region whose boundary passes twice through a point):
-///  - two lobes of one region meeting at a point become two polygons, exactly (a zero-width
-///    passage is no passage; the split is where the topology already is);
-///  - a hole touching the outer ring or another hole at a point (the region is not simply
-///    connected in a way a set of simple rings can describe) is closed by adding a diamond of
+/// into several regions. A region is a connected open set (one face of the arrangement, one
+/// 4-connected set of grid cells); where the free space's boundary passes twice through a point:
+///  - two regions meeting there (lobes, or regions round an obstacle between them) are two
+///    polygons, exactly (a zero-width passage is no passage; the split is where the topology
+///    already is);
+///  - one region touching itself there (a hole touching its outer ring or another of its holes,
+///    which no set of simple, disjoint rings describes) is closed by adding a diamond of
 ///    half-diagonal `pinch_gap` * diagonal to the obstacles there; the free space only shrinks
 ///    (collision stays conservative) and the pinch point was not traversable anyway.
 /// The result may be empty (obstacles cover the bounds).
@@ -33,12 +35,10 @@ struct FreeSpace2dOptions {
 /// Construction: when every obstacle edge is axis-parallel (grid maps, box worlds), the free
 /// cells of the grid of the obstacles' coordinates are traced (envs/internal/
 /// rectilinear_free_space.h; linear in the cells; valid by construction); otherwise exact
-/// Boolean operations (CGAL Boolean_set_operations_2, exact constructions) build it, rounded to
-/// doubles and checked by acd::PreparePolygon().
-/// Both give the same regions; they differ where two regions touch at two or more corners
-/// around an obstacle between them: the trace keeps those corners (each region passes each once,
-/// so nothing needs closing), the Boolean construction describes the two regions as one ring
-/// with that obstacle as a hole touching it and closes each contact with a diamond.
+/// Boolean operations (CGAL Boolean_set_operations_2, exact constructions) build it, one
+/// polygon per face of their arrangement, rounded to doubles and checked by
+/// acd::PreparePolygon(). Both give the same polygons (a diamond's points may differ in the last
+/// bit: the trace adds in doubles, the Booleans round exact values).
 /// @throws InputError if the bounds are empty or an obstacle is invalid, or
 ///         `options.pinch_gap` <= 0.
 std::vector<acd::Polygon2d> FreeSpace2d(const Workspace2d& workspace,

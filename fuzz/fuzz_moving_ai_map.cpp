@@ -3,7 +3,9 @@
 // hang) is a finding. A map it accepts, up to 32 x 32 cells, also has its free space traced
 // (FreeSpace2d() of GridWorkspace()), and a wrong free space is a finding: a polygon that
 // PreparePolygon() would change, a free cell's centre in no polygon or in two, a blocked cell's
-// in one; up to 12 x 12 cells, a polygon count other than the Boolean construction's.
+// in one; up to 12 x 12 cells, polygons other than the Boolean construction's (by count and
+// area).
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -50,8 +52,12 @@ void CheckFreeSpace(const acdplan::envs::OccupancyGrid& grid) {
   acdplan::envs::Workspace2d slanted = world;  // A slanted edge: the Boolean construction.
   const Point2d far = world.bounds.max() + Point2d(1, 1);
   slanted.obstacles.push_back({{far, far + Point2d(1, 0), far + Point2d(0, 1)}, {}});
-  if (acdplan::envs::FreeSpace2d(slanted).size() != free.size()) {
-    Finding("the constructions give different numbers of polygons", -1, -1);
+  const std::vector<Polygon2d> boolean = acdplan::envs::FreeSpace2d(slanted);
+  double area = 0.0, boolean_area = 0.0;
+  for (const Polygon2d& polygon : free) area += acdplan::acd::Area(polygon);
+  for (const Polygon2d& polygon : boolean) boolean_area += acdplan::acd::Area(polygon);
+  if (boolean.size() != free.size() || std::abs(boolean_area - area) > 1e-9 * (1.0 + area)) {
+    Finding("the constructions give different polygons", -1, -1);
   }
 }
 

@@ -11,14 +11,14 @@
 namespace acdplan::envs::internal {
 
 /// FreeSpace2d() of `workspace` (prepared: obstacles as acd::PreparePolygon() leaves them), before
-/// its final sort and preparation, when every obstacle edge is axis-parallel: the distinct
+/// its final sort, when every obstacle edge is axis-parallel: the distinct
 /// obstacle coordinates inside the bounds cut the bounds into a grid of cells; a cell is blocked
 /// when an obstacle covers it (winding numbers, row by row); the free cells' 4-connected
-/// components are traced (TraceChamfered()), one polygon each. This is the same set, and the
-/// same polygons, as the Boolean construction gives: cells meeting at a corner are connected
-/// only through a free side cell, so two components touching at a corner are two polygons (a
-/// lobe pinch), and where one component meets itself at a corner (a hole touching another ring
-/// there) the corner is cut off by the diamond |dx| + |dy| < `gap` on both sides.
+/// components are traced (TraceChamfered()), one polygon each, valid and clean as traced. These
+/// are the Boolean construction's regions: cells meeting at a corner are connected only through
+/// a free side cell, so two components touching at a corner are two polygons, and where one
+/// component meets itself at a corner (a hole touching another of its rings there) the corner
+/// is cut off by the diamond |dx| + |dy| < `gap` on both sides.
 ///
 /// O(cells + obstacle edges * rows they span). Returns std::nullopt, leaving the work to the
 /// Boolean construction, when an obstacle edge is not axis-parallel, when the grid would have
