@@ -36,6 +36,11 @@ std::vector<Ring2d> RingsOf(const Polygon2d& polygon) {
 std::vector<std::pair<size_t, size_t>> OverlappingPairs(const std::vector<Polygon2d>& polygons,
                                                         const std::vector<int>& groups,
                                                         bool first_only) {
+  // Nothing to test without two members of one MULTIPOLYGON.
+  std::vector<int> members(groups);
+  std::sort(members.begin(), members.end());
+  const auto first_member = std::lower_bound(members.begin(), members.end(), 0);
+  if (std::adjacent_find(first_member, members.end()) == members.end()) return {};
   struct Box {
     double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
   };

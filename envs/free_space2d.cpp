@@ -94,9 +94,10 @@ std::vector<acd::Polygon2d> BooleanFreeSpace(const Workspace2d& prepared, double
     free.difference(closing);
   }
 
-  // One polygon per free face of the arrangement: regions that meet at points are faces apart
-  // (as two polygons or a polygon that touches itself there, in CGAL's own output are not), and
-  // with the self-touches closed each face's boundary cycles are simple and disjoint.
+  // One polygon per free face of the arrangement, the regions themselves (CGAL's own output
+  // rings can join two regions that meet at points into one ring, with an obstacle between them
+  // as a hole touching it). With the self-touches closed, a face's boundary cycles are simple
+  // and disjoint.
   auto ring = [](PolygonSet::Arrangement_2::Ccb_halfedge_const_circulator first) {
     std::vector<Point> points;
     auto halfedge = first;
