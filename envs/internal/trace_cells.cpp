@@ -7,18 +7,16 @@
 namespace acdplan::envs::internal {
 namespace {
 
-// Grid corners are (X, Y) with X in [0, w], Y in [0, h]; the corner (X, Y) has the cells
-// NE = (X, Y), NW = (X - 1, Y), SW = (X - 1, Y - 1), SE = (X, Y - 1) around it.
+// Labels the 4-connected components of the cells set in a mask (blocked cells, or free ones) and
+// traces their boundaries. Grid corners are (X, Y) with X in [0, w], Y in [0, h]; the corner
+// (X, Y) has the cells NE = (X, Y), NW = (X - 1, Y), SW = (X - 1, Y - 1), SE = (X, Y - 1) around
+// it.
 class Tracer {
  public:
-  Tracer(int w, int h, const std::vector<std::uint8_t>& blocked)
-      : blocked_(blocked),
-        w_(w),
-        h_(h),
-        label_(static_cast<size_t>(w) * h, -1),
-        cut_(label_.size(), 0) {
+  Tracer(int w, int h, const std::vector<std::uint8_t>& mask)
+      : mask_(mask), w_(w), h_(h), label_(static_cast<size_t>(w) * h, -1), cut_(label_.size(), 0) {
     for (int i = 0; i < w * h; ++i) {
-      if (blocked[i] && label_[i] < 0) {
+      if (mask[i] && label_[i] < 0) {
         cells_.emplace_back();
         Flood(i, -1, static_cast<int>(cells_.size()) - 1);
       }
@@ -143,7 +141,7 @@ class Tracer {
   int Index(int x, int y) const { return y * w_ + x; }
 
   // Labels the 4-connected (through uncut adjacencies) cells of label `from` (-1: unlabelled
-  // blocked cells) reachable from cell `start` with `to`.
+  // cells of the mask) reachable from cell `start` with `to`.
   void Flood(int start, int from, int to) {
     std::vector<int> stack = {start};
     label_[start] = to;
@@ -155,7 +153,7 @@ class Tracer {
       auto visit = [&](int nx, int ny, bool open) {
         if (!open || nx < 0 || ny < 0 || nx >= w_ || ny >= h_) return;
         const int j = Index(nx, ny);
-        if (label_[j] != from || (from == -1 && !blocked_[j])) return;
+        if (label_[j] != from || (from == -1 && !mask_[j])) return;
         label_[j] = to;
         stack.push_back(j);
       };
@@ -184,7 +182,7 @@ class Tracer {
   }
 
   static constexpr int kPending = -2;
-  const std::vector<std::uint8_t>& blocked_;
+  const std::vector<std::uint8_t>& mask_;  // The cells to label.
   int w_, h_;
   std::vector<int> label_;
   std::vector<std::uint8_t> cut_;        // cut_[Index(x, y)]: (x, y - 1) and (x, y) not adjacent.
