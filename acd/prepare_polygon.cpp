@@ -395,9 +395,11 @@ void RejectNestedHoles(const std::vector<IndexedRing>& rings, const std::string&
   for (size_t k = 0; k < by_xmin.size(); ++k) {
     const size_t b = by_xmin[k];
     const Box& box = boxes[b];
-    // Holes whose boxes start at or right of b's, up to its right side (ties on either side).
-    size_t first = k;
-    while (first > 0 && boxes[by_xmin[first - 1]].xmin == box.xmin) --first;
+    // Holes whose boxes start at or right of b's left side, up to its right side.
+    const size_t first = static_cast<size_t>(
+        std::lower_bound(by_xmin.begin(), by_xmin.end(), box.xmin,
+                         [&](size_t r, double x) { return boxes[r].xmin < x; }) -
+        by_xmin.begin());
     for (size_t j = first; j < by_xmin.size() && boxes[by_xmin[j]].xmin <= box.xmax; ++j) {
       const size_t a = by_xmin[j];
       const Box& inner = boxes[a];
