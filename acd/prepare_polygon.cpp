@@ -272,20 +272,62 @@ std::vector<EdgeRef> EdgesOf(const std::vector<IndexedRing>& rings, int first_ri
 // orders them against the segments, so it runs on Epeck (exact constructions; the input doubles
 // convert exactly): with Epick's rounded constructions it misses crossings, e.g. it finds none
 // between (1, 0)-(1, 2) and (5, 4)-(0, 0), whose crossing (1, 0.8) is not a double.
+// A polygon of few edges (a building footprint, a grid cell's obstacle) has every pair tested
+// instead, with exact predicates alone (no point is constructed): the sweep's set-up costs more
+// than the pairs.
 bool RingsAreDisjointAndSimple(const std::vector<IndexedRing>& rings) {
   using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
   std::vector<CgalPoint> vertices;
+  for (const IndexedRing& ring : rings) {
+    vertices.insert(vertices.end(), ring.points.begin(), ring.points.end());
+  }
+  std::sort(vertices.begin(), vertices.end());
+  if (std::adjacent_find(vertices.begin(), vertices.end()) != vertices.end()) return false;
+  constexpr size_t kFewEdges = 24;
+  if (vertices.size() <= kFewEdges) {
+    struct Edge {
+      size_t ring, i;
+      CgalPoint a, b;
+    };
+    std::vector<Edge> edges;
+    for (size_t r = 0; r < rings.size(); ++r) {
+      const std::vector<CgalPoint>& points = rings[r].points;
+      for (size_t i = 0; i < points.size(); ++i) {
+        edges.push_back({r, i, points[i], points[(i + 1) % points.size()]});
+      }
+    }
+    for (size_t e = 0; e < edges.size(); ++e) {
+      for (size_t f = e + 1; f < edges.size(); ++f) {
+        const Edge& x = edges[e];
+        const Edge& y = edges[f];
+        const size_t n = rings[x.ring].size();
+        const bool x_then_y = x.ring == y.ring && (x.i + 1) % n == y.i;
+        const bool y_then_x = x.ring == y.ring && (y.i + 1) % n == x.i;
+        if (x_then_y || y_then_x) {
+          // Neighbours share one vertex (no vertex repeats): they meet beyond it only when
+          // the three are collinear and the outer two lie on the same side of it.
+          const CgalPoint& shared = x_then_y ? x.b : x.a;
+          const CgalPoint& p = x_then_y ? x.a : x.b;
+          const CgalPoint& q = x_then_y ? y.b : y.a;
+          if (CGAL::orientation(p, shared, q) == CGAL::COLLINEAR &&
+              CGAL::compare_xy(p, shared) == CGAL::compare_xy(q, shared)) {
+            return false;
+          }
+        } else if (CGAL::do_intersect(Kernel::Segment_2(x.a, x.b), Kernel::Segment_2(y.a, y.b))) {
+          return false;
+        }
+      }
+    }
+    return true;
+  }
   std::vector<Exact::Segment_2> segments;
   for (const IndexedRing& ring : rings) {
     for (size_t i = 0; i < ring.size(); ++i) {
-      vertices.push_back(ring.points[i]);
       const CgalPoint& a = ring.points[i];
       const CgalPoint& b = ring.points[(i + 1) % ring.size()];
       segments.emplace_back(Exact::Point_2(a.x(), a.y()), Exact::Point_2(b.x(), b.y()));
     }
   }
-  std::sort(vertices.begin(), vertices.end());
-  if (std::adjacent_find(vertices.begin(), vertices.end()) != vertices.end()) return false;
   CGAL::Arr_non_caching_segment_traits_2<Exact> traits;
   return !CGAL::do_curves_intersect(segments.begin(), segments.end(), traits);
 }
