@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include "acd/internal/box_sweep.h"
 #include "acd/internal/ring_name.h"
 #include "acd/internal/text_parsing.h"
 #include "base/input_error.h"
@@ -413,48 +414,33 @@ CGAL::Bounded_side SideOfRing(const IndexedRing& ring, const std::vector<CgalPoi
 }
 
 // Disjoint (or only touching) holes are nested when one's vertex off the other's ring lies
-// inside the other. Bounding boxes filter the O(h^2) pairs: with the holes sorted by their boxes'
-// left sides, a hole's box can only lie in the boxes whose left side is at most its own. Where
-// several pairs nest, the first in (inner, outer) hole order is named.
+// inside the other. Only holes whose bounding boxes overlap are tested (internal::
+// ForEachSelfOverlap()), and of those only a box inside the other. Where several pairs nest, the
+// first in (inner, outer) hole order is named.
 void RejectNestedHoles(const std::vector<IndexedRing>& rings, const std::string& where) {
-  struct Box {
-    double xmin, xmax, ymin, ymax;
-  };
-  std::vector<Box> boxes(rings.size());
-  std::vector<size_t> by_xmin;
+  std::vector<internal::IdBox> boxes;
   for (size_t r = 1; r < rings.size(); ++r) {
-    Box b{HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
-    for (const CgalPoint& p : rings[r].points) {
-      b = {std::min(b.xmin, p.x()), std::max(b.xmax, p.x()), std::min(b.ymin, p.y()),
-           std::max(b.ymax, p.y())};
-    }
-    boxes[r] = b;
-    by_xmin.push_back(r);
+    CGAL::Bbox_2 b;
+    for (const CgalPoint& p : rings[r].points) b += p.bbox();
+    boxes.push_back({{b.xmin(), b.ymin()}, {b.xmax(), b.ymax()}, static_cast<int>(r)});
   }
-  std::sort(by_xmin.begin(), by_xmin.end(),
-            [&](size_t a, size_t b) { return boxes[a].xmin < boxes[b].xmin; });
+  auto box_of = [&](size_t r) -> const internal::IdBox& { return boxes[r - 1]; };
+  auto within = [](const internal::IdBox& inner, const internal::IdBox& outer) {
+    return inner.lo[0] >= outer.lo[0] && inner.hi[0] <= outer.hi[0] && inner.lo[1] >= outer.lo[1] &&
+           inner.hi[1] <= outer.hi[1];
+  };
   std::pair<size_t, size_t> nested{rings.size(), rings.size()};  // (inner, outer)
-  for (size_t k = 0; k < by_xmin.size(); ++k) {
-    const size_t b = by_xmin[k];
-    const Box& box = boxes[b];
-    // Holes whose boxes start at or right of b's left side, up to its right side.
-    const size_t first = static_cast<size_t>(
-        std::lower_bound(by_xmin.begin(), by_xmin.end(), box.xmin,
-                         [&](size_t r, double x) { return boxes[r].xmin < x; }) -
-        by_xmin.begin());
-    for (size_t j = first; j < by_xmin.size() && boxes[by_xmin[j]].xmin <= box.xmax; ++j) {
-      const size_t a = by_xmin[j];
-      const Box& inner = boxes[a];
-      if (a == b || inner.xmax > box.xmax || inner.ymin < box.ymin || inner.ymax > box.ymax ||
-          std::make_pair(a, b) > nested) {
-        continue;
-      }
-      size_t vertex = 0;
-      if (SideOfRing(rings[a], rings[b].points, &vertex) == CGAL::ON_BOUNDED_SIDE) {
-        nested = {a, b};
-      }
+  auto test = [&](size_t inner, size_t outer) {
+    if (!within(box_of(inner), box_of(outer)) || std::make_pair(inner, outer) > nested) return;
+    size_t vertex = 0;
+    if (SideOfRing(rings[inner], rings[outer].points, &vertex) == CGAL::ON_BOUNDED_SIDE) {
+      nested = {inner, outer};
     }
-  }
+  };
+  internal::ForEachSelfOverlap(boxes, [&](int a, int b) {
+    test(static_cast<size_t>(a), static_cast<size_t>(b));
+    test(static_cast<size_t>(b), static_cast<size_t>(a));
+  });
   if (nested.first < rings.size()) {
     Fail(where, RingName(nested.first) + " lies inside " + RingName(nested.second) +
                     " (holes must not be nested)");

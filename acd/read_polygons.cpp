@@ -1,14 +1,14 @@
 #include "acd/read_polygons.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <functional>
-#include <numeric>
 #include <sstream>
 #include <utility>
 
 #include "acd/geojson_reader.h"
+#include "acd/internal/box_sweep.h"
 #include "acd/internal/disjoint_sets.h"
 #include "acd/internal/even_odd_regions.h"
 #include "acd/internal/text_parsing.h"
@@ -30,42 +30,26 @@ std::vector<Ring2d> RingsOf(const Polygon2d& polygon) {
 
 // The pairs (i, j), i < j, of valid `polygons` of one group (groups[i] == groups[j] >= 0)
 // whose interiors intersect, in lexicographic order; `first_only`: the first pair only. Pairs
-// whose bounding boxes overlap (found by a sweep over the boxes sorted by their left sides) are
-// decided exactly: the two polygons' common area (internal::EvenOddRegions() with one layer
-// each) is empty or not.
+// whose bounding boxes overlap (internal::ForEachSelfOverlap()) are decided exactly: the two
+// polygons' common area (internal::EvenOddRegions() with one layer each) is empty or not.
 std::vector<std::pair<size_t, size_t>> OverlappingPairs(const std::vector<Polygon2d>& polygons,
                                                         const std::vector<int>& groups,
                                                         bool first_only) {
-  // Nothing to test without two members of one MULTIPOLYGON.
-  std::vector<int> members(groups);
-  std::sort(members.begin(), members.end());
-  const auto first_member = std::lower_bound(members.begin(), members.end(), 0);
-  if (std::adjacent_find(first_member, members.end()) == members.end()) return {};
-  struct Box {
-    double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
-  };
-  std::vector<Box> boxes(polygons.size());
+  std::vector<internal::IdBox> boxes;  // Of the members of MULTIPOLYGONs only.
   for (size_t k = 0; k < polygons.size(); ++k) {
-    for (const Point2d& p : polygons[k].outer) {
-      boxes[k] = {std::min(boxes[k].xmin, p.x()), std::max(boxes[k].xmax, p.x()),
-                  std::min(boxes[k].ymin, p.y()), std::max(boxes[k].ymax, p.y())};
-    }
+    if (groups[k] < 0) continue;
+    Eigen::AlignedBox2d box;
+    for (const Point2d& p : polygons[k].outer) box.extend(p);
+    boxes.push_back(
+        {{box.min().x(), box.min().y()}, {box.max().x(), box.max().y()}, static_cast<int>(k)});
   }
-  std::vector<size_t> by_xmin(polygons.size());
-  std::iota(by_xmin.begin(), by_xmin.end(), size_t{0});
-  std::sort(by_xmin.begin(), by_xmin.end(),
-            [&](size_t a, size_t b) { return boxes[a].xmin < boxes[b].xmin; });
   std::vector<std::pair<size_t, size_t>> candidates;
-  for (size_t k = 0; k < by_xmin.size(); ++k) {
-    const Box& a = boxes[by_xmin[k]];
-    for (size_t m = k + 1; m < by_xmin.size() && boxes[by_xmin[m]].xmin < a.xmax; ++m) {
-      const Box& b = boxes[by_xmin[m]];
-      const int group = groups[by_xmin[k]];
-      if (group >= 0 && groups[by_xmin[m]] == group && b.ymin < a.ymax && a.ymin < b.ymax) {
-        candidates.emplace_back(std::min(by_xmin[k], by_xmin[m]), std::max(by_xmin[k], by_xmin[m]));
-      }
+  internal::ForEachSelfOverlap(boxes, [&](int a, int b) {
+    if (groups[a] == groups[b]) {
+      candidates.emplace_back(static_cast<size_t>(std::min(a, b)),
+                              static_cast<size_t>(std::max(a, b)));
     }
-  }
+  });
   std::sort(candidates.begin(), candidates.end());
   std::vector<std::pair<size_t, size_t>> overlapping;
   for (const auto& [i, j] : candidates) {
