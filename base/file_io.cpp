@@ -31,6 +31,13 @@ std::string ReadFile(const std::string& path) {
   return text.str();
 }
 
+std::string UnreadableFileReason(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (ec) return ec.message();
+  return std::filesystem::is_regular_file(status) ? "" : "not a regular file";
+}
+
 void WriteFileAtomically(const std::string& path, const std::string& text) {
   auto fail = [&path](const std::string& why) {
     throw std::runtime_error(path + ": cannot write the file: " + why);

@@ -10,6 +10,11 @@ namespace acdplan {
 ///         system's ("No such file or directory") or "it is a directory".
 std::string ReadFile(const std::string& path);
 
+/// Why the file at `path` cannot be read as a regular file, or "" if it can: "not a regular
+/// file" (a folder, a device), else the system's reason ("No such file or directory", "File
+/// name too long"). Never throws, whatever `path` holds.
+std::string UnreadableFileReason(const std::string& path);
+
 /// Writes `text` to `path` atomically: a temporary file in the same folder, renamed into place
 /// once complete, so a failed run never leaves a partial file that looks complete. Missing
 /// parent folders are created. The file gets the usual 0666 & ~umask permissions.

@@ -188,7 +188,8 @@ std::vector<BenchCollisionRow> BenchCollision(const BenchCollisionOptions& optio
   std::vector<std::string> mesh_files;
   if (!options.mesh_dir.empty()) {
     namespace fs = std::filesystem;
-    if (!fs::is_directory(options.mesh_dir)) {
+    std::error_code error;
+    if (!fs::is_directory(options.mesh_dir, error)) {
       throw InputError("BenchCollision(): " + options.mesh_dir + ": not a folder");
     }
     if (options.meshes.empty()) {

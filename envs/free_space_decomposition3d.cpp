@@ -452,7 +452,8 @@ FreeSpaceDecomposition3d DecomposeFreeSpace3d(const Workspace3d& workspace,
   const std::string dir = options.cache_dir.empty() ? FreeSpaceCacheDir() : options.cache_dir;
   const std::string file =
       options.use_cache && !dir.empty() ? dir + "/free3d-" + key + ".txt" : std::string();
-  if (!file.empty() && std::filesystem::exists(file)) {
+  std::error_code no_file;  // (A cache folder the system cannot look into has no cache.)
+  if (!file.empty() && std::filesystem::exists(file, no_file)) {
     try {
       FreeSpaceDecomposition3d cached = Parse(ReadFile(file), key);
       cached.from_cache = true;

@@ -7,12 +7,12 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "acd/internal/text_parsing.h"
+#include "base/file_io.h"
 #include "base/input_error.h"
 #include "envs/internal/file_extension.h"
 #include "envs/obj_off_reader.h"
@@ -32,11 +32,8 @@ bool IsMeshFile(const std::string& path) {
 }
 
 acd::TriangleMesh ReadMesh(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    const bool exists = std::filesystem::exists(path, error);
-    throw InputError(path + ": cannot read the file: " +
-                     (exists ? std::string("not a regular file") : std::strerror(ENOENT)));
+  if (const std::string reason = UnreadableFileReason(path); !reason.empty()) {
+    throw InputError(path + ": cannot read the file: " + reason);
   }
   const std::string extension = LowerExtension(path);
   if (extension == ".obj" || extension == ".off" || extension == ".ply" || extension == ".stl") {

@@ -1,9 +1,6 @@
 #include "envs/occupancy_map.h"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-
+#include "base/file_io.h"
 #include "base/input_error.h"
 #include "base/yaml_file.h"
 #include "envs/internal/gray_image.h"
@@ -56,10 +53,8 @@ OccupancyGrid ReadOccupancyMap(const std::string& yaml_path, const OccupancyMapO
   }
 
   const std::string image_path = file.ResolvePath(image_name);
-  if (!std::filesystem::is_regular_file(image_path)) {
-    file.Fail("image", image_path + ": cannot read the file: " +
-                           (std::filesystem::exists(image_path) ? "not a regular file"
-                                                                : std::strerror(ENOENT)));
+  if (const std::string reason = UnreadableFileReason(image_path); !reason.empty()) {
+    file.Fail("image", image_path + ": cannot read the file: " + reason);
   }
   const internal::GrayImage image = internal::ReadGrayImage(image_path);
 

@@ -16,6 +16,7 @@
 #include <set>
 
 #include "acd/internal/text_parsing.h"
+#include "base/file_io.h"
 #include "base/input_error.h"
 #include "envs/mesh_loader.h"
 
@@ -96,11 +97,8 @@ struct IniFile {
 };
 
 IniFile ReadIni(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    const bool exists = std::filesystem::exists(path, error);
-    throw InputError(path + ":0: cannot read the file: " +
-                     (exists ? std::string("not a regular file") : std::strerror(ENOENT)));
+  if (const std::string reason = UnreadableFileReason(path); !reason.empty()) {
+    throw InputError(path + ":0: cannot read the file: " + reason);
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ":0: cannot read the file: " + std::strerror(errno));

@@ -105,5 +105,14 @@ TEST_F(FileIoTest, ReadNamesTheFileAndTheReason) {
             dir_.string() + ": cannot read the file: it is a directory");
 }
 
+TEST_F(FileIoTest, UnreadableFileReasonSaysWhyWithoutThrowing) {
+  const fs::path path = dir_ / "in.txt";
+  WriteFileAtomically(path.string(), "x");
+  EXPECT_EQ(UnreadableFileReason(path.string()), "");
+  EXPECT_EQ(UnreadableFileReason(dir_.string()), "not a regular file");
+  EXPECT_EQ(UnreadableFileReason((dir_ / "none").string()), "No such file or directory");
+  EXPECT_EQ(UnreadableFileReason((dir_ / std::string(300, 'x')).string()), "File name too long");
+}
+
 }  // namespace
 }  // namespace acdplan

@@ -147,6 +147,10 @@ TEST(OccupancyMapTest, ImageErrors) {
   EXPECT_THAT(error("missing.pgm", ""),
               HasSubstr("map.yaml: image: " + dir.Path("missing.pgm") +
                         ": cannot read the file: No such file or directory"));
+  // A name longer than the system allows (found by fuzz/fuzz_occupancy_map, which stopped on
+  // the exception the file-system check threw; fuzz/corpus/occupancy_map/regression-*).
+  EXPECT_THAT(error(std::string(300, 'x') + ".pgm", ""),
+              HasSubstr(".pgm: cannot read the file: File name too long"));
   EXPECT_THAT(error("a.pgm", "P6 1 1 255\n..."),
               HasSubstr("a.pgm: not a PGM image (expected magic 'P2' or 'P5')"));
   EXPECT_THAT(error("b.pgm", "P5 4 x 255\n"),
