@@ -1,5 +1,7 @@
 #include "envs/occupancy_map.h"
 
+#include <cmath>
+
 #include "base/file_io.h"
 #include "base/input_error.h"
 #include "base/yaml_file.h"
@@ -45,10 +47,16 @@ OccupancyGrid ReadOccupancyMap(const std::string& yaml_path, const OccupancyMapO
       negate = value == 1.0;
     }
   }
+  enum class Mode { kTrinary, kScale, kRaw };
+  Mode mode = Mode::kTrinary;
   if (root["mode"]) {
-    const std::string mode = file.String(root["mode"], "mode");
-    if (mode != "trinary" && mode != "scale" && mode != "raw") {
-      file.Fail("mode", "expected trinary, scale or raw, got '" + mode + "'");
+    const std::string name = file.String(root["mode"], "mode");
+    if (name == "scale") {
+      mode = Mode::kScale;
+    } else if (name == "raw") {
+      mode = Mode::kRaw;
+    } else if (name != "trinary") {
+      file.Fail("mode", "expected trinary, scale or raw, got '" + name + "'");
     }
   }
 
@@ -56,7 +64,9 @@ OccupancyGrid ReadOccupancyMap(const std::string& yaml_path, const OccupancyMapO
   if (const std::string reason = UnreadableFileReason(image_path); !reason.empty()) {
     file.Fail("image", image_path + ": cannot read the file: " + reason);
   }
-  const internal::GrayImage image = internal::ReadGrayImage(image_path);
+  const internal::GrayImage image =
+      internal::ReadGrayImage(image_path, mode == Mode::kTrinary ? internal::ImageAlpha::kAveraged
+                                                                 : internal::ImageAlpha::kSeparate);
 
   OccupancyGrid grid;
   grid.width = image.width;
@@ -65,16 +75,28 @@ OccupancyGrid ReadOccupancyMap(const std::string& yaml_path, const OccupancyMapO
   grid.origin = Eigen::Vector2d(origin[0], origin[1]);
   grid.blocked.resize(image.pixels.size());
   const double max_value = image.max_value;
+  const bool unknown_blocked = options.unknown == UnknownCells::kBlocked;
   for (size_t i = 0; i < image.pixels.size(); ++i) {
-    const double value = image.pixels[i];
-    const double occupancy = negate ? value / max_value : (max_value - value) / max_value;
+    const double value = image.pixels[i];  // 0 black, max_value white.
+    // The occupancy in [0, 1], or NaN for unknown by the mode's own rule.
+    double occupancy;
+    if (mode == Mode::kRaw) {
+      // The grey level (of 255) is the occupancy in percent; above 100, unknown. Nav2's rule,
+      // which leaves `negate` out (ROS 1's map_server applied it first).
+      const double percent = std::round(value * 255.0 / max_value);
+      occupancy = percent <= 100.0 ? percent / 100.0 : std::nan("");
+    } else if (!image.transparent.empty() && image.transparent[i]) {
+      occupancy = std::nan("");  // Scale mode: a pixel not fully opaque is unknown.
+    } else {
+      occupancy = negate ? value / max_value : (max_value - value) / max_value;
+    }
     bool blocked;
     if (occupancy > occupied_thresh) {
       blocked = true;
     } else if (occupancy < free_thresh) {
       blocked = false;
     } else {
-      blocked = options.unknown == UnknownCells::kBlocked;
+      blocked = unknown_blocked;  // Between the thresholds, or unknown (NaN).
     }
     grid.blocked[i] = blocked ? 1 : 0;
   }

@@ -26,12 +26,16 @@ struct OccupancyMapOptions {
 ///   origin: [x, y, yaw] of the lower-left pixel's corner; yaw must be 0
 ///   occupied_thresh, free_thresh: in [0, 1], free_thresh < occupied_thresh (free_thresh
 ///     defaults to 0.196 and occupied_thresh to 0.65 when absent)
-///   negate: 0 or 1, or a YAML boolean (default 0); mode: trinary | scale | raw (accepted; only the
-///   thresholds
-///     are used, as map_server's trinary mode)
-/// A pixel of value v (maxval m) has occupancy p = (m - v) / m (or v / m when negate is 1);
-/// p > occupied_thresh is blocked, p < free_thresh is free, anything else unknown. Colour
-/// PNGs are converted to grey by libpng (luminance); alpha is ignored.
+///   negate: 0 or 1, or a YAML boolean (default 0)
+///   mode: trinary (default), scale or raw, as map_server reads them (below)
+/// A pixel's grey level v (of m, white) is the mean of its channels: grey, or red, green and
+/// blue (not a luminance), and in trinary mode alpha as one more channel
+/// (envs/internal/gray_image.h). Its occupancy is p = (m - v) / m, or v / m when negate is 1;
+/// in raw mode p = v / 100 with v scaled to 0..255 (the image holds percentages), unknown above
+/// 100, negate left out (Nav2's rule); in scale mode a pixel that is not fully opaque is unknown.
+/// p > occupied_thresh is blocked, p < free_thresh is free, anything else unknown (blocked or
+/// free by OccupancyMapOptions::unknown). (Raw mode applies the thresholds to the percentages:
+/// map_server passes them on as they are, and a binary world needs a cut somewhere.)
 /// @throws InputError naming the file, the key and the rule, e.g.
 ///   "map.yaml: resolution: expected a number > 0", "map.yaml: image: cannot read
 ///   'missing.pgm': No such file or directory", "map.pgm: malformed PGM header".

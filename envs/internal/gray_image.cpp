@@ -66,13 +66,14 @@ GrayImage PgmFromBytes(const std::string& path, const std::string& bytes) {
   GrayImage image;
   image.width = header.Integer("width");
   image.height = header.Integer("height");
-  image.max_value = header.Integer("maxval");
+  const int max_value = header.Integer("maxval");
   if (image.width <= 0 || image.height <= 0) {
     throw InputError(path + ": malformed PGM header: width and height must be > 0");
   }
-  if (image.max_value < 1 || image.max_value > 65535) {
+  if (max_value < 1 || max_value > 65535) {
     throw InputError(path + ": malformed PGM header: maxval must be in [1, 65535]");
   }
+  image.max_value = static_cast<std::uint32_t>(max_value);
   // Up to 10^18 pixels by the header; memory is only taken for pixels the file holds.
   const size_t n = static_cast<size_t>(image.width) * image.height;
   if (binary) {
@@ -86,7 +87,7 @@ GrayImage PgmFromBytes(const std::string& path, const std::string& bytes) {
     for (size_t i = 0; i < n; ++i) {
       unsigned value = static_cast<unsigned char>(bytes[pos++]);
       if (bytes_per_pixel == 2) value = (value << 8) | static_cast<unsigned char>(bytes[pos++]);
-      image.pixels[i] = static_cast<std::uint16_t>(value);
+      image.pixels[i] = value;
     }
   } else {
     header.in_header_ = false;
@@ -96,8 +97,7 @@ GrayImage PgmFromBytes(const std::string& path, const std::string& bytes) {
         throw InputError(path + ": truncated PGM data: expected " + std::to_string(n) +
                          " pixels, found " + std::to_string(i));
       }
-      image.pixels.push_back(
-          static_cast<std::uint16_t>(std::min(header.Integer("a pixel value"), 65535)));
+      image.pixels.push_back(static_cast<std::uint32_t>(header.Integer("a pixel value")));
     }
   }
   for (size_t i = 0; i < n; ++i) {
@@ -111,7 +111,7 @@ GrayImage PgmFromBytes(const std::string& path, const std::string& bytes) {
 }
 
 /// A PNG image from the bytes of file `path` (named in messages).
-GrayImage PngFromBytes(const std::string& path, const std::string& bytes) {
+GrayImage PngFromBytes(const std::string& path, const std::string& bytes, ImageAlpha alpha) {
   png_image png;
   std::memset(&png, 0, sizeof png);
   png.version = PNG_IMAGE_VERSION;
@@ -120,43 +120,57 @@ GrayImage PngFromBytes(const std::string& path, const std::string& bytes) {
     png_image_free(&png);
     throw InputError(path + ": cannot read PNG: " + reason);
   }
-  // Deflate expands a byte to at most 1032 bytes, and a grey output pixel comes from at least
-  // one bit of decoded data (1-bit images), so a larger header is a truncated file; rejecting
-  // it here keeps a few bytes from asking for gigabytes.
+  // Deflate expands a byte to at most 1032 bytes, and an output pixel comes from at least one
+  // bit of decoded data (1-bit images), so a larger header is a truncated file; rejecting it
+  // here keeps a few bytes from asking for gigabytes.
   constexpr size_t kMaxDeflateRatio = 1032;
-  const size_t pixels = static_cast<size_t>(png.width) * png.height;
-  if (pixels / 8 > kMaxDeflateRatio * bytes.size()) {
+  const size_t n = static_cast<size_t>(png.width) * png.height;
+  if (n / 8 > kMaxDeflateRatio * bytes.size()) {
     png_image_free(&png);
     throw InputError(path + ": cannot read PNG: " + std::to_string(png.width) + " x " +
                      std::to_string(png.height) + " pixels cannot come from " +
                      std::to_string(bytes.size()) + " bytes (truncated file?)");
   }
-  png.format = PNG_FORMAT_GRAY;
-  GrayImage image;
-  image.width = static_cast<int>(png.width);
-  image.height = static_cast<int>(png.height);
-  image.max_value = 255;
+  // The file's own channels at 8 bits (a palette expanded), so that libpng converts neither
+  // colour to grey (it would weigh the channels by luminance) nor gamma: 8-bit output is sRGB,
+  // as 8-bit files are taken to be, and 16-bit files are taken as sRGB too rather than linear.
+  // Nor does it premultiply alpha, which it does only for 16-bit output.
+  png.format = png.format & (PNG_FORMAT_FLAG_COLOR | PNG_FORMAT_FLAG_ALPHA);
+  png.flags |= PNG_IMAGE_FLAG_16BIT_sRGB;
+  const int channels = static_cast<int>(PNG_IMAGE_SAMPLE_CHANNELS(png.format));
+  const bool has_alpha = (png.format & PNG_FORMAT_FLAG_ALPHA) != 0;
   std::vector<png_byte> buffer(PNG_IMAGE_SIZE(png));
   if (!png_image_finish_read(&png, nullptr, buffer.data(), 0, nullptr)) {
     const std::string reason = png.message;
     png_image_free(&png);
     throw InputError(path + ": cannot read PNG: " + reason);
   }
-  image.pixels.assign(buffer.begin(), buffer.end());
+  const int colours = has_alpha ? channels - 1 : channels;  // Alpha comes last.
+  const bool averaged = has_alpha && alpha == ImageAlpha::kAveraged;
+  GrayImage image;
+  image.width = static_cast<int>(png.width);
+  image.height = static_cast<int>(png.height);
+  image.max_value = 255u * static_cast<std::uint32_t>(averaged ? channels : colours);
+  image.pixels.resize(n);
+  if (has_alpha && !averaged) image.transparent.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const png_byte* pixel = buffer.data() + i * channels;
+    std::uint32_t sum = 0;
+    for (int c = 0; c < colours; ++c) sum += pixel[c];
+    if (averaged) sum += pixel[colours];
+    image.pixels[i] = sum;
+    if (!image.transparent.empty()) image.transparent[i] = pixel[colours] != 255;
+  }
   return image;
 }
 
 }  // namespace
 
-GrayImage ReadPgm(const std::string& path) { return PgmFromBytes(path, ReadFile(path)); }
-
-GrayImage ReadPng(const std::string& path) { return PngFromBytes(path, ReadFile(path)); }
-
-GrayImage ReadGrayImage(const std::string& path) {
+GrayImage ReadGrayImage(const std::string& path, ImageAlpha alpha) {
   const std::string bytes = ReadFile(path);  // Read once, whichever format it holds.
   static const unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (bytes.size() >= 8 && std::memcmp(bytes.data(), kPngSignature, 8) == 0) {
-    return PngFromBytes(path, bytes);
+    return PngFromBytes(path, bytes, alpha);
   }
   return PgmFromBytes(path, bytes);
 }

@@ -33,16 +33,24 @@ std::string BinaryPgm() {
   return text;
 }
 
-void WritePng(const std::string& path) {
+// Writes `samples` (format's channels per pixel, row 0 on top) as an 8-bit PNG.
+void WritePng(const std::string& path, png_uint_32 format, int width, int height,
+              const std::vector<png_byte>& samples) {
   png_image image;
   std::memset(&image, 0, sizeof image);
   image.version = PNG_IMAGE_VERSION;
-  image.width = 4;
-  image.height = 3;
-  image.format = PNG_FORMAT_RGB;  // Colour, so the reader's grey conversion is exercised.
+  image.width = width;
+  image.height = height;
+  image.format = format;
+  ASSERT_EQ(samples.size(), PNG_IMAGE_SIZE(image));
+  ASSERT_TRUE(png_image_write_to_file(&image, path.c_str(), 0, samples.data(), 0, nullptr));
+}
+
+// kPixels as grey RGB pixels.
+void WritePng(const std::string& path) {
   std::vector<png_byte> rgb;
   for (int v : kPixels) rgb.insert(rgb.end(), 3, static_cast<png_byte>(v));
-  ASSERT_TRUE(png_image_write_to_file(&image, path.c_str(), 0, rgb.data(), 0, nullptr));
+  WritePng(path, PNG_FORMAT_RGB, 4, 3, rgb);
 }
 
 const char* kYaml =
@@ -86,6 +94,72 @@ TEST(OccupancyMapTest, NegateAndUnknownCells) {
   const OccupancyGrid optimistic =
       ReadOccupancyMap(dir.Write("map.yaml", kYaml), {UnknownCells::kFree});
   EXPECT_EQ(optimistic.blocked[3], 0);
+}
+
+// map_server's grey level of a colour pixel is the mean of its channels, not a luminance:
+// yellow (255, 255, 0) has mean 170, occupancy 0.33 (unknown), where its luminance (about 237)
+// would make it free; green (0, 255, 0) has mean 85, occupancy 0.67 (occupied), where its
+// luminance (about 182) would leave it unknown.
+TEST(OccupancyMapTest, AColourPixelIsTheMeanOfItsChannels) {
+  TempDir dir;
+  WritePng(dir.Path("map.png"), PNG_FORMAT_RGB, 4, 1,
+           {255, 255, 255, 255, 255, 0, 0, 255, 0, 0, 0, 0});
+  std::string yaml = kYaml;
+  yaml.replace(yaml.find("map.pgm"), 7, "map.png");
+  const std::string path = dir.Write("map.yaml", yaml);
+  EXPECT_EQ(ReadOccupancyMap(path).blocked, (std::vector<std::uint8_t>{0, 1, 1, 1}));
+  EXPECT_EQ(ReadOccupancyMap(path, {UnknownCells::kFree}).blocked,
+            (std::vector<std::uint8_t>{0, 0, 1, 1}));
+}
+
+// Alpha, by mode: trinary averages it in as a fourth channel (opaque = 255), scale makes every
+// pixel that is not fully opaque unknown, raw leaves it out.
+TEST(OccupancyMapTest, AlphaAsEachModeReadsIt) {
+  TempDir dir;
+  // White opaque, white transparent, black transparent, black opaque, white nearly opaque.
+  WritePng(dir.Path("map.png"), PNG_FORMAT_RGBA, 5, 1,
+           {255, 255, 255, 255, 255, 255, 255, 0, 0, 0, 0, 0, 0, 0, 0, 255, 255, 255, 255, 254});
+  auto blocked = [&](const std::string& mode, UnknownCells unknown) {
+    std::string yaml = kYaml;
+    yaml.replace(yaml.find("map.pgm"), 7, "map.png");
+    return ReadOccupancyMap(dir.Write("map.yaml", yaml + "mode: " + mode + "\n"), {unknown})
+        .blocked;
+  };
+  using Cells = std::vector<std::uint8_t>;
+  // Trinary: white transparent has mean 191.25, occupancy 0.25 (unknown); black transparent
+  // mean 0 (occupied); nearly opaque white is free.
+  EXPECT_EQ(blocked("trinary", UnknownCells::kBlocked), (Cells{0, 1, 1, 1, 0}));
+  EXPECT_EQ(blocked("trinary", UnknownCells::kFree), (Cells{0, 0, 1, 1, 0}));
+  EXPECT_EQ(blocked("scale", UnknownCells::kBlocked), (Cells{0, 1, 1, 1, 1}));
+  EXPECT_EQ(blocked("scale", UnknownCells::kFree), (Cells{0, 0, 0, 1, 0}));
+  // Raw: white (255 > 100) is unknown whatever its alpha, black is 0% occupied.
+  EXPECT_EQ(blocked("raw", UnknownCells::kBlocked), (Cells{1, 1, 0, 0, 1}));
+  EXPECT_EQ(blocked("raw", UnknownCells::kFree), (Cells{0, 0, 0, 0, 0}));
+}
+
+// Raw mode (map_saver's --mode raw): a pixel's value is its occupancy in percent, above 100
+// unknown (map_saver writes unknown cells as 255); the thresholds apply to the percentages.
+TEST(OccupancyMapTest, RawModeReadsPercentages) {
+  TempDir dir;
+  const std::vector<int> values = {0, 19, 20, 65, 66, 100, 101, 255};
+  std::string pgm = "P2\n8 1\n255\n";
+  for (int v : values) pgm += std::to_string(v) + " ";
+  dir.Write("map.pgm", pgm);
+  const std::string raw = std::string(kYaml) + "mode: raw\n";
+  using Cells = std::vector<std::uint8_t>;
+  // free_thresh 0.196, occupied_thresh 0.65.
+  EXPECT_EQ(ReadOccupancyMap(dir.Write("map.yaml", raw)).blocked, (Cells{0, 0, 1, 1, 1, 1, 1, 1}));
+  EXPECT_EQ(ReadOccupancyMap(dir.Write("map.yaml", raw), {UnknownCells::kFree}).blocked,
+            (Cells{0, 0, 0, 0, 1, 1, 0, 0}));
+  // negate does not apply to percentages (Nav2's map_server).
+  std::string negated = raw;
+  negated.replace(negated.find("negate: 0"), 9, "negate: 1");
+  EXPECT_EQ(ReadOccupancyMap(dir.Write("map.yaml", negated), {UnknownCells::kFree}).blocked,
+            (Cells{0, 0, 0, 0, 1, 1, 0, 0}));
+  // 16-bit samples scale to 0..255 first: 100 * 257 is 100%, 101 * 257 is unknown.
+  dir.Write("map.pgm", "P2\n3 1\n65535\n0 25700 25957\n");
+  EXPECT_EQ(ReadOccupancyMap(dir.Write("map.yaml", raw), {UnknownCells::kFree}).blocked,
+            (Cells{0, 1, 0}));
 }
 
 TEST(OccupancyMapTest, LoadsAWorkspaceInWorldCoordinates) {
