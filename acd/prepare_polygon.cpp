@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "acd/internal/box_sweep.h"
+#include "acd/internal/disjoint_sets.h"
 #include "acd/internal/ring_name.h"
 #include "acd/internal/text_parsing.h"
 #include "base/input_error.h"
@@ -637,20 +638,24 @@ std::vector<Polygon2d> PrepareTouching(std::vector<IndexedRing> rings, const std
   // Pieces. A part without pinch vertices (where its triangles form one fan sector) is one
   // polygon. A part with pinches is grown triangle by triangle, adding a triangle only while
   // every vertex keeps one fan sector of the piece (a 2-manifold: simple, disjoint rings).
-  std::vector<char> pinched(static_cast<size_t>(components), 0);
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
-    std::unordered_map<int, int> sectors;
+  // The fan sectors around v of the triangles with the same `label` (>= 0): runs of them
+  // counter-clockwise, ended by a triangle of another label or a constrained edge; one call of
+  // `sector_end(label)` per run.
+  auto for_each_sector_end = [&](const VertexHandle& v, auto label, auto sector_end) {
     auto f = cdt.incident_faces(v);
     const auto done = f;
     do {
-      const int c = f->info().component;
+      const int l = label(f);
       auto next = f;
       ++next;
-      if (c >= 0 && next->info().component != c)
-        ++sectors[c];
-      else if (c >= 0 && cdt.is_constrained({f, f->index(next)}))
-        ++sectors[c];
+      if (l >= 0 && (label(next) != l || cdt.is_constrained({f, f->index(next)}))) sector_end(l);
     } while (++f != done);
+  };
+  std::vector<char> pinched(static_cast<size_t>(components), 0);
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    std::unordered_map<int, int> sectors;
+    for_each_sector_end(
+        v, [](const FaceHandle& f) { return f->info().component; }, [&](int c) { ++sectors[c]; });
     for (const auto& [c, count] : sectors) {
       if (count > 1) pinched[static_cast<size_t>(c)] = 1;
     }
@@ -711,6 +716,94 @@ std::vector<Polygon2d> PrepareTouching(std::vector<IndexedRing> rings, const std
           return true;
         },
         &queue);
+  }
+
+  // A piece grown from one triangle cannot close around a hole (its two fronts meet at a vertex
+  // where each already holds a sector), so a pinched part came out as about one piece per hole.
+  // Pieces that share a cut are joined again wherever their union keeps one sector at every
+  // vertex (tested at the vertices of the smaller), in passes until none joins: a pinch then
+  // costs the cuts that separate its sectors, and the holes elsewhere stay holes.
+  if (pieces > 1) {
+    internal::DisjointSets joined(pieces);
+    std::vector<std::vector<FaceHandle>> triangles_of(static_cast<size_t>(pieces));
+    std::vector<std::pair<int, int>> cuts;  // Pieces across an unconstrained edge.
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+      const int p = f->info().piece;
+      if (p < 0 || !pinched[static_cast<size_t>(f->info().component)]) continue;
+      triangles_of[static_cast<size_t>(p)].push_back(f);
+      for (int i = 0; i < 3; ++i) {
+        const int q = f->neighbor(i)->info().piece;
+        if (q > p && !cdt.is_constrained({f, i})) cuts.emplace_back(p, q);
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    std::vector<int> checked(static_cast<size_t>(vertex_count), -1);  // Stamp: attempt number.
+    int attempt = 0;
+    auto may_unite = [&](int a, int b) {
+      ++attempt;
+      const int small =
+          triangles_of[static_cast<size_t>(a)].size() < triangles_of[static_cast<size_t>(b)].size()
+              ? a
+              : b;
+      auto in_union = [&](const FaceHandle& f) {
+        const int p = f->info().piece;
+        if (p < 0) return -1;
+        const int r = joined.Find(p);
+        return r == a || r == b ? 0 : -1;
+      };
+      for (const FaceHandle& f : triangles_of[static_cast<size_t>(small)]) {
+        for (int i = 0; i < 3; ++i) {
+          const VertexHandle v = f->vertex(i);
+          int& stamp = checked[static_cast<size_t>(v->info())];
+          if (stamp == attempt) continue;
+          stamp = attempt;
+          int sectors = 0;
+          for_each_sector_end(v, in_union, [&](int) { ++sectors; });
+          if (sectors > 1) return false;
+        }
+      }
+      return true;
+    };
+    // A pair refused is tried again only once one of its pieces has grown since: a piece's
+    // version is the number of the last join it took part in.
+    std::vector<int> version(static_cast<size_t>(pieces), 0);
+    int joins = 0;
+    std::vector<std::pair<int, int>> refused_at(cuts.size(), {-1, -1});
+    for (bool again = true; again;) {
+      again = false;
+      for (size_t k = 0; k < cuts.size(); ++k) {
+        const int a = joined.Find(cuts[k].first), b = joined.Find(cuts[k].second);
+        if (a == b) continue;
+        const std::pair<int, int> state{version[static_cast<size_t>(a)],
+                                        version[static_cast<size_t>(b)]};
+        if (refused_at[k] == state) continue;
+        if (!may_unite(a, b)) {
+          refused_at[k] = state;
+          continue;
+        }
+        joined.Unite(a, b);
+        const int root = joined.Find(a), other = root == a ? b : a;
+        std::vector<FaceHandle>& into = triangles_of[static_cast<size_t>(root)];
+        std::vector<FaceHandle>& from = triangles_of[static_cast<size_t>(other)];
+        into.insert(into.end(), from.begin(), from.end());
+        from = {};
+        version[static_cast<size_t>(root)] = ++joins;
+        again = true;
+      }
+    }
+    // Pieces renumbered in order of their lowest original piece.
+    std::vector<int> renumbered(static_cast<size_t>(pieces), -1);
+    int count = 0;
+    for (int p = 0; p < pieces; ++p) {
+      if (joined.Find(p) == p) renumbered[static_cast<size_t>(p)] = count++;
+    }
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+      if (f->info().piece >= 0) {
+        f->info().piece = renumbered[static_cast<size_t>(joined.Find(f->info().piece))];
+      }
+    }
+    pieces = count;
   }
 
   // Rings of each piece: its boundary edges, piece on the left, chained (one out-edge per

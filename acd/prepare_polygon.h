@@ -37,9 +37,10 @@ void CheckCoordinates(const Polygon2d& raw, const std::string& where);
 /// the interior that only meets the rest at points becomes its own polygon (two lobes: two
 /// polygons), and each part whose boundary passes a point twice (a pinch) is cut along
 /// diagonals of a constrained Delaunay triangulation into polygons whose rings are simple and
-/// disjoint (grown triangle by triangle while each vertex keeps one fan of triangles; a part
-/// without pinches stays whole, with its holes). The cuts are not openings of the
-/// decomposition.
+/// disjoint (grown triangle by triangle while each vertex keeps one fan of triangles, then
+/// joined again across the cuts wherever the union keeps one fan at every vertex: a pinch costs
+/// a few pieces, and the holes away from their cuts stay holes; a part without pinches stays
+/// whole). The cuts are not openings of the decomposition.
 ///
 /// Still rejected (InputError), checked in this order: a non-finite coordinate, or one of
 /// magnitude above 1e100 (products of coordinates would overflow a double); a ring with

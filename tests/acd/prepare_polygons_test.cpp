@@ -98,6 +98,33 @@ TEST(PreparePolygonsTest, AcceptsHoleTouchingAtTwoPointsThatSplitNothing) {
   PrepareAndDecompose(raw, 100.0 - 1.5 - 2.0 - 1.0, 0.01);
 }
 
+// A pinch is taken apart with a few cuts, wherever it is; the holes away from them stay holes.
+// (Pieces grown from single triangles cannot close around a hole: before they were joined
+// again, this polygon with 49 holes and one touching the outer ring became 35 without holes.)
+TEST(PreparePolygonsTest, APinchCostsAFewPiecesNotOnePerHole) {
+  Polygon2d grid{SquareRing(0, 0, 70), {}};
+  for (int i = 0; i < 7; ++i) {
+    for (int j = 0; j < 7; ++j) grid.holes.push_back(SquareRing(10 * i + 4, 10 * j + 4, 2));
+  }
+  const double area = 70.0 * 70.0 - 49 * 4.0;
+  // A triangle hole touching the outer ring's bottom edge at (35, 0).
+  Polygon2d touching_outer = grid;
+  touching_outer.holes.push_back({{35, 0}, {37, 2}, {33, 2}});
+  // Two triangle holes touching each other at (35, 1.5), apart from the outer ring.
+  Polygon2d touching_holes = grid;
+  touching_holes.holes.push_back({{35, 1.5}, {37, 0.5}, {37, 2.5}});
+  touching_holes.holes.push_back({{35, 1.5}, {33, 2.5}, {33, 0.5}});
+  for (const auto& [raw, hole_area] :
+       {std::make_pair(touching_outer, 4.0), std::make_pair(touching_holes, 4.0)}) {
+    const std::vector<Polygon2d> pieces = PrepareAndDecompose(raw, area - hole_area, 0.02);
+    EXPECT_LE(pieces.size(), 3u);
+    // The cut runs along triangulation edges, so it opens the few holes it passes (two here).
+    size_t holes = 0;
+    for (const Polygon2d& piece : pieces) holes += piece.holes.size();
+    EXPECT_GE(holes, 45u);
+  }
+}
+
 TEST(PreparePolygonsTest, RejectsWhatStaysInvalid) {
   // Crossing rings keep the strict messages.
   EXPECT_THAT(PreparePolygonsErrorOf({{{0, 0}, {2, 2}, {3, 0}, {0, 3}}, {}}),
