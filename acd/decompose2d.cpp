@@ -228,7 +228,8 @@ Decomposition2d Decompose2d(const std::vector<Polygon2d>& polygons,
   for (int i = 0; i < static_cast<int>(polygons.size()); ++i) {
     DecomposeOne(polygons[i], i, options, &out, &leaves);
   }
-  out.openings = internal::FindOpenings(out, leaves.cut_edges, leaves.first_cut_edge);
+  out.openings = internal::FindOpenings(out, leaves.cut_edges, leaves.first_cut_edge,
+                                        internal::FindSeams(polygons));
   out.stats.time_ms = stopwatch.Milliseconds();
 
   double area = 0.0, hull_area = 0.0;

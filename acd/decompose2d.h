@@ -38,7 +38,9 @@ struct Decompose2dOptions {
 /// @throws InputError if an option is out of range.
 Decomposition2d Decompose2d(const Polygon2d& polygon, const Decompose2dOptions& options = {});
 
-/// Decomposes each polygon and concatenates the results (components keep their `source`).
+/// Decomposes each polygon and concatenates the results (components keep their `source`). Where
+/// two polygons meet along their boundaries (as the pieces PreparePolygons() cuts a pinched
+/// polygon into), the openings join their components too.
 Decomposition2d Decompose2d(const std::vector<Polygon2d>& polygons,
                             const Decompose2dOptions& options = {});
 

@@ -40,7 +40,7 @@ void CheckCoordinates(const Polygon2d& raw, const std::string& where);
 /// disjoint (grown triangle by triangle while each vertex keeps one fan of triangles, then
 /// joined again across the cuts wherever the union keeps one fan at every vertex: a pinch costs
 /// a few pieces, and the holes away from their cuts stay holes; a part without pinches stays
-/// whole). The cuts are not openings of the decomposition.
+/// whole). Decompose2d() of the pieces reports openings across the cuts.
 ///
 /// Still rejected (InputError), checked in this order: a non-finite coordinate, or one of
 /// magnitude above 1e100 (products of coordinates would overflow a double); a ring with

@@ -222,6 +222,39 @@ TEST(Decompose2dTest, LShapeAtTauZeroGivesTwoPiecesAndOneOpening) {
   EXPECT_TRUE(CheckDecomposition({LShape()}, d).ok());
 }
 
+// Separate input polygons that meet along their boundaries (the pieces PreparePolygons() cuts a
+// pinched polygon into, tiles of a map) open into each other there: the openings hold the
+// shared segment, whole or in part, and only that.
+TEST(Decompose2dTest, PolygonsMeetingAlongAnEdgeShareAnOpening) {
+  const Polygon2d left = Prepared({{{0, 0}, {2, 0}, {2, 1}, {0, 1}}, {}});
+  // Above `left`, offset by 1: the two share the segment (1, 1) - (2, 1).
+  const Polygon2d above = Prepared({{{1, 1}, {3, 1}, {3, 2}, {1, 2}}, {}});
+  const Decomposition2d d = Decompose2d(std::vector<Polygon2d>{left, above});
+  ASSERT_EQ(d.components.size(), 2u);
+  ASSERT_EQ(d.openings.size(), 1u);
+  const Opening2d& opening = d.openings[0];
+  EXPECT_EQ(opening.component_a, 0);
+  EXPECT_EQ(opening.component_b, 1);
+  const std::pair<Point2d, Point2d> ends = opening.a.x() < opening.b.x()
+                                               ? std::make_pair(opening.a, opening.b)
+                                               : std::make_pair(opening.b, opening.a);
+  EXPECT_EQ(ends.first, Point2d(1, 1));
+  EXPECT_EQ(ends.second, Point2d(2, 1));
+  EXPECT_TRUE(CheckDecomposition({left, above}, d).ok());
+  // Meeting at a point only, or apart: no opening.
+  const Polygon2d corner = Prepared({{{2, 1}, {3, 1}, {3, 2}, {2, 2}}, {}});
+  EXPECT_TRUE(Decompose2d(std::vector<Polygon2d>{left, corner}).openings.empty());
+  const Polygon2d apart = Prepared({{{0, 1.5}, {2, 1.5}, {2, 2}, {0, 2}}, {}});
+  EXPECT_TRUE(Decompose2d(std::vector<Polygon2d>{left, apart}).openings.empty());
+  // A polygon whose cut pieces meet along a shared edge: L-shape pieces, each decomposed.
+  const Polygon2d l_lower = Prepared({{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {0, 1}}, {}});
+  const Polygon2d l_upper = Prepared({{{0, 1}, {1, 1}, {1, 2}, {0, 2}}, {}});
+  const Decomposition2d l = Decompose2d(std::vector<Polygon2d>{l_lower, l_upper});
+  ASSERT_EQ(l.openings.size(), 1u);
+  EXPECT_EQ(l.components[static_cast<size_t>(l.openings[0].component_a)].source, 0);
+  EXPECT_EQ(l.components[static_cast<size_t>(l.openings[0].component_b)].source, 1);
+}
+
 TEST(Decompose2dTest, SquareIsOneComponent) {
   const Polygon2d square = Prepared({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}});
   const Decomposition2d d = Decompose2d(square);

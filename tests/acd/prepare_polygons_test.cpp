@@ -30,10 +30,35 @@ std::string PreparePolygonsErrorOf(const Polygon2d& raw) {
   return acdplan::test::InputErrorOf([&] { PreparePolygons(raw, "test.poly: polygon 0"); });
 }
 
+// How many groups the components of `d` form, joined by openings.
+int OpeningGroups(const Decomposition2d& d) {
+  const std::vector<std::vector<int>> graph = ComponentGraph(d);
+  std::vector<char> seen(graph.size(), 0);
+  int groups = 0;
+  for (size_t start = 0; start < graph.size(); ++start) {
+    if (seen[start]) continue;
+    ++groups;
+    std::vector<int> stack{static_cast<int>(start)};
+    seen[start] = 1;
+    while (!stack.empty()) {
+      const int c = stack.back();
+      stack.pop_back();
+      for (const int next : graph[static_cast<size_t>(c)]) {
+        if (!seen[static_cast<size_t>(next)]) {
+          seen[static_cast<size_t>(next)] = 1;
+          stack.push_back(next);
+        }
+      }
+    }
+  }
+  return groups;
+}
+
 // Prepares `raw`, checks that every piece is strictly valid (PreparePolygon() keeps it as it
-// is), that the pieces keep the area, and that they decompose and pass CheckDecomposition().
+// is), that the pieces keep the area, and that they decompose and pass CheckDecomposition();
+// with `connected`, that the openings join all components (across the pieces' cuts too).
 std::vector<Polygon2d> PrepareAndDecompose(const Polygon2d& raw, double expected_area,
-                                           double tau_rel = 0.0) {
+                                           double tau_rel = 0.0, bool connected = true) {
   const std::vector<Polygon2d> pieces = PreparePolygons(raw, "w");
   EXPECT_NEAR(TotalArea(pieces), expected_area, 1e-9 * expected_area);
   for (const Polygon2d& piece : pieces) {
@@ -46,6 +71,7 @@ std::vector<Polygon2d> PrepareAndDecompose(const Polygon2d& raw, double expected
   const Decomposition2d decomposition = Decompose2d(pieces, options);
   const DecompositionCheck check = CheckDecomposition(pieces, decomposition);
   EXPECT_TRUE(check.ok()) << (check.ok() ? "" : check.problems[0]);
+  if (connected) EXPECT_EQ(OpeningGroups(decomposition), 1);
   return pieces;
 }
 
@@ -85,10 +111,10 @@ TEST(PreparePolygonsTest, AcceptsSelfTangentOuterRing) {
   PrepareAndDecompose({Reversed(inverted), {}}, 16.0 - 2.0);
   // Two lobes meeting at a point: two polygons.
   const Ring2d figure_eight = {{2, 2}, {4, 0}, {4, 4}, {2, 2}, {0, 4}, {0, 0}};
-  EXPECT_EQ(PrepareAndDecompose({figure_eight, {}}, 8.0).size(), 2u);
+  EXPECT_EQ(PrepareAndDecompose({figure_eight, {}}, 8.0, 0.0, false).size(), 2u);
   // A vertex touching a non-adjacent edge of its own ring: two triangles.
   const Ring2d touching = {{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}};
-  EXPECT_EQ(PrepareAndDecompose({touching, {}}, 8.0).size(), 2u);
+  EXPECT_EQ(PrepareAndDecompose({touching, {}}, 8.0, 0.0, false).size(), 2u);
 }
 
 TEST(PreparePolygonsTest, AcceptsHoleTouchingAtTwoPointsThatSplitNothing) {
@@ -240,6 +266,7 @@ TEST(PreparePolygonsTest, LargeTouchingCaseDecomposes) {
       prepare_ms, decompose_ms);
   const DecompositionCheck check = CheckDecomposition(pieces, decomposition);
   EXPECT_TRUE(check.ok()) << (check.ok() ? "" : check.problems[0]);
+  EXPECT_EQ(OpeningGroups(decomposition), 1);
 }
 
 }  // namespace
