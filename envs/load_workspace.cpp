@@ -34,10 +34,11 @@ bool IsWorkspace3dYaml(const YamlFile& file) {
 
 }  // namespace
 
-Workspace2d LoadWorkspace2d(const std::string& path, const acd::ReadPolygonsOptions& polygons) {
+Workspace2d LoadWorkspace2d(const std::string& path, const acd::ReadPolygonsOptions& polygons,
+                            const OccupancyMapOptions& map) {
   const std::string extension = LowerExtension(path);
   if (extension == ".yaml" || extension == ".yml") {
-    if (YamlFile::Load(path).root()["image"]) return LoadOccupancyMap(path);
+    if (YamlFile::Load(path).root()["image"]) return LoadOccupancyMap(path, map);
     return LoadWorkspace2dYaml(path, polygons);
   }
   if (extension == ".map") return LoadMovingAiMap(path);
@@ -58,7 +59,8 @@ Workspace2d LoadWorkspace2d(const std::string& path, const acd::ReadPolygonsOpti
                    "' (expected .yaml, .yml, .map, .poly, .wkt, .geojson or .json)");
 }
 
-World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygons) {
+World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygons,
+                const OccupancyMapOptions& map) {
   const std::string extension = LowerExtension(path);
   World world;
   if (IsMeshFile(path)) {
@@ -78,7 +80,7 @@ World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygon
     const YamlFile file = YamlFile::Load(path);
     if (file.root()["image"]) {
       world.kind = "occupancy map";
-      world.workspace2d = LoadOccupancyMap(path);
+      world.workspace2d = LoadOccupancyMap(path, map);
     } else if (IsWorkspace3dYaml(file)) {
       world.dimension = 3;
       world.kind = "3D workspace";
@@ -90,7 +92,7 @@ World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygon
     return world;
   }
   world.kind = extension == ".map" ? "Moving AI map" : "polygon file";
-  world.workspace2d = LoadWorkspace2d(path, polygons);
+  world.workspace2d = LoadWorkspace2d(path, polygons, map);
   return world;
 }
 

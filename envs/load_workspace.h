@@ -4,6 +4,7 @@
 #include <string>
 
 #include "acd/read_polygons.h"
+#include "envs/occupancy_map.h"
 #include "envs/workspace2d.h"
 #include "envs/workspace3d.h"
 
@@ -17,9 +18,11 @@ namespace acdplan::envs {
 ///    bounding box grown by 10% of its larger side on every side.
 /// `polygons` says how obstacle polygons (from polygon files, inline in a workspace YAML or
 /// files it names) are read: strictly by default; with `repair`, invalid ones are made valid
-/// (acd::RepairPolygon) and each change is a line of `notes`.
+/// (acd::RepairPolygon) and each change is a line of `notes`. `map` says how an occupancy map
+/// is read (its unknown cells blocked by default).
 /// @throws InputError from the loader, or for an unknown extension.
-Workspace2d LoadWorkspace2d(const std::string& path, const acd::ReadPolygonsOptions& polygons = {});
+Workspace2d LoadWorkspace2d(const std::string& path, const acd::ReadPolygonsOptions& polygons = {},
+                            const OccupancyMapOptions& map = {});
 
 /// A world of either dimension, and what kind of file it came from.
 struct World {
@@ -34,8 +37,9 @@ struct World {
 /// numbers or `mesh` obstacles, envs/workspace_yaml.h), or a single mesh that ReadMesh() reads
 /// (.obj, .stl, .ply, .off, .dae, .gltf, .glb) as the one obstacle inside its bounding box grown
 /// by 10% of its larger side.
-/// `polygons` as for LoadWorkspace2d().
+/// `polygons` and `map` as for LoadWorkspace2d().
 /// @throws InputError from the loader, or for an unknown extension.
-World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygons = {});
+World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygons = {},
+                const OccupancyMapOptions& map = {});
 
 }  // namespace acdplan::envs

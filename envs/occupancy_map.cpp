@@ -2,12 +2,21 @@
 
 #include <cmath>
 
+#include "base/enum_names.h"
 #include "base/file_io.h"
 #include "base/input_error.h"
 #include "base/yaml_file.h"
 #include "envs/internal/gray_image.h"
 
 namespace acdplan::envs {
+
+UnknownCells ParseUnknownCells(const std::string& name) {
+  static constexpr std::array<EnumName<UnknownCells>, 2> kRules = {{
+      {UnknownCells::kBlocked, "blocked"},
+      {UnknownCells::kFree, "free"},
+  }};
+  return ValueOf(kRules, name, "unknown-cells rule");
+}
 
 OccupancyGrid ReadOccupancyMap(const std::string& yaml_path, const OccupancyMapOptions& options) {
   const YamlFile file = YamlFile::Load(yaml_path);

@@ -14,6 +14,10 @@ enum class UnknownCells {
   kFree,     ///< Optimistic: unknown space is free.
 };
 
+/// "blocked" or "free" (as ROS planners' allow_unknown chooses), for command lines and files.
+/// @throws InputError "unknown unknown-cells rule 'x' (expected one of: blocked, free)".
+UnknownCells ParseUnknownCells(const std::string& name);
+
 /// Options for ReadOccupancyMap(); `{}` is valid.
 struct OccupancyMapOptions {
   UnknownCells unknown =

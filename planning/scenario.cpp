@@ -112,8 +112,8 @@ Scenario LoadScenario(const std::string& path) {
   const YamlFile file = YamlFile::Load(path);
   const YAML::Node& root = file.root();
   file.CheckKeys(root, "",
-                 {"description", "workspace", "repair", "robot", "start", "goal", "acd", "planner",
-                  "sampler", "collision", "seed", "decomposition", "goal_radius"});
+                 {"description", "workspace", "repair", "unknown", "robot", "start", "goal", "acd",
+                  "planner", "sampler", "collision", "seed", "decomposition", "goal_radius"});
   Scenario s;
   s.path = path;
   if (root["description"]) s.description = file.String(root["description"], "description");
@@ -129,7 +129,14 @@ Scenario LoadScenario(const std::string& path) {
     acd::ReadPolygonsOptions polygons;
     polygons.repair = root["repair"] && file.Bool(root["repair"], "repair");
     polygons.notes = &s.warnings;
-    envs::World world = envs::LoadWorld(s.workspace_label, polygons);
+    envs::OccupancyMapOptions map;
+    if (root["unknown"])
+      map.unknown = file.Parsed(root["unknown"], "unknown", envs::ParseUnknownCells);
+    envs::World world = envs::LoadWorld(s.workspace_label, polygons, map);
+    if (root["unknown"] && world.kind != "occupancy map") {
+      file.Fail("unknown", "only for an occupancy map world (" + s.workspace_label + " is a " +
+                               world.kind + ")");
+    }
     s.dimension = world.dimension;
     s.workspace = std::move(world.workspace2d);
     s.workspace3d = std::move(world.workspace3d);

@@ -47,6 +47,8 @@ struct CarScenario {
 ///                                    # passage_width = the window/mouth/hatch/tube side)
 ///   repair: true                     # with a workspace file: make invalid obstacle polygons
 ///                                    # valid (acd::RepairPolygon), each change a warning
+///   unknown: free                    # with an occupancy map: its unknown cells are free
+///                                    # (default blocked; envs::OccupancyMapOptions)
 ///   robot: {shape: point}            # point (default) | disc (radius) | polygon (polygon:
 ///                                    # [[x, y], ...] in the body frame; plans in SE(2)) |
 ///                                    # mesh (mesh: robots/rod.obj, relative to this file;

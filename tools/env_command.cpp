@@ -295,6 +295,9 @@ CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
   env->add_flag("--repair", args->repair,
                 "Make invalid obstacle polygons valid (even-odd rule) instead of rejecting them; "
                 "each change is printed on stderr (a scenario file says `repair: true`)");
+  env->add_option("--unknown", args->unknown,
+                  "Occupancy maps: cells neither occupied nor free are blocked (default) or free")
+      ->check(CLI::IsMember({"blocked", "free"}));
   env->add_option("--svg", args->svg_path, "Write a picture of the 2D world and its ACD here");
   env->add_option("--json", args->json_path, "Write the report as JSON here");
   return env;
@@ -319,6 +322,11 @@ int RunEnv(const EnvArguments& given) {
                    "acdplan: warning: --repair does not apply to a scenario file; its `repair: "
                    "true` key does\n");
     }
+    if (!args.unknown.empty()) {
+      std::fprintf(stderr,
+                   "acdplan: warning: --unknown does not apply to a scenario file; its `unknown: "
+                   "free` key does\n");
+    }
     const std::string kind = "scenario; world " + scenario.workspace_label;
     if (scenario.dimension == 3) return Report3d(args, kind, scenario.workspace3d, &scenario);
     return Report2d(args, kind, scenario.workspace, &scenario);
@@ -327,8 +335,15 @@ int RunEnv(const EnvArguments& given) {
   acd::ReadPolygonsOptions polygons;
   polygons.repair = args.repair;
   polygons.notes = &notes;
-  const envs::World world = envs::LoadWorld(args.input, polygons);
+  envs::OccupancyMapOptions map;
+  if (!args.unknown.empty()) map.unknown = envs::ParseUnknownCells(args.unknown);
+  const envs::World world = envs::LoadWorld(args.input, polygons, map);
   for (const std::string& note : notes) std::fprintf(stderr, "acdplan: %s\n", note.c_str());
+  if (!args.unknown.empty() && world.kind != "occupancy map") {
+    std::fprintf(stderr,
+                 "acdplan: warning: --unknown applies to occupancy maps only (%s is a %s)\n",
+                 args.input.c_str(), world.kind.c_str());
+  }
   if (world.dimension == 3) return Report3d(args, world.kind, world.workspace3d, nullptr);
   return Report2d(args, world.kind, world.workspace2d, nullptr);
 }

@@ -13,6 +13,7 @@ struct EnvArguments {
   double tau_rel = -1.0;   ///< The older spelling of --tau-diag (read with a warning).
   std::string measure;     ///< "" : the scenario's, else sp.
   bool repair = false;     ///< Make invalid obstacle polygons valid (acd::RepairPolygon).
+  std::string unknown;     ///< Occupancy maps' unknown cells: "blocked" or "free"; "": blocked.
   std::string svg_path;    ///< 2D: the world and its free-space decomposition.
   std::string json_path;   ///< The report as JSON.
 };

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "envs/free_space2d.h"
+#include "envs/load_workspace.h"
 #include "test_util.h"
 
 namespace acdplan::envs {
@@ -160,6 +161,19 @@ TEST(OccupancyMapTest, RawModeReadsPercentages) {
   dir.Write("map.pgm", "P2\n3 1\n65535\n0 25700 25957\n");
   EXPECT_EQ(ReadOccupancyMap(dir.Write("map.yaml", raw), {UnknownCells::kFree}).blocked,
             (Cells{0, 1, 0}));
+}
+
+TEST(OccupancyMapTest, UnknownCellsByNameAndThroughLoadWorld) {
+  EXPECT_EQ(ParseUnknownCells("blocked"), UnknownCells::kBlocked);
+  EXPECT_EQ(ParseUnknownCells("free"), UnknownCells::kFree);
+  EXPECT_THAT(ErrorOf([] { ParseUnknownCells("Free"); }),
+              HasSubstr("unknown unknown-cells rule 'Free' (expected one of: blocked, free)"));
+  TempDir dir;
+  dir.Write("map.pgm", PlainPgm());
+  const std::string path = dir.Write("map.yaml", kYaml);
+  // The unknown pixel is blocked by default: two obstacles; free, only the L of black pixels.
+  EXPECT_EQ(LoadWorld(path).workspace2d.obstacles.size(), 2u);
+  EXPECT_EQ(LoadWorld(path, {}, {UnknownCells::kFree}).workspace2d.obstacles.size(), 1u);
 }
 
 TEST(OccupancyMapTest, LoadsAWorkspaceInWorldCoordinates) {

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "acd/polygon2d.h"
 #include "base/input_error.h"
 #include "planning/plan_scenario.h"
 #include "tests/data_paths.h"
@@ -147,6 +148,33 @@ TEST(Scenario, RepairKeyRepairsTheWorkspaceFileWithWarnings) {
             std::string::npos);
   EXPECT_NE(ErrorOf(kWorld + kQuery + "repair: true\n")
                 .find("bad.yaml: repair: only for a workspace file"),
+            std::string::npos);
+}
+
+// `unknown: free` reads an occupancy map's unknown cells as free (ROS planners' allow_unknown).
+TEST(Scenario, UnknownKeyChoosesHowAMapsUnknownCellsAreRead) {
+  const std::string dir = std::filesystem::path(Write("x.yaml", "")).parent_path().string();
+  // 3 x 1 pixels: free, unknown (grey 205), occupied.
+  std::ofstream(dir + "/grey.pgm") << "P2\n3 1\n255\n254 205 0\n";
+  std::ofstream(dir + "/grey.yaml") << "image: grey.pgm\nresolution: 1\norigin: [0, 0, 0]\n";
+  const std::string query = "start: [0.5, 0.5]\ngoal: [0.5, 0.5]\n";
+  auto blocked_area = [](const Scenario& s) {
+    double area = 0.0;
+    for (const acd::Polygon2d& obstacle : s.workspace.obstacles) area += acd::Area(obstacle);
+    return area;
+  };
+  EXPECT_EQ(blocked_area(LoadScenario(Write("strict.yaml", "workspace: grey.yaml\n" + query))),
+            2.0);
+  EXPECT_EQ(blocked_area(
+                LoadScenario(Write("free.yaml", "workspace: grey.yaml\nunknown: free\n" + query))),
+            1.0);
+  EXPECT_NE(ErrorOf("workspace: grey.yaml\nunknown: maybe\n" + query)
+                .find("bad.yaml: unknown: unknown unknown-cells rule 'maybe' (expected one of: "
+                      "blocked, free)"),
+            std::string::npos);
+  std::ofstream(dir + "/square.wkt") << "POLYGON ((4 4, 6 4, 6 6, 4 6, 4 4))";
+  EXPECT_NE(ErrorOf("workspace: square.wkt\nunknown: free\n" + query)
+                .find("bad.yaml: unknown: only for an occupancy map world"),
             std::string::npos);
 }
 
