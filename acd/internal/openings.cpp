@@ -248,7 +248,9 @@ std::vector<Opening2d> FindOpenings(const Decomposition2d& d, const std::vector<
   for (int id = 0; id < static_cast<int>(d.tree.size()); ++id) {
     const HierarchyNode2d& node = d.tree[id];
     if (node.children[0] < 0) continue;
-    const auto [a0, a1] = LeafRange(d, node.children[0]);
+    // (Not a structured binding: the lambda below captures them, which C++17 does not allow.)
+    const std::pair<int, int> leaves = LeafRange(d, node.children[0]);
+    const int a0 = leaves.first, a1 = leaves.second;
     for (int k = first_cut[id]; k < first_cut[id + 1]; ++k) {
       pair_up(frames[k], node.cuts[k - first_cut[id]], intervals.data() + begin[k],
               intervals.data() + end[k], [&](int c) { return a0 <= c && c < a1; });
