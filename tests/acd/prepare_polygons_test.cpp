@@ -71,7 +71,9 @@ std::vector<Polygon2d> PrepareAndDecompose(const Polygon2d& raw, double expected
   const Decomposition2d decomposition = Decompose2d(pieces, options);
   const DecompositionCheck check = CheckDecomposition(pieces, decomposition);
   EXPECT_TRUE(check.ok()) << (check.ok() ? "" : check.problems[0]);
-  if (connected) EXPECT_EQ(OpeningGroups(decomposition), 1);
+  if (connected) {
+    EXPECT_EQ(OpeningGroups(decomposition), 1);
+  }
   return pieces;
 }
 
