@@ -71,16 +71,13 @@ std::pair<int, int> LeafRange(const Decomposition2d& d, int node) {
   return {d.tree[lo].component, d.tree[hi].component + 1};
 }
 
-// Calls `edge(id, a, b)` for every edge a -> b of the rings of `polygon`, numbered from `id`
-// on; returns the next id.
+// Calls `edge(a, b)` for every edge a -> b of the rings of `polygon`, outer ring first.
 template <typename Edge>
-int ForEachRingEdge(const Polygon2d& polygon, int id, Edge edge) {
+void ForEachRingEdge(const Polygon2d& polygon, Edge edge) {
   for (size_t r = 0; r <= polygon.holes.size(); ++r) {
     const Ring2d& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
-    for (size_t i = 0; i < ring.size(); ++i)
-      edge(id++, ring[i], ring[i + 1 == ring.size() ? 0 : i + 1]);
+    for (size_t i = 0; i < ring.size(); ++i) edge(ring[i], ring[i + 1 == ring.size() ? 0 : i + 1]);
   }
-  return id;
 }
 
 IdBox BoxOf(const Point2d& a, const Point2d& b, int id, double margin = 0.0) {
@@ -101,7 +98,7 @@ std::vector<Seam> FindSeams(const std::vector<Polygon2d>& polygons) {
       polygons.begin(), polygons.end(), 0,
       [](int sum, const Polygon2d& polygon) { return sum + VertexCount(polygon); })));
   for (int p = 0; p < static_cast<int>(polygons.size()); ++p) {
-    ForEachRingEdge(polygons[p], 0, [&](int, const Point2d& a, const Point2d& b) {
+    ForEachRingEdge(polygons[p], [&](const Point2d& a, const Point2d& b) {
       edges.push_back({a, b, p});
     });
   }
@@ -212,13 +209,13 @@ std::vector<Opening2d> FindOpenings(const Decomposition2d& d, const std::vector<
   std::vector<Interval>& left = scratch.left;
   std::vector<Interval>& right = scratch.right;
   auto by_start = [](const Interval& a, const Interval& b) { return a.t0 < b.t0; };
-  // The openings along `cut` (frame `frame`) from the intervals [first, last) of leaf edges on
-  // it, between the components on its two sides.
-  auto pair_up = [&](const CutFrame& frame, const Cut2d& cut, const Interval* first,
-                     const Interval* last, auto on_left) {
+  // The openings along `cut` (frame `frame`) from the intervals [on_cut, on_cut_end) of leaf
+  // edges on it, between the components on its two sides.
+  auto pair_up = [&](const CutFrame& frame, const Cut2d& cut, const Interval* on_cut,
+                     const Interval* on_cut_end, auto on_left) {
     left.clear();
     right.clear();
-    for (const Interval* interval = first; interval != last; ++interval) {
+    for (const Interval* interval = on_cut; interval != on_cut_end; ++interval) {
       (on_left(interval->component) ? left : right).push_back(*interval);
     }
     std::sort(left.begin(), left.end(), by_start);
@@ -273,11 +270,10 @@ std::vector<Opening2d> FindOpenings(const Decomposition2d& d, const std::vector<
   };
   std::vector<LeafEdge> leaf_edges;
   for (int c = 0; c < static_cast<int>(d.components.size()); ++c) {
-    ForEachRingEdge(d.components[c].polygon, static_cast<int>(leaf_edges.size()),
-                    [&](int id, const Point2d& a, const Point2d& b) {
-                      edge_boxes.push_back(BoxOf(a, b, id));
-                      leaf_edges.push_back({a, b, c});
-                    });
+    ForEachRingEdge(d.components[c].polygon, [&](const Point2d& a, const Point2d& b) {
+      edge_boxes.push_back(BoxOf(a, b, static_cast<int>(leaf_edges.size())));
+      leaf_edges.push_back({a, b, c});
+    });
   }
   std::vector<std::vector<Interval>> on_seam(seams.size());
   ForEachOverlap(std::move(seam_boxes), std::move(edge_boxes), [&](int k, int e) {
