@@ -123,6 +123,9 @@ Scenario LoadScenario(const std::string& path) {
   if (root["repair"] && !root["workspace"].IsScalar()) {
     file.Fail("repair", "only for a workspace file (generated worlds are always valid)");
   }
+  if (root["unknown"] && !root["workspace"].IsScalar()) {
+    file.Fail("unknown", "only for an occupancy map world (this one is generated)");
+  }
   const YAML::Node& workspace = root["workspace"];
   if (workspace.IsScalar()) {
     s.workspace_label = file.ResolvePath(workspace.Scalar());

@@ -297,7 +297,14 @@ CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
                 "each change is printed on stderr (a scenario file says `repair: true`)");
   env->add_option("--unknown", args->unknown,
                   "Occupancy maps: cells neither occupied nor free are blocked (default) or free")
-      ->check(CLI::IsMember({"blocked", "free"}));
+      ->check([](const std::string& name) {
+        try {
+          envs::ParseUnknownCells(name);
+          return std::string();
+        } catch (const acdplan::InputError& error) {
+          return std::string(error.what());
+        }
+      });
   env->add_option("--svg", args->svg_path, "Write a picture of the 2D world and its ACD here");
   env->add_option("--json", args->json_path, "Write the report as JSON here");
   return env;

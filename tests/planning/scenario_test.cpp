@@ -176,6 +176,9 @@ TEST(Scenario, UnknownKeyChoosesHowAMapsUnknownCellsAreRead) {
   EXPECT_NE(ErrorOf("workspace: square.wkt\nunknown: free\n" + query)
                 .find("bad.yaml: unknown: only for an occupancy map world"),
             std::string::npos);
+  EXPECT_NE(ErrorOf(kWorld + kQuery + "unknown: free\n")
+                .find("bad.yaml: unknown: only for an occupancy map world (this one is generated)"),
+            std::string::npos);
 }
 
 TEST(Scenario, StartInCollisionIsAnInputError) {
