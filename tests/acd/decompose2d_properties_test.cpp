@@ -241,6 +241,12 @@ TEST(Decompose2dTest, PolygonsMeetingAlongAnEdgeShareAnOpening) {
   EXPECT_EQ(ends.first, Point2d(1, 1));
   EXPECT_EQ(ends.second, Point2d(2, 1));
   EXPECT_TRUE(CheckDecomposition({left, above}, d).ok());
+  // A slanted shared edge (the seams of such edges are found by a box sweep).
+  const Polygon2d below = Prepared({{{0, 0}, {2, 0}, {0, 2}}, {}});
+  const Polygon2d beyond = Prepared({{{2, 0}, {2, 2}, {0, 2}}, {}});
+  const Decomposition2d halves = Decompose2d(std::vector<Polygon2d>{below, beyond});
+  ASSERT_EQ(halves.openings.size(), 1u);
+  EXPECT_NEAR((halves.openings[0].a - halves.openings[0].b).norm(), std::sqrt(8.0), 1e-12);
   // Meeting at a point only, or apart: no opening.
   const Polygon2d corner = Prepared({{{2, 1}, {3, 1}, {3, 2}, {2, 2}}, {}});
   EXPECT_TRUE(Decompose2d(std::vector<Polygon2d>{left, corner}).openings.empty());
