@@ -51,6 +51,10 @@ std::string DecompositionToJson(const Decomposition2d& decomposition,
     c["centroid"] = PointToJson(component.centroid);
     c["concavity"] = component.concavity;
     c["source"] = component.source;  // Extension: index of the input polygon.
+    if (component.source >= 0 &&
+        component.source < static_cast<int>(labels.input_polygons.size())) {
+      c["input_polygon"] = labels.input_polygons[static_cast<size_t>(component.source)];
+    }
     components.push_back(std::move(c));
   }
   json["components"] = std::move(components);

@@ -2,6 +2,7 @@
 // Writing a decomposition: DESIGN.md's JSON contract and an SVG picture.
 
 #include <string>
+#include <vector>
 
 #include "acd/decomposition2d.h"
 
@@ -11,6 +12,9 @@ namespace acdplan::acd {
 struct DecompositionLabels {
   std::string input;      ///< Input file name as given.
   double tau_rel = -1.0;  ///< tau relative to ReferenceRadius(); < 0 when tau was absolute.
+  /// Per polygon decomposed, the file's polygon it comes from (ReadPolygonsOptions::sources):
+  /// written as each component's "input_polygon". Empty: not written.
+  std::vector<int> input_polygons;
 };
 
 /// The decomposition JSON ("format": "acdplan.decomposition2d/1"), exactly as in DESIGN.md.

@@ -72,11 +72,11 @@ std::string ListOf(const std::vector<int>& numbers) {
 
 // Replaces each set of `polygons` joined by `overlapping` pairs with their even-odd region, where
 // the set's first member was, and says so in `notes` (if given). `sources`: per polygon, its
-// polygon in the file (for the messages); `radii` follow the polygons (a set's pieces take its
-// first member's).
+// polygon in the file (for the messages); they and `radii` follow the polygons (a set's pieces
+// take its first member's).
 void RebuildOverlapping(const std::string& path,
                         const std::vector<std::pair<size_t, size_t>>& overlapping,
-                        const std::vector<int>& sources, std::vector<Polygon2d>* polygons,
+                        std::vector<int>* sources, std::vector<Polygon2d>* polygons,
                         std::vector<double>* radii, std::vector<std::string>* notes) {
   const int count = static_cast<int>(polygons->size());
   internal::DisjointSets sets(count);
@@ -85,11 +85,13 @@ void RebuildOverlapping(const std::string& path,
   for (int k = 0; k < count; ++k) members[static_cast<size_t>(sets.Find(k))].push_back(k);
   std::vector<Polygon2d> rebuilt;
   std::vector<double> rebuilt_radii;
+  std::vector<int> rebuilt_sources;
   for (int k = 0; k < count; ++k) {
     const std::vector<int>& set = members[static_cast<size_t>(k)];
     if (set.size() == 1) {
       rebuilt.push_back(std::move((*polygons)[k]));
       rebuilt_radii.push_back((*radii)[k]);
+      rebuilt_sources.push_back((*sources)[k]);
     }
     if (set.size() <= 1) continue;
     std::vector<Ring2d> rings;
@@ -97,7 +99,7 @@ void RebuildOverlapping(const std::string& path,
     for (const int m : set) {
       const std::vector<Ring2d> own = RingsOf((*polygons)[m]);
       rings.insert(rings.end(), own.begin(), own.end());
-      if (names.empty() || names.back() != sources[m]) names.push_back(sources[m]);
+      if (names.empty() || names.back() != (*sources)[m]) names.push_back((*sources)[m]);
     }
     const std::string where = path + ": polygons " + ListOf(names);
     int pieces = 0;
@@ -108,6 +110,7 @@ void RebuildOverlapping(const std::string& path,
         ++pieces;
         rebuilt.push_back(std::move(piece));
         rebuilt_radii.push_back((*radii)[k]);
+        rebuilt_sources.push_back((*sources)[k]);
       }
     }
     if (notes != nullptr) {
@@ -120,6 +123,7 @@ void RebuildOverlapping(const std::string& path,
   }
   *polygons = std::move(rebuilt);
   *radii = std::move(rebuilt_radii);
+  *sources = std::move(rebuilt_sources);
 }
 
 }  // namespace
@@ -192,10 +196,11 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
                      "--repair rebuilds them by the even-odd rule)");
   }
   if (!overlapping.empty()) {
-    RebuildOverlapping(path, overlapping, sources, &prepared, &radii, options.notes);
+    RebuildOverlapping(path, overlapping, &sources, &prepared, &radii, options.notes);
     if (prepared.empty()) throw InputError(path + ": no polygon left after repair");
   }
   if (reference_radii != nullptr) *reference_radii = std::move(radii);
+  if (options.sources != nullptr) *options.sources = std::move(sources);
   return prepared;
 }
 

@@ -22,6 +22,11 @@ struct ReadPolygonsOptions {
   /// rebuilt together by the even-odd rule (area covered an even number of times is left out,
   /// as ST_MakeValid's default does). Off for obstacles, which may overlap.
   bool disjoint_members = false;
+  /// If given, receives per returned polygon the index of the file's polygon it comes from, as
+  /// the messages count them ("polygon k"): the pieces of one polygon share it, and a set of
+  /// overlapping MULTIPOLYGON members rebuilt together takes its first member's. This is how a
+  /// result maps back to the file's features.
+  std::vector<int>* sources = nullptr;
 };
 
 /// Reads the polygons in `path`, chosen by extension: `.poly` (Lien's format, see

@@ -154,6 +154,8 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
   read_options.repair = args.repair;
   read_options.notes = &notes;
   read_options.disjoint_members = true;  // A MULTIPOLYGON is one region to decompose.
+  std::vector<int> sources;              // Per polygon: the file's polygon it comes from.
+  read_options.sources = &sources;
   const std::vector<acd::Polygon2d> polygons = acd::ReadPolygons(args.input, &radii, read_options);
   for (const std::string& note : notes) std::cerr << "acdplan: " << note << "\n";
   int vertices = 0;
@@ -175,6 +177,7 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
   acd::DecompositionLabels labels;
   labels.input = args.input;
   labels.tau_rel = args.tau_rel;
+  labels.input_polygons = sources;
   std::vector<std::string> written;
   try {
     if (!args.json_path.empty()) {

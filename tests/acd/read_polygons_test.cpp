@@ -130,8 +130,12 @@ TEST(ReadPolygonsTest, OverlappingMultipolygonMembersAreAnErrorOrRepaired) {
   std::vector<std::string> notes;
   options.repair = true;
   options.notes = &notes;
+  std::vector<int> sources;
+  options.sources = &sources;
   std::vector<double> radii;
   const std::vector<Polygon2d> polygons = ReadPolygons(path, &radii, options);
+  // The rebuilt pieces of members 0 and 2 where member 0 was, then members 1 and 3.
+  EXPECT_EQ(sources, (std::vector<int>{0, 0, 1, 3}));
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_THAT(notes[0], HasSubstr("overlap.wkt: polygons 0 and 2: repaired: they overlap: rebuilt "
                                   "together by the even-odd rule into 2 polygon(s)"));
@@ -141,6 +145,22 @@ TEST(ReadPolygonsTest, OverlappingMultipolygonMembersAreAnErrorOrRepaired) {
   for (const Polygon2d& polygon : polygons) area += Area(polygon);
   // 4 + 2 + 3.5 + 1, less twice the common area: the quadrilateral (1,1) (2,1.25) (2,2) (1,2).
   EXPECT_NEAR(area, 10.5 - 2.0 * 0.875, 1e-12);
+  fs::remove(path);
+}
+
+// Each polygon returned says which of the file's polygons it comes from: the pieces a pinch
+// splits one into share its index.
+TEST(ReadPolygonsTest, SourcesMapPiecesBackToTheFilesPolygons) {
+  const std::string path =
+      WriteTemp("pinch.wkt",
+                "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (0 5, 3 6, 3 4, 0 5)),"
+                " ((20 0, 22 0, 22 2, 20 2, 20 0)))\nPOLYGON ((30 0, 32 0, 32 2, 30 2, 30 0))\n");
+  ReadPolygonsOptions options;
+  std::vector<int> sources;
+  options.sources = &sources;
+  const std::vector<Polygon2d> polygons = ReadPolygons(path, nullptr, options);
+  ASSERT_EQ(polygons.size(), 4u);  // The hole touching the outer ring: two pieces.
+  EXPECT_EQ(sources, (std::vector<int>{0, 0, 1, 2}));
   fs::remove(path);
 }
 
