@@ -32,7 +32,8 @@ std::string PathData(const SvgCanvas& canvas, const Polygon2d& polygon) {
 }  // namespace
 
 std::string DecompositionToJson(const Decomposition2d& decomposition,
-                                const DecompositionLabels& labels) {
+                                const DecompositionLabels& labels,
+                                const std::vector<int>& input_polygons) {
   Json json;
   json["format"] = "acdplan.decomposition2d/1";
   json["input"] = labels.input;
@@ -51,9 +52,8 @@ std::string DecompositionToJson(const Decomposition2d& decomposition,
     c["centroid"] = PointToJson(component.centroid);
     c["concavity"] = component.concavity;
     c["source"] = component.source;  // Extension: index of the input polygon.
-    if (component.source >= 0 &&
-        component.source < static_cast<int>(labels.input_polygons.size())) {
-      c["input_polygon"] = labels.input_polygons[static_cast<size_t>(component.source)];
+    if (component.source >= 0 && component.source < static_cast<int>(input_polygons.size())) {
+      c["input_polygon"] = input_polygons[static_cast<size_t>(component.source)];
     }
     components.push_back(std::move(c));
   }

@@ -12,14 +12,15 @@ namespace acdplan::acd {
 struct DecompositionLabels {
   std::string input;      ///< Input file name as given.
   double tau_rel = -1.0;  ///< tau relative to ReferenceRadius(); < 0 when tau was absolute.
-  /// Per polygon decomposed, the file's polygon it comes from (ReadPolygonsOptions::sources):
-  /// written as each component's "input_polygon". Empty: not written.
-  std::vector<int> input_polygons;
 };
 
 /// The decomposition JSON ("format": "acdplan.decomposition2d/1"), exactly as in DESIGN.md.
+/// `input_polygons`: per polygon decomposed, the file's polygon it comes from
+/// (ReadPolygonsOptions::sources), written as each component's "input_polygon"; empty: not
+/// written.
 std::string DecompositionToJson(const Decomposition2d& decomposition,
-                                const DecompositionLabels& labels);
+                                const DecompositionLabels& labels,
+                                const std::vector<int>& input_polygons = {});
 
 /// An SVG a person reads at a glance: components in distinct fills, openings drawn, the most
 /// concave notches of the input marked, and a caption with tau, measure, components and time.

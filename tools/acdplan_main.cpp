@@ -177,11 +177,11 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
   acd::DecompositionLabels labels;
   labels.input = args.input;
   labels.tau_rel = args.tau_rel;
-  labels.input_polygons = sources;
   std::vector<std::string> written;
   try {
     if (!args.json_path.empty()) {
-      acdplan::WriteFileAtomically(args.json_path, acd::DecompositionToJson(decomposition, labels));
+      acdplan::WriteFileAtomically(args.json_path,
+                                   acd::DecompositionToJson(decomposition, labels, sources));
       written.push_back(args.json_path);
     }
     if (!args.svg_path.empty()) {

@@ -156,11 +156,10 @@ TEST(DecompositionToJsonTest, TauRelIsNullWhenTauWasAbsolute) {
 
 // With the file's polygon of each polygon decomposed, every component says which it came from.
 TEST(DecompositionToJsonTest, InputPolygonOnlyWhenKnown) {
-  DecompositionLabels labels{"l.poly", -1.0};
+  const DecompositionLabels labels{"l.poly", -1.0};
   const json without = json::parse(DecompositionToJson(HandBuilt(), labels));
   EXPECT_FALSE(without.at("components")[0].contains("input_polygon"));
-  labels.input_polygons = {7, 3};
-  const json with = json::parse(DecompositionToJson(HandBuilt(), labels));
+  const json with = json::parse(DecompositionToJson(HandBuilt(), labels, {7, 3}));
   for (const json& c : with.at("components")) {
     EXPECT_EQ(c.at("input_polygon"), c.at("source") == 0 ? 7 : 3);
   }
