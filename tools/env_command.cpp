@@ -262,6 +262,20 @@ int Report3d(const EnvArguments& args, const std::string& kind, const envs::Work
   return 0;
 }
 
+// A CLI11 check from a name parser (ParseConcavityMeasure() and the like): "" for a name it
+// knows, else its InputError's message.
+template <typename Parse>
+auto NameCheck(Parse parse) {
+  return [parse](const std::string& name) {
+    try {
+      parse(name);
+      return std::string();
+    } catch (const acdplan::InputError& error) {
+      return std::string(error.what());
+    }
+  };
+}
+
 }  // namespace
 
 CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
@@ -284,27 +298,13 @@ CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
   tau_diag->excludes(tau_rel);
   tau_rel->excludes(tau_diag);
   env->add_option("--measure", args->measure, "Concavity measure: sl, sp, h1 or h2")
-      ->check([](const std::string& name) {
-        try {
-          acd::ParseConcavityMeasure(name);
-          return std::string();
-        } catch (const acdplan::InputError& error) {
-          return std::string(error.what());
-        }
-      });
+      ->check(NameCheck(acd::ParseConcavityMeasure));
   env->add_flag("--repair", args->repair,
                 "Make invalid obstacle polygons valid (even-odd rule) instead of rejecting them; "
                 "each change is printed on stderr (a scenario file says `repair: true`)");
   env->add_option("--unknown", args->unknown,
                   "Occupancy maps: cells neither occupied nor free are blocked (default) or free")
-      ->check([](const std::string& name) {
-        try {
-          envs::ParseUnknownCells(name);
-          return std::string();
-        } catch (const acdplan::InputError& error) {
-          return std::string(error.what());
-        }
-      });
+      ->check(NameCheck(envs::ParseUnknownCells));
   env->add_option("--svg", args->svg_path, "Write a picture of the 2D world and its ACD here");
   env->add_option("--json", args->json_path, "Write the report as JSON here");
   return env;
