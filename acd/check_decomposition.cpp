@@ -67,6 +67,7 @@ using internal::Orientation;
 using internal::PointLocation;
 using internal::RayCrossesEdge;
 using internal::RingLocator;
+using internal::SegmentBox;
 using internal::SegmentDistance;
 using internal::ToCgal;
 
@@ -116,12 +117,6 @@ CGAL::Bbox_2 BoundingBox(const Ring2d& ring) {
 
 IdBox ToIdBox(const CGAL::Bbox_2& box, int id, double grow = 0.0) {
   return {{box.xmin() - grow, box.ymin() - grow}, {box.xmax() + grow, box.ymax() + grow}, id};
-}
-
-IdBox SegmentBox(const Point2d& a, const Point2d& b, int id, double grow = 0.0) {
-  return {{std::min(a.x(), b.x()) - grow, std::min(a.y(), b.y()) - grow},
-          {std::max(a.x(), b.x()) + grow, std::max(a.y(), b.y()) + grow},
-          id};
 }
 
 // Intersection point of the lines through [a, b] and [c, d] (which properly cross).

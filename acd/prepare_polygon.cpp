@@ -786,6 +786,7 @@ std::vector<Polygon2d> PrepareTouching(std::vector<IndexedRing> rings, const std
         const int root = joined.Find(a), other = root == a ? b : a;
         std::vector<FaceHandle>& into = triangles_of[static_cast<size_t>(root)];
         std::vector<FaceHandle>& from = triangles_of[static_cast<size_t>(other)];
+        if (into.size() < from.size()) std::swap(into, from);  // Copy the smaller list.
         into.insert(into.end(), from.begin(), from.end());
         from = {};
         version[static_cast<size_t>(root)] = ++joins;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "acd/polygon2d.h"
+
 namespace acdplan::acd::internal {
 
 /// A closed axis-aligned box with a caller-chosen id.
@@ -12,6 +14,13 @@ struct IdBox {
   double lo[2], hi[2];
   int id;
 };
+
+/// The box of the segment a-b, grown by `grow` on every side.
+inline IdBox SegmentBox(const Point2d& a, const Point2d& b, int id, double grow = 0.0) {
+  return {{std::min(a.x(), b.x()) - grow, std::min(a.y(), b.y()) - grow},
+          {std::max(a.x(), b.x()) + grow, std::max(a.y(), b.y()) + grow},
+          id};
+}
 
 namespace box_sweep_detail {
 

@@ -80,11 +80,6 @@ void ForEachRingEdge(const Polygon2d& polygon, Edge edge) {
   }
 }
 
-IdBox BoxOf(const Point2d& a, const Point2d& b, int id, double margin = 0.0) {
-  const Point2d lo = a.cwiseMin(b), hi = a.cwiseMax(b);
-  return {{lo.x() - margin, lo.y() - margin}, {hi.x() + margin, hi.y() + margin}, id};
-}
-
 }  // namespace
 
 std::vector<Seam> FindSeams(const std::vector<Polygon2d>& polygons) {
@@ -135,7 +130,7 @@ std::vector<Seam> FindSeams(const std::vector<Polygon2d>& polygons) {
     const Edge& e = edges[i];
     const int axis = e.a.y() == e.b.y() ? 0 : e.a.x() == e.b.x() ? 1 : -1;
     if (axis < 0) {
-      slanted.push_back(BoxOf(e.a, e.b, i));
+      slanted.push_back(SegmentBox(e.a, e.b, i));
     } else {
       on_line[axis].push_back({e.a[1 - axis], std::min(e.a[axis], e.b[axis]), i});
     }
@@ -262,7 +257,7 @@ std::vector<Opening2d> FindOpenings(const Decomposition2d& d, const std::vector<
   for (int k = 0; k < static_cast<int>(seams.size()); ++k) {
     seam_frames.push_back(FrameOf(seams[k].segment));
     seam_boxes.push_back(
-        BoxOf(seams[k].segment.from, seams[k].segment.to, k, seam_frames.back().tolerance));
+        SegmentBox(seams[k].segment.from, seams[k].segment.to, k, seam_frames.back().tolerance));
   }
   struct LeafEdge {
     Point2d a, b;
@@ -271,7 +266,7 @@ std::vector<Opening2d> FindOpenings(const Decomposition2d& d, const std::vector<
   std::vector<LeafEdge> leaf_edges;
   for (int c = 0; c < static_cast<int>(d.components.size()); ++c) {
     ForEachRingEdge(d.components[c].polygon, [&](const Point2d& a, const Point2d& b) {
-      edge_boxes.push_back(BoxOf(a, b, static_cast<int>(leaf_edges.size())));
+      edge_boxes.push_back(SegmentBox(a, b, static_cast<int>(leaf_edges.size())));
       leaf_edges.push_back({a, b, c});
     });
   }

@@ -276,12 +276,7 @@ bool IsClearCut(const Polygon2d& polygon, const EdgeQuery& grid, const Endpoint&
 
 bool SegmentsMeet(const Point2d& a, const Point2d& b, const Point2d& c, const Point2d& d) {
   // Boxes apart, segments apart (exact comparisons): most pairs a hole path tests end here.
-  if (std::max(a.x(), b.x()) < std::min(c.x(), d.x()) ||
-      std::max(c.x(), d.x()) < std::min(a.x(), b.x()) ||
-      std::max(a.y(), b.y()) < std::min(c.y(), d.y()) ||
-      std::max(c.y(), d.y()) < std::min(a.y(), b.y())) {
-    return false;
-  }
+  if (QueryBox::Around(a, b, 0.0).MissesEdge(c, d)) return false;
   return CGAL::do_intersect(Kernel::Segment_2(ToCgal(a), ToCgal(b)),
                             Kernel::Segment_2(ToCgal(c), ToCgal(d)));
 }
