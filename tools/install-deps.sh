@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ccache pkg-config clang-format clang libclang-rt-14-dev lld
+  libc++-14-dev libc++abi-14-dev
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev
   libboost-dev libboost-filesystem-dev libboost-serialization-dev libboost-system-dev
   libompl-dev libode-dev libfcl-dev libyaml-cpp-dev libassimp-dev libpng-dev

@@ -498,8 +498,18 @@ std::vector<Candidate> ScoredCandidates(const Polygon2d& polygon, const Concavit
   return candidates;
 }
 
+// Where a cut end lies along its ring: vertex k at 2k, a point on edge k (after vertex k) at
+// 2k + 1.
+int RingPosition(const Endpoint& e) { return 2 * e.index + (e.on_edge ? 1 : 0); }
+
+// The candidates' order: by rank, then score; equal ones by their ends' places, the earlier
+// along the ring first. A total order, so that the cut taken does not depend on how the
+// standard library's heap or sort orders ties (libc++ and libstdc++ differ there).
 bool Worse(const Candidate& x, const Candidate& y) {
-  return x.rank < y.rank || (x.rank == y.rank && x.score < y.score);
+  if (x.rank != y.rank) return x.rank < y.rank;
+  if (x.score != y.score) return x.score < y.score;
+  return std::make_pair(x.end.ring, RingPosition(x.end)) >
+         std::make_pair(y.end.ring, RingPosition(y.end));
 }
 
 // Whether IsNotch(p, v, q) holds clearly: the turn is clockwise by more than twice
@@ -521,21 +531,17 @@ bool SurelyOutsideCone(const Point2d& a, const Point2d& v, const Point2d& b, con
   return ClearlyNotch(a, v, x) || ClearlyNotch(x, v, b);
 }
 
-// The best of ScoredCandidates() and whether another candidate ties with it, without listing
-// them. A vertex x scores at most (1 + s_c concavity(x) / unit) * bonus / (s_d dist(r, x)) (the
-// bonus only if concavity(x) > tau), so once some candidate scores f, every vertex whose bound
-// is below f is skipped on its distance alone, and every block of `blocks` (the outer ring's,
-// with the concavities) whose top and box bound its vertices so; a point on an edge is bounded
-// with the largest concavity. That first candidate is a guess from the blocks nearest to r: the
-// vertex of best score there by a plain floating-point cone test, then scored exactly. Which
-// candidate it is changes what is skipped, never the result: the best and its ties are visited.
-struct BestCut {
-  std::optional<Candidate> best;
-  bool unique = false;
-};
-BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
-                      const RingBlocks& blocks, int ring_id, int index,
-                      const ResolveOptions& options) {
+// The best of ScoredCandidates() by Worse(), without listing them. A vertex x scores at most (1 +
+// s_c concavity(x) / unit) * bonus / (s_d dist(r, x)) (the bonus only if concavity(x) > tau), so
+// once some candidate scores f, every vertex whose bound is below f is skipped on its distance
+// alone, and every block of `blocks` (the outer ring's, with the concavities) whose top and box
+// bound its vertices so; a point on an edge is bounded with the largest concavity. That first
+// candidate is a guess from the blocks nearest to r: the vertex of best score there by a plain
+// floating-point cone test, then scored exactly. Which candidate it is changes what is skipped,
+// never the result: the best and its ties are visited.
+std::optional<Candidate> BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
+                                       const RingBlocks& blocks, int ring_id, int index,
+                                       const ResolveOptions& options) {
   const CutScorer scorer(polygon, concavity, ring_id, index, options);
   const Ring2d& outer = polygon.outer;
   const int m = static_cast<int>(outer.size());
@@ -649,18 +655,16 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
   if (guess >= 0 && scorer.Score({-1, guess, false, outer[guess]}, &candidate)) {
     raise_floor(candidate);
   }
-  BestCut result;
-  Candidate& best = result.best.emplace();
+  std::optional<Candidate> result;
+  Candidate& best = result.emplace();
   best.score = -std::numeric_limits<double>::infinity();
-  best.rank = -1;
-  int ties = 0;
+  best.rank = -1;  // Below every candidate's.
+  bool found = false;
   auto consider = [&](const Candidate& c) {
     if (Worse(best, c)) {
       best = c;
-      ties = 1;
+      found = true;
       if (Worse(floor, c)) raise_floor(c);
-    } else if (!Worse(c, best)) {
-      ++ties;
     }
   };
   auto visit = [&](int i) {
@@ -706,49 +710,43 @@ BestCut BestCandidate(const Polygon2d& polygon, const Concavity2d& concavity,
       consider(candidate);
     }
   }
-  if (ties == 0) result.best.reset();
-  result.unique = ties == 1;
+  if (!found) result.reset();
   return result;
 }
 
-// Calls `accept` on the candidates from best to worst score until it returns true; returns the
-// accepted candidate. A heap, since the first few candidates usually suffice. `best_refused`:
-// the best candidate, unique, was already refused.
+// Calls `accept` on the candidates from best to worst (Worse()) until it returns true; returns
+// the accepted candidate. A heap, since the first few candidates usually suffice.
+// `best_refused`: the best candidate was already refused.
 template <typename Accept>
 std::optional<Endpoint> FirstAccepted(std::vector<Candidate> candidates, Accept accept,
                                       bool best_refused = false) {
-  // Usually the best candidate is accepted: when it is the only one with the best score, the
-  // heap below would pop it first too, so try it before building the heap.
+  if (candidates.empty()) return std::nullopt;
+  // Usually the best candidate is accepted: try it before building the heap.
   if (!best_refused) {
     const auto best = std::max_element(candidates.begin(), candidates.end(), Worse);
-    if (best != candidates.end() &&
-        std::count_if(candidates.begin(), candidates.end(),
-                      [&](const Candidate& c) { return !Worse(c, *best); }) == 1 &&
-        accept(best->end)) {
-      return best->end;
-    }
+    if (accept(best->end)) return best->end;
   }
   std::make_heap(candidates.begin(), candidates.end(), Worse);
-  for (auto end = candidates.end(); end != candidates.begin(); --end) {
+  std::pop_heap(candidates.begin(), candidates.end(), Worse);  // The best, refused.
+  for (auto end = candidates.end() - 1; end != candidates.begin(); --end) {
     std::pop_heap(candidates.begin(), end, Worse);
-    if (best_refused && end == candidates.end()) continue;  // The best, refused already.
     if (accept((end - 1)->end)) return (end - 1)->end;
   }
   return std::nullopt;
 }
 
 // FirstAccepted(ScoredCandidates(...), accept), listing the candidates only when the best one
-// (BestCandidate()) ties with another or is refused.
+// (BestCandidate()) is refused.
 template <typename Accept>
 std::optional<Endpoint> FirstAcceptedCut(const Polygon2d& polygon, const EdgeQuery& grid,
                                          const Concavity2d& concavity, int ring_id, int index,
                                          const ResolveOptions& options, Accept accept) {
-  const BestCut quick =
+  const std::optional<Candidate> best =
       BestCandidate(polygon, concavity, grid.OuterBlocks(), ring_id, index, options);
-  if (!quick.best) return std::nullopt;
-  if (quick.unique && accept(quick.best->end)) return quick.best->end;
+  if (!best) return std::nullopt;
+  if (accept(best->end)) return best->end;
   return FirstAccepted(ScoredCandidates(polygon, concavity, ring_id, index, options), accept,
-                       quick.unique);
+                       /*best_refused=*/true);
 }
 
 // Outer vertices and (with `edge_points`) closest edge points, nearest first: the fallback
@@ -798,8 +796,8 @@ void AppendHoleChain(const Polygon2d& polygon, int h, int from, int to, int cut_
 void AppendOuterChain(const Ring2d& outer, const Endpoint& a, const Endpoint& b, int cut_after,
                       int hole_arcs, Ring2d* ring, InheritedChain* chain, PieceEdges* edges) {
   const int n = static_cast<int>(outer.size());
-  const int pos_a = 2 * a.index + (a.on_edge ? 1 : 0);
-  const int pos_b = 2 * b.index + (b.on_edge ? 1 : 0);
+  const int pos_a = RingPosition(a);
+  const int pos_b = RingPosition(b);
   const int span = (pos_b - pos_a + 2 * n) % (2 * n);
   const int between = (span - 1 + (pos_a & 1)) / 2;  // Vertices strictly between a and b.
   ring->reserve(ring->size() + between + 2 + hole_arcs);
@@ -986,7 +984,7 @@ std::optional<Endpoint> SecondHoleCut(const Polygon2d& polygon, const EdgeQuery&
   if (!thorough && nearest.size() > 8) {
     // A quick look at the eight nearest: this is a fallback over many hole vertices.
     std::partial_sort(nearest.begin(), nearest.begin() + 8, nearest.end(),
-                      [](const Candidate& u, const Candidate& v) { return u.score > v.score; });
+                      [](const Candidate& u, const Candidate& v) { return Worse(v, u); });
     nearest.resize(8);
   }
   return FirstAccepted(std::move(nearest), compatible);
@@ -1219,8 +1217,9 @@ bool ResolveHole(const Polygon2d& polygon, const EdgeQuery& grid, const Concavit
     if (partner >= 0 && try_pair(a, partner, true, *x)) return true;
     std::vector<int> others(m);
     std::iota(others.begin(), others.end(), 0);
-    std::sort(others.begin(), others.end(), [&](int u, int v) {
-      return (hole[u] - hole[a]).squaredNorm() > (hole[v] - hole[a]).squaredNorm();
+    std::sort(others.begin(), others.end(), [&](int u, int v) {  // Farthest first.
+      const double du = (hole[u] - hole[a]).squaredNorm(), dv = (hole[v] - hole[a]).squaredNorm();
+      return du != dv ? du > dv : u < v;
     });
     for (int b : others) {
       if (b != partner && try_pair(a, b, false, *x)) return true;
@@ -1238,7 +1237,8 @@ bool ResolveHole(const Polygon2d& polygon, const EdgeQuery& grid, const Concavit
     for (const Point2d& v : polygon.outer)
       reach[i] = std::min(reach[i], (v - hole[i]).squaredNorm());
   }
-  std::sort(firsts.begin(), firsts.end(), [&](int u, int v) { return reach[u] < reach[v]; });
+  std::sort(firsts.begin(), firsts.end(),
+            [&](int u, int v) { return reach[u] != reach[v] ? reach[u] < reach[v] : u < v; });
   for (int a : firsts) {
     if (a != antipodes.p && a != antipodes.cw_p && try_first(a, -1)) return true;
   }

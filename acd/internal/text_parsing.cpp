@@ -3,15 +3,61 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <system_error>
+
+#if !defined(__cpp_lib_to_chars)
+#include <locale.h>
+#if defined(__APPLE__)
+#include <xlocale.h>
+#endif
+#endif
 
 #include "base/format.h"
 
 namespace acdplan::acd::internal {
 
+#if !defined(__cpp_lib_to_chars)
+namespace {
+
+// The decimal numbers std::from_chars reads (chars_format::general): an optional '-', digits
+// with at most one '.' (at least one digit), an optional exponent with at least one digit.
+bool IsDecimal(std::string_view token) {
+  size_t i = token.empty() || token[0] != '-' ? 0 : 1;
+  auto digits = [&] {
+    const size_t start = i;
+    while (i < token.size() && token[i] >= '0' && token[i] <= '9') ++i;
+    return i - start;
+  };
+  size_t mantissa = digits();
+  if (i < token.size() && token[i] == '.') {
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0) return false;
+  if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+    ++i;
+    if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == token.size();
+}
+
+// The spellings of infinity and NaN std::from_chars reads.
+bool IsNonFinite(std::string_view token) {
+  if (!token.empty() && token[0] == '-') token.remove_prefix(1);
+  const std::string lower = ToLower(token);
+  return lower == "inf" || lower == "infinity" || lower == "nan" ||
+         (lower.size() >= 5 && lower.compare(0, 4, "nan(") == 0 && lower.back() == ')');
+}
+
+}  // namespace
+#endif
+
 NumberStatus ParseDouble(std::string_view token, double& value) {
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
   if (token.empty() || token.front() == '+') return NumberStatus::kMalformed;
+#if defined(__cpp_lib_to_chars)
   double parsed = 0.0;
   const char* end = token.data() + token.size();
   // std::from_chars is locale independent (strtod would read "1,5" in a German locale).
@@ -25,6 +71,17 @@ NumberStatus ParseDouble(std::string_view token, double& value) {
     return NumberStatus::kOk;
   }
   if (ec != std::errc()) return NumberStatus::kMalformed;
+#else
+  // A standard library without floating-point from_chars (libc++ before LLVM 20): the same
+  // grammar checked above, the value read by strtod_l in the "C" locale, which rounds correctly
+  // as from_chars does, whatever locale the program has set.
+  if (!IsDecimal(token)) {
+    return IsNonFinite(token) ? NumberStatus::kNotFinite : NumberStatus::kMalformed;
+  }
+  static const locale_t c_locale = newlocale(LC_NUMERIC_MASK, "C", locale_t{});
+  const double parsed = strtod_l(std::string(token).c_str(), nullptr, c_locale);
+  if (std::isinf(parsed)) return NumberStatus::kOutOfRange;
+#endif
   if (!std::isfinite(parsed)) return NumberStatus::kNotFinite;
   value = parsed;
   return NumberStatus::kOk;

@@ -822,6 +822,27 @@ TEST(Decompose2dTest, CutEndsOnlyOnEdgesClearOfOtherVertices) {
   ExpectEveryMeasureDecomposes(inputs, 0.05);
 }
 
+// Two cut ends that score the same (the notch's bisector hit, closer, is no candidate without
+// Steiner cuts): the earlier along the ring is taken, whichever vertex the ring starts at. The
+// tie went to whatever the standard library's heap popped first, so dsb.poly and torus2.poly
+// decomposed differently with libc++ than with libstdc++.
+TEST(Decompose2dTest, TiedCutEndsGoToTheEarlierAlongTheRing) {
+  const Ring2d ring = {{0, 0}, {4, 0}, {4, 3}, {2, 2.5}, {0, 3}};  // Notch (2, 2.5).
+  Decompose2dOptions options;
+  options.measure = ConcavityMeasure::kStraightLine;
+  options.steiner_cuts = false;
+  for (int start = 0; start < 5; ++start) {
+    Ring2d rotated;
+    for (int i = 0; i < 5; ++i) rotated.push_back(ring[(start + i) % 5]);
+    const Decomposition2d d = Decompose2d(Polygon2d{rotated, {}}, options);
+    ASSERT_EQ(d.tree[0].cuts.size(), 1u) << "start " << start;
+    // (4, 0) comes before (0, 0) only in the ring that starts at it.
+    const Point2d expected = start == 1 ? Point2d(4, 0) : Point2d(0, 0);
+    EXPECT_EQ(d.tree[0].cuts[0].from, Point2d(2, 2.5)) << "start " << start;
+    EXPECT_EQ(d.tree[0].cuts[0].to, expected) << "start " << start;
+  }
+}
+
 // Found by fuzz/fuzz_decompose2d (a polygon made valid by RepairPolygon(), minimised to
 // fuzz/corpus/decompose2d/regression-notch-within-noise-of-edge.wkt): the notch (999, 4) lies
 // 7e-15 below the edge from (1.7e8, 4.0000000013) to (91, 4), and every cut that resolves it
