@@ -1,15 +1,20 @@
-// acd_fingerprint: a hash of every 2D decomposition of a polygon corpus, so a change meant to
-// be a pure speed-up can show that the output stayed bit-identical (run it before and after and
-// compare), and a repeat mode that runs one decomposition many times for a profiler. Not a test.
+// acd_fingerprint: a hash of every decomposition of a polygon or mesh corpus, so a change meant
+// to be a pure speed-up can show that the output stayed bit-identical (run it before and after
+// and compare), and that builds with other standard libraries agree (tools/stdlib_check.sh);
+// and a repeat mode that runs one 2D decomposition many times for a profiler. Not a test.
 //
 //   acd_fingerprint [--tau-rel R ...] [--measure M ...] FILE_OR_FOLDER...
-//       One line per file x measure x tau_rel: the hash of the whole Decomposition2d (its JSON,
-//       whose numbers read back bit for bit, and every tree node) and the component count; a last
-//       line with the hash of all lines. Unreadable files are listed and skipped.
+//       One line per polygon file x measure x tau_rel: the hash of the whole Decomposition2d (its
+//       JSON, whose numbers read back bit for bit, and every tree node) and the component count;
+//       one line per mesh file (.obj, .off) x tau_rel: the hash of its Decomposition3d's JSON
+//       (`acdplan decompose MESH`'s choices: solid ACD, or surface ACD of an open mesh; a closed
+//       mesh that is no solid is repaired first) and the component count; a last line with the
+//       hash of all lines. Unreadable files are listed and skipped.
 //   acd_fingerprint --repeat N --measure M --tau-rel R FILE
 //       Decomposes FILE N times (nothing else), for callgrind or perf.
 //
-// tau is tau_rel x the largest reference radius of the file, as in acd_bench.
+// tau is tau_rel x the largest reference radius of the file, as in acd_bench (meshes: x the
+// mesh's ReferenceRadius(), as `acdplan decompose` takes it).
 // Exit status: 0 done; 2 bad usage.
 
 #include <CLI/CLI.hpp>
@@ -20,13 +25,19 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "acd/decompose2d.h"
+#include "acd/decompose3d.h"
+#include "acd/decomposition3d_io.h"
 #include "acd/decomposition_io.h"
+#include "acd/prepare_mesh.h"
 #include "acd/read_polygons.h"
+#include "base/file_io.h"
 #include "base/input_error.h"
+#include "envs/obj_off_reader.h"
 
 namespace {
 
@@ -97,7 +108,8 @@ std::vector<std::string> ListFiles(const std::vector<std::string>& paths) {
     if (std::filesystem::is_directory(path)) {
       for (const auto& entry : std::filesystem::recursive_directory_iterator(path)) {
         const std::string ext = entry.path().extension().string();
-        if (entry.is_regular_file() && (ext == ".poly" || ext == ".wkt" || ext == ".geojson")) {
+        if (entry.is_regular_file() && (ext == ".poly" || ext == ".wkt" || ext == ".geojson" ||
+                                        ext == ".obj" || ext == ".off")) {
           files.push_back(entry.path().string());
         }
       }
@@ -115,6 +127,35 @@ std::vector<acd::Polygon2d> Read(const std::string& file, double* radius) {
   *radius = 0.0;
   for (const double r : radii) *radius = std::max(*radius, r);
   return polygons;
+}
+
+bool IsMesh(const std::string& file) {
+  const std::string ext = std::filesystem::path(file).extension().string();
+  return ext == ".obj" || ext == ".off";
+}
+
+// The line of a mesh file at one tau_rel (see the top of the file).
+std::string MeshLine(const std::string& file, double tau_rel) {
+  std::istringstream in(acdplan::ReadFile(file));
+  const acd::TriangleMesh mesh = std::filesystem::path(file).extension() == ".off"
+                                     ? acdplan::envs::ReadOff(in, file)
+                                     : acdplan::envs::ReadObj(in, file);
+  acd::PrepareMeshOptions prepare;
+  acd::PreparedMesh prepared = acd::PrepareMesh(mesh, prepare, file);
+  if (!prepared.solid() && prepared.defects.boundary_edges == 0) {  // Closed, no solid.
+    prepare.repair = true;
+    prepared = acd::PrepareMesh(mesh, prepare, file);
+  }
+  acd::Decompose3dOptions options;
+  options.tau = tau_rel * acd::ReferenceRadius(prepared.mesh);
+  acd::Decomposition3d d = acd::Decompose3d(prepared, options);
+  d.stats.time_ms = 0;
+  Hasher h;
+  for (const char c : acd::Decomposition3dToJson(d, {})) h.Add(static_cast<int>(c));
+  char line[512];
+  std::snprintf(line, sizeof line, "%s mesh %g %016llx %zu", file.c_str(), tau_rel,
+                static_cast<unsigned long long>(h.value()), d.components.size());
+  return line;
 }
 
 int Run(const std::vector<std::string>& paths, const std::vector<std::string>& measures,
@@ -135,6 +176,19 @@ int Run(const std::vector<std::string>& paths, const std::vector<std::string>& m
   }
   Hasher all;
   for (const std::string& file : ListFiles(paths)) {
+    if (IsMesh(file)) {
+      for (const double tau_rel : tau_rels) {
+        std::string line;
+        try {
+          line = MeshLine(file, tau_rel);
+        } catch (const std::exception& e) {
+          line = file + " mesh " + std::to_string(tau_rel) + " failed: " + e.what();
+        }
+        std::cout << line << "\n";
+        for (const char c : line) all.Add(static_cast<int>(c));
+      }
+      continue;
+    }
     double radius = 0.0;
     std::vector<acd::Polygon2d> polygons;
     try {
@@ -176,8 +230,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> measures = {"sl", "sp", "h1", "h2"};
   std::vector<double> tau_rels = {0.0, 0.01, 0.05};
   int repeat = 0;
-  CLI::App app{"acd_fingerprint: hashes of 2D decompositions, or repeated runs for a profiler"};
-  app.add_option("paths", paths, "Polygon files or folders (searched recursively)")->required();
+  CLI::App app{"acd_fingerprint: hashes of decompositions, or repeated 2D runs for a profiler"};
+  app.add_option("paths", paths, "Polygon or mesh files, or folders (searched recursively)")
+      ->required();
   app.add_option("--measure", measures, "sl, sp, h1, h2; repeatable")->allow_extra_args(false);
   app.add_option("--tau-rel", tau_rels, "tau relative to the reference radius; repeatable")
       ->allow_extra_args(false)

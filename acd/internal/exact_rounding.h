@@ -5,12 +5,33 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <Eigen/Core>
+#include <cmath>
+#include <limits>
 #include <utility>
 
 namespace acdplan::acd::internal {
 
 /// An exact rational rounded to a double: the one rule by which exact values become output.
-inline double RoundToDouble(const CGAL::Epeck::Exact_kernel::FT& x) { return CGAL::to_double(x); }
+/// Toward zero (GMP's mpq_get_d() rule), decided by exact comparisons: CGAL::to_double() would
+/// make the result depend on the rational type CGAL was built with (mpq_class truncates;
+/// boost::multiprecision's gmp_rational, its type without gmpxx, as in a libc++ build, rounds
+/// to nearest), and with it every constructed point of a repair and of a 3D decomposition.
+inline double RoundToDouble(const CGAL::Epeck::Exact_kernel::FT& x) {
+  using Rational = CGAL::Epeck::Exact_kernel::FT;
+  const std::pair<double, double> bounds = CGAL::to_interval(x);  // Within a few ulps.
+  if (bounds.first == bounds.second) return bounds.first;         // x is a double.
+  // From the bound on zero's side, step toward x while the next double does not pass it.
+  const bool negative = CGAL::is_negative(x);
+  double rounded = negative ? bounds.second : bounds.first;
+  const double away =
+      negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+  for (double next = std::nextafter(rounded, away);
+       std::isfinite(next) && (negative ? Rational(next) >= x : Rational(next) <= x);
+       next = std::nextafter(rounded, away)) {
+    rounded = next;
+  }
+  return rounded;
+}
 
 /// A lazy-exact number rounded as its exact value is (above): to a double that depends on the
 /// value of `x` alone.

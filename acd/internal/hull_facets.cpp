@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <tuple>
 
 namespace acdplan::acd::internal {
 namespace {
@@ -129,10 +130,13 @@ std::vector<int> ConvexPolygon(const std::vector<Point3>& points, std::vector<in
     const Point3& p = points[static_cast<size_t>(i)];
     return Point2(p[u], p[v]);
   };
+  // Points that project to one point (ConvexCornersAlongAxis() takes any) are ordered by the
+  // third coordinate, then the index: which of them is a corner must not be left to std::sort.
+  const int w = 3 - u - v;
   std::sort(ids.begin(), ids.end(), [&](int a, int b) {
     const Point3& p = points[static_cast<size_t>(a)];
     const Point3& q = points[static_cast<size_t>(b)];
-    return p[u] < q[u] || (p[u] == q[u] && p[v] < q[v]);
+    return std::make_tuple(p[u], p[v], p[w], a) < std::make_tuple(q[u], q[v], q[w], b);
   });
   std::vector<int> chain(2 * ids.size());
   size_t k = 0;

@@ -1,5 +1,6 @@
 // acd/internal/exact_predicates.h: both orientation forms must return CGAL's exact sign, also
-// where rounding decides it (points on or next to a line, far from the origin).
+// where rounding decides it (points on or next to a line, far from the origin). And
+// acd/internal/exact_rounding.h: exact values become doubles by one rule, toward zero.
 #include "acd/internal/exact_predicates.h"
 
 #include <gtest/gtest.h>
@@ -7,8 +8,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
+
+#include "acd/internal/exact_rounding.h"
 
 namespace acdplan::acd::internal {
 namespace {
@@ -78,6 +82,30 @@ TEST(ExactPredicatesTest, OrientationAlongAnEdgeIsExactNearLines) {
     if (std::abs((c - a).x() * ab.y() - (c - a).y() * ab.x()) < 1e-9) ++decided_near_line;
   }
   EXPECT_GT(decided_near_line, 1000);
+}
+
+// Toward zero whatever rational type CGAL uses (to_double() of boost's gmp_rational, its type
+// without gmpxx, rounds 1/10 up to 0.1; mpq_class's truncates).
+TEST(ExactRoundingTest, RoundsExactRationalsTowardZero) {
+  using Rational = CGAL::Epeck::Exact_kernel::FT;
+  const double below_tenth = std::nextafter(0.1, 0.0);  // 0.1 is the double above 1/10.
+  EXPECT_EQ(RoundToDouble(Rational(1) / 10), below_tenth);
+  EXPECT_EQ(RoundToDouble(Rational(-1) / 10), -below_tenth);
+  EXPECT_EQ(RoundToDouble(Rational(1) / 5), std::nextafter(0.2, 0.0));  // 0.2 is above 1/5,
+  EXPECT_EQ(RoundToDouble(Rational(1) / 3), 1.0 / 3.0);                 // 1.0 / 3 below 1/3.
+  EXPECT_EQ(RoundToDouble(Rational(0.75)), 0.75);
+  EXPECT_EQ(RoundToDouble(Rational(0)), 0.0);
+  // Just below the next double up: still the one below.
+  const double one_up = std::nextafter(1.0, 2.0);
+  const Rational almost = Rational(one_up) - Rational(std::ldexp(1.0, -80));
+  EXPECT_EQ(RoundToDouble(almost), 1.0);
+  EXPECT_EQ(RoundToDouble(-almost), -1.0);
+  // Beyond the largest double: the largest double.
+  const double largest = std::numeric_limits<double>::max();
+  EXPECT_EQ(RoundToDouble(Rational(largest) * 2), largest);
+  EXPECT_EQ(RoundToDouble(Rational(largest) * -2), -largest);
+  // A lazy number rounds as its exact value does.
+  EXPECT_EQ(RoundToDouble(CGAL::Epeck::FT(1) / 10), below_tenth);
 }
 
 }  // namespace
