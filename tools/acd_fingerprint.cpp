@@ -102,14 +102,21 @@ std::uint64_t HashOf(acd::Decomposition2d d) {
   return h.value();
 }
 
+bool IsMesh(const std::filesystem::path& file) {
+  return file.extension() == ".obj" || file.extension() == ".off";
+}
+
+bool IsPolygonFile(const std::filesystem::path& file) {
+  return file.extension() == ".poly" || file.extension() == ".wkt" ||
+         file.extension() == ".geojson";
+}
+
 std::vector<std::string> ListFiles(const std::vector<std::string>& paths) {
   std::vector<std::string> files;
   for (const std::string& path : paths) {
     if (std::filesystem::is_directory(path)) {
       for (const auto& entry : std::filesystem::recursive_directory_iterator(path)) {
-        const std::string ext = entry.path().extension().string();
-        if (entry.is_regular_file() && (ext == ".poly" || ext == ".wkt" || ext == ".geojson" ||
-                                        ext == ".obj" || ext == ".off")) {
+        if (entry.is_regular_file() && (IsPolygonFile(entry.path()) || IsMesh(entry.path()))) {
           files.push_back(entry.path().string());
         }
       }
@@ -127,11 +134,6 @@ std::vector<acd::Polygon2d> Read(const std::string& file, double* radius) {
   *radius = 0.0;
   for (const double r : radii) *radius = std::max(*radius, r);
   return polygons;
-}
-
-bool IsMesh(const std::string& file) {
-  const std::string ext = std::filesystem::path(file).extension().string();
-  return ext == ".obj" || ext == ".off";
 }
 
 // The line of a mesh file at one tau_rel (see the top of the file).
@@ -175,17 +177,18 @@ int Run(const std::vector<std::string>& paths, const std::vector<std::string>& m
     return 0;
   }
   Hasher all;
+  auto print = [&all](const std::string& line) {
+    std::cout << line << "\n";
+    for (const char c : line) all.Add(static_cast<int>(c));
+  };
   for (const std::string& file : ListFiles(paths)) {
     if (IsMesh(file)) {
       for (const double tau_rel : tau_rels) {
-        std::string line;
         try {
-          line = MeshLine(file, tau_rel);
+          print(MeshLine(file, tau_rel));
         } catch (const std::exception& e) {
-          line = file + " mesh " + std::to_string(tau_rel) + " failed: " + e.what();
+          print(file + " mesh " + std::to_string(tau_rel) + " failed: " + e.what());
         }
-        std::cout << line << "\n";
-        for (const char c : line) all.Add(static_cast<int>(c));
       }
       continue;
     }
@@ -212,8 +215,7 @@ int Run(const std::vector<std::string>& paths, const std::vector<std::string>& m
           std::snprintf(line, sizeof line, "%s %s %g failed: %s", file.c_str(), name.c_str(),
                         tau_rel, e.what());
         }
-        std::cout << line << "\n";
-        for (const char* c = line; *c != '\0'; ++c) all.Add(static_cast<int>(*c));
+        print(line);
       }
     }
   }
