@@ -6,20 +6,28 @@
 #include <cstdlib>
 #include <system_error>
 
-#if !defined(__cpp_lib_to_chars)
+#if defined(__unix__) || defined(__APPLE__)
 #include <locale.h>
 #if defined(__APPLE__)
 #include <xlocale.h>
 #endif
+#define ACDPLAN_HAS_STRTOD_L 1
 #endif
 
 #include "base/format.h"
 
 namespace acdplan::acd::internal {
 
-#if !defined(__cpp_lib_to_chars)
 namespace {
 
+// One leading '+' is accepted (from_chars takes none): false if nothing is left or another
+// sign follows.
+bool StripPlus(std::string_view& token) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  return !token.empty() && token.front() != '+';
+}
+
+#if defined(ACDPLAN_HAS_STRTOD_L)
 // The decimal numbers std::from_chars reads (chars_format::general): an optional '-', digits
 // with at most one '.' (at least one digit), an optional exponent with at least one digit.
 bool IsDecimal(std::string_view token) {
@@ -50,14 +58,28 @@ bool IsNonFinite(std::string_view token) {
   return lower == "inf" || lower == "infinity" || lower == "nan" ||
          (lower.size() >= 5 && lower.compare(0, 4, "nan(") == 0 && lower.back() == ')');
 }
+#endif
 
 }  // namespace
+
+#if defined(ACDPLAN_HAS_STRTOD_L)
+NumberStatus ParseDoubleWithoutFromChars(std::string_view token, double& value) {
+  if (!StripPlus(token)) return NumberStatus::kMalformed;
+  if (!IsDecimal(token)) {
+    return IsNonFinite(token) ? NumberStatus::kNotFinite : NumberStatus::kMalformed;
+  }
+  // strtod_l rounds correctly, as from_chars does, and reads '.' whatever locale is set.
+  static const locale_t c_locale = newlocale(LC_NUMERIC_MASK, "C", locale_t{});
+  const double parsed = strtod_l(std::string(token).c_str(), nullptr, c_locale);
+  if (std::isinf(parsed)) return NumberStatus::kOutOfRange;
+  value = parsed;
+  return NumberStatus::kOk;
+}
 #endif
 
 NumberStatus ParseDouble(std::string_view token, double& value) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  if (token.empty() || token.front() == '+') return NumberStatus::kMalformed;
 #if defined(__cpp_lib_to_chars)
+  if (!StripPlus(token)) return NumberStatus::kMalformed;
   double parsed = 0.0;
   const char* end = token.data() + token.size();
   // std::from_chars is locale independent (strtod would read "1,5" in a German locale).
@@ -71,20 +93,13 @@ NumberStatus ParseDouble(std::string_view token, double& value) {
     return NumberStatus::kOk;
   }
   if (ec != std::errc()) return NumberStatus::kMalformed;
-#else
-  // A standard library without floating-point from_chars (libc++ before LLVM 20): the same
-  // grammar checked above, the value read by strtod_l in the "C" locale, which rounds correctly
-  // as from_chars does, whatever locale the program has set.
-  if (!IsDecimal(token)) {
-    return IsNonFinite(token) ? NumberStatus::kNotFinite : NumberStatus::kMalformed;
-  }
-  static const locale_t c_locale = newlocale(LC_NUMERIC_MASK, "C", locale_t{});
-  const double parsed = strtod_l(std::string(token).c_str(), nullptr, c_locale);
-  if (std::isinf(parsed)) return NumberStatus::kOutOfRange;
-#endif
   if (!std::isfinite(parsed)) return NumberStatus::kNotFinite;
   value = parsed;
   return NumberStatus::kOk;
+#else
+  // No floating-point from_chars (libc++ before LLVM 20).
+  return ParseDoubleWithoutFromChars(token, value);
+#endif
 }
 
 std::string NumberProblem(NumberStatus status, std::string_view token) {

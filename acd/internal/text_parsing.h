@@ -23,6 +23,12 @@ enum class NumberStatus {
 /// leading '+' is accepted). Sets `value` only on kOk.
 NumberStatus ParseDouble(std::string_view token, double& value);
 
+/// ParseDouble() the way it is taken where the standard library has no floating-point
+/// std::from_chars (libc++ before LLVM 20): the same grammar checked by hand, the value read
+/// by strtod_l in the "C" locale. POSIX systems only. Declared so that tests compare the two
+/// ways where both exist.
+NumberStatus ParseDoubleWithoutFromChars(std::string_view token, double& value);
+
 /// The rule `token` breaks as messages name it: "malformed number '1,5'", "non-finite number
 /// 'nan'", "number out of range '1e400'"; empty for kOk.
 std::string NumberProblem(NumberStatus status, std::string_view token);
