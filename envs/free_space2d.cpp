@@ -137,16 +137,19 @@ std::vector<acd::Polygon2d> FreeSpace2d(const Workspace2d& workspace,
   std::optional<std::vector<acd::Polygon2d>> traced = internal::RectilinearFreeSpace(prepared, gap);
   std::vector<acd::Polygon2d> result =
       traced ? std::move(*traced) : BooleanFreeSpace(prepared, gap);
-  auto lowest_left = [](const acd::Polygon2d& polygon) {
-    acd::Point2d best = polygon.outer.front();
-    for (const acd::Point2d& p : polygon.outer) {
-      if (p.x() < best.x() || (p.x() == best.x() && p.y() < best.y())) best = p;
-    }
-    return best;
+  auto before = [](const acd::Point2d& p, const acd::Point2d& q) {
+    return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
+  };
+  auto lowest_left = [&](const acd::Polygon2d& polygon) {
+    return *std::min_element(polygon.outer.begin(), polygon.outer.end(), before);
   };
   std::sort(result.begin(), result.end(), [&](const acd::Polygon2d& a, const acd::Polygon2d& b) {
     const acd::Point2d pa = lowest_left(a), pb = lowest_left(b);
-    return pa.x() < pb.x() || (pa.x() == pb.x() && pa.y() < pb.y());
+    if (pa != pb) return before(pa, pb);
+    // Two regions whose lowest-left corner is one point (slanted obstacles can wedge them so):
+    // by their rings, so that their order is not the sort's choice.
+    return std::lexicographical_compare(a.outer.begin(), a.outer.end(), b.outer.begin(),
+                                        b.outer.end(), before);
   });
   return result;
 }

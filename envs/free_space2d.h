@@ -18,7 +18,7 @@ struct FreeSpace2dOptions {
 
 /// The free space `workspace.bounds` minus the union of `workspace.obstacles`: a list of valid,
 /// clean polygons with holes (as acd::PreparePolygon() leaves them), one per connected region,
-/// ready for acd::Decompose2d(). Sorted by their lowest-leftmost vertex.
+/// ready for acd::Decompose2d(). Sorted by their lowest-leftmost vertex (then by their rings).
 ///
 /// Obstacles may overlap, touch each other, touch or cross the bounds, or split the free space
 /// into several regions. A region is a connected open set (one face of the arrangement, one

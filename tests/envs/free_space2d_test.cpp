@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
 
 #include "acd/concavity.h"
 #include "acd/internal/ring_locator.h"
@@ -215,6 +216,35 @@ TEST_P(FreeSpace2dBothWaysTest, TranslatingTheWorldTranslatesTheFreeSpace) {
     EXPECT_NEAR(acd::Area(a[k]), acd::Area(b[k]), 1e-9);
     EXPECT_EQ(acd::VertexCount(a[k]), acd::VertexCount(b[k]));
   }
+}
+
+// Two regions whose lowest-left vertex is the same point (5, 5), wedged apart by slanted
+// obstacles: their order is by their rings, not the sort's choice, so it is the same whatever
+// the obstacles' order.
+TEST(FreeSpace2dTest, RegionsSharingTheirLowestLeftVertexAreOrderedByTheirRings) {
+  Workspace2d workspace;
+  workspace.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(10, 10));
+  std::vector<acd::Polygon2d> obstacles = {
+      {{{0, 0}, {5, 0}, {5, 10}, {0, 10}}, {}},  // The left half.
+      {{{5, 5}, {10, 4}, {10, 6}}, {}},          // A wedge to the right.
+      {{{5, 0}, {10, 0}, {5, 5}}, {}},           // Below it.
+  };
+  auto order = [](const acd::Polygon2d& a, const acd::Polygon2d& b) {  // For the permutations.
+    return std::make_pair(a.outer.size(), a.outer[1].y()) <
+           std::make_pair(b.outer.size(), b.outer[1].y());
+  };
+  std::sort(obstacles.begin(), obstacles.end(), order);
+  std::vector<acd::Polygon2d> first;
+  do {  // All 6 orders.
+    workspace.obstacles = obstacles;
+    const std::vector<acd::Polygon2d> free = FreeSpace2d(workspace);
+    ASSERT_EQ(free.size(), 2u);
+    EXPECT_EQ(free[0].outer.front(), acd::Point2d(5, 5));  // Then (10, 0): before (10, 6).
+    EXPECT_EQ(free[0].outer.size(), 3u);
+    if (first.empty()) first = free;
+    EXPECT_EQ(free[0].outer, first[0].outer);
+    EXPECT_EQ(free[1].outer, first[1].outer);
+  } while (std::next_permutation(obstacles.begin(), obstacles.end(), order));
 }
 
 TEST(FreeSpace2dTest, RandomGridsGiveValidFreeSpace) {
