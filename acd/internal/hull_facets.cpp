@@ -209,6 +209,11 @@ HullFacets FlatHull(const std::vector<Point3>& points) {
 HullFacets ConvexHullFacets(const std::vector<Eigen::Vector3d>& points, double thickness) {
   if (points.empty()) throw std::logic_error("ConvexHull3(): no points");
   std::vector<Eigen::Vector3d> distinct = points;
+  // -0.0 and +0.0 compare equal, so which sign unique() kept would be the sort's choice: adding
+  // +0.0 makes every zero +0.0.
+  for (Eigen::Vector3d& p : distinct) {
+    for (int k = 0; k < 3; ++k) p[k] += 0.0;
+  }
   std::sort(distinct.begin(), distinct.end(), Less);
   distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
   // Three points or fewer are hulled here: CGAL 5.5.1's convex_hull_3 reads and writes freed
