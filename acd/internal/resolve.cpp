@@ -658,12 +658,10 @@ std::optional<Candidate> BestCandidate(const Polygon2d& polygon, const Concavity
   std::optional<Candidate> result;
   Candidate& best = result.emplace();
   best.score = -std::numeric_limits<double>::infinity();
-  best.rank = -1;  // Below every candidate's.
-  bool found = false;
+  best.rank = -1;  // Below every candidate's: still -1 when none was found.
   auto consider = [&](const Candidate& c) {
     if (Worse(best, c)) {
       best = c;
-      found = true;
       if (Worse(floor, c)) raise_floor(c);
     }
   };
@@ -710,7 +708,7 @@ std::optional<Candidate> BestCandidate(const Polygon2d& polygon, const Concavity
       consider(candidate);
     }
   }
-  if (!found) result.reset();
+  if (best.rank < 0) result.reset();
   return result;
 }
 

@@ -87,10 +87,14 @@ NumberStatus ParseDouble(std::string_view token, double& value) {
   if (ptr != end) return NumberStatus::kMalformed;
   if (ec == std::errc::result_out_of_range) {
     // from_chars also reports underflow ("1e-400") as out of range; a tiny number is fine.
+#if defined(ACDPLAN_HAS_STRTOD_L)
+    return ParseDoubleWithoutFromChars(token, value);  // In the "C" locale, whatever is set.
+#else
     const double magnitude = std::strtod(std::string(token).c_str(), nullptr);
     if (std::isinf(magnitude)) return NumberStatus::kOutOfRange;
     value = magnitude;
     return NumberStatus::kOk;
+#endif
   }
   if (ec != std::errc()) return NumberStatus::kMalformed;
   if (!std::isfinite(parsed)) return NumberStatus::kNotFinite;
