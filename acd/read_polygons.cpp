@@ -15,6 +15,7 @@
 #include "acd/poly_reader.h"
 #include "acd/prepare_polygon.h"
 #include "acd/repair_polygon.h"
+#include "acd/shapefile_reader.h"
 #include "acd/wkt_reader.h"
 #include "base/file_io.h"
 #include "base/input_error.h"
@@ -128,6 +129,12 @@ void RebuildOverlapping(const std::string& path,
 
 }  // namespace
 
+bool IsPolygonFile(const std::string& path) {
+  const std::string extension = internal::ToLower(std::filesystem::path(path).extension().string());
+  return extension == ".poly" || extension == ".wkt" || extension == ".geojson" ||
+         extension == ".json" || extension == ".shp";
+}
+
 std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>* reference_radii,
                                     const ReadPolygonsOptions& options) {
   const std::string extension = internal::ToLower(std::filesystem::path(path).extension().string());
@@ -147,9 +154,13 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
     reader = [&](std::istream& in, const std::string& source) {
       return ReadGeoJson(in, source, &multipolygons);
     };
+  } else if (extension == ".shp") {
+    reader = [&](std::istream& in, const std::string& source) {
+      return ReadShapefile(in, source, &multipolygons, &warnings);
+    };
   } else {
-    throw InputError(path + ": unknown polygon file extension '" + extension +
-                     "' (expected .poly, .wkt, .geojson or .json)");
+    throw InputError(path + ": unknown polygon file extension '" + extension + "' (expected " +
+                     kPolygonFileExtensions + ")");
   }
   std::istringstream in(ReadFile(path));
   std::vector<Polygon2d> polygons = reader(in, path);

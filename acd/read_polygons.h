@@ -29,8 +29,15 @@ struct ReadPolygonsOptions {
   std::vector<int>* sources = nullptr;
 };
 
+/// The extensions ReadPolygons() reads, for messages.
+inline constexpr char kPolygonFileExtensions[] = ".poly, .wkt, .geojson, .json or .shp";
+
+/// Whether ReadPolygons() reads `path`, by its extension (any case).
+bool IsPolygonFile(const std::string& path);
+
 /// Reads the polygons in `path`, chosen by extension: `.poly` (Lien's format, see
-/// acd/poly_reader.h), `.wkt` (acd/wkt_reader.h), `.geojson` / `.json` (acd/geojson_reader.h).
+/// acd/poly_reader.h), `.wkt` (acd/wkt_reader.h), `.geojson` / `.json` (acd/geojson_reader.h),
+/// `.shp` (an ESRI shapefile's polygons, acd/shapefile_reader.h).
 /// Every polygon is passed through PreparePolygons(), so the result is validated and clean; a
 /// polygon whose rings touch at points may become several (in file order, so polygon k of the
 /// result is not always polygon k of the file).

@@ -42,8 +42,7 @@ Workspace2d LoadWorkspace2d(const std::string& path, const acd::ReadPolygonsOpti
     return LoadWorkspace2dYaml(path, polygons);
   }
   if (extension == ".map") return LoadMovingAiMap(path);
-  if (extension == ".poly" || extension == ".wkt" || extension == ".geojson" ||
-      extension == ".json") {
+  if (acd::IsPolygonFile(path)) {
     Workspace2d workspace;
     workspace.obstacles = acd::ReadPolygons(path, nullptr, polygons);
     for (const acd::Polygon2d& polygon : workspace.obstacles) {
@@ -56,7 +55,7 @@ Workspace2d LoadWorkspace2d(const std::string& path, const acd::ReadPolygonsOpti
     return workspace;
   }
   throw InputError(path + ": unknown world file extension '" + extension +
-                   "' (expected .yaml, .yml, .map, .poly, .wkt, .geojson or .json)");
+                   "' (expected .yaml, .yml, .map, " + acd::kPolygonFileExtensions + ")");
 }
 
 World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygons,

@@ -13,7 +13,8 @@ namespace acdplan::envs {
 ///   description: "one line"                      # optional
 ///   bounds: [xmin, ymin, xmax, ymax]
 ///   obstacles:                                   # optional
-///     - file: rocks.poly                         # every polygon of a .poly/.wkt/.geojson file
+///     - file: rocks.poly                         # every polygon of a .poly/.wkt/.geojson/.shp
+///     file
 ///     - polygon: [[x, y], [x, y], [x, y], ...]   # inline outer ring (either orientation)
 ///       holes: [[[x, y], ...], ...]              # optional
 /// Relative paths are resolved against the YAML file's folder.

@@ -1,9 +1,9 @@
-// libFuzzer target: whatever a polygon reader (.poly, WKT, GeoJSON) accepts is decomposed by
-// Decompose2d(), convex (tau = 0) and approximate (tau = 5% of the polygon's reference radius),
-// and CheckDecomposition() must pass; otherwise the problems are printed and the target aborts.
-// A polygon PreparePolygons() rejects is made valid by RepairPolygon() first, as `--repair`
-// does; a valid one must come back from RepairPolygon() unchanged. The concavity measure is
-// chosen by the input's bytes, so mutations explore each. InputError from a reader, from
+// libFuzzer target: whatever a polygon reader (.poly, WKT, GeoJSON, shapefile) accepts is
+// decomposed by Decompose2d(), convex (tau = 0) and approximate (tau = 5% of the polygon's
+// reference radius), and CheckDecomposition() must pass; otherwise the problems are printed and the
+// target aborts. A polygon PreparePolygons() rejects is made valid by RepairPolygon() first, as
+// `--repair` does; a valid one must come back from RepairPolygon() unchanged. The concavity measure
+// is chosen by the input's bytes, so mutations explore each. InputError from a reader, from
 // PreparePolygons() or from RepairPolygon() is the expected answer to bad input; from
 // Decompose2d() it is a finding (its options are valid).
 #include <cstdio>
@@ -19,6 +19,7 @@
 #include "acd/poly_reader.h"
 #include "acd/prepare_polygon.h"
 #include "acd/repair_polygon.h"
+#include "acd/shapefile_reader.h"
 #include "acd/wkt_reader.h"
 #include "base/input_error.h"
 #include "fuzz/fuzz_input.h"
@@ -113,6 +114,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       [](std::istream& in, const std::string& source) { return acdplan::acd::ReadWkt(in, source); },
       [](std::istream& in, const std::string& source) {
         return acdplan::acd::ReadGeoJson(in, source);
+      },
+      [](std::istream& in, const std::string& source) {
+        return acdplan::acd::ReadShapefile(in, source);
       }};
   for (const Reader& reader : readers) {
     for (const Polygon2d& polygon : ReadValid(text, reader)) {

@@ -106,17 +106,13 @@ bool IsMesh(const std::filesystem::path& file) {
   return file.extension() == ".obj" || file.extension() == ".off";
 }
 
-bool IsPolygonFile(const std::filesystem::path& file) {
-  return file.extension() == ".poly" || file.extension() == ".wkt" ||
-         file.extension() == ".geojson";
-}
-
 std::vector<std::string> ListFiles(const std::vector<std::string>& paths) {
   std::vector<std::string> files;
   for (const std::string& path : paths) {
     if (std::filesystem::is_directory(path)) {
       for (const auto& entry : std::filesystem::recursive_directory_iterator(path)) {
-        if (entry.is_regular_file() && (IsPolygonFile(entry.path()) || IsMesh(entry.path()))) {
+        if (entry.is_regular_file() &&
+            (acd::IsPolygonFile(entry.path().string()) || IsMesh(entry.path()))) {
           files.push_back(entry.path().string());
         }
       }

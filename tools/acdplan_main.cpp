@@ -520,7 +520,8 @@ int main(int argc, char** argv) {
   InputKindOptions kinds;
   decompose
       ->add_option("INPUT", args.input,
-                   "Polygon file: .poly, .wkt, .geojson or .json; or mesh file: .obj, .stl, "
+                   "Polygon file: .poly, .wkt, .geojson, .json or .shp (ESRI shapefile); or mesh "
+                   "file: .obj, .stl, "
                    ".ply, .off, .gltf, .glb or .dae")
       ->required();
   CLI::Option* tau = decompose->add_option(

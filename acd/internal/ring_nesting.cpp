@@ -1,0 +1,89 @@
+#include "acd/internal/ring_nesting.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+
+#include "acd/internal/exact_predicates.h"
+
+namespace acdplan::acd::internal {
+namespace {
+
+enum class Where { kInside, kOnBoundary, kOutside };
+
+// Where `p` lies relative to `ring`, exactly: on an edge, else by the even-odd ray count.
+Where Locate(const Point2d& p, const Ring2d& ring) {
+  bool inside = false;
+  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Point2d& a = ring[j];
+    const Point2d& b = ring[i];
+    const bool within_box = std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
+                            std::min(a.y(), b.y()) <= p.y() && p.y() <= std::max(a.y(), b.y());
+    if (within_box && Orientation(a, b, p) == 0) return Where::kOnBoundary;
+    if (RayCrossesEdge(p, a, b)) inside = !inside;
+  }
+  return inside ? Where::kInside : Where::kOutside;
+}
+
+// Whether `inner` lies inside `outer`, judged at its first vertex off `outer`'s boundary.
+bool Contains(const Ring2d& outer, const Ring2d& inner) {
+  if (outer.size() < 3) return false;
+  for (const Point2d& p : inner) {
+    const Where where = Locate(p, outer);
+    if (where != Where::kOnBoundary) return where == Where::kInside;
+  }
+  return false;
+}
+
+Eigen::AlignedBox2d BoxOf(const Ring2d& ring) {
+  Eigen::AlignedBox2d box;
+  for (const Point2d& p : ring) box.extend(p);
+  return box;
+}
+
+}  // namespace
+
+std::vector<Polygon2d> PolygonsByNesting(const std::vector<Ring2d>& rings) {
+  const size_t count = rings.size();
+  if (count == 1) return {Polygon2d{rings[0], {}}};
+  std::vector<Eigen::AlignedBox2d> boxes(count);
+  for (size_t i = 0; i < count; ++i) boxes[i] = BoxOf(rings[i]);
+  // containers[i]: the rings that contain ring i.
+  std::vector<std::vector<size_t>> containers(count);
+  for (size_t i = 0; i < count; ++i) {
+    for (size_t j = 0; j < count; ++j) {
+      if (i != j && boxes[j].contains(boxes[i]) && Contains(rings[j], rings[i])) {
+        containers[i].push_back(j);
+      }
+    }
+  }
+  std::vector<int> polygon_of(count, -1);
+  std::vector<Polygon2d> polygons;
+  for (size_t i = 0; i < count; ++i) {
+    if (containers[i].size() % 2 == 0) {
+      polygon_of[i] = static_cast<int>(polygons.size());
+      polygons.push_back({rings[i], {}});
+    }
+  }
+  for (size_t i = 0; i < count; ++i) {
+    if (containers[i].size() % 2 == 0) continue;
+    // Its containers nest, so the innermost has one container fewer and is an outer ring;
+    // rings that cross break that (PreparePolygons() rejects them later): then the innermost
+    // outer ring among its containers, or none, and the ring stands as a polygon of its own.
+    int owner = -1;
+    for (const size_t j : containers[i]) {
+      if (polygon_of[j] >= 0 &&
+          (owner < 0 || containers[j].size() > containers[static_cast<size_t>(owner)].size())) {
+        owner = static_cast<int>(j);
+      }
+    }
+    if (owner >= 0) {
+      polygons[static_cast<size_t>(polygon_of[static_cast<size_t>(owner)])].holes.push_back(
+          rings[i]);
+    } else {
+      polygons.push_back({rings[i], {}});
+    }
+  }
+  return polygons;
+}
+
+}  // namespace acdplan::acd::internal
