@@ -33,7 +33,8 @@ std::string PathData(const SvgCanvas& canvas, const Polygon2d& polygon) {
 
 std::string DecompositionToJson(const Decomposition2d& decomposition,
                                 const DecompositionLabels& labels,
-                                const std::vector<int>& input_polygons) {
+                                const std::vector<int>& input_polygons,
+                                const std::vector<int>& input_features) {
   Json json;
   json["format"] = "acdplan.decomposition2d/1";
   json["input"] = labels.input;
@@ -52,9 +53,14 @@ std::string DecompositionToJson(const Decomposition2d& decomposition,
     c["centroid"] = PointToJson(component.centroid);
     c["concavity"] = component.concavity;
     c["source"] = component.source;  // Extension: index of the input polygon.
-    if (component.source >= 0 && component.source < static_cast<int>(input_polygons.size())) {
-      c["input_polygon"] = input_polygons[static_cast<size_t>(component.source)];
-    }
+    // Per component: what `source` maps to in `map`, if anything.
+    auto mapped = [&](const char* key, const std::vector<int>& map) {
+      if (component.source >= 0 && component.source < static_cast<int>(map.size())) {
+        c[key] = map[static_cast<size_t>(component.source)];
+      }
+    };
+    mapped("input_polygon", input_polygons);
+    mapped("input_feature", input_features);
     components.push_back(std::move(c));
   }
   json["components"] = std::move(components);

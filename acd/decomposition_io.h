@@ -17,10 +17,12 @@ struct DecompositionLabels {
 /// The decomposition JSON ("format": "acdplan.decomposition2d/1"), exactly as in DESIGN.md.
 /// `input_polygons`: per polygon decomposed, the file's polygon it comes from
 /// (ReadPolygonsOptions::sources), written as each component's "input_polygon"; empty: not
-/// written.
+/// written. `input_features` likewise, the file's feature (ReadPolygonsOptions::features), as
+/// "input_feature".
 std::string DecompositionToJson(const Decomposition2d& decomposition,
                                 const DecompositionLabels& labels,
-                                const std::vector<int>& input_polygons = {});
+                                const std::vector<int>& input_polygons = {},
+                                const std::vector<int>& input_features = {});
 
 /// An SVG a person reads at a glance: components in distinct fills, openings drawn, the most
 /// concave notches of the input marked, and a caption with tau, measure, components and time.

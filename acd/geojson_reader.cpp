@@ -18,10 +18,12 @@ class GeoJsonWalker {
  public:
   explicit GeoJsonWalker(const std::string& source) : source_(source) {}
 
-  // The polygons, and per polygon its MultiPolygon (ReadGeoJson()).
-  std::vector<Polygon2d> Walk(const Json& root, std::vector<int>* multipolygons) {
+  // The polygons, and per polygon its MultiPolygon and its feature (ReadGeoJson()).
+  std::vector<Polygon2d> Walk(const Json& root, std::vector<int>* multipolygons,
+                              std::vector<int>* features) {
     Object(root, "");
     if (multipolygons != nullptr) *multipolygons = std::move(multipolygons_);
+    if (features != nullptr) *features = std::move(features_);
     return std::move(polygons_);
   }
 
@@ -67,7 +69,10 @@ class GeoJsonWalker {
     } else if (type == "GeometryCollection") {
       const Json& geometries = Require(value, path, "geometries", Json::value_t::array, "an array");
       const std::string member = Member(path, "geometries");
-      for (size_t i = 0; i < geometries.size(); ++i) Object(geometries[i], Index(member, i), true);
+      for (size_t i = 0; i < geometries.size(); ++i) {
+        if (path.empty()) feature_ = static_cast<int>(i);  // The root's members are features.
+        Object(geometries[i], Index(member, i), true);
+      }
     } else if (type == "Feature" && !geometry_only) {
       const auto it = value.find("geometry");
       if (it == value.end()) Fail(path, "missing member 'geometry'");
@@ -84,6 +89,7 @@ class GeoJsonWalker {
         if (!feature.is_object() || !feature.contains("type") || feature.at("type") != "Feature") {
           Fail(feature_path, "expected a Feature");
         }
+        feature_ = static_cast<int>(i);
         Object(feature, feature_path);
       }
     } else {
@@ -107,6 +113,7 @@ class GeoJsonWalker {
       polygon.holes.push_back(Ring(rings[i], Index(path, i)));
     polygons_.push_back(std::move(polygon));
     multipolygons_.push_back(multipolygon_);
+    features_.push_back(feature_);
   }
 
   // A closed ring: the last position repeats the first and is dropped.
@@ -146,14 +153,16 @@ class GeoJsonWalker {
   const std::string& source_;
   std::vector<Polygon2d> polygons_;
   std::vector<int> multipolygons_;  // Per polygon.
+  std::vector<int> features_;       // Per polygon.
   int multipolygon_ = -1;           // The MultiPolygon being read, or -1.
+  int feature_ = 0;                 // The feature being read.
   int multipolygon_count_ = 0;
 };
 
 }  // namespace
 
 std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source,
-                                   std::vector<int>* multipolygons) {
+                                   std::vector<int>* multipolygons, std::vector<int>* features) {
   Json root;
   try {
     root = Json::parse(in);
@@ -165,7 +174,7 @@ std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source,
     if (bracket != std::string::npos) message = message.substr(bracket + 2);
     throw InputError(source + ": invalid JSON: " + message);
   }
-  return GeoJsonWalker(source).Walk(root, multipolygons);
+  return GeoJsonWalker(source).Walk(root, multipolygons, features);
 }
 
 }  // namespace acdplan::acd

@@ -19,9 +19,13 @@ namespace acdplan::acd {
 /// @param source  the file name used in messages.
 /// @param multipolygons  if given, receives per returned polygon the index of the MultiPolygon
 ///        it is a member of (counted in document order), or -1 for a Polygon.
+/// @param features  if given, receives per returned polygon the feature it belongs to: its index
+///        in the root FeatureCollection's "features" (or the root GeometryCollection's
+///        "geometries"), 0 when the root is a single Feature or geometry.
 /// @throws InputError naming `source`, the line (or element) and the rule broken, e.g. a
 ///         malformed or non-finite number, a wrong count, a truncated file.
 std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source,
-                                   std::vector<int>* multipolygons = nullptr);
+                                   std::vector<int>* multipolygons = nullptr,
+                                   std::vector<int>* features = nullptr);
 
 }  // namespace acdplan::acd

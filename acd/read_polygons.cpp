@@ -142,21 +142,22 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
   Reader reader = nullptr;
   std::vector<std::string> warnings;
   std::vector<int> multipolygons;  // Per polygon of the file: its MULTIPOLYGON, or -1.
+  std::vector<int> features;       // Per polygon of the file: its feature (default: itself).
   if (extension == ".poly") {
     reader = [&](std::istream& in, const std::string& source) {
       return ReadPoly(in, source, &warnings);
     };
   } else if (extension == ".wkt") {
     reader = [&](std::istream& in, const std::string& source) {
-      return ReadWkt(in, source, &multipolygons);
+      return ReadWkt(in, source, &multipolygons, &features);
     };
   } else if (extension == ".geojson" || extension == ".json") {
     reader = [&](std::istream& in, const std::string& source) {
-      return ReadGeoJson(in, source, &multipolygons);
+      return ReadGeoJson(in, source, &multipolygons, &features);
     };
   } else if (extension == ".shp") {
     reader = [&](std::istream& in, const std::string& source) {
-      return ReadShapefile(in, source, &multipolygons, &warnings);
+      return ReadShapefile(in, source, &multipolygons, &warnings, &features);
     };
   } else {
     throw InputError(path + ": unknown polygon file extension '" + extension + "' (expected " +
@@ -166,6 +167,9 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
   std::vector<Polygon2d> polygons = reader(in, path);
   if (polygons.empty()) throw InputError(path + ": no polygon in file");
   multipolygons.resize(polygons.size(), -1);
+  for (size_t k = features.size(); k < polygons.size(); ++k) {
+    features.push_back(static_cast<int>(k));
+  }
   if (options.notes != nullptr) {
     options.notes->insert(options.notes->end(), warnings.begin(), warnings.end());
   }
@@ -211,6 +215,10 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
     if (prepared.empty()) throw InputError(path + ": no polygon left after repair");
   }
   if (reference_radii != nullptr) *reference_radii = std::move(radii);
+  if (options.features != nullptr) {
+    options.features->clear();
+    for (const int source : sources) options.features->push_back(features[source]);
+  }
   if (options.sources != nullptr) *options.sources = std::move(sources);
   return prepared;
 }

@@ -27,6 +27,11 @@ struct ReadPolygonsOptions {
   /// overlapping MULTIPOLYGON members rebuilt together takes its first member's. This is how a
   /// result maps back to the file's features.
   std::vector<int>* sources = nullptr;
+  /// If given, receives per returned polygon the feature of the file it comes from, the unit a
+  /// GIS tool keeps attributes for: a shapefile's record (its FID, counted from 0), a GeoJSON
+  /// FeatureCollection's feature, the k-th geometry of a WKT file, the k-th polygon of a .poly
+  /// file. The members of a MULTIPOLYGON share their feature, as the pieces of one polygon do.
+  std::vector<int>* features = nullptr;
 };
 
 /// The extensions ReadPolygons() reads, for messages.

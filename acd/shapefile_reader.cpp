@@ -151,7 +151,8 @@ std::vector<Ring2d> RecordRings(const Bytes& bytes, std::int64_t at, std::int64_
 
 std::vector<Polygon2d> ReadShapefile(std::istream& in, const std::string& source,
                                      std::vector<int>* multipolygons,
-                                     std::vector<std::string>* warnings) {
+                                     std::vector<std::string>* warnings,
+                                     std::vector<int>* features) {
   const Bytes bytes(std::string(std::istreambuf_iterator<char>(in), {}));
   if (bytes.size() < kHeaderBytes) {
     throw InputError(source + ": not a shapefile: " + std::to_string(bytes.size()) +
@@ -185,6 +186,7 @@ std::vector<Polygon2d> ReadShapefile(std::istream& in, const std::string& source
   }
   std::vector<Polygon2d> polygons;
   std::vector<int> groups;
+  std::vector<int> records;  // Per polygon: its record's index from 0.
   std::int64_t at = kHeaderBytes;
   for (int number = 1; at < declared; ++number) {
     const std::string record = source + ": record " + std::to_string(number);
@@ -217,9 +219,11 @@ std::vector<Polygon2d> ReadShapefile(std::istream& in, const std::string& source
     for (Polygon2d& member : members) {
       polygons.push_back(std::move(member));
       groups.push_back(group);
+      records.push_back(number - 1);
     }
   }
   if (multipolygons != nullptr) *multipolygons = std::move(groups);
+  if (features != nullptr) *features = std::move(records);
   return polygons;
 }
 

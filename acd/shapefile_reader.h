@@ -23,11 +23,14 @@ namespace acdplan::acd {
 /// @param multipolygons  if given, receives per returned polygon the index of the record it
 ///        comes from when that record holds several polygons (a MultiPolygon), else -1.
 /// @param warnings  if given, receives one line per untidy record that was read anyway.
+/// @param features  if given, receives per returned polygon its record's index counted from 0
+///        (record R is feature R - 1, OGR's FID: the row of the .dbf beside it).
 /// @throws InputError naming `source` and the record or byte offset, e.g. a file that is no
 ///         shapefile, a shape type other than polygons, a truncated record, inconsistent part
 ///         offsets, a non-finite coordinate.
 std::vector<Polygon2d> ReadShapefile(std::istream& in, const std::string& source,
                                      std::vector<int>* multipolygons = nullptr,
-                                     std::vector<std::string>* warnings = nullptr);
+                                     std::vector<std::string>* warnings = nullptr,
+                                     std::vector<int>* features = nullptr);
 
 }  // namespace acdplan::acd

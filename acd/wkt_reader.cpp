@@ -25,13 +25,14 @@ class WktParser {
  public:
   WktParser(std::istream& in, const std::string& source) : text_(Text(in)), source_(source) {}
 
-  // The polygons, and per polygon its MULTIPOLYGON (ReadWkt()).
-  std::vector<Polygon2d> Parse(std::vector<int>* multipolygons) {
+  // The polygons, and per polygon its MULTIPOLYGON and its top-level geometry (ReadWkt()).
+  std::vector<Polygon2d> Parse(std::vector<int>* multipolygons, std::vector<int>* features) {
     SkipSpace();
     if (pos_ >= text_.size()) Fail("expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION");
-    while (pos_ < text_.size()) {
+    for (int feature = 0; pos_ < text_.size(); ++feature) {
       SkipSrid();
       ParseGeometry();
+      features_.resize(polygons_.size(), feature);
       SkipSpace();
       // Several geometries may follow one another, optionally separated by ';'.
       if (pos_ < text_.size() && text_[pos_] == ';') {
@@ -40,6 +41,7 @@ class WktParser {
       }
     }
     if (multipolygons != nullptr) *multipolygons = std::move(multipolygons_);
+    if (features != nullptr) *features = std::move(features_);
     return std::move(polygons_);
   }
 
@@ -236,6 +238,7 @@ class WktParser {
   size_t pos_ = 0;
   std::vector<Polygon2d> polygons_;
   std::vector<int> multipolygons_;  // Per polygon.
+  std::vector<int> features_;       // Per polygon: its top-level geometry.
   int multipolygon_ = -1;           // The MULTIPOLYGON being read, or -1.
   int multipolygon_count_ = 0;
 };
@@ -243,8 +246,8 @@ class WktParser {
 }  // namespace
 
 std::vector<Polygon2d> ReadWkt(std::istream& in, const std::string& source,
-                               std::vector<int>* multipolygons) {
-  return WktParser(in, source).Parse(multipolygons);
+                               std::vector<int>* multipolygons, std::vector<int>* features) {
+  return WktParser(in, source).Parse(multipolygons, features);
 }
 
 }  // namespace acdplan::acd

@@ -18,9 +18,12 @@ namespace acdplan::acd {
 /// @param source  the file name used in messages.
 /// @param multipolygons  if given, receives per returned polygon the index of the MULTIPOLYGON
 ///        it is a member of (counted in the order of the text), or -1 for a POLYGON.
+/// @param features  if given, receives per returned polygon the index of the top-level
+///        geometry it belongs to (counted from 0 in the order of the text): a file's features.
 /// @throws InputError naming `source`, the line (or element) and the rule broken, e.g. a
 ///         malformed or non-finite number, a wrong count, a truncated file.
 std::vector<Polygon2d> ReadWkt(std::istream& in, const std::string& source,
-                               std::vector<int>* multipolygons = nullptr);
+                               std::vector<int>* multipolygons = nullptr,
+                               std::vector<int>* features = nullptr);
 
 }  // namespace acdplan::acd

@@ -155,7 +155,9 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
   read_options.notes = &notes;
   read_options.disjoint_members = true;  // A MULTIPOLYGON is one region to decompose.
   std::vector<int> sources;              // Per polygon: the file's polygon it comes from.
+  std::vector<int> features;             // Per polygon: the file's feature it comes from.
   read_options.sources = &sources;
+  read_options.features = &features;
   const std::vector<acd::Polygon2d> polygons = acd::ReadPolygons(args.input, &radii, read_options);
   for (const std::string& note : notes) std::cerr << "acdplan: " << note << "\n";
   int vertices = 0;
@@ -180,8 +182,8 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
   std::vector<std::string> written;
   try {
     if (!args.json_path.empty()) {
-      acdplan::WriteFileAtomically(args.json_path,
-                                   acd::DecompositionToJson(decomposition, labels, sources));
+      acdplan::WriteFileAtomically(
+          args.json_path, acd::DecompositionToJson(decomposition, labels, sources, features));
       written.push_back(args.json_path);
     }
     if (!args.svg_path.empty()) {

@@ -154,14 +154,17 @@ TEST(DecompositionToJsonTest, TauRelIsNullWhenTauWasAbsolute) {
   EXPECT_TRUE(j.at("tau_rel").is_null());
 }
 
-// With the file's polygon of each polygon decomposed, every component says which it came from.
-TEST(DecompositionToJsonTest, InputPolygonOnlyWhenKnown) {
+// With the file's polygon (and feature) of each polygon decomposed, every component says which
+// it came from.
+TEST(DecompositionToJsonTest, InputPolygonAndFeatureOnlyWhenKnown) {
   const DecompositionLabels labels{"l.poly", -1.0};
   const json without = json::parse(DecompositionToJson(HandBuilt(), labels));
   EXPECT_FALSE(without.at("components")[0].contains("input_polygon"));
-  const json with = json::parse(DecompositionToJson(HandBuilt(), labels, {7, 3}));
+  EXPECT_FALSE(without.at("components")[0].contains("input_feature"));
+  const json with = json::parse(DecompositionToJson(HandBuilt(), labels, {7, 3}, {2, 1}));
   for (const json& c : with.at("components")) {
     EXPECT_EQ(c.at("input_polygon"), c.at("source") == 0 ? 7 : 3);
+    EXPECT_EQ(c.at("input_feature"), c.at("source") == 0 ? 2 : 1);
   }
 }
 

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "base/input_error.h"
 #include "tests/data_paths.h"
@@ -162,6 +164,39 @@ TEST(ReadPolygonsTest, SourcesMapPiecesBackToTheFilesPolygons) {
   ASSERT_EQ(polygons.size(), 4u);  // The hole touching the outer ring: two pieces.
   EXPECT_EQ(sources, (std::vector<int>{0, 0, 1, 2}));
   fs::remove(path);
+}
+
+// A feature is what a GIS tool keeps attributes for: a MultiPolygon's members share theirs, a
+// feature without geometry holds no polygon but keeps its number.
+TEST(ReadPolygonsTest, FeaturesMapPolygonsBackToTheFilesFeatures) {
+  const std::string geojson = WriteTemp("features.geojson", R"({"type": "FeatureCollection",
+    "features": [
+      {"type": "Feature", "properties": {},
+       "geometry": {"type": "Polygon", "coordinates": [[[0,0],[2,0],[2,2],[0,2],[0,0]]]}},
+      {"type": "Feature", "properties": {},
+       "geometry": {"type": "MultiPolygon", "coordinates": [[[[10,0],[12,0],[12,2],[10,2],[10,0]]],
+                                                            [[[20,0],[22,0],[22,2],[20,2],[20,0]]]]}},
+      {"type": "Feature", "properties": {}, "geometry": null},
+      {"type": "Feature", "properties": {},
+       "geometry": {"type": "Polygon", "coordinates": [[[30,0],[32,0],[32,2],[30,2],[30,0]]]}}]})");
+  const std::string wkt = WriteTemp(
+      "features.wkt",
+      "POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))\n"
+      "MULTIPOLYGON (((10 0, 12 0, 12 2, 10 2, 10 0)), ((20 0, 22 0, 22 2, 20 2, 20 0)))\n"
+      "POLYGON ((30 0, 32 0, 32 2, 30 2, 30 0))\n");
+  const std::string poly = WriteTemp("features.poly",
+                                     "2\n4 out\n0 0\n2 0\n2 2\n0 2\n1 2 3 4\n"
+                                     "4 out\n10 0\n12 0\n12 2\n10 2\n1 2 3 4\n");
+  const std::vector<std::pair<std::string, std::vector<int>>> cases = {
+      {geojson, {0, 1, 1, 3}}, {wkt, {0, 1, 1, 2}}, {poly, {0, 1}}};
+  for (const auto& [path, expected] : cases) {
+    ReadPolygonsOptions options;
+    options.disjoint_members = true;
+    std::vector<int> features;
+    options.features = &features;
+    ReadPolygons(path, nullptr, options);
+    EXPECT_EQ(features, expected) << path;
+  }
 }
 
 TEST(ReadPolygonsTest, NazcaMonkeyAndNeuronCounts) {

@@ -106,8 +106,10 @@ TEST(ShapefileReaderTest, GroupsARecordsRingsByNestingIntoAMultiPolygon) {
   // field beside: two polygons of one record, the pond the first one's hole.
   const Record record{{Square(0, 0, 10, true), Square(2, 2, 6, false), Square(4, 4, 2, true),
                        Square(20, 0, 3, true)}};
-  std::vector<int> multipolygons;
-  const std::vector<Polygon2d> polygons = Read(Shapefile({{}, record}), &multipolygons);
+  std::vector<int> multipolygons, features;
+  std::istringstream in(Shapefile({{}, record}));
+  const std::vector<Polygon2d> polygons =
+      ReadShapefile(in, "parcels.shp", &multipolygons, nullptr, &features);
   ASSERT_EQ(polygons.size(), 3u);
   EXPECT_EQ(polygons[0].outer.size(), 4u);  // The closing point is dropped.
   ASSERT_EQ(polygons[0].holes.size(), 1u);
@@ -116,6 +118,7 @@ TEST(ShapefileReaderTest, GroupsARecordsRingsByNestingIntoAMultiPolygon) {
   EXPECT_TRUE(polygons[1].holes.empty());
   EXPECT_EQ(polygons[2].outer.front(), Point2d(20, 0));
   EXPECT_EQ(multipolygons, (std::vector<int>{2, 2, 2}));  // Record 2 (record 1 has no parts).
+  EXPECT_EQ(features, (std::vector<int>{1, 1, 1}));       // Its FID.
 }
 
 TEST(ShapefileReaderTest, NestingDecidesWhereOrientationIsWrongOrRingsTouch) {
