@@ -856,6 +856,15 @@ std::vector<Polygon2d> PrepareTouching(std::vector<IndexedRing> rings, const std
     for (size_t k = 1; k < loops.size(); ++k) {
       if (lowest[k] < lowest[outer]) outer = k;
     }
+    // The rings' areas were checked whole; a part split off at a touching point can still
+    // have an area below what a double holds (subnormal coordinates beside normal ones:
+    // fuzz_decompose2d), which nothing after could measure.
+    for (const Ring2d& loop : loops) {
+      if (SignedArea(loop) == 0.0) {
+        Fail(where, "the part at " + internal::FormatPoint(loop.front()) +
+                        ", split off where its rings touch, has zero area in double precision");
+      }
+    }
     Polygon2d polygon;
     polygon.outer = std::move(loops[outer]);
     for (size_t k = 0; k < loops.size(); ++k) {

@@ -119,6 +119,18 @@ TEST(PreparePolygonsTest, AcceptsSelfTangentOuterRing) {
   EXPECT_EQ(PrepareAndDecompose({touching, {}}, 8.0, 0.0, false).size(), 2u);
 }
 
+// Two lobes meeting at a point, one of subnormal size: the whole ring's area is that of the
+// large lobe, but the small lobe's, once split off, is below what a double holds (its exact
+// area is 1.5e-620). It is refused by name; it had passed and failed the decomposition's check
+// (fuzz_decompose2d, on a shapefile of subnormal coordinates, through --repair).
+TEST(PreparePolygonsTest, RefusesAPartWhoseAreaUnderflows) {
+  const Ring2d lobes = {
+      {0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}, {-2e-310, -1e-310}, {-1e-310, -2e-310}};
+  EXPECT_THAT(PreparePolygonsErrorOf({lobes, {}}),
+              HasSubstr("test.poly: polygon 0: the part at (0, 0), split off where its rings "
+                        "touch, has zero area in double precision"));
+}
+
 TEST(PreparePolygonsTest, AcceptsHoleTouchingAtTwoPointsThatSplitNothing) {
   // Hole 0 touches the outer ring at (0, 5) and hole 1 at (3, 5); hole 1 touches nothing else.
   const Polygon2d raw{SquareRing(0, 0, 10),
