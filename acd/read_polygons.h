@@ -25,7 +25,7 @@ struct ReadPolygonsOptions {
   /// If given, receives per returned polygon the index of the file's polygon it comes from, as
   /// the messages count them ("polygon k"): the pieces of one polygon share it, and a set of
   /// overlapping MULTIPOLYGON members rebuilt together takes its first member's. This is how a
-  /// result maps back to the file's features.
+  /// result maps back to the file's polygons (`features`, below, to its features).
   std::vector<int>* sources = nullptr;
   /// If given, receives per returned polygon the feature of the file it comes from, the unit a
   /// GIS tool keeps attributes for: a shapefile's record (its FID, counted from 0), a GeoJSON

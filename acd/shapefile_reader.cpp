@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "acd/internal/ring_nesting.h"
+#include "base/format.h"
 #include "base/input_error.h"
 
 namespace acdplan::acd {
@@ -85,10 +86,11 @@ class Bytes {
   std::string data_;
 };
 
-// The rings of the polygon record `number` whose content (after the record header) starts at
-// byte `at` and holds `length` bytes.
+// The rings of a polygon record (named `record` in messages) whose content, after the record
+// header, starts at byte `at` and holds `length` bytes. Each ring written without its closing
+// point is named in `unclosed`.
 std::vector<Ring2d> RecordRings(const Bytes& bytes, std::int64_t at, std::int64_t length,
-                                const std::string& record, std::vector<std::string>* warnings) {
+                                const std::string& record, std::vector<std::string>* unclosed) {
   if (length < kPolygonFixedBytes) {
     throw InputError(record + ": a polygon record needs at least " +
                      std::to_string(kPolygonFixedBytes) + " bytes, it holds " +
@@ -137,10 +139,8 @@ std::vector<Ring2d> RecordRings(const Bytes& bytes, std::int64_t at, std::int64_
     }
     if (ring.size() >= 2 && ring.front() == ring.back()) {
       ring.pop_back();
-    } else if (warnings != nullptr) {
-      warnings->push_back(part +
-                          ": ring not closed (the format repeats its first point last); read "
-                          "as closed");
+    } else {
+      unclosed->push_back(part);
     }
     rings.push_back(std::move(ring));
   }
@@ -186,7 +186,8 @@ std::vector<Polygon2d> ReadShapefile(std::istream& in, const std::string& source
   }
   std::vector<Polygon2d> polygons;
   std::vector<int> groups;
-  std::vector<int> records;  // Per polygon: its record's index from 0.
+  std::vector<int> records;           // Per polygon: its record's index from 0.
+  std::vector<std::string> unclosed;  // Rings written without their closing point.
   std::int64_t at = kHeaderBytes;
   for (int number = 1; at < declared; ++number) {
     const std::string record = source + ": record " + std::to_string(number);
@@ -212,7 +213,7 @@ std::vector<Polygon2d> ReadShapefile(std::istream& in, const std::string& source
                        std::to_string(type) + ") differs from the file's, " +
                        ShapeTypeName(file_type) + " (" + std::to_string(file_type) + ")");
     }
-    const std::vector<Ring2d> rings = RecordRings(bytes, content, length, record, warnings);
+    const std::vector<Ring2d> rings = RecordRings(bytes, content, length, record, &unclosed);
     if (rings.empty()) continue;
     std::vector<Polygon2d> members = internal::PolygonsByNesting(rings);
     const int group = members.size() > 1 ? number : -1;
@@ -221,6 +222,16 @@ std::vector<Polygon2d> ReadShapefile(std::istream& in, const std::string& source
       groups.push_back(group);
       records.push_back(number - 1);
     }
+  }
+  if (!unclosed.empty() && warnings != nullptr) {  // One line, however many.
+    warnings->push_back(
+        unclosed.front() +
+        ": ring not closed (the format repeats its first point last); read as "
+        "closed" +
+        (unclosed.size() > 1
+             ? " (and " + Plural(static_cast<long long>(unclosed.size()) - 1, "more ring") +
+                   " like it)"
+             : std::string()));
   }
   if (multipolygons != nullptr) *multipolygons = std::move(groups);
   if (features != nullptr) *features = std::move(records);

@@ -22,7 +22,8 @@ namespace acdplan::acd {
 /// @param source  the file name used in messages.
 /// @param multipolygons  if given, receives per returned polygon the index of the record it
 ///        comes from when that record holds several polygons (a MultiPolygon), else -1.
-/// @param warnings  if given, receives one line per untidy record that was read anyway.
+/// @param warnings  if given, receives a line for what was read though untidy: the first ring
+///        written without its closing point (with how many more), bytes past the declared length.
 /// @param features  if given, receives per returned polygon its record's index counted from 0
 ///        (record R is feature R - 1, OGR's FID: the row of the .dbf beside it).
 /// @throws InputError naming `source` and the record or byte offset, e.g. a file that is no

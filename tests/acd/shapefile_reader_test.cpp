@@ -142,11 +142,12 @@ TEST(ShapefileReaderTest, SkipsNullShapesReadsPolygonZAndWarnsOfUnclosedRings) {
   z_record.type = 15;
   std::vector<std::string> warnings;
   const std::vector<Polygon2d> polygons =
-      Read(Shapefile({null_record, Record{{open}}}, 5), nullptr, &warnings);
-  ASSERT_EQ(polygons.size(), 1u);
+      Read(Shapefile({null_record, Record{{open}}, Record{{open, open}}}, 5), nullptr, &warnings);
+  ASSERT_EQ(polygons.size(), 3u);
   EXPECT_EQ(polygons[0].outer.size(), 4u);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_THAT(warnings[0], HasSubstr("parcels.shp: record 2, part 0: ring not closed"));
+  EXPECT_THAT(warnings[0], HasSubstr("read as closed (and 2 more rings like it)"));
   const std::vector<Polygon2d> z = Read(Shapefile({null_record, z_record}, 15));
   ASSERT_EQ(z.size(), 1u);
   EXPECT_EQ(z[0].outer.front(), Point2d(5, 5));
