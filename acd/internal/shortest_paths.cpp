@@ -266,12 +266,17 @@ std::vector<double> ShortestPathsToBridge(const Ring2d& chain) {
   std::vector<double> result(m, 0.0);
   if (m == 2) return result;
 
-  // A counter-clockwise pocket ring has its interior on the right of beta- -> beta+.
-  const double area = SignedArea(chain);
-  if (area == 0.0) {
+  // The side of beta- -> beta+ the chain lies on: right (-1) for a counter-clockwise pocket
+  // ring, whose interior is on the right of the bridge. Taken by the exact orientation of the
+  // first vertex off the bridge line, not by the sign of the ring's area, which underflows to 0
+  // for a pocket of subnormal coordinates (fuzz_decompose2d).
+  int pocket_side = 0;
+  for (int k = 1; k + 1 < m && pocket_side == 0; ++k) {
+    pocket_side = Orientation(beta_minus, beta_plus, chain[k]);
+  }
+  if (pocket_side == 0) {
     throw std::invalid_argument("ShortestPathsToBridge(): the pocket polygon has zero area");
   }
-  const int pocket_side = area > 0.0 ? -1 : 1;
   for (int k = 1; k + 1 < m; ++k) {
     if (Orientation(beta_minus, beta_plus, chain[k]) == -pocket_side) {
       throw std::invalid_argument("ShortestPathsToBridge(): chain vertex " + std::to_string(k) +
@@ -294,7 +299,7 @@ std::vector<double> ShortestPathsToBridge(const Ring2d& chain) {
   ring.reserve(m + 1);
   std::vector<int> chain_of(m + 1, -1);  // Ring index -> chain index (-1 for the apex).
   int apex_index;
-  if (area > 0.0) {
+  if (pocket_side < 0) {  // Counter-clockwise already.
     ring = chain;
     for (int k = 0; k < m; ++k) chain_of[k] = k;
     ring.push_back(apex);

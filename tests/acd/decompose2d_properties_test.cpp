@@ -803,6 +803,15 @@ TEST(Decompose2dTest, CutShorterThanTheSquareRootOfTheSmallestDouble) {
   ExpectEveryMeasureDecomposes(inputs, 0.05);
 }
 
+// Found by fuzz/fuzz_decompose2d (a shapefile seed; fuzz/corpus/decompose2d/regression-subnormal-
+// pocket.wkt): a pocket of vertices within 1e-310 of the corner (0, 0) has an area below what a
+// double holds, and SP, H1 and H2 refused it ("the pocket polygon has zero area", an exception
+// out of Decompose2d()): the pocket's side of its bridge was taken from the sign of its area.
+// It is now the exact orientation of a pocket vertex against the bridge.
+TEST(Decompose2dTest, PocketOfSubnormalCoordinates) {
+  ExpectEveryMeasureDecomposes({FuzzRegressionInput("regression-subnormal-pocket.wkt")}, 0.05);
+}
+
 // Found by fuzz/fuzz_decompose2d (a polygon made valid by RepairPolygon(), minimised to
 // fuzz/corpus/decompose2d/regression-vertex-near-split-edge.wkt): in (17 14, 18 5.6e22, 7 22,
 // 16 2051, 17 21) the vertex (17, 21) lies 1.3e-22 left of the edge from (17, 14) up to the
