@@ -20,7 +20,7 @@ namespace acdplan::acd {
 /// as the format numbers records, P and K from 0) or name the byte offset of a damaged header.
 /// Returns the polygons as written (not yet cleaned or validated: see PreparePolygon()).
 /// @param source  the file name used in messages.
-/// @param multipolygons  if given, receives per returned polygon the index of the record it
+/// @param multipolygons  if given, receives per returned polygon the number R of the record it
 ///        comes from when that record holds several polygons (a MultiPolygon), else -1.
 /// @param warnings  if given, receives a line for what was read though untidy: the first ring
 ///        written without its closing point (with how many more), bytes past the declared length.
