@@ -87,10 +87,11 @@ class Bytes {
 };
 
 // The rings of a polygon record (named `record` in messages) whose content, after the record
-// header, starts at byte `at` and holds `length` bytes. Each ring written without its closing
-// point is named in `unclosed`.
+// header, starts at byte `at` and holds `length` bytes. Rings written without their closing
+// point are counted in `unclosed`, the first named in `first_unclosed`.
 std::vector<Ring2d> RecordRings(const Bytes& bytes, std::int64_t at, std::int64_t length,
-                                const std::string& record, std::vector<std::string>* unclosed) {
+                                const std::string& record, long long* unclosed,
+                                std::string* first_unclosed) {
   if (length < kPolygonFixedBytes) {
     throw InputError(record + ": a polygon record needs at least " +
                      std::to_string(kPolygonFixedBytes) + " bytes, it holds " +
@@ -139,8 +140,8 @@ std::vector<Ring2d> RecordRings(const Bytes& bytes, std::int64_t at, std::int64_
     }
     if (ring.size() >= 2 && ring.front() == ring.back()) {
       ring.pop_back();
-    } else {
-      unclosed->push_back(part);
+    } else if ((*unclosed)++ == 0) {
+      *first_unclosed = part;
     }
     rings.push_back(std::move(ring));
   }
@@ -186,8 +187,9 @@ std::vector<Polygon2d> ReadShapefile(std::istream& in, const std::string& source
   }
   std::vector<Polygon2d> polygons;
   std::vector<int> groups;
-  std::vector<int> records;           // Per polygon: its record's index from 0.
-  std::vector<std::string> unclosed;  // Rings written without their closing point.
+  std::vector<int> records;    // Per polygon: its record's index from 0.
+  long long unclosed = 0;      // Rings written without their closing point,
+  std::string first_unclosed;  // and the first of them.
   std::int64_t at = kHeaderBytes;
   for (int number = 1; at < declared; ++number) {
     const std::string record = source + ": record " + std::to_string(number);
@@ -213,7 +215,8 @@ std::vector<Polygon2d> ReadShapefile(std::istream& in, const std::string& source
                        std::to_string(type) + ") differs from the file's, " +
                        ShapeTypeName(file_type) + " (" + std::to_string(file_type) + ")");
     }
-    const std::vector<Ring2d> rings = RecordRings(bytes, content, length, record, &unclosed);
+    const std::vector<Ring2d> rings =
+        RecordRings(bytes, content, length, record, &unclosed, &first_unclosed);
     if (rings.empty()) continue;
     std::vector<Polygon2d> members = internal::PolygonsByNesting(rings);
     const int group = members.size() > 1 ? number : -1;
@@ -223,15 +226,12 @@ std::vector<Polygon2d> ReadShapefile(std::istream& in, const std::string& source
       records.push_back(number - 1);
     }
   }
-  if (!unclosed.empty() && warnings != nullptr) {  // One line, however many.
-    warnings->push_back(
-        unclosed.front() +
-        ": ring not closed (the format repeats its first point last); read as "
-        "closed" +
-        (unclosed.size() > 1
-             ? " (and " + Plural(static_cast<long long>(unclosed.size()) - 1, "more ring") +
-                   " like it)"
-             : std::string()));
+  if (unclosed > 0 && warnings != nullptr) {  // One line, however many.
+    warnings->push_back(first_unclosed +
+                        ": ring not closed (the format repeats its first point last); read as "
+                        "closed" +
+                        (unclosed > 1 ? " (and " + Plural(unclosed - 1, "more ring") + " like it)"
+                                      : std::string()));
   }
   if (multipolygons != nullptr) *multipolygons = std::move(groups);
   if (features != nullptr) *features = std::move(records);

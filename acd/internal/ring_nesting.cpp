@@ -1,35 +1,26 @@
 #include "acd/internal/ring_nesting.h"
 
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include <Eigen/Geometry>
-#include <algorithm>
+#include <vector>
 
 #include "acd/internal/exact_predicates.h"
 
 namespace acdplan::acd::internal {
 namespace {
 
-enum class Where { kInside, kOnBoundary, kOutside };
-
-// Where `p` lies relative to `ring`, exactly: on an edge, else by the even-odd ray count.
-Where Locate(const Point2d& p, const Ring2d& ring) {
-  bool inside = false;
-  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-    const Point2d& a = ring[j];
-    const Point2d& b = ring[i];
-    const bool within_box = std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
-                            std::min(a.y(), b.y()) <= p.y() && p.y() <= std::max(a.y(), b.y());
-    if (within_box && Orientation(a, b, p) == 0) return Where::kOnBoundary;
-    if (RayCrossesEdge(p, a, b)) inside = !inside;
-  }
-  return inside ? Where::kInside : Where::kOutside;
-}
-
-// Whether `inner` lies inside `outer`, judged at its first vertex off `outer`'s boundary.
+// Whether `inner` lies inside `outer`, judged exactly at its first vertex off `outer`'s
+// boundary.
 bool Contains(const Ring2d& outer, const Ring2d& inner) {
   if (outer.size() < 3) return false;
+  std::vector<Kernel::Point_2> points;
+  points.reserve(outer.size());
+  for (const Point2d& p : outer) points.push_back(ToCgal(p));
   for (const Point2d& p : inner) {
-    const Where where = Locate(p, outer);
-    if (where != Where::kOnBoundary) return where == Where::kInside;
+    const CGAL::Bounded_side side =
+        CGAL::bounded_side_2(points.begin(), points.end(), ToCgal(p), Kernel());
+    if (side != CGAL::ON_BOUNDARY) return side == CGAL::ON_BOUNDED_SIDE;
   }
   return false;
 }

@@ -18,6 +18,7 @@
 #include "base/input_error.h"
 #include "tests/data_paths.h"
 #include "tests/input_error_of.h"
+#include "tests/polygon_fixtures.h"
 
 namespace acdplan::acd {
 namespace {
@@ -86,9 +87,9 @@ std::string Shapefile(const std::vector<Record>& records, std::int32_t file_type
 // A square ring from (x, y) with side `side`, closed, clockwise (the format's outer rings) or
 // counter-clockwise (its holes).
 Ring2d Square(double x, double y, double side, bool clockwise) {
-  Ring2d ring = {{x, y}, {x, y + side}, {x + side, y + side}, {x + side, y}, {x, y}};
-  if (!clockwise) ring = Reversed(ring);
-  return ring;
+  Ring2d ring = acdplan::test::SquareRing(x, y, side);  // Counter-clockwise.
+  ring.push_back(ring.front());
+  return clockwise ? Reversed(ring) : ring;
 }
 
 std::vector<Polygon2d> Read(const std::string& bytes, std::vector<int>* multipolygons = nullptr,
