@@ -1,6 +1,9 @@
 #include "acd/decomposition_io.h"
 
+#include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,6 +23,12 @@ Json RingToJson(const Ring2d& ring) {
   Json array = Json::array();
   for (const Point2d& p : ring) array.push_back(PointToJson(p));
   return array;
+}
+
+// What `map` holds for the input polygon `source` (a component's), or -1 if nothing.
+int Mapped(const std::vector<int>& map, int source) {
+  return source >= 0 && source < static_cast<int>(map.size()) ? map[static_cast<size_t>(source)]
+                                                              : -1;
 }
 
 /// Path data of a polygon with holes.
@@ -53,14 +62,12 @@ std::string DecompositionToJson(const Decomposition2d& decomposition,
     c["centroid"] = PointToJson(component.centroid);
     c["concavity"] = component.concavity;
     c["source"] = component.source;  // Extension: index of the input polygon.
-    // Per component: what `source` maps to in `map`, if anything.
-    auto mapped = [&](const char* key, const std::vector<int>& map) {
-      if (component.source >= 0 && component.source < static_cast<int>(map.size())) {
-        c[key] = map[static_cast<size_t>(component.source)];
-      }
-    };
-    mapped("input_polygon", input_polygons);
-    mapped("input_feature", input_features);
+    if (const int polygon = Mapped(input_polygons, component.source); polygon >= 0) {
+      c["input_polygon"] = polygon;
+    }
+    if (const int feature = Mapped(input_features, component.source); feature >= 0) {
+      c["input_feature"] = feature;
+    }
     components.push_back(std::move(c));
   }
   json["components"] = std::move(components);
@@ -88,6 +95,57 @@ std::string DecompositionToJson(const Decomposition2d& decomposition,
   return json.dump() + "\n";
 }
 
+std::string DecompositionToGeoJson(const Decomposition2d& decomposition,
+                                   const DecompositionLabels& labels,
+                                   const std::vector<int>& input_polygons,
+                                   const std::vector<int>& input_features,
+                                   const std::vector<std::string>& feature_properties) {
+  // RFC 7946 3.1.6: a linear ring repeats its first position last.
+  auto closed = [](const Ring2d& ring) {
+    Json positions = RingToJson(ring);
+    if (!ring.empty()) positions.push_back(PointToJson(ring.front()));
+    return positions;
+  };
+  // Each feature's attributes parsed once, however many components it gives.
+  std::vector<std::optional<Json>> attributes(feature_properties.size());
+  auto attributes_of = [&](int feature) {
+    if (feature < 0 || feature >= static_cast<int>(attributes.size())) return Json::object();
+    std::optional<Json>& parsed = attributes[static_cast<size_t>(feature)];
+    if (!parsed) {
+      parsed = Json::parse(feature_properties[static_cast<size_t>(feature)]);
+      if (!parsed->is_object()) parsed = Json::object();
+    }
+    return *parsed;
+  };
+  Json features = Json::array();
+  for (size_t k = 0; k < decomposition.components.size(); ++k) {
+    const Component2d& component = decomposition.components[k];
+    // Counter-clockwise outer rings and clockwise holes: RFC 7946's right-hand rule.
+    Json rings = Json::array({closed(component.polygon.outer)});
+    for (const Ring2d& hole : component.polygon.holes) rings.push_back(closed(hole));
+    const int polygon = Mapped(input_polygons, component.source);
+    const int feature = Mapped(input_features, component.source);
+    Json properties = attributes_of(feature);
+    properties["acd_component"] = k;
+    properties["acd_concavity"] = component.concavity;
+    properties["acd_input_polygon"] = polygon >= 0 ? Json(polygon) : Json(nullptr);
+    properties["acd_input_feature"] = feature >= 0 ? Json(feature) : Json(nullptr);
+    features.push_back({{"type", "Feature"},
+                        {"geometry", {{"type", "Polygon"}, {"coordinates", std::move(rings)}}},
+                        {"properties", std::move(properties)}});
+  }
+  Json json;
+  json["type"] = "FeatureCollection";
+  // A foreign member (RFC 7946 6.1): what was decomposed, and how.
+  json["acdplan"] = {{"format", "acdplan.decomposition2d.geojson/1"},
+                     {"input", labels.input},
+                     {"measure", ToString(decomposition.measure)},
+                     {"tau", decomposition.tau},
+                     {"tau_rel", labels.tau_rel >= 0 ? Json(labels.tau_rel) : Json(nullptr)}};
+  json["features"] = std::move(features);
+  return json.dump() + "\n";
+}
+
 std::string DecompositionToSvg(const Decomposition2d& decomposition,
                                const DecompositionLabels& labels) {
   Eigen::AlignedBox2d bounds;
@@ -112,7 +170,16 @@ std::string DecompositionToSvg(const Decomposition2d& decomposition,
   options.font = 23.0;
   SvgCanvas canvas(bounds, options);
   using N = SvgCanvas;
-  const double thin = 1.35, opening_width = 5.4, notch_radius = 5.4, root_radius = 14.4;
+  const double thin = 1.35;
+  // The marks (notches, openings) shrink where many share the picture, as on a map of many
+  // polygons, so that neighbours stay apart: to the spacing they would have spread evenly over
+  // the drawing, full size from 64 px on, a quarter at most.
+  int marks = 0;
+  for (const HierarchyNode2d& node : decomposition.tree) marks += node.children[0] >= 0 ? 1 : 0;
+  const Eigen::Vector2d drawing = bounds.sizes() * canvas.scale();
+  const double spacing = std::sqrt(drawing.x() * drawing.y() / std::max(marks, 1));
+  const double mark = std::clamp(spacing / 64.0, 0.25, 1.0);
+  const double opening_width = 5.4 * mark, notch_radius = 5.4 * mark, root_radius = 14.4 * mark;
 
   // Components: filled, semi-transparent, thin dark boundaries; even-odd fill leaves the
   // unresolved holes open.
@@ -154,7 +221,7 @@ std::string DecompositionToSvg(const Decomposition2d& decomposition,
     if (node.children[0] < 0) continue;
     svg << "<circle class=\"most-concave-notch\" cx=\"" << canvas.X(node.witness.x()) << "\" cy=\""
         << canvas.Y(node.witness.y()) << "\" r=\"" << N::Number(root_radius)
-        << "\" fill=\"none\" stroke=\"#d01010\" stroke-width=\"" << N::Number(2.5 * thin)
+        << "\" fill=\"none\" stroke=\"#d01010\" stroke-width=\"" << N::Number(2.5 * thin * mark)
         << "\"><title>most concave notch: concavity " << FormatSignificant(node.concavity, 4)
         << "</title></circle>\n";
   }

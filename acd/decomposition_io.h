@@ -1,5 +1,5 @@
 #pragma once
-// Writing a decomposition: DESIGN.md's JSON contract and an SVG picture.
+// Writing a decomposition: DESIGN.md's JSON contract, GeoJSON and an SVG picture.
 
 #include <string>
 #include <vector>
@@ -23,6 +23,22 @@ std::string DecompositionToJson(const Decomposition2d& decomposition,
                                 const DecompositionLabels& labels,
                                 const std::vector<int>& input_polygons = {},
                                 const std::vector<int>& input_features = {});
+
+/// The components as GeoJSON (RFC 7946), a polygon layer for GIS tools: a FeatureCollection of
+/// one Polygon feature per component, in order (outer ring counter-clockwise, holes clockwise,
+/// rings closed), in the input's coordinates (planar; longitude/latitude only if the input
+/// was). A component's properties are its input feature's attributes (`feature_properties`, per
+/// feature as ReadPolygonsOptions gives them, joined through `input_features`), then acdplan's,
+/// which replace input attributes of the same name: "acd_component" (its index, as in the
+/// decomposition JSON, whose "openings" name it), "acd_concavity", "acd_input_polygon" and
+/// "acd_input_feature" (null where not given). The foreign member "acdplan" names the format
+/// ("acdplan.decomposition2d.geojson/1"), input, measure, tau and tau_rel. ReadGeoJson() reads
+/// it back.
+std::string DecompositionToGeoJson(const Decomposition2d& decomposition,
+                                   const DecompositionLabels& labels,
+                                   const std::vector<int>& input_polygons = {},
+                                   const std::vector<int>& input_features = {},
+                                   const std::vector<std::string>& feature_properties = {});
 
 /// An SVG a person reads at a glance: components in distinct fills, openings drawn, the most
 /// concave notches of the input marked, and a caption with tau, measure, components and time.

@@ -18,12 +18,14 @@ class GeoJsonWalker {
  public:
   explicit GeoJsonWalker(const std::string& source) : source_(source) {}
 
-  // The polygons, and per polygon its MultiPolygon and its feature (ReadGeoJson()).
+  // The polygons, per polygon its MultiPolygon and its feature, and per feature its properties
+  // (ReadGeoJson()).
   std::vector<Polygon2d> Walk(const Json& root, std::vector<int>* multipolygons,
-                              std::vector<int>* features) {
+                              std::vector<int>* features, std::vector<std::string>* properties) {
     Object(root, "");
     if (multipolygons != nullptr) *multipolygons = std::move(multipolygons_);
     if (features != nullptr) *features = std::move(features_);
+    if (properties != nullptr) *properties = std::move(properties_);
     return std::move(polygons_);
   }
 
@@ -74,6 +76,11 @@ class GeoJsonWalker {
         Object(geometries[i], Index(member, i), true);
       }
     } else if (type == "Feature" && !geometry_only) {
+      // RFC 7946 3.2: "properties" is an object or null (then, as when it is missing, none).
+      const auto properties = value.find("properties");
+      properties_.push_back(properties != value.end() && properties->is_object()
+                                ? properties->dump()
+                                : std::string("{}"));
       const auto it = value.find("geometry");
       if (it == value.end()) Fail(path, "missing member 'geometry'");
       // RFC 7946 3.2: an unlocated feature has a null geometry; it holds no polygon.
@@ -152,17 +159,19 @@ class GeoJsonWalker {
 
   const std::string& source_;
   std::vector<Polygon2d> polygons_;
-  std::vector<int> multipolygons_;  // Per polygon.
-  std::vector<int> features_;       // Per polygon.
-  int multipolygon_ = -1;           // The MultiPolygon being read, or -1.
-  int feature_ = 0;                 // The feature being read.
+  std::vector<int> multipolygons_;       // Per polygon.
+  std::vector<int> features_;            // Per polygon.
+  std::vector<std::string> properties_;  // Per Feature, in document order.
+  int multipolygon_ = -1;                // The MultiPolygon being read, or -1.
+  int feature_ = 0;                      // The feature being read.
   int multipolygon_count_ = 0;
 };
 
 }  // namespace
 
 std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source,
-                                   std::vector<int>* multipolygons, std::vector<int>* features) {
+                                   std::vector<int>* multipolygons, std::vector<int>* features,
+                                   std::vector<std::string>* properties) {
   Json root;
   try {
     root = Json::parse(in);
@@ -174,7 +183,7 @@ std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source,
     if (bracket != std::string::npos) message = message.substr(bracket + 2);
     throw InputError(source + ": invalid JSON: " + message);
   }
-  return GeoJsonWalker(source).Walk(root, multipolygons, features);
+  return GeoJsonWalker(source).Walk(root, multipolygons, features, properties);
 }
 
 }  // namespace acdplan::acd

@@ -22,10 +22,14 @@ namespace acdplan::acd {
 /// @param features  if given, receives per returned polygon the feature it belongs to: its index
 ///        in the root FeatureCollection's "features" (or the root GeometryCollection's
 ///        "geometries"), 0 when the root is a single Feature or geometry.
+/// @param properties  if given, receives per Feature (in the order `features` counts them) its
+///        "properties" as JSON object text ("{}" where they are null or missing); nothing when
+///        the root holds no Feature (a geometry, a GeometryCollection).
 /// @throws InputError naming `source`, the line (or element) and the rule broken, e.g. a
 ///         malformed or non-finite number, a wrong count, a truncated file.
 std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source,
                                    std::vector<int>* multipolygons = nullptr,
-                                   std::vector<int>* features = nullptr);
+                                   std::vector<int>* features = nullptr,
+                                   std::vector<std::string>* properties = nullptr);
 
 }  // namespace acdplan::acd

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <utility>
 
+#include "acd/dbf_reader.h"
 #include "acd/geojson_reader.h"
 #include "acd/internal/box_sweep.h"
 #include "acd/internal/disjoint_sets.h"
@@ -127,6 +128,38 @@ void RebuildOverlapping(const std::string& path,
   *sources = std::move(rebuilt_sources);
 }
 
+// The attributes of a shapefile's records, per FID: the .dbf beside `shp_path` (same name, the
+// extension in either case), read in the encoding its .cpg names; none without a .dbf. Every
+// record with a polygon (its FID in `features`) must have its row.
+std::vector<std::string> ShapefileAttributes(const std::string& shp_path,
+                                             const std::vector<int>& features,
+                                             std::vector<std::string>* notes) {
+  auto beside = [&](const char* lower, const char* upper) {
+    std::filesystem::path candidate(shp_path);
+    candidate.replace_extension(lower);
+    if (std::filesystem::exists(candidate)) return candidate.string();
+    candidate.replace_extension(upper);
+    return std::filesystem::exists(candidate) ? candidate.string() : std::string();
+  };
+  const std::string dbf_path = beside(".dbf", ".DBF");
+  if (dbf_path.empty()) {
+    notes->push_back(shp_path + ": no .dbf beside it: its features carry no attributes");
+    return {};
+  }
+  const std::string cpg_path = beside(".cpg", ".CPG");
+  const DbfEncoding encoding =
+      cpg_path.empty() ? DbfEncoding::kAuto : DbfEncodingFromCpg(ReadFile(cpg_path));
+  std::istringstream in(ReadFile(dbf_path));
+  std::vector<std::string> rows = ReadDbf(in, dbf_path, encoding, notes);
+  const int last = features.empty() ? -1 : *std::max_element(features.begin(), features.end());
+  if (last >= static_cast<int>(rows.size())) {
+    throw InputError(dbf_path + ": holds " + std::to_string(rows.size()) + " records, but " +
+                     shp_path + "'s record " + std::to_string(last + 1) +
+                     " has a shape (the .dbf has a row per record of the .shp)");
+  }
+  return rows;
+}
+
 }  // namespace
 
 bool IsPolygonFile(const std::string& path) {
@@ -143,6 +176,7 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
   std::vector<std::string> warnings;
   std::vector<int> multipolygons;  // Per polygon of the file: its MULTIPOLYGON, or -1.
   std::vector<int> features;       // Per polygon of the file: its feature (default: itself).
+  if (options.feature_properties != nullptr) options.feature_properties->clear();
   if (extension == ".poly") {
     reader = [&](std::istream& in, const std::string& source) {
       return ReadPoly(in, source, &warnings);
@@ -153,7 +187,7 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
     };
   } else if (extension == ".geojson" || extension == ".json") {
     reader = [&](std::istream& in, const std::string& source) {
-      return ReadGeoJson(in, source, &multipolygons, &features);
+      return ReadGeoJson(in, source, &multipolygons, &features, options.feature_properties);
     };
   } else if (extension == ".shp") {
     reader = [&](std::istream& in, const std::string& source) {
@@ -169,6 +203,9 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
   multipolygons.resize(polygons.size(), -1);
   for (size_t k = features.size(); k < polygons.size(); ++k) {
     features.push_back(static_cast<int>(k));
+  }
+  if (options.feature_properties != nullptr && extension == ".shp") {
+    *options.feature_properties = ShapefileAttributes(path, features, &warnings);
   }
   if (options.notes != nullptr) {
     options.notes->insert(options.notes->end(), warnings.begin(), warnings.end());

@@ -32,6 +32,13 @@ struct ReadPolygonsOptions {
   /// FeatureCollection's feature, the k-th geometry of a WKT file, the k-th polygon of a .poly
   /// file. The members of a MULTIPOLYGON share their feature, as the pieces of one polygon do.
   std::vector<int>* features = nullptr;
+  /// If given, receives per feature of the file (as `features` numbers them) its attributes as
+  /// the text of a JSON object, to carry into output: a GeoJSON Feature's "properties" ("{}" if
+  /// null), a shapefile record's row of the .dbf beside the .shp (acd/dbf_reader.h; its text
+  /// encoding from the .cpg beside them if there is one). Empty for formats without attributes
+  /// (.poly, WKT, a GeoJSON geometry) and for a shapefile without a .dbf (with a note). A .dbf
+  /// that breaks its format, or has no row for a record with a shape, is an error.
+  std::vector<std::string>* feature_properties = nullptr;
 };
 
 /// The extensions ReadPolygons() reads, for messages.

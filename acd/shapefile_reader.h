@@ -10,8 +10,8 @@ namespace acdplan::acd {
 
 /// Parses the main file (.shp) of an ESRI Shapefile (ESRI Shapefile Technical Description,
 /// 1998): shape types Polygon (5), PolygonZ (15) and PolygonM (25), whose z and m values are
-/// ignored; the .shx index and the .dbf attributes beside it are not needed. A null shape (a
-/// record without geometry) or a record without parts holds no polygon. The format gives a
+/// ignored; the .shx index is not needed (the .dbf attributes beside it: ReadDbf()). A null shape
+/// (a record without geometry) or a record without parts holds no polygon. The format gives a
 /// record's rings no structure beyond their orientation, so they are grouped by how they nest,
 /// as GIS readers do (internal::PolygonsByNesting(): outer rings, holes, islands in holes);
 /// a record whose rings form several polygons is a MultiPolygon. A ring's closing point (the

@@ -16,6 +16,9 @@ std::string AcdplanBinary();
 
 /// data/polygons/acd2d: the polygons of Lien's ACD code.
 inline const std::filesystem::path kAcd2d = std::filesystem::path(DataDir()) / "polygons" / "acd2d";
+/// data/polygons/shapefiles: ESRI shapefiles (.shp with their .dbf) written by other software.
+inline const std::filesystem::path kShapefiles =
+    std::filesystem::path(DataDir()) / "polygons" / "shapefiles";
 /// configs/ (scenarios, benchmark specifications), without a trailing slash.
 inline const std::string kConfigs = SourceDir() + "/configs";
 

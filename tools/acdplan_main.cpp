@@ -59,6 +59,7 @@ struct DecomposeArguments {
   bool no_steiner = false;
   std::string json_path;
   std::string svg_path;
+  std::string geojson_path;  ///< Polygons only.
   bool check = false;
   bool repair = false;
   // Meshes only.
@@ -147,6 +148,7 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
   options.steiner_cuts = !args.no_steiner;
   CheckOutputPath("--json", args.json_path);
   CheckOutputPath("--svg", args.svg_path);
+  CheckOutputPath("--geojson", args.geojson_path);
 
   std::vector<double> radii;       // As written in the file: the dissertation's tables use these.
   std::vector<std::string> notes;  // Reader warnings and repair changes, one line each.
@@ -158,6 +160,8 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
   std::vector<int> features;             // Per polygon: the file's feature it comes from.
   read_options.sources = &sources;
   read_options.features = &features;
+  std::vector<std::string> properties;  // Per feature: its attributes, for the GeoJSON only.
+  if (!args.geojson_path.empty()) read_options.feature_properties = &properties;
   const std::vector<acd::Polygon2d> polygons = acd::ReadPolygons(args.input, &radii, read_options);
   for (const std::string& note : notes) std::cerr << "acdplan: " << note << "\n";
   int vertices = 0;
@@ -185,6 +189,12 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
       acdplan::WriteFileAtomically(
           args.json_path, acd::DecompositionToJson(decomposition, labels, sources, features));
       written.push_back(args.json_path);
+    }
+    if (!args.geojson_path.empty()) {
+      acdplan::WriteFileAtomically(
+          args.geojson_path,
+          acd::DecompositionToGeoJson(decomposition, labels, sources, features, properties));
+      written.push_back(args.geojson_path);
     }
     if (!args.svg_path.empty()) {
       acdplan::WriteFileAtomically(args.svg_path, acd::DecompositionToSvg(decomposition, labels));
@@ -578,6 +588,10 @@ int main(int argc, char** argv) {
       "parts; < 0: no merging)");
   kinds.meshes_only.push_back(kinds.merge_growth);
   decompose->add_option("--json", args.json_path, "Write the decomposition JSON here");
+  kinds.polygons_only.push_back(decompose->add_option(
+      "--geojson", args.geojson_path,
+      "Polygons: write the components as a GeoJSON polygon layer here, each with the attributes "
+      "of its input feature (GeoJSON properties, a shapefile's .dbf row)"));
   decompose->add_option("--svg", args.svg_path,
                         "Write an SVG picture here (meshes: a shaded oblique view)");
   kinds.meshes_only.push_back(decompose->add_option(

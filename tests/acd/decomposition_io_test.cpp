@@ -195,6 +195,66 @@ TEST(DecompositionToJsonTest, EmptyDecompositionIsValid) {
   EXPECT_EQ(j.at("measure"), "sp");
 }
 
+TEST(DecompositionToGeoJsonTest, OnePolygonFeaturePerComponentAsRfc7946Asks) {
+  const Decomposition2d d = HandBuilt();
+  const json j = json::parse(DecompositionToGeoJson(d, {"shapes/l.poly", 0.025}));
+  EXPECT_EQ(j.at("type"), "FeatureCollection");
+  EXPECT_EQ(j.at("acdplan").at("format"), "acdplan.decomposition2d.geojson/1");
+  EXPECT_EQ(j.at("acdplan").at("input"), "shapes/l.poly");
+  EXPECT_EQ(j.at("acdplan").at("measure"), "sl");
+  EXPECT_EQ(j.at("acdplan").at("tau").get<double>(), 0.1);
+  EXPECT_EQ(j.at("acdplan").at("tau_rel").get<double>(), 0.025);
+  const json& features = j.at("features");
+  ASSERT_EQ(features.size(), d.components.size());
+  for (size_t k = 0; k < features.size(); ++k) {
+    const Polygon2d& polygon = d.components[k].polygon;
+    const json& feature = features[k];
+    EXPECT_EQ(feature.at("type"), "Feature");
+    EXPECT_EQ(feature.at("geometry").at("type"), "Polygon");
+    const json& rings = feature.at("geometry").at("coordinates");
+    ASSERT_EQ(rings.size(), 1 + polygon.holes.size());
+    for (size_t r = 0; r < rings.size(); ++r) {
+      const Ring2d& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
+      ASSERT_EQ(rings[r].size(), ring.size() + 1) << "closed";
+      for (size_t i = 0; i <= ring.size(); ++i) {
+        const Point2d& p = ring[i % ring.size()];
+        EXPECT_EQ(rings[r][i], json::array({p.x(), p.y()}));
+      }
+    }
+    const json& properties = feature.at("properties");
+    EXPECT_EQ(properties.at("acd_component"), k);
+    EXPECT_EQ(properties.at("acd_concavity").get<double>(), d.components[k].concavity);  // Exact.
+    EXPECT_TRUE(properties.at("acd_input_polygon").is_null());
+    EXPECT_TRUE(properties.at("acd_input_feature").is_null());
+  }
+}
+
+// Each component carries its input feature's attributes, then acdplan's (which win a clash).
+TEST(DecompositionToGeoJsonTest, ComponentsCarryTheirInputFeaturesAttributes) {
+  const std::vector<std::string> attributes = {R"({"NAME":"Ashe","AREA":0.114})",
+                                               R"({"NAME":"Wake","acd_component":"theirs"})"};
+  const json j = json::parse(
+      DecompositionToGeoJson(HandBuilt(), {"nc.shp", -1.0}, {4, 9}, {1, 0}, attributes));
+  EXPECT_TRUE(j.at("acdplan").at("tau_rel").is_null());
+  const json& features = j.at("features");
+  ASSERT_EQ(features.size(), 3u);
+  for (int k : {0, 1}) {  // Source 0: input polygon 4, feature 1.
+    const json& properties = features[k].at("properties");
+    EXPECT_EQ(properties.at("NAME"), "Wake");
+    EXPECT_EQ(properties.at("acd_component"), k);
+    EXPECT_EQ(properties.at("acd_input_polygon"), 4);
+    EXPECT_EQ(properties.at("acd_input_feature"), 1);
+  }
+  const json& third = features[2].at("properties");  // Source 1: input polygon 9, feature 0.
+  EXPECT_EQ(third.at("NAME"), "Ashe");
+  EXPECT_EQ(third.at("AREA").get<double>(), 0.114);
+  EXPECT_EQ(third.at("acd_input_feature"), 0);
+  // The input's attributes come first, in their order.
+  const nlohmann::ordered_json ordered = nlohmann::ordered_json::parse(
+      DecompositionToGeoJson(HandBuilt(), {}, {4, 9}, {1, 0}, attributes));
+  EXPECT_EQ(ordered.at("features")[2].at("properties").begin().key(), "NAME");
+}
+
 TEST(DecompositionToSvgTest, DrawsComponentsOpeningsNotchesAndCaption) {
   const std::string svg = DecompositionToSvg(HandBuilt(), {"shapes/l&r.poly", 0.025});
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
@@ -218,6 +278,32 @@ TEST(DecompositionToSvgTest, DrawsComponentsOpeningsNotchesAndCaption) {
   EXPECT_NE(svg.find("3 components"), std::string::npos);
   EXPECT_NE(svg.find("convexity 0.99"), std::string::npos);
   EXPECT_NE(svg.find("1.25 ms"), std::string::npos);
+}
+
+// The radius of the first resolved notch drawn in `svg`.
+double FirstNotchRadius(const std::string& svg) {
+  const size_t notch = svg.find("class=\"resolved-notch\"");
+  const size_t r = svg.find(" r=\"", notch);
+  if (notch == std::string::npos || r == std::string::npos) return -1.0;
+  return std::stod(svg.substr(r + 4));
+}
+
+// A map of many polygons has many notches in one picture: they are drawn smaller, so that
+// neighbours stay apart; a single polygon keeps full-size marks.
+TEST(DecompositionToSvgTest, MarksShrinkWhereManyShareThePicture) {
+  const Decomposition2d few = HandBuilt();
+  Decomposition2d many = HandBuilt();
+  for (int k = 0; k < 2000; ++k) {  // Split nodes (a child set) on a diagonal.
+    HierarchyNode2d node;
+    node.children[0] = 1;
+    node.witness = {0.001 * k, 0.0015 * k};
+    many.tree.push_back(node);
+  }
+  const double full = FirstNotchRadius(DecompositionToSvg(few, {"few", -1.0}));
+  const double small = FirstNotchRadius(DecompositionToSvg(many, {"many", -1.0}));
+  EXPECT_DOUBLE_EQ(full, 5.4);
+  EXPECT_GT(small, 0.0);
+  EXPECT_LT(small, 0.5 * full);
 }
 
 TEST(DecompositionToSvgTest, FlipsTheYAxis) {

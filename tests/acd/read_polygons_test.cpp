@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/file_io.h"
 #include "base/input_error.h"
 #include "tests/data_paths.h"
 #include "tests/input_error_of.h"
@@ -21,6 +22,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 using acdplan::test::kAcd2d;
+using acdplan::test::kShapefiles;
 
 std::string ReadErrorOf(const std::string& path) {
   return acdplan::test::InputErrorOf([&] { ReadPolygons(path); });
@@ -197,6 +199,67 @@ TEST(ReadPolygonsTest, FeaturesMapPolygonsBackToTheFilesFeatures) {
     ReadPolygons(path, nullptr, options);
     EXPECT_EQ(features, expected) << path;
   }
+}
+
+// The attributes of each feature, to carry into output: a GeoJSON Feature's properties; none for
+// formats without attributes.
+TEST(ReadPolygonsTest, FeaturePropertiesOfGeoJsonFeatures) {
+  const std::string geojson = WriteTemp("properties.geojson", R"({"type": "FeatureCollection",
+    "features": [
+      {"type": "Feature", "properties": {"name": "field", "area_ha": 4.5},
+       "geometry": {"type": "Polygon", "coordinates": [[[0,0],[2,0],[2,2],[0,2],[0,0]]]}},
+      {"type": "Feature", "properties": null, "geometry": null},
+      {"type": "Feature", "properties": {"name": "barn", "tags": ["a", "b"]},
+       "geometry": {"type": "Polygon", "coordinates": [[[30,0],[32,0],[32,2],[30,2],[30,0]]]}}]})");
+  ReadPolygonsOptions options;
+  std::vector<std::string> properties = {"stale"};
+  options.feature_properties = &properties;
+  ReadPolygons(geojson, nullptr, options);
+  EXPECT_EQ(properties, (std::vector<std::string>{R"({"area_ha":4.5,"name":"field"})", "{}",
+                                                  R"({"name":"barn","tags":["a","b"]})"}));
+  properties = {"stale"};
+  ReadPolygons(WriteTemp("none.wkt", "POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))\n"), nullptr, options);
+  EXPECT_TRUE(properties.empty());
+}
+
+// A shapefile's attributes are the rows of the .dbf beside it, one per record (FID); a record
+// without a row is an error, a missing .dbf a note.
+TEST(ReadPolygonsTest, FeaturePropertiesOfShapefileRecordsFromTheDbf) {
+  ReadPolygonsOptions options;
+  std::vector<std::string> properties;
+  std::vector<int> features;
+  options.feature_properties = &properties;
+  options.features = &features;
+  const std::vector<Polygon2d> counties =
+      ReadPolygons((kShapefiles / "nc.shp").string(), nullptr, options);
+  ASSERT_EQ(properties.size(), 100u);
+  EXPECT_THAT(properties[0], HasSubstr(R"("NAME":"Ashe")"));
+  EXPECT_THAT(properties[99], HasSubstr(R"("NAME":"Brunswick")"));
+  ASSERT_EQ(features.size(), counties.size());
+  EXPECT_EQ(features.front(), 0);
+  EXPECT_EQ(features.back(), 99);
+
+  // Copies: without the .dbf; with a .dbf of fewer rows than records.
+  const std::string shp = WriteTemp("counties.shp", ReadFile((kShapefiles / "nc.shp").string()));
+  std::vector<std::string> notes;
+  options.notes = &notes;
+  ReadPolygons(shp, nullptr, options);
+  EXPECT_TRUE(properties.empty());
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_THAT(notes[0], HasSubstr("no .dbf beside it"));
+  // nc.dbf cut to its first 99 rows: the header's count says 99 too.
+  std::string short_dbf = ReadFile((kShapefiles / "nc.dbf").string());
+  auto uint16_at = [&](size_t at) {
+    return static_cast<unsigned char>(short_dbf[at]) | static_cast<unsigned char>(short_dbf[at + 1])
+                                                           << 8;
+  };
+  const int header = uint16_at(8), row = uint16_at(10);
+  short_dbf[4] = 99;  // The record count's low byte: 100 -> 99.
+  short_dbf.resize(static_cast<size_t>(header + 99 * row));
+  WriteTemp("counties.dbf", short_dbf);
+  EXPECT_THAT(
+      acdplan::test::InputErrorOf([&] { ReadPolygons(shp, nullptr, options); }),
+      HasSubstr("counties.dbf: holds 99 records, but " + shp + "'s record 100 has a shape"));
 }
 
 TEST(ReadPolygonsTest, NazcaMonkeyAndNeuronCounts) {

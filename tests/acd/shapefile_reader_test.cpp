@@ -25,7 +25,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kShapefiles = acdplan::test::DataDir() + "/polygons/shapefiles";
+using acdplan::test::kShapefiles;
 
 // A polygon record as a writer lays it out: its parts as written (closing points included).
 struct Record {
@@ -192,7 +192,7 @@ TEST(ShapefileReaderTest, BadFilesNameTheRuleAndWhere) {
 // reader (pyshp 2.3.1): parts, and points less the closing ones.
 TEST(ShapefileReaderTest, ReadsFilesOfOtherWriters) {
   for (const char* name : {"polygon.shp", "polygonm.shp", "polygonz.shp"}) {
-    std::ifstream in(kShapefiles + "/go-shp/" + name, std::ios::binary);
+    std::ifstream in(kShapefiles / "go-shp" / name, std::ios::binary);
     const std::vector<Polygon2d> polygons = ReadShapefile(in, name);
     ASSERT_EQ(polygons.size(), 1u) << name;
     EXPECT_EQ(polygons[0].outer, Ring2d({{0, 0}, {0, 5}, {5, 5}, {5, 0}})) << name;
@@ -203,7 +203,7 @@ TEST(ShapefileReaderTest, ReadsFilesOfOtherWriters) {
   };
   for (const Expected& e :
        {Expected{"nc.shp", 108, 2421, 14}, Expected{"olinda1.shp", 470, 12235, 0}}) {
-    std::ifstream in(kShapefiles + "/" + e.name, std::ios::binary);
+    std::ifstream in(kShapefiles / e.name, std::ios::binary);
     std::vector<int> multipolygons;
     const std::vector<Polygon2d> polygons = ReadShapefile(in, e.name, &multipolygons);
     EXPECT_EQ(polygons.size(), e.polygons) << e.name;
@@ -225,7 +225,8 @@ TEST(ShapefileReaderTest, RealShapefilesDecompose) {
     std::vector<double> radii;
     ReadPolygonsOptions options;
     options.disjoint_members = true;
-    const std::vector<Polygon2d> polygons = ReadPolygons(kShapefiles + "/" + name, &radii, options);
+    const std::vector<Polygon2d> polygons =
+        ReadPolygons((kShapefiles / name).string(), &radii, options);
     Decompose2dOptions decompose;
     decompose.measure = ConcavityMeasure::kShortestPath;
     decompose.tau = 0.01 * *std::max_element(radii.begin(), radii.end());

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <filesystem>
@@ -158,6 +159,46 @@ TEST_F(CliTest, DecomposesAndWritesJsonAndSvg) {
   const std::string svg = Read(svg_path);
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_NE(svg.find("simple1.poly"), std::string::npos);
+}
+
+// A GIS user's round: a shapefile in, a GeoJSON polygon layer out whose components carry their
+// county's attributes (from nc.dbf), which acdplan reads back as polygons.
+TEST_F(CliTest, DecomposesAShapefileIntoGeoJsonWithTheDbfAttributes) {
+  const fs::path geojson_path = dir_ / "nc.geojson";
+  const fs::path json_path = dir_ / "nc.json";
+  const RunResult run =
+      Acdplan("decompose " + Quote((acdplan::test::kShapefiles / "nc.shp").string()) +
+              " --tau-rel 0.05 --measure sl --json " + Quote(json_path.string()) + " --geojson " +
+              Quote(geojson_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_TRUE(run.err.empty()) << run.err;
+  EXPECT_NE(run.out.find(geojson_path.string()), std::string::npos) << run.out;
+  const nlohmann::json decomposition = nlohmann::json::parse(Read(json_path));
+  const nlohmann::json layer = nlohmann::json::parse(Read(geojson_path));
+  EXPECT_EQ(layer.at("type"), "FeatureCollection");
+  const nlohmann::json& features = layer.at("features");
+  ASSERT_EQ(features.size(), decomposition.at("components").size());
+  std::vector<bool> county_seen(100, false);
+  for (size_t k = 0; k < features.size(); ++k) {
+    const nlohmann::json& properties = features[k].at("properties");
+    const int county = properties.at("acd_input_feature").get<int>();
+    ASSERT_GE(county, 0);
+    ASSERT_LT(county, 100);
+    county_seen[static_cast<size_t>(county)] = true;
+    EXPECT_EQ(county, decomposition.at("components")[k].at("input_feature"));
+    EXPECT_EQ(properties.at("acd_component"), k);
+    EXPECT_TRUE(properties.at("NAME").is_string());
+    if (county == 0) {
+      EXPECT_EQ(properties.at("NAME"), "Ashe");
+    }
+  }
+  EXPECT_EQ(std::count(county_seen.begin(), county_seen.end(), true), 100);
+
+  // Read back as input: one polygon per component.
+  const RunResult again = Acdplan("decompose " + Quote(geojson_path.string()) + " --tau-rel 1");
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_NE(again.out.find(std::to_string(features.size()) + " polygons"), std::string::npos)
+      << again.out;
 }
 
 TEST_F(CliTest, EnvReportsA2dWorldAndDrawsItsDecomposition) {
@@ -540,7 +581,8 @@ TEST_F(CliTest, MeshErrorsNameTheFileAndTheRule) {
   run = Acdplan("decompose " + box + " --measure sl");
   ExpectUsageError(run);
   EXPECT_NE(run.err.find("--measure: applies to polygon files only"), std::string::npos) << run.err;
-  for (const char* option : {"--min-convexity 0.5", "--hole-diameter pa", "--no-steiner"}) {
+  for (const char* option :
+       {"--min-convexity 0.5", "--hole-diameter pa", "--no-steiner", "--geojson x.geojson"}) {
     ExpectUsageError(Acdplan("decompose " + box + " " + option));
   }
   const std::string polygon = Quote(kPolygons + "simple1.poly");
