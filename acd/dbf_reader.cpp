@@ -466,7 +466,11 @@ std::vector<std::string> ReadDbf(std::istream& in, const std::string& source, Db
                       std::to_string(invalid) + ")";
             break;
           }
-          value = nlohmann::ordered_json(DbfTextAsUtf8(text, encoding, &undefined, where)).dump();
+          // dBase has no null; blank text is read as one, as GDAL does.
+          value =
+              text.empty()
+                  ? "null"
+                  : nlohmann::ordered_json(DbfTextAsUtf8(text, encoding, &undefined, where)).dump();
           break;
         }
         case 'L':

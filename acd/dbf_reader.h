@@ -34,7 +34,7 @@ DbfEncoding DbfEncodingFromCpg(const std::string& cpg_text);
 /// the file's order, as nlohmann::ordered_json's dump() writes it), e.g.
 /// {"AREA":0.114,"NAME":"Ashe","CRESS_ID":5}. Values by field type:
 ///  - C (character): the text with trailing blanks and NULs trimmed (leading blanks kept), as a
-///    string in UTF-8 (below).
+///    string in UTF-8 (below); blank text is null, as GDAL reads it (dBase has no null).
 ///  - N, F (number): blanks and NULs around trimmed; empty, only '*' (an overflow) or only '.'
 ///    is null; else the whole text must be one decimal number (optional sign, digits, optional
 ///    point and digits, optional exponent): an integer when it has no '.', 'e' or 'E' and fits

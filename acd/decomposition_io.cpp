@@ -126,10 +126,10 @@ std::string DecompositionToGeoJson(const Decomposition2d& decomposition,
     const int polygon = Mapped(input_polygons, component.source);
     const int feature = Mapped(input_features, component.source);
     Json properties = attributes_of(feature);
-    properties["acd_component"] = k;
-    properties["acd_concavity"] = component.concavity;
-    properties["acd_input_polygon"] = polygon >= 0 ? Json(polygon) : Json(nullptr);
-    properties["acd_input_feature"] = feature >= 0 ? Json(feature) : Json(nullptr);
+    properties["acd_id"] = k;
+    properties["acd_concav"] = component.concavity;
+    properties["acd_poly"] = polygon >= 0 ? Json(polygon) : Json(nullptr);
+    properties["acd_feat"] = feature >= 0 ? Json(feature) : Json(nullptr);
     features.push_back({{"type", "Feature"},
                         {"geometry", {{"type", "Polygon"}, {"coordinates", std::move(rings)}}},
                         {"properties", std::move(properties)}});

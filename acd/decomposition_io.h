@@ -29,11 +29,12 @@ std::string DecompositionToJson(const Decomposition2d& decomposition,
 /// rings closed), in the input's coordinates (planar; longitude/latitude only if the input
 /// was). A component's properties are its input feature's attributes (`feature_properties`, per
 /// feature as ReadPolygonsOptions gives them, joined through `input_features`), then acdplan's,
-/// which replace input attributes of the same name: "acd_component" (its index, as in the
-/// decomposition JSON, whose "openings" name it), "acd_concavity", "acd_input_polygon" and
-/// "acd_input_feature" (null where not given). The foreign member "acdplan" names the format
-/// ("acdplan.decomposition2d.geojson/1"), input, measure, tau and tau_rel. ReadGeoJson() reads
-/// it back.
+/// which replace input attributes of the same name, named to fit a shapefile's 10 characters
+/// (ogr2ogr keeps them): "acd_id" (the component's index, as in the decomposition JSON, whose
+/// "openings" name it), "acd_concav" (its concavity), "acd_poly" and "acd_feat" (its input
+/// polygon and feature: the JSON's "input_polygon" and "input_feature"; null where not given).
+/// The foreign member "acdplan" names the format ("acdplan.decomposition2d.geojson/1"), input,
+/// measure, tau and tau_rel. ReadGeoJson() reads it back.
 std::string DecompositionToGeoJson(const Decomposition2d& decomposition,
                                    const DecompositionLabels& labels,
                                    const std::vector<int>& input_polygons = {},

@@ -130,17 +130,20 @@ TEST(DbfReaderTest, ReadsEachTypeInFieldOrder) {
       ReadDbfBytes(DbfBytes(table), DbfEncoding::kAuto, &warnings);
   EXPECT_THAT(rows, ElementsAre(R"({"NAME":"  Ashe","AREA":0.114,"COUNT":5,"RATIO":-0.0015,)"
                                 R"("OPEN":true,"SURVEYED":"1999-07-31"})",
-                                R"({"NAME":"","AREA":null,"COUNT":null,"RATIO":null,)"
+                                R"({"NAME":null,"AREA":null,"COUNT":null,"RATIO":null,)"
                                 R"("OPEN":null,"SURVEYED":null})"));
   EXPECT_THAT(warnings, ElementsAre());
   // The text is what ordered_json writes.
   for (const std::string& row : rows) EXPECT_EQ(nlohmann::ordered_json::parse(row).dump(), row);
 }
 
+// Blank text is null, as GDAL reads it.
 TEST(DbfReaderTest, TrimsCharacterFieldsOfTrailingBlanksAndNuls) {
-  const DbfTable table = OneFieldTable(
-      'C', 8, {std::string("ab c\0\0\0\0", 8), std::string("x  \0 \0  ", 8), " lead"});
-  EXPECT_THAT(DbfValues(table), ElementsAre(R"("ab c")", R"("x")", R"(" lead")"));
+  const DbfTable table =
+      OneFieldTable('C', 8,
+                    {std::string("ab c\0\0\0\0", 8), std::string("x  \0 \0  ", 8), " lead",
+                     std::string(8, ' '), std::string(8, '\0')});
+  EXPECT_THAT(DbfValues(table), ElementsAre(R"("ab c")", R"("x")", R"(" lead")", "null", "null"));
 }
 
 TEST(DbfReaderTest, NumbersAreIntegersWithoutPointOrExponentElseDoubles) {

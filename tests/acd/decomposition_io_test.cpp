@@ -222,17 +222,17 @@ TEST(DecompositionToGeoJsonTest, OnePolygonFeaturePerComponentAsRfc7946Asks) {
       }
     }
     const json& properties = feature.at("properties");
-    EXPECT_EQ(properties.at("acd_component"), k);
-    EXPECT_EQ(properties.at("acd_concavity").get<double>(), d.components[k].concavity);  // Exact.
-    EXPECT_TRUE(properties.at("acd_input_polygon").is_null());
-    EXPECT_TRUE(properties.at("acd_input_feature").is_null());
+    EXPECT_EQ(properties.at("acd_id"), k);
+    EXPECT_EQ(properties.at("acd_concav").get<double>(), d.components[k].concavity);  // Exact.
+    EXPECT_TRUE(properties.at("acd_poly").is_null());
+    EXPECT_TRUE(properties.at("acd_feat").is_null());
   }
 }
 
 // Each component carries its input feature's attributes, then acdplan's (which win a clash).
 TEST(DecompositionToGeoJsonTest, ComponentsCarryTheirInputFeaturesAttributes) {
   const std::vector<std::string> attributes = {R"({"NAME":"Ashe","AREA":0.114})",
-                                               R"({"NAME":"Wake","acd_component":"theirs"})"};
+                                               R"({"NAME":"Wake","acd_id":"theirs"})"};
   const json j = json::parse(
       DecompositionToGeoJson(HandBuilt(), {"nc.shp", -1.0}, {4, 9}, {1, 0}, attributes));
   EXPECT_TRUE(j.at("acdplan").at("tau_rel").is_null());
@@ -241,14 +241,14 @@ TEST(DecompositionToGeoJsonTest, ComponentsCarryTheirInputFeaturesAttributes) {
   for (int k : {0, 1}) {  // Source 0: input polygon 4, feature 1.
     const json& properties = features[k].at("properties");
     EXPECT_EQ(properties.at("NAME"), "Wake");
-    EXPECT_EQ(properties.at("acd_component"), k);
-    EXPECT_EQ(properties.at("acd_input_polygon"), 4);
-    EXPECT_EQ(properties.at("acd_input_feature"), 1);
+    EXPECT_EQ(properties.at("acd_id"), k);
+    EXPECT_EQ(properties.at("acd_poly"), 4);
+    EXPECT_EQ(properties.at("acd_feat"), 1);
   }
   const json& third = features[2].at("properties");  // Source 1: input polygon 9, feature 0.
   EXPECT_EQ(third.at("NAME"), "Ashe");
   EXPECT_EQ(third.at("AREA").get<double>(), 0.114);
-  EXPECT_EQ(third.at("acd_input_feature"), 0);
+  EXPECT_EQ(third.at("acd_feat"), 0);
   // The input's attributes come first, in their order.
   const nlohmann::ordered_json ordered = nlohmann::ordered_json::parse(
       DecompositionToGeoJson(HandBuilt(), {}, {4, 9}, {1, 0}, attributes));

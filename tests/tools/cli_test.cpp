@@ -181,12 +181,12 @@ TEST_F(CliTest, DecomposesAShapefileIntoGeoJsonWithTheDbfAttributes) {
   std::vector<bool> county_seen(100, false);
   for (size_t k = 0; k < features.size(); ++k) {
     const nlohmann::json& properties = features[k].at("properties");
-    const int county = properties.at("acd_input_feature").get<int>();
+    const int county = properties.at("acd_feat").get<int>();
     ASSERT_GE(county, 0);
     ASSERT_LT(county, 100);
     county_seen[static_cast<size_t>(county)] = true;
     EXPECT_EQ(county, decomposition.at("components")[k].at("input_feature"));
-    EXPECT_EQ(properties.at("acd_component"), k);
+    EXPECT_EQ(properties.at("acd_id"), k);
     EXPECT_TRUE(properties.at("NAME").is_string());
     if (county == 0) {
       EXPECT_EQ(properties.at("NAME"), "Ashe");
