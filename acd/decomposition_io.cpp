@@ -172,8 +172,8 @@ std::string DecompositionToSvg(const Decomposition2d& decomposition,
   using N = SvgCanvas;
   const double thin = 1.35;
   // The marks (notches, openings) shrink where many share the picture, as on a map of many
-  // polygons, so that neighbours stay apart: to the spacing they would have spread evenly over
-  // the drawing, full size from 64 px on, a quarter at most.
+  // polygons, so that neighbours stay apart: with the spacing they would have spread evenly over
+  // the drawing; full size from 64 px on, down to a quarter of it.
   int marks = 0;
   for (const HierarchyNode2d& node : decomposition.tree) marks += node.children[0] >= 0 ? 1 : 0;
   const Eigen::Vector2d drawing = bounds.sizes() * canvas.scale();

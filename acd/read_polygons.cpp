@@ -128,25 +128,52 @@ void RebuildOverlapping(const std::string& path,
   *sources = std::move(rebuilt_sources);
 }
 
-// The attributes of a shapefile's records, per FID: the .dbf beside `shp_path` (same name, the
-// extension in either case), read in the encoding its .cpg names; none without a .dbf. Every
-// record with a polygon (its FID in `features`) must have its row.
+// The file beside a shapefile's .shp with the same name and extension `lower` or `upper`
+// (shapefiles come in either case), or "" if there is none.
+std::string BesideShapefile(const std::string& shp_path, const char* lower, const char* upper) {
+  std::filesystem::path candidate(shp_path);
+  candidate.replace_extension(lower);
+  if (std::filesystem::exists(candidate)) return candidate.string();
+  candidate.replace_extension(upper);
+  return std::filesystem::exists(candidate) ? candidate.string() : std::string();
+}
+
+// A note when the .prj beside a shapefile declares geographic coordinates (WKT 1's GEOGCS, WKT
+// 2's GEOGCRS or GEODCRS at the top): they are decomposed as planar x = longitude, y = latitude,
+// so shapes are stretched east-west by 1 / cos(latitude) and tau is in degrees.
+void NoteGeographicCoordinates(const std::string& shp_path, std::vector<std::string>* notes) {
+  const std::string prj_path = BesideShapefile(shp_path, ".prj", ".PRJ");
+  if (prj_path.empty()) return;
+  const std::string wkt = ReadFile(prj_path);
+  const size_t start = wkt.find_first_not_of(" \t\r\n\xEF\xBB\xBF");  // (And a byte order mark.)
+  const size_t bracket = wkt.find('[', start);
+  if (start == std::string::npos || bracket == std::string::npos) return;
+  const std::string keyword = internal::ToLower(wkt.substr(start, bracket - start));
+  if (keyword != "geogcs" && keyword != "geogcrs" && keyword != "geodcrs") return;
+  const size_t name_begin = wkt.find('"', bracket);
+  const size_t name_end =
+      name_begin == std::string::npos ? name_begin : wkt.find('"', name_begin + 1);
+  const std::string name = name_end == std::string::npos
+                               ? std::string()
+                               : " " + wkt.substr(name_begin, name_end - name_begin + 1);
+  notes->push_back(prj_path + ": geographic coordinates (" + wkt.substr(start, bracket - start) +
+                   name +
+                   "): decomposed as planar x = longitude, y = latitude, so shapes are stretched "
+                   "east-west and tau is in degrees; project the data first for true shapes");
+}
+
+// The attributes of a shapefile's records, per FID: the .dbf beside `shp_path`, read in the
+// encoding the .cpg beside it names; none without a .dbf. Every record with a polygon (its FID
+// in `features`) must have its row.
 std::vector<std::string> ShapefileAttributes(const std::string& shp_path,
                                              const std::vector<int>& features,
                                              std::vector<std::string>* notes) {
-  auto beside = [&](const char* lower, const char* upper) {
-    std::filesystem::path candidate(shp_path);
-    candidate.replace_extension(lower);
-    if (std::filesystem::exists(candidate)) return candidate.string();
-    candidate.replace_extension(upper);
-    return std::filesystem::exists(candidate) ? candidate.string() : std::string();
-  };
-  const std::string dbf_path = beside(".dbf", ".DBF");
+  const std::string dbf_path = BesideShapefile(shp_path, ".dbf", ".DBF");
   if (dbf_path.empty()) {
     notes->push_back(shp_path + ": no .dbf beside it: its features carry no attributes");
     return {};
   }
-  const std::string cpg_path = beside(".cpg", ".CPG");
+  const std::string cpg_path = BesideShapefile(shp_path, ".cpg", ".CPG");
   const DbfEncoding encoding =
       cpg_path.empty() ? DbfEncoding::kAuto : DbfEncodingFromCpg(ReadFile(cpg_path));
   std::istringstream in(ReadFile(dbf_path));
@@ -204,8 +231,11 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
   for (size_t k = features.size(); k < polygons.size(); ++k) {
     features.push_back(static_cast<int>(k));
   }
-  if (options.feature_properties != nullptr && extension == ".shp") {
-    *options.feature_properties = ShapefileAttributes(path, features, &warnings);
+  if (extension == ".shp") {
+    NoteGeographicCoordinates(path, &warnings);
+    if (options.feature_properties != nullptr) {
+      *options.feature_properties = ShapefileAttributes(path, features, &warnings);
+    }
   }
   if (options.notes != nullptr) {
     options.notes->insert(options.notes->end(), warnings.begin(), warnings.end());

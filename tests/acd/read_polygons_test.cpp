@@ -19,6 +19,7 @@ namespace acdplan::acd {
 namespace {
 
 namespace fs = std::filesystem;
+using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
 using acdplan::test::kAcd2d;
@@ -239,14 +240,13 @@ TEST(ReadPolygonsTest, FeaturePropertiesOfShapefileRecordsFromTheDbf) {
   EXPECT_EQ(features.front(), 0);
   EXPECT_EQ(features.back(), 99);
 
-  // Copies: without the .dbf; with a .dbf of fewer rows than records.
+  // Copies: without the .dbf (nor a .prj); with a .dbf of fewer rows than records.
   const std::string shp = WriteTemp("counties.shp", ReadFile((kShapefiles / "nc.shp").string()));
   std::vector<std::string> notes;
   options.notes = &notes;
   ReadPolygons(shp, nullptr, options);
   EXPECT_TRUE(properties.empty());
-  ASSERT_EQ(notes.size(), 1u);
-  EXPECT_THAT(notes[0], HasSubstr("no .dbf beside it"));
+  EXPECT_THAT(notes, ElementsAre(HasSubstr("no .dbf beside it")));
   // nc.dbf cut to its first 99 rows: the header's count says 99 too.
   std::string short_dbf = ReadFile((kShapefiles / "nc.dbf").string());
   auto uint16_at = [&](size_t at) {
@@ -260,6 +260,31 @@ TEST(ReadPolygonsTest, FeaturePropertiesOfShapefileRecordsFromTheDbf) {
   EXPECT_THAT(
       acdplan::test::InputErrorOf([&] { ReadPolygons(shp, nullptr, options); }),
       HasSubstr("counties.dbf: holds 99 records, but " + shp + "'s record 100 has a shape"));
+}
+
+// Longitude/latitude decomposed as planar distorts shapes: a .prj that says so gets a note, a
+// projected one none.
+TEST(ReadPolygonsTest, GeographicCoordinatesOfAShapefileGetANote) {
+  ReadPolygonsOptions options;
+  std::vector<std::string> notes;
+  options.notes = &notes;
+  ReadPolygons((kShapefiles / "nc.shp").string(), nullptr, options);
+  EXPECT_THAT(notes, ElementsAre(HasSubstr(
+                         "nc.prj: geographic coordinates (GEOGCS \"GCS_North_American_1927\"): "
+                         "decomposed as planar x = longitude, y = latitude")));
+  const std::string shp = WriteTemp("tracts.shp", ReadFile((kShapefiles / "olinda1.shp").string()));
+  for (const std::string& prj :
+       {std::string("PROJCS[\"SIRGAS 2000 / UTM zone 25S\",GEOGCS[\"SIRGAS 2000\"]]"),
+        std::string("\n  geogcrs[\"WGS 84\",DATUM[\"World Geodetic System 1984\"]]")}) {
+    WriteTemp("tracts.prj", prj);
+    notes.clear();
+    ReadPolygons(shp, nullptr, options);
+    if (prj[0] == 'P') {
+      EXPECT_THAT(notes, ElementsAre()) << prj;
+    } else {
+      EXPECT_THAT(notes, ElementsAre(HasSubstr("(geogcrs \"WGS 84\")"))) << prj;
+    }
+  }
 }
 
 TEST(ReadPolygonsTest, NazcaMonkeyAndNeuronCounts) {
