@@ -10,7 +10,8 @@
 namespace acdplan::acd {
 namespace {
 
-using Json = nlohmann::json;
+// Ordered: a Feature's properties are handed on in the file's order (ReadGeoJson()).
+using Json = nlohmann::ordered_json;
 
 // Walks a parsed document; `path` names the element in messages: "features[2].geometry",
 // "coordinates[0][3]", or "root" for the document itself.

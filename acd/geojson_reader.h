@@ -23,7 +23,8 @@ namespace acdplan::acd {
 ///        in the root FeatureCollection's "features" (or the root GeometryCollection's
 ///        "geometries"), 0 when the root is a single Feature or geometry.
 /// @param properties  if given, receives per Feature (in the order `features` counts them) its
-///        "properties" as JSON object text ("{}" where they are null or missing); nothing when
+///        "properties" as JSON object text, members in the file's order ("{}" where they are
+///        null or missing); nothing when
 ///        the root holds no Feature (a geometry, a GeometryCollection).
 /// @throws InputError naming `source`, the line (or element) and the rule broken, e.g. a
 ///         malformed or non-finite number, a wrong count, a truncated file.

@@ -202,8 +202,8 @@ TEST(ReadPolygonsTest, FeaturesMapPolygonsBackToTheFilesFeatures) {
   }
 }
 
-// The attributes of each feature, to carry into output: a GeoJSON Feature's properties; none for
-// formats without attributes.
+// The attributes of each feature, to carry into output: a GeoJSON Feature's properties, in the
+// file's order; none for formats without attributes.
 TEST(ReadPolygonsTest, FeaturePropertiesOfGeoJsonFeatures) {
   const std::string geojson = WriteTemp("properties.geojson", R"({"type": "FeatureCollection",
     "features": [
@@ -216,7 +216,7 @@ TEST(ReadPolygonsTest, FeaturePropertiesOfGeoJsonFeatures) {
   std::vector<std::string> properties = {"stale"};
   options.feature_properties = &properties;
   ReadPolygons(geojson, nullptr, options);
-  EXPECT_EQ(properties, (std::vector<std::string>{R"({"area_ha":4.5,"name":"field"})", "{}",
+  EXPECT_EQ(properties, (std::vector<std::string>{R"({"name":"field","area_ha":4.5})", "{}",
                                                   R"({"name":"barn","tags":["a","b"]})"}));
   properties = {"stale"};
   ReadPolygons(WriteTemp("none.wkt", "POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))\n"), nullptr, options);
