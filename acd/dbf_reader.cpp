@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "acd/internal/byte_order.h"
 #include "acd/internal/text_parsing.h"
 #include "base/format.h"
 #include "base/input_error.h"
@@ -38,15 +39,7 @@ struct DbfField {
   std::int64_t descriptor = 0;  // The byte its descriptor starts at.
 };
 
-unsigned DbfByte(const std::string& bytes, std::int64_t at) {
-  return static_cast<unsigned char>(bytes[static_cast<size_t>(at)]);
-}
-std::int64_t DbfUint16(const std::string& bytes, std::int64_t at) {
-  return DbfByte(bytes, at) | DbfByte(bytes, at + 1) << 8;
-}
-std::int64_t DbfUint32(const std::string& bytes, std::int64_t at) {
-  return static_cast<std::int64_t>(DbfUint16(bytes, at)) | DbfUint16(bytes, at + 2) << 16;
-}
+using internal::ByteAt;
 
 std::string HexByte(unsigned byte) {
   static constexpr char kDigits[] = "0123456789ABCDEF";
@@ -231,7 +224,7 @@ std::vector<DbfField> ReadDbfFields(const std::string& bytes, std::int64_t heade
   std::vector<DbfField> fields;
   std::int64_t offset = 0;
   for (std::int64_t at = kDbfHeaderBytes;; at += kDbfDescriptorBytes) {
-    if (at < header_length && DbfByte(bytes, at) == kDbfDescriptorsEnd) break;
+    if (at < header_length && ByteAt(bytes, at) == kDbfDescriptorsEnd) break;
     if (at + kDbfDescriptorBytes > header_length) {
       throw InputError(source + ": byte " + std::to_string(at) + ": the header ends at byte " +
                        std::to_string(header_length) + " (its length, byte " +
@@ -241,11 +234,11 @@ std::vector<DbfField> ReadDbfFields(const std::string& bytes, std::int64_t heade
     DbfField field;
     const std::string_view name_bytes(bytes.data() + at, 11);
     field.raw_name = std::string(TrimTrailingBlanks(name_bytes.substr(0, name_bytes.find('\0'))));
-    field.type = static_cast<unsigned char>(DbfByte(bytes, at + 11));
-    field.length = DbfByte(bytes, at + 16);
+    field.type = static_cast<unsigned char>(ByteAt(bytes, at + 11));
+    field.length = ByteAt(bytes, at + 16);
     // Clipper and FoxPro write text longer than 255 bytes with the decimal count as the
     // length's high byte; shapelib, and so GDAL, read it so.
-    if (field.type == 'C') field.length += 256 * static_cast<std::int64_t>(DbfByte(bytes, at + 17));
+    if (field.type == 'C') field.length += 256 * static_cast<std::int64_t>(ByteAt(bytes, at + 17));
     field.offset = offset;
     field.descriptor = at;
     const std::string number = "field " + std::to_string(fields.size() + 1);
@@ -289,17 +282,17 @@ DbfLayout ReadDbfLayout(const std::string& bytes, const std::string& source) {
   if (size < kDbfHeaderBytes) {
     throw InputError(at_byte(size) + ": the file ends inside the 32-byte header of a dBase table");
   }
-  const unsigned version = DbfByte(bytes, kDbfVersionAt);
+  const unsigned version = ByteAt(bytes, kDbfVersionAt);
   if ((version & 0x07) != 3) {
     throw InputError(at_byte(kDbfVersionAt) + ": not a dBase table: version byte " +
                      HexByte(version) +
                      " (a dBase III table has 0x03, or 0x83 or 0x8B with a memo file)");
   }
   DbfLayout layout;
-  layout.count = DbfUint32(bytes, kDbfCountAt);
-  layout.header_length = DbfUint16(bytes, kDbfHeaderLengthAt);
-  layout.record_length = DbfUint16(bytes, kDbfRecordLengthAt);
-  layout.language_driver = DbfByte(bytes, kDbfLanguageDriverAt);
+  layout.count = internal::LittleEndianUnsigned(bytes, kDbfCountAt, 4);
+  layout.header_length = internal::LittleEndianUnsigned(bytes, kDbfHeaderLengthAt, 2);
+  layout.record_length = internal::LittleEndianUnsigned(bytes, kDbfRecordLengthAt, 2);
+  layout.language_driver = ByteAt(bytes, kDbfLanguageDriverAt);
   if (layout.header_length > size) {
     throw InputError(at_byte(kDbfHeaderLengthAt) + ": header length " +
                      std::to_string(layout.header_length) + " runs past the end of the file (" +
@@ -389,7 +382,7 @@ std::vector<std::string> ReadDbf(std::istream& in, const std::string& source, Db
 
   const std::int64_t records_end = layout.RecordsEnd();
   const std::int64_t past = static_cast<std::int64_t>(bytes.size()) - records_end;
-  const bool end_of_file_mark = past > 0 && DbfByte(bytes, records_end) == kDbfEndOfFile;
+  const bool end_of_file_mark = past > 0 && ByteAt(bytes, records_end) == kDbfEndOfFile;
   if (past > (end_of_file_mark ? 1 : 0)) {
     notes.push_back(at_byte(records_end + end_of_file_mark) + ": " +
                     Plural(past - end_of_file_mark, "byte") + " after the last record" +
@@ -398,7 +391,7 @@ std::vector<std::string> ReadDbf(std::istream& in, const std::string& source, Db
   std::int64_t deleted = 0, first_deleted = 0;
   for (std::int64_t record = 0; record < layout.count; ++record) {
     const std::int64_t flag = layout.header_length + record * layout.record_length;
-    if (DbfByte(bytes, flag) == '*' && deleted++ == 0) first_deleted = record;
+    if (ByteAt(bytes, flag) == '*' && deleted++ == 0) first_deleted = record;
   }
   if (deleted > 0) {
     notes.push_back(source + ": " + Plural(deleted, "record") +

@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <iterator>
 #include <utility>
 
+#include "acd/internal/byte_order.h"
 #include "acd/internal/ring_nesting.h"
 #include "base/format.h"
 #include "base/input_error.h"
@@ -64,25 +64,16 @@ class Bytes {
   explicit Bytes(std::string data) : data_(std::move(data)) {}
   std::int64_t size() const { return static_cast<std::int64_t>(data_.size()); }
   std::int32_t BigEndianInt(std::int64_t at) const {
-    return static_cast<std::int32_t>(Unsigned(at, 0) << 24 | Unsigned(at, 1) << 16 |
-                                     Unsigned(at, 2) << 8 | Unsigned(at, 3));
+    return static_cast<std::int32_t>(internal::BigEndianUnsigned32(data_, at));
   }
   std::int32_t LittleEndianInt(std::int64_t at) const {
-    return static_cast<std::int32_t>(Unsigned(at, 3) << 24 | Unsigned(at, 2) << 16 |
-                                     Unsigned(at, 1) << 8 | Unsigned(at, 0));
+    return static_cast<std::int32_t>(internal::LittleEndianUnsigned(data_, at, 4));
   }
   double LittleEndianDouble(std::int64_t at) const {
-    std::uint64_t bits = 0;
-    for (int k = 7; k >= 0; --k) bits = bits << 8 | Unsigned(at, k);
-    double value = 0.0;
-    std::memcpy(&value, &bits, sizeof value);
-    return value;
+    return internal::LittleEndianDouble(data_, at);
   }
 
  private:
-  std::uint32_t Unsigned(std::int64_t at, int k) const {
-    return static_cast<unsigned char>(data_[static_cast<size_t>(at + k)]);
-  }
   std::string data_;
 };
 
