@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -12,6 +11,7 @@
 
 #include "acd/internal/byte_order.h"
 #include "acd/internal/text_parsing.h"
+#include "base/file_io.h"
 #include "base/format.h"
 #include "base/input_error.h"
 
@@ -375,7 +375,7 @@ DbfEncoding DbfEncodingFromCpg(const std::string& cpg_text) {
 
 std::vector<std::string> ReadDbf(std::istream& in, const std::string& source, DbfEncoding encoding,
                                  std::vector<std::string>* warnings) {
-  const std::string bytes(std::istreambuf_iterator<char>(in), {});
+  const std::string bytes = ReadRest(in);
   DbfLayout layout = ReadDbfLayout(bytes, source);
   const auto at_byte = [&](std::int64_t at) { return source + ": byte " + std::to_string(at); };
   std::vector<std::string> notes;  // Collected here, handed over if wanted.

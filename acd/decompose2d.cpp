@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "acd/concavity.h"
 #include "acd/internal/centroid_area.h"
@@ -90,6 +91,14 @@ void AppendPieceCutEdges(int parent_begin, int parent_end, int parent_n, int id,
   for (const auto& [edge, cut] : edges.cuts) buffer->push_back({edge, id, cut});
 }
 
+// Room for `extra` more elements in `v`, growing it geometrically: an exact reserve per input
+// polygon would copy the whole vector for each of them (quadratic in the number of polygons).
+template <class T>
+void ReserveMore(std::vector<T>* v, size_t extra) {
+  const size_t needed = v->size() + extra;
+  if (needed > v->capacity()) v->reserve(std::max(needed, 2 * v->capacity()));
+}
+
 // Algorithm 1 (or 9) on one input polygon, appending its nodes and leaves to `out` and what
 // else is kept of the leaves to `leaves`.
 void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions& options,
@@ -110,10 +119,10 @@ void DecomposeOne(const Polygon2d& polygon, int source, const Decompose2dOptions
   const int notches = CountNotches(polygon);
   out->stats.notches += notches;
   const size_t splits_bound = static_cast<size_t>(notches) + polygon.holes.size();
-  out->tree.reserve(out->tree.size() + 2 * splits_bound + 1);
-  out->components.reserve(out->components.size() + splits_bound + 1);
-  leaves->areas.reserve(leaves->areas.size() + splits_bound + 1);
-  leaves->first_cut_edge.reserve(leaves->first_cut_edge.size() + splits_bound + 1);
+  ReserveMore(&out->tree, 2 * splits_bound + 1);
+  ReserveMore(&out->components, splits_bound + 1);
+  ReserveMore(&leaves->areas, splits_bound + 1);
+  ReserveMore(&leaves->first_cut_edge, splits_bound + 1);
   out->roots.push_back(root);
   out->tree.push_back({});
   out->tree[root].piece = polygon;

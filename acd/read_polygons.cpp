@@ -224,8 +224,9 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
     throw InputError(path + ": unknown polygon file extension '" + extension + "' (expected " +
                      kPolygonFileExtensions + ")");
   }
-  std::istringstream in(ReadFile(path));
+  std::ifstream in = OpenFile(path);
   std::vector<Polygon2d> polygons = reader(in, path);
+  if (in.bad()) throw InputError(path + ": cannot read the file: read error");
   if (polygons.empty()) throw InputError(path + ": no polygon in file");
   multipolygons.resize(polygons.size(), -1);
   for (size_t k = features.size(); k < polygons.size(); ++k) {

@@ -2,11 +2,11 @@
 
 #include <cmath>
 #include <cstdint>
-#include <iterator>
 #include <utility>
 
 #include "acd/internal/byte_order.h"
 #include "acd/internal/ring_nesting.h"
+#include "base/file_io.h"
 #include "base/format.h"
 #include "base/input_error.h"
 
@@ -145,7 +145,7 @@ std::vector<Polygon2d> ReadShapefile(std::istream& in, const std::string& source
                                      std::vector<int>* multipolygons,
                                      std::vector<std::string>* warnings,
                                      std::vector<int>* features) {
-  const Bytes bytes(std::string(std::istreambuf_iterator<char>(in), {}));
+  const Bytes bytes(ReadRest(in));
   if (bytes.size() < kHeaderBytes) {
     throw InputError(source + ": not a shapefile: " + std::to_string(bytes.size()) +
                      " bytes, shorter than the 100-byte header");

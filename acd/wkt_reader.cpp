@@ -1,12 +1,12 @@
 #include "acd/wkt_reader.h"
 
 #include <cctype>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <string_view>
 
 #include "acd/internal/text_parsing.h"
+#include "base/file_io.h"
 #include "base/input_error.h"
 
 namespace acdplan::acd {
@@ -48,7 +48,7 @@ class WktParser {
  private:
   static std::string Text(std::istream& in) {
     internal::SkipByteOrderMark(in);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    return ReadRest(in);
   }
 
   [[noreturn]] void Fail(const std::string& message) const { FailAt(pos_, message); }

@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <sstream>
 #include <stdexcept>
 #include <system_error>
 
@@ -17,7 +16,7 @@
 
 namespace acdplan {
 
-std::string ReadFile(const std::string& path) {
+std::ifstream OpenFile(const std::string& path) {
   auto fail = [&path](const std::string& why) {
     throw InputError(path + ": cannot read the file: " + why);
   };
@@ -25,10 +24,31 @@ std::string ReadFile(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) fail("it is a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) fail("read error");
-  return text.str();
+  return in;
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in = OpenFile(path);
+  std::string text = ReadRest(in);
+  if (in.bad()) throw InputError(path + ": cannot read the file: read error");
+  return text;
+}
+
+std::string ReadRest(std::istream& in) {
+  std::string text;
+  using Position = std::istream::pos_type;
+  // Where the stream can tell how much is left, room for all of it first.
+  if (const Position here = in.tellg(); here != Position(-1)) {
+    if (in.seekg(0, std::ios::end)) {
+      const Position end = in.tellg();
+      if (end != Position(-1) && end > here) text.reserve(static_cast<size_t>(end - here));
+    }
+    in.clear(in.rdstate() & std::ios::badbit);
+    in.seekg(here);
+  }
+  char block[1 << 16];
+  while (in.read(block, sizeof block) || in.gcount() > 0) text.append(block, in.gcount());
+  return text;
 }
 
 std::string UnreadableFileReason(const std::string& path) {

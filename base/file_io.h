@@ -1,6 +1,8 @@
 #pragma once
 // Reading input files and writing output files, with one wording for their errors.
 
+#include <fstream>
+#include <istream>
 #include <string>
 
 namespace acdplan {
@@ -9,6 +11,14 @@ namespace acdplan {
 /// @throws InputError "<path>: cannot read the file: <reason>", where the reason is the
 ///         system's ("No such file or directory") or "it is a directory".
 std::string ReadFile(const std::string& path);
+
+/// The file at `path` opened for reading bytes as they are, for readers that take a stream.
+/// @throws InputError as ReadFile().
+std::ifstream OpenFile(const std::string& path);
+
+/// The rest of `in`, bytes as they are: in one piece where the stream tells its size (a file),
+/// else block by block.
+std::string ReadRest(std::istream& in);
 
 /// Why the file at `path` cannot be read as a regular file, or "" if it can: "not a regular
 /// file" (a folder, a device), else the system's reason ("No such file or directory", "File

@@ -3,6 +3,7 @@
 // ComputeOpenings(). Internal.
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "acd/polygon2d.h"
@@ -49,15 +50,69 @@ inline void SortAlong(std::vector<IdBox>* boxes, int axis) {
   });
 }
 
-}  // namespace box_sweep_detail
+// Strips across the sweep axis, each swept on its own. A single sweep keeps every box that
+// spans the sweep line active, about sqrt(n) of them where boxes fill the plane (a map of
+// buildings, a grid world), and tests each new box against them all: O(n^1.5). In strips of
+// about as many boxes along the other axis each, a box meets only the active boxes of its strips.
+// A pair is reported only in the strip that holds the lower end of their overlap along the
+// other axis, so once.
+class Strips {
+ public:
+  Strips(const std::vector<IdBox>& a, const std::vector<IdBox>& b, int other) {
+    const size_t n = a.size() + b.size();
+    constexpr size_t kSingleSweep = 512;  // Below this, one sweep costs too little to split.
+    if (n < kSingleSweep) return;
+    std::vector<double> middles;
+    middles.reserve(n);
+    for (const std::vector<IdBox>* boxes : {&a, &b}) {
+      for (const IdBox& box : *boxes) middles.push_back(0.5 * (box.lo[other] + box.hi[other]));
+    }
+    std::sort(middles.begin(), middles.end());
+    // Boundaries at quantiles of the boxes' middles, as many strips as about sqrt(n) / 4, fewer
+    // while boxes that span several strips would make the strips' boxes more than 2n in all
+    // (long boxes, as the edges of a star, gain nothing from strips).
+    for (size_t count = static_cast<size_t>(std::sqrt(static_cast<double>(n)) / 4.0); count > 1;
+         count /= 2) {
+      bounds_.clear();
+      for (size_t k = 1; k < count; ++k) {
+        const double bound = middles[k * n / count];
+        if (bounds_.empty() || bound > bounds_.back()) bounds_.push_back(bound);
+      }
+      size_t placed = 0;
+      for (const std::vector<IdBox>* boxes : {&a, &b}) {
+        for (const IdBox& box : *boxes) placed += Of(box.hi[other]) - Of(box.lo[other]) + 1;
+      }
+      if (placed <= 2 * n) return;
+    }
+    bounds_.clear();
+  }
 
-/// Calls `report(a_id, b_id)` once for every box of `a` and box of `b` that overlap (closed
-/// boxes: touching counts). Deterministic order. O((n + m) log(n + m) + n k), k the number of
-/// boxes active at a time along the sweep axis (small for the edges of a plane subdivision).
+  size_t Count() const { return bounds_.size() + 1; }
+  /// The strip that holds coordinate v along the other axis.
+  size_t Of(double v) const {
+    return static_cast<size_t>(std::upper_bound(bounds_.begin(), bounds_.end(), v) -
+                               bounds_.begin());
+  }
+
+  /// `boxes` by strip, each box in every strip it spans.
+  std::vector<std::vector<IdBox>> Split(const std::vector<IdBox>& boxes, int other) const {
+    std::vector<std::vector<IdBox>> split(Count());
+    for (const IdBox& box : boxes) {
+      for (size_t s = Of(box.lo[other]), last = Of(box.hi[other]); s <= last; ++s) {
+        split[s].push_back(box);
+      }
+    }
+    return split;
+  }
+
+ private:
+  std::vector<double> bounds_;  // Between strips, increasing.
+};
+
+// ForEachOverlap() of one strip, or of all boxes.
 template <class Report>
-void ForEachOverlap(std::vector<IdBox> a, std::vector<IdBox> b, Report report) {
-  using namespace box_sweep_detail;
-  const int axis = SweepAxis(a, b), other = 1 - axis;
+void SweepPairs(std::vector<IdBox> a, std::vector<IdBox> b, int axis, Report report) {
+  const int other = 1 - axis;
   SortAlong(&a, axis);
   SortAlong(&b, axis);
   // Active boxes are kept by value: the scan is the hot loop and stays in cache.
@@ -73,9 +128,9 @@ void ForEachOverlap(std::vector<IdBox> a, std::vector<IdBox> b, Report report) {
       }
       if (other_box.lo[other] <= box.hi[other] && box.lo[other] <= other_box.hi[other]) {
         if (box_is_a) {
-          report(box.id, other_box.id);
+          report(box, other_box);
         } else {
-          report(other_box.id, box.id);
+          report(other_box, box);
         }
       }
       ++k;
@@ -93,11 +148,10 @@ void ForEachOverlap(std::vector<IdBox> a, std::vector<IdBox> b, Report report) {
   }
 }
 
-/// Calls `report(id1, id2)` once for every unordered pair of overlapping boxes in `boxes`.
+// ForEachSelfOverlap() of one strip, or of all boxes.
 template <class Report>
-void ForEachSelfOverlap(std::vector<IdBox> boxes, Report report) {
-  using namespace box_sweep_detail;
-  const int axis = SweepAxis(boxes, {}), other = 1 - axis;
+void SweepSelfPairs(std::vector<IdBox> boxes, int axis, Report report) {
+  const int other = 1 - axis;
   SortAlong(&boxes, axis);
   std::vector<IdBox> active;
   for (const IdBox& box : boxes) {
@@ -109,11 +163,57 @@ void ForEachSelfOverlap(std::vector<IdBox> boxes, Report report) {
         continue;
       }
       if (other_box.lo[other] <= box.hi[other] && box.lo[other] <= other_box.hi[other]) {
-        report(other_box.id, box.id);
+        report(other_box, box);
       }
       ++k;
     }
     active.push_back(box);
+  }
+}
+
+}  // namespace box_sweep_detail
+
+/// Calls `report(a_id, b_id)` once for every box of `a` and box of `b` that overlap (closed
+/// boxes: touching counts). Deterministic order. A sweep along one axis in strips across it:
+/// O(n log n + n k), k the number of boxes of a strip active at a time (small for the edges of a
+/// plane subdivision, or boxes spread over the plane).
+template <class Report>
+void ForEachOverlap(std::vector<IdBox> a, std::vector<IdBox> b, Report report) {
+  using namespace box_sweep_detail;
+  const int axis = SweepAxis(a, b), other = 1 - axis;
+  const Strips strips(a, b, other);
+  if (strips.Count() == 1) {
+    SweepPairs(std::move(a), std::move(b), axis,
+               [&](const IdBox& x, const IdBox& y) { report(x.id, y.id); });
+    return;
+  }
+  std::vector<std::vector<IdBox>> a_split = strips.Split(a, other),
+                                  b_split = strips.Split(b, other);
+  for (size_t s = 0; s < strips.Count(); ++s) {
+    SweepPairs(std::move(a_split[s]), std::move(b_split[s]), axis,
+               [&](const IdBox& x, const IdBox& y) {
+                 if (strips.Of(std::max(x.lo[other], y.lo[other])) == s) report(x.id, y.id);
+               });
+  }
+}
+
+/// Calls `report(id1, id2)` once for every unordered pair of overlapping boxes in `boxes`, as
+/// ForEachOverlap().
+template <class Report>
+void ForEachSelfOverlap(std::vector<IdBox> boxes, Report report) {
+  using namespace box_sweep_detail;
+  const int axis = SweepAxis(boxes, {}), other = 1 - axis;
+  const Strips strips(boxes, {}, other);
+  if (strips.Count() == 1) {
+    SweepSelfPairs(std::move(boxes), axis,
+                   [&](const IdBox& x, const IdBox& y) { report(x.id, y.id); });
+    return;
+  }
+  std::vector<std::vector<IdBox>> split = strips.Split(boxes, other);
+  for (size_t s = 0; s < strips.Count(); ++s) {
+    SweepSelfPairs(std::move(split[s]), axis, [&](const IdBox& x, const IdBox& y) {
+      if (strips.Of(std::max(x.lo[other], y.lo[other])) == s) report(x.id, y.id);
+    });
   }
 }
 

@@ -2,33 +2,52 @@
 
 #include <CGAL/Polygon_2_algorithms.h>
 
-#include <Eigen/Geometry>
+#include <algorithm>
+#include <limits>
 #include <vector>
 
+#include "acd/internal/box_sweep.h"
 #include "acd/internal/exact_predicates.h"
 
 namespace acdplan::acd::internal {
 namespace {
 
-// Whether `inner` lies inside `outer`, judged exactly at its first vertex off `outer`'s
-// boundary.
-bool Contains(const Ring2d& outer, const Ring2d& inner) {
-  if (outer.size() < 3) return false;
+// A ring's vertices as CGAL points, for the exact point-in-ring tests.
+std::vector<Kernel::Point_2> CgalPoints(const Ring2d& ring) {
   std::vector<Kernel::Point_2> points;
-  points.reserve(outer.size());
-  for (const Point2d& p : outer) points.push_back(ToCgal(p));
+  points.reserve(ring.size());
+  for (const Point2d& p : ring) points.push_back(ToCgal(p));
+  return points;
+}
+
+// Whether `inner` lies inside the ring of `outer_points`, judged exactly at its first vertex off
+// that ring's boundary.
+bool Contains(const std::vector<Kernel::Point_2>& outer_points, const Ring2d& inner) {
+  if (outer_points.size() < 3) return false;
   for (const Point2d& p : inner) {
     const CGAL::Bounded_side side =
-        CGAL::bounded_side_2(points.begin(), points.end(), ToCgal(p), Kernel());
+        CGAL::bounded_side_2(outer_points.begin(), outer_points.end(), ToCgal(p), Kernel());
     if (side != CGAL::ON_BOUNDARY) return side == CGAL::ON_BOUNDED_SIDE;
   }
   return false;
 }
 
-Eigen::AlignedBox2d BoxOf(const Ring2d& ring) {
-  Eigen::AlignedBox2d box;
-  for (const Point2d& p : ring) box.extend(p);
+IdBox BoxOf(const Ring2d& ring, int id) {
+  IdBox box{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()},
+            {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()},
+            id};
+  for (const Point2d& p : ring) {
+    for (int d = 0; d < 2; ++d) {
+      box.lo[d] = std::min(box.lo[d], p[d]);
+      box.hi[d] = std::max(box.hi[d], p[d]);
+    }
+  }
   return box;
+}
+
+bool BoxContains(const IdBox& outer, const IdBox& inner) {
+  return outer.lo[0] <= inner.lo[0] && outer.lo[1] <= inner.lo[1] && inner.hi[0] <= outer.hi[0] &&
+         inner.hi[1] <= outer.hi[1];
 }
 
 }  // namespace
@@ -36,17 +55,23 @@ Eigen::AlignedBox2d BoxOf(const Ring2d& ring) {
 std::vector<Polygon2d> PolygonsByNesting(const std::vector<Ring2d>& rings) {
   const size_t count = rings.size();
   if (count == 1) return {Polygon2d{rings[0], {}}};
-  std::vector<Eigen::AlignedBox2d> boxes(count);
-  for (size_t i = 0; i < count; ++i) boxes[i] = BoxOf(rings[i]);
-  // containers[i]: the rings that contain ring i.
+  std::vector<IdBox> boxes(count);
+  for (size_t i = 0; i < count; ++i) boxes[i] = BoxOf(rings[i], static_cast<int>(i));
+  // containers[i]: the rings that contain ring i, in increasing order. Only rings whose boxes
+  // overlap are tested (a sweep, not all pairs: a record may hold thousands of islands), and a
+  // ring's CGAL points are made once, when it is first a candidate container.
   std::vector<std::vector<size_t>> containers(count);
-  for (size_t i = 0; i < count; ++i) {
-    for (size_t j = 0; j < count; ++j) {
-      if (i != j && boxes[j].contains(boxes[i]) && Contains(rings[j], rings[i])) {
-        containers[i].push_back(j);
-      }
-    }
-  }
+  std::vector<std::vector<Kernel::Point_2>> points(count);
+  auto test = [&](size_t outer, size_t inner) {
+    if (!BoxContains(boxes[outer], boxes[inner])) return;
+    if (points[outer].empty()) points[outer] = CgalPoints(rings[outer]);
+    if (Contains(points[outer], rings[inner])) containers[inner].push_back(outer);
+  };
+  ForEachSelfOverlap(boxes, [&](int a, int b) {
+    test(static_cast<size_t>(a), static_cast<size_t>(b));
+    test(static_cast<size_t>(b), static_cast<size_t>(a));
+  });
+  for (std::vector<size_t>& list : containers) std::sort(list.begin(), list.end());
   std::vector<int> polygon_of(count, -1);
   std::vector<Polygon2d> polygons;
   for (size_t i = 0; i < count; ++i) {

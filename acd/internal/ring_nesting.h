@@ -17,8 +17,8 @@ namespace acdplan::acd::internal {
 /// is decided exactly, at the first vertex of the inner ring that is not on the outer one's
 /// boundary (rings may touch at points); a ring whose every vertex lies on another's boundary is
 /// not inside it. Polygons come in the order of their outer rings, holes in their order in
-/// `rings`; orientation and validity are left to PreparePolygons(). Bounding boxes prune the
-/// pairs; O(n m) for a ring of n vertices tested in one of m.
+/// `rings`; orientation and validity are left to PreparePolygons(). A sweep over bounding boxes
+/// finds the pairs to test; O(n m) for a ring of n vertices tested in one of m.
 std::vector<Polygon2d> PolygonsByNesting(const std::vector<Ring2d>& rings);
 
 }  // namespace acdplan::acd::internal

@@ -122,6 +122,33 @@ TEST(ShapefileReaderTest, GroupsARecordsRingsByNestingIntoAMultiPolygon) {
   EXPECT_EQ(features, (std::vector<int>{1, 1, 1}));       // Its FID.
 }
 
+TEST(ShapefileReaderTest, GroupsARecordOfThousandsOfRings) {
+  // A record as a map of many islands stores it: 20 x 20 fields, each with a pond holding an
+  // island, 1,200 rings in an order that is not the nesting's (ponds first, then islands, then
+  // fields, each by columns from the right).
+  Record record;
+  for (int kind = 0; kind < 3; ++kind) {
+    for (int i = 19; i >= 0; --i) {
+      for (int j = 0; j < 20; ++j) {
+        const double x = 20.0 * i, y = 20.0 * j;
+        if (kind == 0) record.parts.push_back(Square(x + 2, y + 2, 6, false));
+        if (kind == 1) record.parts.push_back(Square(x + 4, y + 4, 2, true));
+        if (kind == 2) record.parts.push_back(Square(x, y, 10, true));
+      }
+    }
+  }
+  const std::vector<Polygon2d> polygons = Read(Shapefile({record}));
+  ASSERT_EQ(polygons.size(), 800u);  // 400 fields with their pond, 400 islands.
+  // In the order of their outer rings: the islands, then the fields.
+  for (size_t k = 0; k < 400; ++k) {
+    EXPECT_TRUE(polygons[k].holes.empty());
+    ASSERT_EQ(polygons[400 + k].holes.size(), 1u);
+    // Field k's pond is ring k of the record, from the same corner.
+    EXPECT_EQ(polygons[400 + k].holes[0].front() - polygons[400 + k].outer.front(), Point2d(2, 2));
+    EXPECT_EQ(polygons[400 + k].holes[0].front(), record.parts[k].front());
+  }
+}
+
 TEST(ShapefileReaderTest, NestingDecidesWhereOrientationIsWrongOrRingsTouch) {
   // Outer ring counter-clockwise and hole clockwise, against the format's rule; a second hole
   // touching the outer ring at its corner (10, 10), valid in OGC's rules.

@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <streambuf>
 #include <string>
+#include <utility>
 
 #include "base/input_error.h"
 #include "tests/scratch_dir.h"
@@ -94,6 +97,46 @@ TEST_F(FileIoTest, ReadGivesTheBytesBack) {
   const std::string text("line 1\r\nline 2\0 after a NUL\n", 28);
   WriteFileAtomically(path.string(), text);
   EXPECT_EQ(ReadFile(path.string()), text);
+}
+
+// A stream that cannot seek or tell its position (a pipe), in pieces of 5 bytes.
+class PipeBuffer : public std::streambuf {
+ public:
+  explicit PipeBuffer(std::string text) : text_(std::move(text)) {}
+
+ protected:
+  int_type underflow() override {
+    if (at_ >= text_.size()) return traits_type::eof();
+    const size_t size = std::min<size_t>(5, text_.size() - at_);
+    char* begin = text_.data() + at_;
+    at_ += size;
+    setg(begin, begin, begin + size);
+    return traits_type::to_int_type(*begin);
+  }
+
+ private:
+  std::string text_;
+  size_t at_ = 0;
+};
+
+TEST_F(FileIoTest, ReadRestReadsWhatIsLeftOfAnyStream) {
+  const fs::path path = dir_ / "in.bin";
+  std::string text(200000, '\0');
+  for (size_t k = 0; k < text.size(); ++k) text[k] = static_cast<char>(k * 7919 % 256);
+  WriteFileAtomically(path.string(), text);
+  std::ifstream file = OpenFile(path.string());
+  EXPECT_EQ(ReadRest(file), text);
+  EXPECT_EQ(ReadRest(file), "");  // At the end.
+  std::ifstream partly = OpenFile(path.string());
+  partly.ignore(1000);  // From where a reader has got to.
+  EXPECT_EQ(ReadRest(partly), text.substr(1000));
+  std::istringstream string_stream(text);
+  EXPECT_EQ(ReadRest(string_stream), text);
+  PipeBuffer pipe_buffer(text.substr(0, 70003));
+  std::istream pipe(&pipe_buffer);
+  EXPECT_EQ(ReadRest(pipe), text.substr(0, 70003));
+  EXPECT_EQ(MessageOf<InputError>([&] { OpenFile(dir_.string()); }),
+            dir_.string() + ": cannot read the file: it is a directory");
 }
 
 TEST_F(FileIoTest, ReadNamesTheFileAndTheReason) {
