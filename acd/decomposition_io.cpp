@@ -38,6 +38,21 @@ std::string PathData(const SvgCanvas& canvas, const Polygon2d& polygon) {
   return canvas.PathData(rings);
 }
 
+// A GeoJSON FeatureCollection of `features`, with the foreign member (RFC 7946 6.1) "acdplan"
+// that names `format` and what was decomposed, and how.
+std::string GeoJsonLayer(const Decomposition2d& decomposition, const DecompositionLabels& labels,
+                         const std::string& format, Json features) {
+  Json json;
+  json["type"] = "FeatureCollection";
+  json["acdplan"] = {{"format", format},
+                     {"input", labels.input},
+                     {"measure", ToString(decomposition.measure)},
+                     {"tau", decomposition.tau},
+                     {"tau_rel", labels.tau_rel >= 0 ? Json(labels.tau_rel) : Json(nullptr)}};
+  json["features"] = std::move(features);
+  return json.dump() + "\n";
+}
+
 }  // namespace
 
 std::string DecompositionToJson(const Decomposition2d& decomposition,
@@ -134,16 +149,25 @@ std::string DecompositionToGeoJson(const Decomposition2d& decomposition,
                         {"geometry", {{"type", "Polygon"}, {"coordinates", std::move(rings)}}},
                         {"properties", std::move(properties)}});
   }
-  Json json;
-  json["type"] = "FeatureCollection";
-  // A foreign member (RFC 7946 6.1): what was decomposed, and how.
-  json["acdplan"] = {{"format", "acdplan.decomposition2d.geojson/1"},
-                     {"input", labels.input},
-                     {"measure", ToString(decomposition.measure)},
-                     {"tau", decomposition.tau},
-                     {"tau_rel", labels.tau_rel >= 0 ? Json(labels.tau_rel) : Json(nullptr)}};
-  json["features"] = std::move(features);
-  return json.dump() + "\n";
+  return GeoJsonLayer(decomposition, labels, "acdplan.decomposition2d.geojson/1",
+                      std::move(features));
+}
+
+std::string OpeningsToGeoJson(const Decomposition2d& decomposition,
+                              const DecompositionLabels& labels) {
+  Json features = Json::array();
+  for (size_t k = 0; k < decomposition.openings.size(); ++k) {
+    const Opening2d& opening = decomposition.openings[k];
+    Json line = Json::array({PointToJson(opening.a), PointToJson(opening.b)});
+    features.push_back({{"type", "Feature"},
+                        {"geometry", {{"type", "LineString"}, {"coordinates", std::move(line)}}},
+                        {"properties",
+                         {{"acd_id", k},
+                          {"acd_a", opening.component_a},
+                          {"acd_b", opening.component_b},
+                          {"acd_length", (opening.b - opening.a).norm()}}}});
+  }
+  return GeoJsonLayer(decomposition, labels, "acdplan.openings2d.geojson/1", std::move(features));
 }
 
 std::string DecompositionToSvg(const Decomposition2d& decomposition,

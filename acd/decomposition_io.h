@@ -41,6 +41,15 @@ std::string DecompositionToGeoJson(const Decomposition2d& decomposition,
                                    const std::vector<int>& input_features = {},
                                    const std::vector<std::string>& feature_properties = {});
 
+/// The openings as GeoJSON (RFC 7946), a line layer beside DecompositionToGeoJson()'s polygons:
+/// a FeatureCollection of one LineString feature (from a to b) per opening, in the JSON's order,
+/// with properties "acd_id" (the opening's index in the JSON's "openings"), "acd_a" and "acd_b"
+/// (the two components it joins, their "acd_id" in the polygon layer) and "acd_length" (its
+/// length, the passage's width, in input units). The foreign member "acdplan" names the format
+/// ("acdplan.openings2d.geojson/1") and what was decomposed, as in the polygon layer.
+std::string OpeningsToGeoJson(const Decomposition2d& decomposition,
+                              const DecompositionLabels& labels);
+
 /// An SVG a person reads at a glance: components in distinct fills, openings drawn, the most
 /// concave notches of the input marked, and a caption with tau, measure, components and time.
 std::string DecompositionToSvg(const Decomposition2d& decomposition,

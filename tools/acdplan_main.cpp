@@ -59,7 +59,8 @@ struct DecomposeArguments {
   bool no_steiner = false;
   std::string json_path;
   std::string svg_path;
-  std::string geojson_path;  ///< Polygons only.
+  std::string geojson_path;           ///< Polygons only.
+  std::string openings_geojson_path;  ///< Polygons only.
   bool check = false;
   bool repair = false;
   // Meshes only.
@@ -149,6 +150,7 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
   CheckOutputPath("--json", args.json_path);
   CheckOutputPath("--svg", args.svg_path);
   CheckOutputPath("--geojson", args.geojson_path);
+  CheckOutputPath("--openings-geojson", args.openings_geojson_path);
 
   std::vector<double> radii;       // As written in the file: the dissertation's tables use these.
   std::vector<std::string> notes;  // Reader warnings and repair changes, one line each.
@@ -195,6 +197,11 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
           args.geojson_path,
           acd::DecompositionToGeoJson(decomposition, labels, sources, features, properties));
       written.push_back(args.geojson_path);
+    }
+    if (!args.openings_geojson_path.empty()) {
+      acdplan::WriteFileAtomically(args.openings_geojson_path,
+                                   acd::OpeningsToGeoJson(decomposition, labels));
+      written.push_back(args.openings_geojson_path);
     }
     if (!args.svg_path.empty()) {
       acdplan::WriteFileAtomically(args.svg_path, acd::DecompositionToSvg(decomposition, labels));
@@ -592,6 +599,10 @@ int main(int argc, char** argv) {
       "--geojson", args.geojson_path,
       "Polygons: write the components as a GeoJSON polygon layer here, each with the attributes "
       "of its input feature (GeoJSON properties, a shapefile's .dbf row)"));
+  kinds.polygons_only.push_back(decompose->add_option(
+      "--openings-geojson", args.openings_geojson_path,
+      "Polygons: write the openings between components as a GeoJSON line layer here (the "
+      "passages; each names the two components it joins)"));
   decompose->add_option("--svg", args.svg_path,
                         "Write an SVG picture here (meshes: a shaded oblique view)");
   kinds.meshes_only.push_back(decompose->add_option(

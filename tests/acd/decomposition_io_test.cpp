@@ -255,6 +255,32 @@ TEST(DecompositionToGeoJsonTest, ComponentsCarryTheirInputFeaturesAttributes) {
   EXPECT_EQ(ordered.at("features")[2].at("properties").begin().key(), "NAME");
 }
 
+TEST(OpeningsToGeoJsonTest, OneLineStringFeaturePerOpening) {
+  Decomposition2d d = HandBuilt();
+  d.openings.push_back({Point2d(0.1, 0.2), Point2d(0.30000000000000004, 0.2), 1, 2});
+  const json j = json::parse(OpeningsToGeoJson(d, {"shapes/l.poly", 0.025}));
+  EXPECT_EQ(j.at("type"), "FeatureCollection");
+  EXPECT_EQ(j.at("acdplan").at("format"), "acdplan.openings2d.geojson/1");
+  EXPECT_EQ(j.at("acdplan").at("input"), "shapes/l.poly");
+  EXPECT_EQ(j.at("acdplan").at("tau_rel").get<double>(), 0.025);
+  const json& features = j.at("features");
+  ASSERT_EQ(features.size(), 2u);
+  EXPECT_EQ(features[0].at("type"), "Feature");
+  EXPECT_EQ(features[0].at("geometry"),
+            json::parse(R"({"type": "LineString", "coordinates": [[0.0, 1.0], [2.0, 1.0]]})"));
+  EXPECT_EQ(features[0].at("properties"),
+            json::parse(R"({"acd_id": 0, "acd_a": 0, "acd_b": 1, "acd_length": 2.0})"));
+  // Coordinates exactly as computed.
+  EXPECT_EQ(features[1].at("geometry").at("coordinates")[1][0].get<double>(), 0.30000000000000004);
+  EXPECT_EQ(features[1].at("properties").at("acd_id"), 1);
+  EXPECT_EQ(features[1].at("properties").at("acd_a"), 1);
+  EXPECT_EQ(features[1].at("properties").at("acd_b"), 2);
+  EXPECT_EQ(features[1].at("properties").at("acd_length").get<double>(), 0.30000000000000004 - 0.1);
+  // No openings: an empty layer.
+  d.openings.clear();
+  EXPECT_EQ(json::parse(OpeningsToGeoJson(d, {})).at("features"), json::array());
+}
+
 TEST(DecompositionToSvgTest, DrawsComponentsOpeningsNotchesAndCaption) {
   const std::string svg = DecompositionToSvg(HandBuilt(), {"shapes/l&r.poly", 0.025});
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);

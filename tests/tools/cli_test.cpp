@@ -162,14 +162,16 @@ TEST_F(CliTest, DecomposesAndWritesJsonAndSvg) {
 }
 
 // A GIS user's round: a shapefile in, a GeoJSON polygon layer out whose components carry their
-// county's attributes (from nc.dbf), which acdplan reads back as polygons.
+// county's attributes (from nc.dbf), which acdplan reads back as polygons, and the openings
+// between them as a line layer.
 TEST_F(CliTest, DecomposesAShapefileIntoGeoJsonWithTheDbfAttributes) {
   const fs::path geojson_path = dir_ / "nc.geojson";
+  const fs::path openings_path = dir_ / "nc_openings.geojson";
   const fs::path json_path = dir_ / "nc.json";
-  const RunResult run =
-      Acdplan("decompose " + Quote((acdplan::test::kShapefiles / "nc.shp").string()) +
-              " --tau-rel 0.05 --measure sl --json " + Quote(json_path.string()) + " --geojson " +
-              Quote(geojson_path.string()));
+  const RunResult run = Acdplan(
+      "decompose " + Quote((acdplan::test::kShapefiles / "nc.shp").string()) +
+      " --tau-rel 0.05 --measure sl --json " + Quote(json_path.string()) + " --geojson " +
+      Quote(geojson_path.string()) + " --openings-geojson " + Quote(openings_path.string()));
   ASSERT_EQ(run.status, 0) << run.err;
   // nc.prj declares longitude/latitude: one warning.
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
@@ -195,6 +197,22 @@ TEST_F(CliTest, DecomposesAShapefileIntoGeoJsonWithTheDbfAttributes) {
     }
   }
   EXPECT_EQ(std::count(county_seen.begin(), county_seen.end(), true), 100);
+
+  // The openings, as the JSON has them (counties that share a border meet along seams too).
+  const nlohmann::json lines = nlohmann::json::parse(Read(openings_path));
+  EXPECT_EQ(lines.at("acdplan").at("format"), "acdplan.openings2d.geojson/1");
+  const nlohmann::json& openings = decomposition.at("openings");
+  ASSERT_EQ(lines.at("features").size(), openings.size());
+  ASSERT_GT(openings.size(), 100u);
+  for (size_t k = 0; k < openings.size(); ++k) {
+    const nlohmann::json& line = lines.at("features")[k];
+    EXPECT_EQ(line.at("geometry").at("type"), "LineString");
+    EXPECT_EQ(line.at("geometry").at("coordinates"),
+              nlohmann::json::array({openings[k].at("a"), openings[k].at("b")}));
+    EXPECT_EQ(line.at("properties").at("acd_id"), k);
+    EXPECT_EQ(line.at("properties").at("acd_a"), openings[k].at("components")[0]);
+    EXPECT_EQ(line.at("properties").at("acd_b"), openings[k].at("components")[1]);
+  }
 
   // Read back as input: one polygon per component.
   const RunResult again = Acdplan("decompose " + Quote(geojson_path.string()) + " --tau-rel 1");
@@ -583,8 +601,8 @@ TEST_F(CliTest, MeshErrorsNameTheFileAndTheRule) {
   run = Acdplan("decompose " + box + " --measure sl");
   ExpectUsageError(run);
   EXPECT_NE(run.err.find("--measure: applies to polygon files only"), std::string::npos) << run.err;
-  for (const char* option :
-       {"--min-convexity 0.5", "--hole-diameter pa", "--no-steiner", "--geojson x.geojson"}) {
+  for (const char* option : {"--min-convexity 0.5", "--hole-diameter pa", "--no-steiner",
+                             "--geojson x.geojson", "--openings-geojson x.geojson"}) {
     ExpectUsageError(Acdplan("decompose " + box + " " + option));
   }
   const std::string polygon = Quote(kPolygons + "simple1.poly");
