@@ -1,6 +1,7 @@
 #include "acd/geojson_reader.h"
 
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -17,13 +18,16 @@ using Json = nlohmann::ordered_json;
 // "coordinates[0][3]", or "root" for the document itself.
 class GeoJsonWalker {
  public:
-  explicit GeoJsonWalker(const std::string& source) : source_(source) {}
+  GeoJsonWalker(const std::string& source, bool skip_non_areal)
+      : source_(source), skip_non_areal_(skip_non_areal) {}
 
   // The polygons, per polygon its MultiPolygon and its feature, and per feature its properties
-  // (ReadGeoJson()).
+  // (ReadGeoJson()); the note on skipped geometries to `warnings`.
   std::vector<Polygon2d> Walk(const Json& root, std::vector<int>* multipolygons,
-                              std::vector<int>* features, std::vector<std::string>* properties) {
+                              std::vector<int>* features, std::vector<std::string>* properties,
+                              std::vector<std::string>* warnings) {
     Object(root, "");
+    if (!skipped_.empty() && warnings != nullptr) warnings->push_back(SkippedNote());
     if (multipolygons != nullptr) *multipolygons = std::move(multipolygons_);
     if (features != nullptr) *features = std::move(features_);
     if (properties != nullptr) *properties = std::move(properties_);
@@ -69,6 +73,10 @@ class GeoJsonWalker {
       multipolygon_ = multipolygon_count_++;
       for (size_t i = 0; i < coordinates.size(); ++i) AddPolygon(coordinates[i], Index(member, i));
       multipolygon_ = -1;
+    } else if (skip_non_areal_ && (type == "Point" || type == "MultiPoint" ||
+                                   type == "LineString" || type == "MultiLineString")) {
+      if (skipped_.empty()) first_skipped_ = path.empty() ? std::string("root") : path;
+      ++skipped_[type];
     } else if (type == "GeometryCollection") {
       const Json& geometries = Require(value, path, "geometries", Json::value_t::array, "an array");
       const std::string member = Member(path, "geometries");
@@ -107,6 +115,20 @@ class GeoJsonWalker {
                                       "FeatureCollection") +
                      ")");
     }
+  }
+
+  // "source: skipped 3 geometries without area (2 Point, 1 LineString; the first at
+  // features[4].geometry)".
+  std::string SkippedNote() const {
+    int count = 0;
+    std::string types;
+    for (const auto& [type, n] : skipped_) {
+      count += n;
+      types += (types.empty() ? "" : ", ") + std::to_string(n) + " " + type;
+    }
+    return source_ + ": skipped " + std::to_string(count) +
+           (count == 1 ? " geometry" : " geometries") + " without area (" + types +
+           "; the first at " + first_skipped_ + ")";
   }
 
   // RFC 7946 3.1.6: an array of linear rings, the first the exterior, the others holes. An empty
@@ -159,6 +181,9 @@ class GeoJsonWalker {
   }
 
   const std::string& source_;
+  const bool skip_non_areal_;
+  std::map<std::string, int> skipped_;  // Per geometry type skipped, how many.
+  std::string first_skipped_;           // The path of the first.
   std::vector<Polygon2d> polygons_;
   std::vector<int> multipolygons_;       // Per polygon.
   std::vector<int> features_;            // Per polygon.
@@ -172,7 +197,8 @@ class GeoJsonWalker {
 
 std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source,
                                    std::vector<int>* multipolygons, std::vector<int>* features,
-                                   std::vector<std::string>* properties) {
+                                   std::vector<std::string>* properties,
+                                   const GeoJsonSkipOptions& skip) {
   Json root;
   try {
     root = Json::parse(in);
@@ -184,7 +210,8 @@ std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source,
     if (bracket != std::string::npos) message = message.substr(bracket + 2);
     throw InputError(source + ": invalid JSON: " + message);
   }
-  return GeoJsonWalker(source).Walk(root, multipolygons, features, properties);
+  return GeoJsonWalker(source, skip.non_areal)
+      .Walk(root, multipolygons, features, properties, skip.warnings);
 }
 
 }  // namespace acdplan::acd

@@ -8,8 +8,18 @@
 
 namespace acdplan::acd {
 
+/// What ReadGeoJson() does with geometries that have no area.
+struct GeoJsonSkipOptions {
+  /// Skip Point, MultiPoint, LineString and MultiLineString geometries (a layer of buildings may
+  /// hold entrances as points) instead of refusing them; one note says how many of each type and
+  /// where the first is, naming the source.
+  bool non_areal = false;
+  std::vector<std::string>* warnings = nullptr;  ///< Receives that note, if any is skipped.
+};
+
 /// Parses GeoJSON (RFC 7946): a Polygon, MultiPolygon, Feature or FeatureCollection (features of
-/// other geometry types are an error naming the feature index), or a GeometryCollection of those.
+/// other geometry types are an error naming the feature index, unless `skip` skips them), or a
+/// GeometryCollection of those.
 /// Rings must be closed (the last position repeats the first; it is dropped); a third or
 /// further coordinate is ignored; a Feature with a null geometry holds no polygon, nor does a
 /// Polygon with empty "coordinates" or an empty polygon in a MultiPolygon's. Messages
@@ -31,6 +41,7 @@ namespace acdplan::acd {
 std::vector<Polygon2d> ReadGeoJson(std::istream& in, const std::string& source,
                                    std::vector<int>* multipolygons = nullptr,
                                    std::vector<int>* features = nullptr,
-                                   std::vector<std::string>* properties = nullptr);
+                                   std::vector<std::string>* properties = nullptr,
+                                   const GeoJsonSkipOptions& skip = {});
 
 }  // namespace acdplan::acd

@@ -214,7 +214,8 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
     };
   } else if (extension == ".geojson" || extension == ".json") {
     reader = [&](std::istream& in, const std::string& source) {
-      return ReadGeoJson(in, source, &multipolygons, &features, options.feature_properties);
+      return ReadGeoJson(in, source, &multipolygons, &features, options.feature_properties,
+                         {options.skip_non_areal, &warnings});
     };
   } else if (extension == ".shp") {
     reader = [&](std::istream& in, const std::string& source) {

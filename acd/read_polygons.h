@@ -39,6 +39,10 @@ struct ReadPolygonsOptions {
   /// (.poly, WKT, a GeoJSON geometry) and for a shapefile without a .dbf (with a note). A .dbf
   /// that breaks its format, or has no row for a record with a shape, is an error.
   std::vector<std::string>* feature_properties = nullptr;
+  /// GeoJSON: skip points and lines (geometries without area) with a note instead of refusing
+  /// the file, as a layer to decompose may hold a few among its polygons. Off for obstacles,
+  /// where a line may stand for a wall.
+  bool skip_non_areal = false;
 };
 
 /// The extensions ReadPolygons() reads, for messages.

@@ -158,6 +158,7 @@ int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) 
   read_options.repair = args.repair;
   read_options.notes = &notes;
   read_options.disjoint_members = true;  // A MULTIPOLYGON is one region to decompose.
+  read_options.skip_non_areal = true;    // Points and lines in a layer have nothing to decompose.
   std::vector<int> sources;              // Per polygon: the file's polygon it comes from.
   std::vector<int> features;             // Per polygon: the file's feature it comes from.
   read_options.sources = &sources;

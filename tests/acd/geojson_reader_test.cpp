@@ -87,6 +87,45 @@ TEST(GeoJsonReaderTest, UnsupportedTypeNamesElementPath) {
               HasSubstr("shape.geojson: root: unsupported type 'Point'"));
 }
 
+TEST(GeoJsonReaderTest, SkipsPointsAndLinesWhenAskedWithOneNote) {
+  // A layer of buildings with an entrance (a point), a path (a line) and, inside a
+  // GeometryCollection, a fence (lines) beside a shed: the areas are read, the rest is counted.
+  const std::string layer = R"({"type": "FeatureCollection", "features": [
+      {"type": "Feature", "properties": {"kind": "entrance"},
+       "geometry": {"type": "Point", "coordinates": [5, 5]}},
+      {"type": "Feature", "properties": {"kind": "hall"},
+       "geometry": {"type": "Polygon", "coordinates": [[[0,0],[4,0],[4,4],[0,0]]]}},
+      {"type": "Feature", "properties": {"kind": "path"},
+       "geometry": {"type": "LineString", "coordinates": [[0,0],[9,9]]}},
+      {"type": "Feature", "properties": {"kind": "yard"},
+       "geometry": {"type": "GeometryCollection", "geometries": [
+         {"type": "MultiLineString", "coordinates": [[[6,0],[6,3]], [[7,0],[7,3]]]},
+         {"type": "Polygon", "coordinates": [[[8,0],[9,0],[9,1],[8,0]]]},
+         {"type": "MultiPoint", "coordinates": [[8,8]]}]}}]})";
+  std::istringstream in(layer);
+  std::vector<int> features;
+  std::vector<std::string> properties, warnings;
+  const std::vector<Polygon2d> polygons =
+      ReadGeoJson(in, "site.geojson", nullptr, &features, &properties, {true, &warnings});
+  ASSERT_EQ(polygons.size(), 2u);
+  EXPECT_EQ(polygons[0].outer, Ring2d({{0, 0}, {4, 0}, {4, 4}}));
+  EXPECT_EQ(polygons[1].outer, Ring2d({{8, 0}, {9, 0}, {9, 1}}));
+  EXPECT_EQ(features, (std::vector<int>{1, 3}));  // Feature indices as in the file.
+  ASSERT_EQ(properties.size(), 4u);               // Every feature's, so that they stay aligned.
+  EXPECT_EQ(properties[3], R"({"kind":"yard"})");
+  EXPECT_EQ(warnings, (std::vector<std::string>{
+                          "site.geojson: skipped 4 geometries without area (1 LineString, 1 "
+                          "MultiLineString, 1 MultiPoint, 1 Point; the first at "
+                          "features[0].geometry)"}));
+  // Nothing skipped, no note; without the option, the first is refused as before.
+  std::istringstream plain(kSquareWithHole);
+  warnings.clear();
+  EXPECT_EQ(ReadGeoJson(plain, "site.geojson", nullptr, nullptr, nullptr, {true, &warnings}).size(),
+            1u);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_THAT(GeoJsonErrorOf(layer), HasSubstr("features[0].geometry: unsupported type 'Point'"));
+}
+
 TEST(GeoJsonReaderTest, StructureErrorsNameElementPath) {
   EXPECT_THAT(GeoJsonErrorOf(R"({"coordinates": []})"),
               HasSubstr("shape.geojson: root: missing member 'type'"));

@@ -389,6 +389,34 @@ TEST_F(CliTest, DecomposeHoldsMultipolygonMembersDisjoint) {
   EXPECT_EQ(Acdplan("env " + Quote(tiles.string())).status, 0);
 }
 
+TEST_F(CliTest, DecomposeSkipsPointsAndLinesOfALayerEnvRefusesThem) {
+  // A layer to decompose may hold points and lines among its polygons: skipped, with a note.
+  // As obstacles, a line may stand for a wall: refused.
+  const fs::path site = Write("site.geojson", R"({"type": "FeatureCollection", "features": [
+      {"type": "Feature", "properties": {"kind": "door"},
+       "geometry": {"type": "Point", "coordinates": [5, 5]}},
+      {"type": "Feature", "properties": {"kind": "hall"},
+       "geometry": {"type": "Polygon", "coordinates": [[[0,0],[4,0],[4,4],[2,1],[0,4],[0,0]]]}}]})");
+  const fs::path layer = dir_ / "parts.geojson";
+  const RunResult run = Acdplan("decompose " + Quote(site.string()) + " --tau 0 --geojson " +
+                                Quote(layer.string()) + " --check");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("site.geojson: skipped 1 geometry without area (1 Point; the first at "
+                         "features[0].geometry)"),
+            std::string::npos)
+      << run.err;
+  const nlohmann::json parts = nlohmann::json::parse(Read(layer));
+  ASSERT_EQ(parts.at("features").size(), 2u);  // The hall, cut at its notch.
+  for (const nlohmann::json& part : parts.at("features")) {
+    EXPECT_EQ(part.at("properties").at("kind"), "hall");
+    EXPECT_EQ(part.at("properties").at("acd_feat"), 1);
+  }
+  const RunResult env = Acdplan("env " + Quote(site.string()));
+  ExpectUsageError(env);
+  EXPECT_NE(env.err.find("features[0].geometry: unsupported type 'Point'"), std::string::npos)
+      << env.err;
+}
+
 // ---- decompose MESH -------------------------------------------------------------------------
 
 /// The OBJ lines of an axis-aligned box [lo, hi], 8 shared vertices numbered from `first`
