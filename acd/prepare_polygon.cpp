@@ -426,13 +426,12 @@ void RejectNestedHoles(const std::vector<IndexedRing>& rings, const std::string&
     boxes.push_back({{b.xmin(), b.ymin()}, {b.xmax(), b.ymax()}, static_cast<int>(r)});
   }
   auto box_of = [&](size_t r) -> const internal::IdBox& { return boxes[r - 1]; };
-  auto within = [](const internal::IdBox& inner, const internal::IdBox& outer) {
-    return inner.lo[0] >= outer.lo[0] && inner.hi[0] <= outer.hi[0] && inner.lo[1] >= outer.lo[1] &&
-           inner.hi[1] <= outer.hi[1];
-  };
   std::pair<size_t, size_t> nested{rings.size(), rings.size()};  // (inner, outer)
   auto test = [&](size_t inner, size_t outer) {
-    if (!within(box_of(inner), box_of(outer)) || std::make_pair(inner, outer) > nested) return;
+    if (!internal::BoxWithin(box_of(inner), box_of(outer)) ||
+        std::make_pair(inner, outer) > nested) {
+      return;
+    }
     size_t vertex = 0;
     if (SideOfRing(rings[inner], rings[outer].points, &vertex) == CGAL::ON_BOUNDED_SIDE) {
       nested = {inner, outer};

@@ -23,6 +23,12 @@ inline IdBox SegmentBox(const Point2d& a, const Point2d& b, int id, double grow 
           id};
 }
 
+/// Whether box `inner` lies within box `outer` (closed boxes).
+inline bool BoxWithin(const IdBox& inner, const IdBox& outer) {
+  return inner.lo[0] >= outer.lo[0] && inner.hi[0] <= outer.hi[0] && inner.lo[1] >= outer.lo[1] &&
+         inner.hi[1] <= outer.hi[1];
+}
+
 namespace box_sweep_detail {
 
 // The axis to sweep along: the one where boxes are short relative to the spread of their
@@ -52,10 +58,10 @@ inline void SortAlong(std::vector<IdBox>* boxes, int axis) {
 
 // Strips across the sweep axis, each swept on its own. A single sweep keeps every box that
 // spans the sweep line active, about sqrt(n) of them where boxes fill the plane (a map of
-// buildings, a grid world), and tests each new box against them all: O(n^1.5). In strips of
-// about as many boxes along the other axis each, a box meets only the active boxes of its strips.
-// A pair is reported only in the strip that holds the lower end of their overlap along the
-// other axis, so once.
+// buildings, a grid world), and tests each new box against them all: O(n^1.5). In strips that
+// share the boxes out evenly along the other axis, a box meets only the active boxes of its own
+// strips. A pair is reported only in the strip that holds the lower end of their overlap along
+// the other axis, so once.
 class Strips {
  public:
   Strips(const std::vector<IdBox>& a, const std::vector<IdBox>& b, int other) {

@@ -45,11 +45,6 @@ IdBox BoxOf(const Ring2d& ring, int id) {
   return box;
 }
 
-bool BoxContains(const IdBox& outer, const IdBox& inner) {
-  return outer.lo[0] <= inner.lo[0] && outer.lo[1] <= inner.lo[1] && inner.hi[0] <= outer.hi[0] &&
-         inner.hi[1] <= outer.hi[1];
-}
-
 }  // namespace
 
 std::vector<Polygon2d> PolygonsByNesting(const std::vector<Ring2d>& rings) {
@@ -63,7 +58,7 @@ std::vector<Polygon2d> PolygonsByNesting(const std::vector<Ring2d>& rings) {
   std::vector<std::vector<size_t>> containers(count);
   std::vector<std::vector<Kernel::Point_2>> points(count);
   auto test = [&](size_t outer, size_t inner) {
-    if (!BoxContains(boxes[outer], boxes[inner])) return;
+    if (!BoxWithin(boxes[inner], boxes[outer])) return;
     if (points[outer].empty()) points[outer] = CgalPoints(rings[outer]);
     if (Contains(points[outer], rings[inner])) containers[inner].push_back(outer);
   };
