@@ -177,6 +177,13 @@ Point2d CentroidAndArea(const Polygon2d& polygon, double* area) {
     outer_area -= std::abs(hole_area);
   }
   *area = outer_area;
+  if (outer_area == 0.0) {
+    // An area no double holds (a sliver of subnormal width): the moment is no better, and the
+    // mean of the outer vertices lies in the sliver's hull.
+    Point2d mean = Point2d::Zero();
+    for (const Point2d& p : polygon.outer) mean += p;
+    return polygon.outer.empty() ? mean : Point2d(mean / static_cast<double>(polygon.outer.size()));
+  }
   return moment / outer_area;
 }
 

@@ -30,7 +30,8 @@ double SignedArea(const Ring2d& ring);
 /// Area of `polygon`: outer area minus the holes' areas.
 double Area(const Polygon2d& polygon);
 
-/// Area centroid of `polygon` (holes subtracted). Requires Area(polygon) > 0.
+/// Area centroid of `polygon` (holes subtracted); where the outer ring's area underflows to 0 (a
+/// sliver of subnormal width), the mean of its vertices.
 Point2d Centroid(const Polygon2d& polygon);
 
 /// Total number of vertices over all rings.

@@ -7,7 +7,8 @@
 namespace acdplan::acd::internal {
 
 /// Centroid(polygon), and Area(polygon) into `*area`: the same values, each ring's signed area
-/// computed once. Requires Area(polygon) > 0.
+/// computed once. Where the outer ring's area underflows to 0 (a sliver of subnormal width), the
+/// mean of its vertices.
 Point2d CentroidAndArea(const Polygon2d& polygon, double* area);
 
 }  // namespace acdplan::acd::internal

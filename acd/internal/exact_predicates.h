@@ -55,6 +55,22 @@ inline int OrientationAlong(const Point2d& a, const Point2d& ab, const Point2d& 
   return sign != 0 ? sign : ExactOrientation(a, b, c);
 }
 
+/// The orientation of a simple ring without repeated points, exactly: +1 counter-clockwise, -1
+/// clockwise, 0 for fewer than 3 vertices or all of them on a line. The turn at the
+/// lexicographically smallest vertex, a vertex of the hull, is the sign of the ring's area even
+/// where the area underflows a double (a sliver of subnormal width).
+inline int RingOrientation(const Ring2d& ring) {
+  const size_t n = ring.size();
+  if (n < 3) return 0;
+  size_t lowest = 0;
+  for (size_t i = 1; i < n; ++i) {
+    const Point2d& p = ring[i];
+    const Point2d& q = ring[lowest];
+    if (p.x() < q.x() || (p.x() == q.x() && p.y() < q.y())) lowest = i;
+  }
+  return Orientation(ring[(lowest + n - 1) % n], ring[lowest], ring[(lowest + 1) % n]);
+}
+
 /// Whether the ray from `p` toward +x crosses the edge a-b: the even-odd rule's test per edge,
 /// with the half-open rule on y (a ray through a vertex counts once) and an exact side test.
 inline bool RayCrossesEdge(const Point2d& p, const Point2d& a, const Point2d& b) {

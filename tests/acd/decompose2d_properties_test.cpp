@@ -812,6 +812,30 @@ TEST(Decompose2dTest, PocketOfSubnormalCoordinates) {
   ExpectEveryMeasureDecomposes({FuzzRegressionInput("regression-subnormal-pocket.wkt")}, 0.05);
 }
 
+// Found by fuzz/fuzz_decompose2d (a shapefile; fuzz/corpus/decompose2d/regression-underflowing-
+// sliver-area.wkt): above y = 0 the polygon is the triangle (0 0, 1e-307 0, 30 7.1e-307), whose
+// area, 3.6e-614, no double holds. The decomposition cut it off as it should, and
+// CheckDecomposition() called the component's outer ring and hull of zero area, from the
+// doubles' sign; its centroid divided by that zero. The signs are now exact where the double
+// area is 0, and such a component's centroid is its vertex mean.
+TEST(Decompose2dTest, ComponentWhoseAreaUnderflows) {
+  const std::vector<Polygon2d> input =
+      FuzzRegressionInput("regression-underflowing-sliver-area.wkt");
+  ExpectEveryMeasureDecomposes({input}, 0.05);
+  Decompose2dOptions options;
+  options.tau = 0.0;
+  const Decomposition2d decomposition = Decompose2d(input, options);
+  int slivers = 0;
+  for (const Component2d& component : decomposition.components) {
+    if (Area(component.polygon) != 0.0) continue;
+    ++slivers;
+    EXPECT_TRUE(component.centroid.allFinite());
+    EXPECT_GT(component.centroid.x(), 0.0);  // Within the sliver's box.
+    EXPECT_LT(component.centroid.x(), 30.0);
+  }
+  EXPECT_EQ(slivers, 1);
+}
+
 // Found by fuzz/fuzz_decompose2d (a polygon made valid by RepairPolygon(), minimised to
 // fuzz/corpus/decompose2d/regression-vertex-near-split-edge.wkt): in (17 14, 18 5.6e22, 7 22,
 // 16 2051, 17 21) the vertex (17, 21) lies 1.3e-22 left of the edge from (17, 14) up to the
