@@ -1,6 +1,5 @@
 #include "acd/read_polygons.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <filesystem>
 #include <functional>
@@ -40,10 +39,7 @@ std::vector<std::pair<size_t, size_t>> OverlappingPairs(const std::vector<Polygo
   std::vector<internal::IdBox> boxes;  // Of the members of MULTIPOLYGONs only.
   for (size_t k = 0; k < polygons.size(); ++k) {
     if (groups[k] < 0) continue;
-    Eigen::AlignedBox2d box;
-    for (const Point2d& p : polygons[k].outer) box.extend(p);
-    boxes.push_back(
-        {{box.min().x(), box.min().y()}, {box.max().x(), box.max().y()}, static_cast<int>(k)});
+    boxes.push_back(internal::RingBox(polygons[k].outer, static_cast<int>(k)));
   }
   std::vector<std::pair<size_t, size_t>> candidates;
   internal::ForEachSelfOverlap(boxes, [&](int a, int b) {

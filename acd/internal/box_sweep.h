@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "acd/polygon2d.h"
@@ -21,6 +22,19 @@ inline IdBox SegmentBox(const Point2d& a, const Point2d& b, int id, double grow 
   return {{std::min(a.x(), b.x()) - grow, std::min(a.y(), b.y()) - grow},
           {std::max(a.x(), b.x()) + grow, std::max(a.y(), b.y()) + grow},
           id};
+}
+
+/// The box of the vertices of `ring` (empty, lo > hi, for an empty ring).
+inline IdBox RingBox(const Ring2d& ring, int id) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  IdBox box{{kInf, kInf}, {-kInf, -kInf}, id};
+  for (const Point2d& p : ring) {
+    for (int d = 0; d < 2; ++d) {
+      box.lo[d] = std::min(box.lo[d], p[d]);
+      box.hi[d] = std::max(box.hi[d], p[d]);
+    }
+  }
+  return box;
 }
 
 /// Whether box `inner` lies within box `outer` (closed boxes).

@@ -3,7 +3,6 @@
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
-#include <limits>
 #include <vector>
 
 #include "acd/internal/box_sweep.h"
@@ -32,26 +31,13 @@ bool Contains(const std::vector<Kernel::Point_2>& outer_points, const Ring2d& in
   return false;
 }
 
-IdBox BoxOf(const Ring2d& ring, int id) {
-  IdBox box{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()},
-            {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()},
-            id};
-  for (const Point2d& p : ring) {
-    for (int d = 0; d < 2; ++d) {
-      box.lo[d] = std::min(box.lo[d], p[d]);
-      box.hi[d] = std::max(box.hi[d], p[d]);
-    }
-  }
-  return box;
-}
-
 }  // namespace
 
 std::vector<Polygon2d> PolygonsByNesting(const std::vector<Ring2d>& rings) {
   const size_t count = rings.size();
   if (count == 1) return {Polygon2d{rings[0], {}}};
   std::vector<IdBox> boxes(count);
-  for (size_t i = 0; i < count; ++i) boxes[i] = BoxOf(rings[i], static_cast<int>(i));
+  for (size_t i = 0; i < count; ++i) boxes[i] = RingBox(rings[i], static_cast<int>(i));
   // containers[i]: the rings that contain ring i, in increasing order. Only rings whose boxes
   // overlap are tested (a sweep, not all pairs: a record may hold thousands of islands), and a
   // ring's CGAL points are made once, when it is first a candidate container.
