@@ -38,7 +38,8 @@ struct HierarchyNode2d {
   Polygon2d piece;
   double concavity = 0.0;  ///< Its concavity [units].
   /// At a leaf, the piece's most concave point; at an internal node, the feature its cut(s)
-  /// resolved (the most concave point unless no valid cut started there).
+  /// resolved (the most concave point unless no valid cut started there, or the piece's holes
+  /// were halved rather than peeled: then where the path left the hole it started from).
   Point2d witness = Point2d::Zero();
   /// One cut (an outer notch), or k + 1 cuts along a path from the outer boundary through the
   /// k >= 1 holes the split resolves and back (a hole: two, at p and cw(p)).

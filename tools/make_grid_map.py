@@ -3,10 +3,12 @@
 
 Kinds: `noise` (each cell blocked with probability --blocked, as the speckle of a SLAM map),
 `maze` (a perfect maze of corridors one cell wide, by randomized depth-first search: WIDTH and
-HEIGHT are rounded down to odd numbers). Python's `random` draws the same numbers from a seed
+HEIGHT are rounded down to odd numbers), `warehouse` (rows of shelves 10 x 2 cells with aisles
+of 2 and a free border of 5, as many as fit, as in the warehouse maps of multi-agent path
+finding benchmarks; no randomness). Python's `random` draws the same numbers from a seed
 on every platform, so a seed names a map.
 
-Usage: make_grid_map.py noise|maze WIDTH HEIGHT OUT.map [--seed 1] [--blocked 0.2]
+Usage: make_grid_map.py noise|maze|warehouse WIDTH HEIGHT OUT.map [--seed 1] [--blocked 0.2]
 Example: make_grid_map.py noise 256 256 noise256.map && build/tools/acdplan env noise256.map
 """
 
@@ -42,9 +44,19 @@ def maze(width, height, rng):
     return grid
 
 
+def warehouse(width, height):
+    length, depth, aisle, border = 10, 2, 2, 5
+    grid = [[False] * width for _ in range(height)]
+    for y0 in range(border, height - border - depth + 1, depth + aisle):
+        for x0 in range(border, width - border - length + 1, length + aisle):
+            for y in range(y0, y0 + depth):
+                grid[y][x0:x0 + length] = [True] * length
+    return grid
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("kind", choices=["noise", "maze"])
+    parser.add_argument("kind", choices=["noise", "maze", "warehouse"])
     parser.add_argument("width", type=int)
     parser.add_argument("height", type=int)
     parser.add_argument("out")
@@ -54,8 +66,12 @@ def main():
     if args.width < 1 or args.height < 1:
         raise SystemExit("make_grid_map.py: WIDTH and HEIGHT must be at least 1")
     rng = random.Random(args.seed)
-    grid = (noise(args.width, args.height, args.blocked, rng) if args.kind == "noise"
-            else maze(args.width, args.height, rng))
+    if args.kind == "noise":
+        grid = noise(args.width, args.height, args.blocked, rng)
+    elif args.kind == "maze":
+        grid = maze(args.width, args.height, rng)
+    else:
+        grid = warehouse(args.width, args.height)
     with open(args.out, "w") as out:
         out.write("type octile\nheight %d\nwidth %d\nmap\n" % (len(grid), len(grid[0])))
         for row in grid:

@@ -2,6 +2,7 @@
 
 #include <CGAL/Polygon_2_algorithms.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -1061,27 +1062,19 @@ void SplitAlongPath(const Polygon2d& polygon, const HolePath& path, const Point2
   resolution->witness = witness;
 }
 
-// Resolves hole `h` the way Eqn. 4.2 ranks it: a hole is linked to the closest ring, which may
-// be another hole (Fig. 23: holes behind holes), and once linked its deepest point is the
-// antipode of the link (Fig. 19), which the next iteration would link in turn. Here both links
-// are made at once: from p and from cw(p), each to the closest visible vertex (or outer edge
-// point) not on a hole already crossed; a hole reached is left from its vertex farthest from
-// where it was entered, again to the closest visible point, until the outer boundary is
-// reached. The piece splits in two along this path and every hole on it is resolved by the one
-// split: where holes lie closer to each other than to the outer boundary (cells separated by
-// thin walls), the path crosses walls instead of running around them. Among many holes (a
-// noisy occupancy grid) such a walk can curl round and shut itself in, and its failed search
-// has offered every boundary point. Then both sides walk again, each only ever ahead, along
-// p - cw(p) on p's side and back along it on cw(p)'s, starting from h's vertex farthest that
-// way, entering each hole below its top and leaving it from its vertex farthest ahead: no link
-// goes back past another, so no side shuts itself in (a hole one side crosses may still reach
-// into the other's way). Returns false, leaving the choice to ResolveHole(), when no hole is
-// reached or the path cannot be completed.
-bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
-                          const Concavity2d& concavity, int h, Resolution* resolution) {
+enum class WalkOutcome { kPath, kNoHoleCrossed, kShutIn, kNotNearest };
+
+// The walk of ResolveHoleAlongPath() from hole h: one side from its vertex `start_a`, the other
+// from `start_b`, each only ever ahead along `ahead_a` / `ahead_b` when given. kPath, with the
+// path in `path`, when both sides reach the outer boundary and cross another hole. With
+// `nearest_links`, kNotNearest when a link to a hole is longer than the link its start would
+// make to the nearest visible point of any other ring.
+WalkOutcome WalkThroughHoles(const Polygon2d& polygon, const EdgeQuery& grid, int h, int start_a,
+                             int start_b, const Point2d* ahead_a, const Point2d* ahead_b,
+                             HolePath* path, bool nearest_links = false) {
   const int k = static_cast<int>(polygon.holes.size());
-  if (k < 2) return false;
   std::vector<char> crossed(k, 0);
+  crossed[h] = 1;
   std::vector<std::pair<Point2d, Point2d>> cuts;  // Made so far, for the crossing test.
   std::optional<Endpoint> outer_end;              // The first side's end.
   // Links `from` (a vertex of a crossed hole) to the closest visible point not on a crossed
@@ -1125,12 +1118,24 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
     std::vector<HoleCrossing> holes;
     Endpoint end;
   };
+  bool not_nearest = false;
   auto walk = [&](int start, const Point2d* ahead, Side* side) {
     hole_top.clear();  // (Along this side's `ahead`.)
     Endpoint from{h, start, false, polygon.holes[h][start]};
     for (;;) {
       const std::optional<Endpoint> to = link(from, ahead);
       if (!to) return false;
+      if (nearest_links && to->ring >= 0) {  // (A link to the outer ring ends the walk.)
+        const int own = from.ring;
+        const std::optional<Endpoint> nearest = grid.Nearest(
+            from.point, [&](int hole) { return hole == own; },
+            [&](const Endpoint& e) { return IsClearCut(polygon, grid, from, e); });
+        if (nearest && (to->point - from.point).squaredNorm() >
+                           (nearest->point - from.point).squaredNorm() * (1.0 + 1e-9)) {
+          not_nearest = true;
+          return false;
+        }
+      }
       cuts.emplace_back(from.point, to->point);
       if (to->ring < 0) {
         side->end = *to;
@@ -1154,41 +1159,148 @@ bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
       from = {to->ring, leave, false, hole[leave]};
     }
   };
+  Side a, b;
+  if (!walk(start_a, ahead_a, &a) || !walk(start_b, ahead_b, &b)) {
+    return not_nearest ? WalkOutcome::kNotNearest : WalkOutcome::kShutIn;
+  }
+  if (a.holes.empty() && b.holes.empty()) return WalkOutcome::kNoHoleCrossed;
+  // The path from a's end: side a's holes in reverse (entered where side a left them), h, b's.
+  *path = {a.end, b.end, {}};
+  for (auto it = a.holes.rbegin(); it != a.holes.rend(); ++it) {
+    path->holes.push_back({it->hole, it->leave, it->enter});
+  }
+  path->holes.push_back({h, start_a, start_b});
+  path->holes.insert(path->holes.end(), b.holes.begin(), b.holes.end());
+  return WalkOutcome::kPath;
+}
+
+// Where a walk from hole h started (side a's first cut).
+const Point2d& StartOf(const Polygon2d& polygon, const HolePath& path, int h) {
+  const auto at_h = std::find_if(path.holes.begin(), path.holes.end(),
+                                 [&](const HoleCrossing& c) { return c.hole == h; });
+  return polygon.holes[h][at_h->enter];
+}
+
+// Resolves hole `h` the way Eqn. 4.2 ranks it: a hole is linked to the closest ring, which may
+// be another hole (Fig. 23: holes behind holes), and once linked its deepest point is the
+// antipode of the link (Fig. 19), which the next iteration would link in turn. Here both links
+// are made at once: from p and from cw(p), each to the closest visible vertex (or outer edge
+// point) not on a hole already crossed; a hole reached is left from its vertex farthest from
+// where it was entered, again to the closest visible point, until the outer boundary is
+// reached. The piece splits in two along this path and every hole on it is resolved by the one
+// split: where holes lie closer to each other than to the outer boundary (cells separated by
+// thin walls), the path crosses walls instead of running around them. Among many holes (a
+// noisy occupancy grid) such a walk can curl round and shut itself in, and its failed search
+// has offered every boundary point. Then both sides walk again, each only ever ahead, along
+// p - cw(p) on p's side and back along it on cw(p)'s, starting from h's vertex farthest that
+// way, entering each hole below its top and leaving it from its vertex farthest ahead: no link
+// goes back past another, so no side shuts itself in (a hole one side crosses may still reach
+// into the other's way). Returns false, leaving the choice to ResolveHole(), when no hole is
+// reached or the path cannot be completed.
+bool ResolveHoleAlongPath(const Polygon2d& polygon, const EdgeQuery& grid,
+                          const Concavity2d& concavity, int h, Resolution* resolution) {
+  if (polygon.holes.size() < 2) return false;
   const HoleConcavity& antipodes = concavity.holes[h];
   if (antipodes.p == antipodes.cw_p) return false;
-  Side a, b;
-  int start_a = antipodes.p, start_b = antipodes.cw_p;  // Where the sides leave hole h.
-  auto walk_both = [&](const Point2d* ahead_a, const Point2d* ahead_b) {
-    std::fill(crossed.begin(), crossed.end(), 0);
-    crossed[h] = 1;
-    cuts.clear();
-    outer_end.reset();
-    a = Side();
-    b = Side();
-    return walk(start_a, ahead_a, &a) && walk(start_b, ahead_b, &b);
-  };
-  if (!walk_both(nullptr, nullptr)) {
+  HolePath path;
+  WalkOutcome outcome =
+      WalkThroughHoles(polygon, grid, h, antipodes.p, antipodes.cw_p, nullptr, nullptr, &path);
+  if (outcome == WalkOutcome::kShutIn) {
     // Along p - cw(p), from h's vertices farthest ahead and farthest behind: then h, too, lies
     // behind both sides (a hole curled round may reach past p and cw(p)).
     const Ring2d& ring = polygon.holes[h];
     const Point2d ahead = ring[antipodes.p] - ring[antipodes.cw_p];
     const Point2d behind = -ahead;
-    start_a = FarthestAlong(ring, ahead, antipodes.p);
-    start_b = FarthestAlong(ring, behind, antipodes.cw_p);
-    if (!walk_both(&ahead, &behind)) return false;
+    outcome = WalkThroughHoles(polygon, grid, h, FarthestAlong(ring, ahead, antipodes.p),
+                               FarthestAlong(ring, behind, antipodes.cw_p), &ahead, &behind, &path);
   }
-  if (a.holes.empty() && b.holes.empty()) return false;  // ResolveHole()'s two cuts.
-  const Endpoint& x = a.end;
-  const Endpoint& y = b.end;
-  // The path from x: side a's holes in reverse (entered where side a left them), h, side b's.
-  HolePath path{x, y, {}};
-  for (auto it = a.holes.rbegin(); it != a.holes.rend(); ++it) {
-    path.holes.push_back({it->hole, it->leave, it->enter});
-  }
-  path.holes.push_back({h, start_a, start_b});
-  path.holes.insert(path.holes.end(), b.holes.begin(), b.holes.end());
-  SplitAlongPath(polygon, path, polygon.holes[h][start_a], resolution);
+  if (outcome != WalkOutcome::kPath) return false;
+  SplitAlongPath(polygon, path, StartOf(polygon, path, h), resolution);
   return true;
+}
+
+// Whether a hole's split peels: one piece keeps fewer than an eighth of the holes, of at least
+// eight (with fewer, peeling costs little).
+bool PeelsHoles(const Polygon2d& polygon, const Resolution& resolution) {
+  const size_t k = polygon.holes.size();
+  const size_t fewer =
+      std::min(resolution.pieces[0].holes.size(), resolution.pieces[1].holes.size());
+  return k >= 8 && 8 * fewer < k;
+}
+
+// The unit direction the holes mostly run along: the principal axis of their vertices about
+// their centres (each hole's own principal axis, as Ch. IV.A.2.b takes its antipodes along,
+// summed), the leading eigenvector solved in closed form (no trigonometry, so the same on every
+// platform); it turns with the polygon, up to its sign. The x axis when no way is longer.
+Point2d HolesAxis(const Polygon2d& polygon, const std::vector<Point2d>& centres) {
+  double xx = 0.0, xy = 0.0, yy = 0.0;
+  for (int i = 0; i < static_cast<int>(polygon.holes.size()); ++i) {
+    for (const Point2d& v : polygon.holes[i]) {
+      const Point2d d = v - centres[i];
+      xx += d.x() * d.x();
+      xy += d.x() * d.y();
+      yy += d.y() * d.y();
+    }
+  }
+  const double half = 0.5 * (xx - yy);
+  const double larger = 0.5 * (xx + yy) + std::sqrt(half * half + xy * xy);
+  // Two forms of its eigenvector; the longer is the better conditioned.
+  const Point2d u(xy, larger - xx), w(larger - yy, xy);
+  const Point2d axis = u.squaredNorm() >= w.squaredNorm() ? u : w;
+  const double norm = axis.norm();
+  return norm > 0.0 ? Point2d(axis / norm) : Point2d(1.0, 0.0);
+}
+
+// Splits a piece with many holes in two along a walk through holes that divides them about
+// evenly, for when resolving the witness hole peels (PeelsHoles()). Every hole outranks every
+// outer notch (Eqn. 4.2's delta), so the order the holes are resolved in is ours to choose;
+// peeling a few holes off a piece that keeps the others, again and again, measures that piece
+// again each time: about H^2 / 4 hole measures for H holes where the chains of nearest holes
+// that rank them (Fig. 23) are arbitrary, as in a regular grid of obstacles (a warehouse);
+// halving makes it about H log H. The walk starts at the hole whose centre is the median across
+// the axis the holes mostly run along (HolesAxis()) and goes both ways along that axis, only
+// ever ahead (ResolveHoleAlongPath()'s second walk), as a hole's own cuts at p and cw(p) would:
+// in a warehouse, along a row of shelves, leaving the aisles between rows whole. Each link
+// between holes must be as short as the nearest link from its start, ahead or not: the gaps
+// such a walk cuts are those Eqn. 4.2's chains cut; among irregular holes, where going ahead
+// would take longer cuts, the witness's split stands. Across the axis if the walk along it
+// cannot be made. False, with `resolution` as it was, when neither can.
+bool HalveHoles(const Polygon2d& polygon, const EdgeQuery& grid, Resolution* resolution) {
+  const int k = static_cast<int>(polygon.holes.size());
+  std::vector<Point2d> centres(k);
+  for (int i = 0; i < k; ++i) {
+    centres[i] = Point2d::Zero();
+    for (const Point2d& v : polygon.holes[i]) centres[i] += v;
+    centres[i] /= static_cast<double>(polygon.holes[i].size());
+  }
+  // `d` or -d, whichever hole k - 1's centre lies no nearer along than hole 0's: a sign the
+  // holes' order fixes, so that the walk turns and mirrors with the polygon.
+  auto oriented = [&](const Point2d& d) {
+    return centres[0].dot(d) <= centres[k - 1].dot(d) ? d : Point2d(-d);
+  };
+  const Point2d along = HolesAxis(polygon, centres);
+  std::vector<double> across(k);
+  std::vector<int> order(k);
+  for (const Point2d& axis : {along, Point2d(-along.y(), along.x())}) {
+    const Point2d ahead = oriented(axis), behind = -ahead;
+    const Point2d normal = oriented(Point2d(-axis.y(), axis.x()));
+    for (int i = 0; i < k; ++i) across[i] = centres[i].dot(normal);
+    std::iota(order.begin(), order.end(), 0);
+    // A total order (ties by index), so the median does not depend on the standard library.
+    auto before = [&](int u, int v) {
+      return across[u] != across[v] ? across[u] < across[v] : u < v;
+    };
+    std::nth_element(order.begin(), order.begin() + k / 2, order.end(), before);
+    const int h = order[k / 2];
+    const Ring2d& ring = polygon.holes[h];
+    HolePath path;
+    if (WalkThroughHoles(polygon, grid, h, FarthestAlong(ring, ahead), FarthestAlong(ring, behind),
+                         &ahead, &behind, &path, /*nearest_links=*/true) == WalkOutcome::kPath) {
+      SplitAlongPath(polygon, path, StartOf(polygon, path, h), resolution);
+      return true;
+    }
+  }
+  return false;
 }
 
 // Resolves hole `h`: connects its antipode p to the outer boundary (Algorithm 5) and, so that
@@ -1268,9 +1380,12 @@ bool Resolve(const Polygon2d& polygon, const Concavity2d& concavity, const Resol
     std::stable_partition(order.begin(), order.end(),
                           [&](int k) { return k == concavity.witness_hole; });
     for (int k : order) {
-      if (ResolveHole(polygon, grid, concavity, k, options, resolution)) return true;
+      if (ResolveHole(polygon, grid, concavity, k, options, resolution)) {
+        if (PeelsHoles(polygon, *resolution)) HalveHoles(polygon, grid, resolution);
+        return true;
+      }
     }
-    return false;
+    return HalveHoles(polygon, grid, resolution);
   }
   // The witness; should no cut resolve it, the other outer notches by decreasing concavity.
   if (concavity.witness_vertex >= 0 &&

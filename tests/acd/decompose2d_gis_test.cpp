@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -210,6 +212,56 @@ TEST(Decompose2dGisTest, LargeTileDecomposesAndPassesCheckDecomposition) {
     RecordProperty(name + "_decompose_ms", std::to_string(decomposition.stats.time_ms));
     RecordProperty(name + "_components", static_cast<int>(decomposition.components.size()));
     EXPECT_GT(decomposition.components.size(), polygon.holes.size());
+  }
+}
+
+// A warehouse: `rows` x `columns` shelves (10 x 2) with aisles of 2 in a hall with a border of 5,
+// turned by `degrees` about the origin.
+Polygon2d Warehouse(int rows, int columns, double degrees) {
+  constexpr double kLength = 10.0, kWidth = 2.0, kAisle = 2.0, kBorder = 5.0;
+  const double radians = degrees * EIGEN_PI / 180.0;
+  const double c = std::cos(radians), s = std::sin(radians);
+  auto turned = [&](double x, double y) { return Point2d(c * x - s * y, s * x + c * y); };
+  const double width = 2 * kBorder + columns * kLength + (columns - 1) * kAisle;
+  const double height = 2 * kBorder + rows * kWidth + (rows - 1) * kAisle;
+  Polygon2d hall;
+  hall.outer = {turned(0, 0), turned(width, 0), turned(width, height), turned(0, height)};
+  for (int r = 0; r < rows; ++r) {
+    for (int k = 0; k < columns; ++k) {
+      const double x = kBorder + k * (kLength + kAisle), y = kBorder + r * (kWidth + kAisle);
+      hall.holes.push_back({turned(x, y), turned(x, y + kWidth), turned(x + kLength, y + kWidth),
+                            turned(x + kLength, y)});
+    }
+  }
+  return hall;
+}
+
+// The hierarchy's depth: its longest path from the root.
+int Depth(const Decomposition2d& decomposition) {
+  int depth = 0;
+  for (const HierarchyNode2d& node : decomposition.tree) depth = std::max(depth, node.depth);
+  return depth;
+}
+
+// Resolving the witness shelf each time peeled one or two shelves off a piece that kept the
+// others, so the hierarchy was about H / 2 deep for H shelves and each level measured what
+// remained (quadratic); a piece whose split peels is halved instead, along a row of shelves,
+// whichever way the rows run.
+TEST(Decompose2dGisTest, WarehouseIsHalvedAlongRowsOfShelvesNotPeeled) {
+  for (const double degrees : {0.0, 30.0}) {
+    const Polygon2d hall = Warehouse(20, 10, degrees);
+    for (const ConcavityMeasure measure :
+         {ConcavityMeasure::kShortestPath, ConcavityMeasure::kStraightLine}) {
+      const std::string name = ToString(measure) + "_" + std::to_string(static_cast<int>(degrees));
+      SCOPED_TRACE(name);
+      const Decomposition2d decomposition = DecomposeAndCheck(hall, 0.01, measure);
+      RecordProperty(name + "_depth", Depth(decomposition));
+      RecordProperty(name + "_components", static_cast<int>(decomposition.components.size()));
+      EXPECT_LT(Depth(decomposition), 40);
+      for (const Component2d& component : decomposition.components) {
+        EXPECT_TRUE(component.polygon.holes.empty());
+      }
+    }
   }
 }
 

@@ -370,7 +370,9 @@ TEST(FreeSpace2dTest, NoisyGridIsSplitAtEachPiecesWitness) {
   // along a path through its neighbours to the outer boundary even where a walk from hole to
   // nearest hole curls round and shuts itself in. (Before, such a split went to another
   // feature after searches of every boundary point: a 256 x 256 grid took minutes. Not
-  // guaranteed: at 35% blocked cells 7 of 27,000 splits of such grids still go elsewhere.)
+  // guaranteed: at 35% blocked cells 7 of 27,000 splits of such grids still go elsewhere.) A
+  // piece of eight holes or more whose witness split would peel a few holes off the others is
+  // halved by a walk from another hole instead: its split names a vertex of that hole.
   acd::Decompose2dOptions options;
   options.measure = acd::ConcavityMeasure::kStraightLine;
   options.keep_pieces = true;
@@ -390,9 +392,13 @@ TEST(FreeSpace2dTest, NoisyGridIsSplitAtEachPiecesWitness) {
       if (node.children[0] < 0) continue;
       const acd::Concavity2d c = acd::MeasureConcavity(node.piece, measure);
       // A hole's split names one of the hole's vertices, where its cuts leave it.
-      const acd::Ring2d witnesses = c.witness_hole >= 0
-                                        ? node.piece.holes[c.witness_hole]
-                                        : acd::Ring2d{node.piece.outer[c.witness_vertex]};
+      acd::Ring2d witnesses = c.witness_hole >= 0 ? node.piece.holes[c.witness_hole]
+                                                  : acd::Ring2d{node.piece.outer[c.witness_vertex]};
+      if (c.witness_hole >= 0 && node.piece.holes.size() >= 8) {  // Perhaps halved.
+        for (const acd::Ring2d& hole : node.piece.holes) {
+          witnesses.insert(witnesses.end(), hole.begin(), hole.end());
+        }
+      }
       EXPECT_THAT(witnesses, ::testing::Contains(node.witness))
           << "seed " << seed << ": a piece of " << acd::VertexCount(node.piece) << " vertices and "
           << node.piece.holes.size() << " holes";
