@@ -31,6 +31,43 @@ int Mapped(const std::vector<int>& map, int source) {
                                                               : -1;
 }
 
+// A JSON object written member by member, each member's value dumped as it comes: the same
+// text as ordered_json's compact dump() of the whole object, without holding the whole document
+// (for a layer of 200,000 components, building it took most of the time and memory of writing).
+class JsonObjectText {
+ public:
+  JsonObjectText() : text_("{") {}
+
+  void Member(const std::string& key, const Json& value) {
+    Key(key);
+    text_ += value.dump();
+  }
+  // An array member of `count` elements, element k being `element(k)`.
+  template <typename Element>
+  void ArrayMember(const std::string& key, size_t count, Element element) {
+    Key(key);
+    text_ += '[';
+    for (size_t k = 0; k < count; ++k) {
+      if (k > 0) text_ += ',';
+      text_ += Json(element(k)).dump();
+    }
+    text_ += ']';
+  }
+  // The object's text, closed, and a newline; once, after the last member.
+  std::string Finish() {
+    text_ += "}\n";
+    return std::move(text_);
+  }
+
+ private:
+  void Key(const std::string& key) {
+    if (text_.back() != '{') text_ += ',';
+    text_ += Json(key).dump();
+    text_ += ':';
+  }
+  std::string text_;
+};
+
 /// Path data of a polygon with holes.
 std::string PathData(const SvgCanvas& canvas, const Polygon2d& polygon) {
   std::vector<Ring2d> rings{polygon.outer};
@@ -38,19 +75,20 @@ std::string PathData(const SvgCanvas& canvas, const Polygon2d& polygon) {
   return canvas.PathData(rings);
 }
 
-// A GeoJSON FeatureCollection of `features`, with the foreign member (RFC 7946 6.1) "acdplan"
-// that names `format` and what was decomposed, and how.
+// A GeoJSON FeatureCollection of `count` features, feature k being `feature(k)`, with the
+// foreign member (RFC 7946 6.1) "acdplan" that names `format` and what was decomposed, and how.
+template <typename Feature>
 std::string GeoJsonLayer(const Decomposition2d& decomposition, const DecompositionLabels& labels,
-                         const std::string& format, Json features) {
-  Json json;
-  json["type"] = "FeatureCollection";
-  json["acdplan"] = {{"format", format},
-                     {"input", labels.input},
-                     {"measure", ToString(decomposition.measure)},
-                     {"tau", decomposition.tau},
-                     {"tau_rel", labels.tau_rel >= 0 ? Json(labels.tau_rel) : Json(nullptr)}};
-  json["features"] = std::move(features);
-  return json.dump() + "\n";
+                         const std::string& format, size_t count, Feature feature) {
+  JsonObjectText json;
+  json.Member("type", "FeatureCollection");
+  json.Member("acdplan", {{"format", format},
+                          {"input", labels.input},
+                          {"measure", ToString(decomposition.measure)},
+                          {"tau", decomposition.tau},
+                          {"tau_rel", labels.tau_rel >= 0 ? Json(labels.tau_rel) : Json(nullptr)}});
+  json.ArrayMember("features", count, feature);
+  return json.Finish();
 }
 
 }  // namespace
@@ -59,15 +97,16 @@ std::string DecompositionToJson(const Decomposition2d& decomposition,
                                 const DecompositionLabels& labels,
                                 const std::vector<int>& input_polygons,
                                 const std::vector<int>& input_features) {
-  Json json;
-  json["format"] = "acdplan.decomposition2d/1";
-  json["input"] = labels.input;
-  json["measure"] = ToString(decomposition.measure);
-  json["tau"] = decomposition.tau;
-  json["tau_rel"] = labels.tau_rel >= 0 ? Json(labels.tau_rel) : Json(nullptr);
+  JsonObjectText json;
+  json.Member("format", "acdplan.decomposition2d/1");
+  json.Member("input", labels.input);
+  json.Member("measure", ToString(decomposition.measure));
+  json.Member("tau", decomposition.tau);
+  json.Member("tau_rel", labels.tau_rel >= 0 ? Json(labels.tau_rel) : Json(nullptr));
 
-  Json components = Json::array();
-  for (const Component2d& component : decomposition.components) {
+  const std::vector<Component2d>& components = decomposition.components;
+  json.ArrayMember("components", components.size(), [&](size_t k) {
+    const Component2d& component = components[k];
     Json c;
     c["boundary"] = RingToJson(component.polygon.outer);
     Json holes = Json::array();
@@ -83,31 +122,36 @@ std::string DecompositionToJson(const Decomposition2d& decomposition,
     if (const int feature = Mapped(input_features, component.source); feature >= 0) {
       c["input_feature"] = feature;
     }
-    components.push_back(std::move(c));
-  }
-  json["components"] = std::move(components);
+    return c;
+  });
 
-  Json openings = Json::array();
-  for (const Opening2d& opening : decomposition.openings) {
+  const std::vector<Opening2d>& openings = decomposition.openings;
+  json.ArrayMember("openings", openings.size(), [&](size_t k) {
+    const Opening2d& opening = openings[k];
     Json o;
     o["a"] = PointToJson(opening.a);
     o["b"] = PointToJson(opening.b);
     o["components"] = Json::array({opening.component_a, opening.component_b});
-    openings.push_back(std::move(o));
-  }
-  json["openings"] = std::move(openings);
+    return o;
+  });
 
   const DecompositionStats2d& stats = decomposition.stats;
-  json["stats"] = {{"vertices", stats.vertices},     {"notches", stats.notches},
-                   {"components", stats.components}, {"max_concavity", stats.max_concavity},
-                   {"convexity", stats.convexity},   {"time_ms", stats.time_ms}};
+  json.Member("stats", {{"vertices", stats.vertices},
+                        {"notches", stats.notches},
+                        {"components", stats.components},
+                        {"max_concavity", stats.max_concavity},
+                        {"convexity", stats.convexity},
+                        {"time_ms", stats.time_ms}});
 
   // Extensions (DESIGN.md: extend, never change).
-  if (decomposition.min_convexity > 0) json["min_convexity"] = decomposition.min_convexity;
-  json["graph"] = ComponentGraph(decomposition);
+  if (decomposition.min_convexity > 0) {
+    json.Member("min_convexity", decomposition.min_convexity);
+  }
+  const std::vector<std::vector<int>> graph = ComponentGraph(decomposition);
+  json.ArrayMember("graph", graph.size(), [&](size_t k) { return graph[k]; });
 
   // nlohmann writes doubles with the shortest text that reads back to the same value.
-  return json.dump() + "\n";
+  return json.Finish();
 }
 
 std::string DecompositionToGeoJson(const Decomposition2d& decomposition,
@@ -132,8 +176,7 @@ std::string DecompositionToGeoJson(const Decomposition2d& decomposition,
     }
     return *parsed;
   };
-  Json features = Json::array();
-  for (size_t k = 0; k < decomposition.components.size(); ++k) {
+  auto feature = [&](size_t k) {
     const Component2d& component = decomposition.components[k];
     // Counter-clockwise outer rings and clockwise holes: RFC 7946's right-hand rule.
     Json rings = Json::array({closed(component.polygon.outer)});
@@ -145,29 +188,29 @@ std::string DecompositionToGeoJson(const Decomposition2d& decomposition,
     properties["acd_concav"] = component.concavity;
     properties["acd_poly"] = polygon >= 0 ? Json(polygon) : Json(nullptr);
     properties["acd_feat"] = feature >= 0 ? Json(feature) : Json(nullptr);
-    features.push_back({{"type", "Feature"},
-                        {"geometry", {{"type", "Polygon"}, {"coordinates", std::move(rings)}}},
-                        {"properties", std::move(properties)}});
-  }
+    return Json{{"type", "Feature"},
+                {"geometry", {{"type", "Polygon"}, {"coordinates", std::move(rings)}}},
+                {"properties", std::move(properties)}};
+  };
   return GeoJsonLayer(decomposition, labels, "acdplan.decomposition2d.geojson/1",
-                      std::move(features));
+                      decomposition.components.size(), feature);
 }
 
 std::string OpeningsToGeoJson(const Decomposition2d& decomposition,
                               const DecompositionLabels& labels) {
-  Json features = Json::array();
-  for (size_t k = 0; k < decomposition.openings.size(); ++k) {
+  auto feature = [&](size_t k) {
     const Opening2d& opening = decomposition.openings[k];
     Json line = Json::array({PointToJson(opening.a), PointToJson(opening.b)});
-    features.push_back({{"type", "Feature"},
-                        {"geometry", {{"type", "LineString"}, {"coordinates", std::move(line)}}},
-                        {"properties",
-                         {{"acd_id", k},
-                          {"acd_a", opening.component_a},
-                          {"acd_b", opening.component_b},
-                          {"acd_length", (opening.b - opening.a).norm()}}}});
-  }
-  return GeoJsonLayer(decomposition, labels, "acdplan.openings2d.geojson/1", std::move(features));
+    return Json{{"type", "Feature"},
+                {"geometry", {{"type", "LineString"}, {"coordinates", std::move(line)}}},
+                {"properties",
+                 {{"acd_id", k},
+                  {"acd_a", opening.component_a},
+                  {"acd_b", opening.component_b},
+                  {"acd_length", (opening.b - opening.a).norm()}}}};
+  };
+  return GeoJsonLayer(decomposition, labels, "acdplan.openings2d.geojson/1",
+                      decomposition.openings.size(), feature);
 }
 
 std::string DecompositionToSvg(const Decomposition2d& decomposition,
