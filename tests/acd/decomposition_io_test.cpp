@@ -187,6 +187,20 @@ TEST(DecompositionToJsonTest, KeysAppearInTheContractOrder) {
   }
 }
 
+// The writers emit member by member; the text must be what one compact dump of the whole
+// document gives (the same bytes as before they did), ended by a newline.
+TEST(DecompositionToJsonTest, TextIsOneCompactDumpOfTheDocument) {
+  const Decomposition2d d = HandBuilt();
+  for (const std::string& text :
+       {DecompositionToJson(d, {"l.poly", 0.025}, {7, 3}, {2, 1}), DecompositionToJson({}, {}),
+        DecompositionToGeoJson(d, {"l.poly", 0.025}), OpeningsToGeoJson(d, {"l.poly", -1.0}),
+        OpeningsToGeoJson({}, {})}) {
+    ASSERT_FALSE(text.empty());
+    EXPECT_EQ(text.back(), '\n');
+    EXPECT_EQ(nlohmann::ordered_json::parse(text).dump() + "\n", text);
+  }
+}
+
 TEST(DecompositionToJsonTest, EmptyDecompositionIsValid) {
   const json j = json::parse(DecompositionToJson(Decomposition2d{}, {}));
   EXPECT_TRUE(j.at("components").empty());
