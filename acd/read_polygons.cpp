@@ -223,7 +223,7 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
   }
   std::ifstream in = OpenFile(path);
   std::vector<Polygon2d> polygons = reader(in, path);
-  if (in.bad()) throw InputError(path + ": cannot read the file: read error");
+  CheckRead(in, path);
   if (polygons.empty()) throw InputError(path + ": no polygon in file");
   multipolygons.resize(polygons.size(), -1);
   for (size_t k = features.size(); k < polygons.size(); ++k) {

@@ -16,21 +16,30 @@
 
 namespace acdplan {
 
+namespace {
+
+[[noreturn]] void CannotRead(const std::string& path, const std::string& why) {
+  throw InputError(path + ": cannot read the file: " + why);
+}
+
+}  // namespace
+
 std::ifstream OpenFile(const std::string& path) {
-  auto fail = [&path](const std::string& why) {
-    throw InputError(path + ": cannot read the file: " + why);
-  };
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) fail("it is a directory");
+  if (std::filesystem::is_directory(path, ec)) CannotRead(path, "it is a directory");
   std::ifstream in(path, std::ios::binary);
-  if (!in) fail(std::strerror(errno));
+  if (!in) CannotRead(path, std::strerror(errno));
   return in;
+}
+
+void CheckRead(const std::istream& in, const std::string& path) {
+  if (in.bad()) CannotRead(path, "read error");
 }
 
 std::string ReadFile(const std::string& path) {
   std::ifstream in = OpenFile(path);
   std::string text = ReadRest(in);
-  if (in.bad()) throw InputError(path + ": cannot read the file: read error");
+  CheckRead(in, path);
   return text;
 }
 

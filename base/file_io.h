@@ -16,6 +16,10 @@ std::string ReadFile(const std::string& path);
 /// @throws InputError as ReadFile().
 std::ifstream OpenFile(const std::string& path);
 
+/// @throws InputError "PATH: cannot read the file: read error" if reading `in` (OpenFile(path))
+///         failed.
+void CheckRead(const std::istream& in, const std::string& path);
+
 /// The rest of `in`, bytes as they are: in one piece where the stream tells its size (a file),
 /// else block by block.
 std::string ReadRest(std::istream& in);

@@ -2,7 +2,6 @@
 
 #include <CGAL/Polygon_2_algorithms.h>
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
