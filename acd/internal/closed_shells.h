@@ -18,9 +18,11 @@ int VolumeSign(const TriangleMesh& mesh);
 
 /// For closed shells `shells` (triangle lists of `mesh`), each free of self-intersections and
 /// no two crossing: enclosing[i] lists, ascending, the shells j whose bounded side holds shell
-/// i (tested at a vertex of i that is not on j, with CGAL Side_of_triangle_mesh, exact
-/// predicates). Shells that share all their vertices are never nested. O(S^2) bounding-box
-/// tests plus O(log n) ray queries per candidate pair.
+/// i, tested at a vertex of i that is not on j by the parity of j's faces a ray from it
+/// crosses (exact predicates; upward, and in random directions, seeded, where that ray meets
+/// an edge or a vertex). Shells that share all their vertices are never nested. O(S^2)
+/// bounding-box tests, and per shell j tested, one box intersection of its faces with the
+/// upward rays of all its tests.
 std::vector<std::vector<int>> EnclosingShells(const TriangleMesh& mesh,
                                               const std::vector<std::vector<int>>& shells);
 

@@ -19,6 +19,7 @@
 
 #include "acd/internal/disjoint_sets.h"
 #include "acd/internal/exact_rounding.h"
+#include "acd/internal/segment_crossings.h"
 #include "acd/internal/separate_pinches.h"
 #include "base/random.h"
 
@@ -113,35 +114,6 @@ void Refine(const Triangle& t, const Constraints& c, std::vector<Corners>* out) 
   }
 }
 
-// The signed count of the triangles `shells[i]`, i in `candidates`, that the segment from `from`
-// to `to` crosses, +1 where it leaves through a triangle's front; empty if it meets an edge or a
-// vertex of one. Triangles through `from` are coplanar with it there and do not count.
-std::optional<int> Crossings(const std::vector<Triangle>& shells,
-                             const std::vector<size_t>& candidates, const Point& from,
-                             const Point& to) {
-  int winding = 0;
-  for (const size_t i : candidates) {
-    const Triangle& t = shells[i];
-    const CGAL::Orientation side = CGAL::orientation(t[0], t[1], t[2], from);
-    if (side == CGAL::COPLANAR) continue;
-    const CGAL::Orientation end = CGAL::orientation(t[0], t[1], t[2], to);
-    if (end == side || end == CGAL::COPLANAR) continue;
-    const CGAL::Orientation o[3] = {CGAL::orientation(from, to, t[0], t[1]),
-                                    CGAL::orientation(from, to, t[1], t[2]),
-                                    CGAL::orientation(from, to, t[2], t[0])};
-    const bool positive =
-        o[0] == CGAL::POSITIVE || o[1] == CGAL::POSITIVE || o[2] == CGAL::POSITIVE;
-    const bool negative =
-        o[0] == CGAL::NEGATIVE || o[1] == CGAL::NEGATIVE || o[2] == CGAL::NEGATIVE;
-    if (positive && negative) continue;  // The ray passes beside t.
-    if (o[0] == CGAL::COPLANAR || o[1] == CGAL::COPLANAR || o[2] == CGAL::COPLANAR) {
-      return std::nullopt;  // Through an edge or a vertex of t.
-    }
-    winding += side == CGAL::NEGATIVE ? 1 : -1;
-  }
-  return winding;
-}
-
 // The winding number of `shells` just in front of `from` (a point inside a refined triangle
 // of normal `normal`), counted along rays from `from` into the front side that end `reach`
 // beyond every shell triangle: along `normal`, then, while a ray meets an edge or a vertex, in
@@ -168,7 +140,8 @@ std::optional<int> FrontWinding(const std::vector<Triangle>& shells,
     for (size_t i = 0; i < shells.size(); ++i) {
       if (CGAL::do_overlap(boxes[i], ray_box)) candidates.push_back(i);
     }
-    if (const std::optional<int> winding = Crossings(shells, candidates, from, to)) return winding;
+    if (const std::optional<int> winding = SegmentCrossings(shells, candidates, from, to))
+      return winding;
   }
   return std::nullopt;
 }
@@ -440,7 +413,7 @@ std::optional<WindingUnion> UniteByWinding(const TriangleMesh& mesh, const std::
   for (int g = 0; g < count; ++g) {
     if (patches.Find(g) != g) continue;
     const size_t i = static_cast<size_t>(g);
-    if (axis_end[i]) front[i] = Crossings(shells, met[i], from[i], *axis_end[i]);
+    if (axis_end[i]) front[i] = SegmentCrossings(shells, met[i], from[i], *axis_end[i]);
     if (!front[i]) front[i] = FrontWinding(shells, boxes, reach, from[i], normal[i], rng);
     if (!front[i]) return std::nullopt;
   }
