@@ -183,43 +183,61 @@ std::vector<std::string> ShapefileAttributes(const std::string& shp_path,
   return rows;
 }
 
+// The formats ReadPolygons() reads, told by the file's extension (any case).
+enum class PolygonFormat { kPoly, kWkt, kGeoJson, kShapefile, kUnknown };
+
+PolygonFormat FormatOf(const std::string& path) {
+  static constexpr std::pair<const char*, PolygonFormat> kExtensions[] = {
+      {".poly", PolygonFormat::kPoly},       {".wkt", PolygonFormat::kWkt},
+      {".geojson", PolygonFormat::kGeoJson}, {".json", PolygonFormat::kGeoJson},
+      {".shp", PolygonFormat::kShapefile},
+  };
+  const std::string extension = internal::ToLower(std::filesystem::path(path).extension().string());
+  for (const auto& [name, format] : kExtensions) {
+    if (extension == name) return format;
+  }
+  return PolygonFormat::kUnknown;
+}
+
 }  // namespace
 
-bool IsPolygonFile(const std::string& path) {
-  const std::string extension = internal::ToLower(std::filesystem::path(path).extension().string());
-  return extension == ".poly" || extension == ".wkt" || extension == ".geojson" ||
-         extension == ".json" || extension == ".shp";
-}
+bool IsPolygonFile(const std::string& path) { return FormatOf(path) != PolygonFormat::kUnknown; }
 
 std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>* reference_radii,
                                     const ReadPolygonsOptions& options) {
-  const std::string extension = internal::ToLower(std::filesystem::path(path).extension().string());
+  const PolygonFormat format = FormatOf(path);
   using Reader = std::function<std::vector<Polygon2d>(std::istream&, const std::string&)>;
   Reader reader = nullptr;
   std::vector<std::string> warnings;
   std::vector<int> multipolygons;  // Per polygon of the file: its MULTIPOLYGON, or -1.
   std::vector<int> features;       // Per polygon of the file: its feature (default: itself).
   if (options.feature_properties != nullptr) options.feature_properties->clear();
-  if (extension == ".poly") {
-    reader = [&](std::istream& in, const std::string& source) {
-      return ReadPoly(in, source, &warnings);
-    };
-  } else if (extension == ".wkt") {
-    reader = [&](std::istream& in, const std::string& source) {
-      return ReadWkt(in, source, &multipolygons, &features);
-    };
-  } else if (extension == ".geojson" || extension == ".json") {
-    reader = [&](std::istream& in, const std::string& source) {
-      return ReadGeoJson(in, source, &multipolygons, &features, options.feature_properties,
-                         {options.skip_non_areal, &warnings});
-    };
-  } else if (extension == ".shp") {
-    reader = [&](std::istream& in, const std::string& source) {
-      return ReadShapefile(in, source, &multipolygons, &warnings, &features);
-    };
-  } else {
-    throw InputError(path + ": unknown polygon file extension '" + extension + "' (expected " +
-                     kPolygonFileExtensions + ")");
+  switch (format) {
+    case PolygonFormat::kPoly:
+      reader = [&](std::istream& in, const std::string& source) {
+        return ReadPoly(in, source, &warnings);
+      };
+      break;
+    case PolygonFormat::kWkt:
+      reader = [&](std::istream& in, const std::string& source) {
+        return ReadWkt(in, source, &multipolygons, &features);
+      };
+      break;
+    case PolygonFormat::kGeoJson:
+      reader = [&](std::istream& in, const std::string& source) {
+        return ReadGeoJson(in, source, &multipolygons, &features, options.feature_properties,
+                           {options.skip_non_areal, &warnings});
+      };
+      break;
+    case PolygonFormat::kShapefile:
+      reader = [&](std::istream& in, const std::string& source) {
+        return ReadShapefile(in, source, &multipolygons, &warnings, &features);
+      };
+      break;
+    case PolygonFormat::kUnknown:
+      throw InputError(path + ": unknown polygon file extension '" +
+                       internal::ToLower(std::filesystem::path(path).extension().string()) +
+                       "' (expected " + kPolygonFileExtensions + ")");
   }
   std::ifstream in = OpenFile(path);
   std::vector<Polygon2d> polygons = reader(in, path);
@@ -229,7 +247,7 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
   for (size_t k = features.size(); k < polygons.size(); ++k) {
     features.push_back(static_cast<int>(k));
   }
-  if (extension == ".shp") {
+  if (format == PolygonFormat::kShapefile) {
     NoteGeographicCoordinates(path, &warnings);
     if (options.feature_properties != nullptr) {
       *options.feature_properties = ShapefileAttributes(path, features, &warnings);
