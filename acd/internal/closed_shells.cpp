@@ -95,8 +95,9 @@ int SideOfShell(const std::vector<ShellTriangle>& triangles, const std::vector<F
     }
   }
   std::optional<int> winding;
-  if (met != nullptr)
+  if (met != nullptr) {
     winding = SegmentCrossings(triangles, *met, p, ShellPoint(p.x(), p.y(), above));
+  }
   if (!winding) winding = WindingAlongRandomRays(triangles, face_boxes, box, p, rng);
   return *winding % 2 != 0 ? 1 : -1;
 }

@@ -140,8 +140,9 @@ std::optional<int> FrontWinding(const std::vector<Triangle>& shells,
     for (size_t i = 0; i < shells.size(); ++i) {
       if (CGAL::do_overlap(boxes[i], ray_box)) candidates.push_back(i);
     }
-    if (const std::optional<int> winding = SegmentCrossings(shells, candidates, from, to))
+    if (const std::optional<int> winding = SegmentCrossings(shells, candidates, from, to)) {
       return winding;
+    }
   }
   return std::nullopt;
 }
