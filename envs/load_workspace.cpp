@@ -90,6 +90,11 @@ World LoadWorld(const std::string& path, const acd::ReadPolygonsOptions& polygon
     }
     return world;
   }
+  if (extension != ".map" && !acd::IsPolygonFile(path)) {
+    throw InputError(path + ": unknown world file extension '" + extension +
+                     "' (expected .yaml, .yml, .map, " + acd::kPolygonFileExtensions +
+                     ", or a mesh: " + kMeshFileExtensions + ")");
+  }
   world.kind = extension == ".map" ? "Moving AI map" : "polygon file";
   world.workspace2d = LoadWorkspace2d(path, polygons, map);
   return world;

@@ -20,6 +20,9 @@ namespace acdplan::envs {
 ///         <reason>" when assimp cannot parse it, and "<path>: no triangles in file".
 acd::TriangleMesh ReadMesh(const std::string& path);
 
+/// The extensions IsMeshFile() knows, for messages.
+inline constexpr char kMeshFileExtensions[] = ".obj, .off, .ply, .stl, .dae, .gltf or .glb";
+
 /// Whether `path` names a mesh file by its extension (any case): .obj, .off, .ply, .stl, .dae,
 /// .gltf or .glb, the formats the loaders and `acdplan decompose` take as meshes.
 bool IsMeshFile(const std::string& path);

@@ -135,6 +135,12 @@ using acdplan::CheckOutputPath;
 
 int RunDecompose(const DecomposeArguments& args, const InputKindOptions& kinds) {
   if (acdplan::envs::IsMeshFile(args.input)) return RunDecomposeMesh(args, kinds);
+  if (!acd::IsPolygonFile(args.input)) {
+    throw acdplan::InputError(args.input + ": unknown file extension '" +
+                              std::filesystem::path(args.input).extension().string() +
+                              "' (expected a polygon file, " + acd::kPolygonFileExtensions +
+                              ", or a mesh, " + acdplan::envs::kMeshFileExtensions + ")");
+  }
   for (const CLI::Option* option : kinds.meshes_only) {
     if (option->count() > 0) {
       throw acdplan::InputError(option->get_name() + ": applies to mesh files only (" + args.input +

@@ -102,6 +102,16 @@ TEST_F(CliTest, MissingFileNamesTheFile) {
   EXPECT_NE(run.err.find(missing), std::string::npos) << run.err;
 }
 
+TEST_F(CliTest, UnknownExtensionListsThePolygonAndMeshFormats) {
+  const std::string input = Write("points.xyz", "0 0 0\n").string();
+  const RunResult run = Acdplan("decompose " + Quote(input));
+  ExpectUsageError(run);
+  EXPECT_NE(run.err.find(input + ": unknown file extension '.xyz' (expected a polygon file, "
+                                 ".poly, .wkt, .geojson, .json or .shp, or a mesh, .obj, .off,"),
+            std::string::npos)
+      << run.err;
+}
+
 TEST_F(CliTest, MalformedNumberNamesTheLine) {
   const RunResult run = Acdplan("decompose " + Quote(kPolygons + "bird.poly") + " --json " +
                                 Quote((dir_ / "bird.json").string()));
