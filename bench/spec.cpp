@@ -92,7 +92,11 @@ void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& 
       const std::string path = file.ResolvePath(workspace_node.Scalar());
       world.scenario.workspace_label = path;
       try {
-        world.scenario.workspace = envs::LoadWorkspace2d(path);
+        acd::ReadPolygonsOptions polygons;
+        polygons.notes = &world.scenario.warnings;
+        envs::OccupancyMapOptions map;
+        map.notes = &world.scenario.warnings;
+        world.scenario.workspace = envs::LoadWorkspace2d(path, polygons, map);
       } catch (const InputError& error) {
         file.Fail(child("workspace"), error.what());
       }

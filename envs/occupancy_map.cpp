@@ -1,6 +1,7 @@
 #include "envs/occupancy_map.h"
 
 #include <cmath>
+#include <sstream>
 
 #include "base/enum_names.h"
 #include "base/file_io.h"
@@ -31,7 +32,12 @@ OccupancyGrid ReadOccupancyMap(const std::string& yaml_path, const OccupancyMapO
   const double resolution = file.Number(root["resolution"], "resolution");
   if (!(resolution > 0.0)) file.Fail("resolution", "expected a number > 0");
   const std::vector<double> origin = file.Numbers(root["origin"], "origin", 3, "[x, y, yaw]");
-  if (origin[2] != 0.0) file.Fail("origin", "yaw must be 0 (rotated maps are not supported)");
+  if (origin[2] != 0.0 && options.notes != nullptr) {
+    std::ostringstream note;
+    note << yaml_path << ": origin: yaw " << origin[2]
+         << " left out: the map is read unrotated, as ROS's navigation stack reads it";
+    options.notes->push_back(note.str());
+  }
   const double occupied_thresh =
       root["occupied_thresh"] ? file.Number(root["occupied_thresh"], "occupied_thresh") : 0.65;
   const double free_thresh =

@@ -2,6 +2,7 @@
 // ROS map_server occupancy maps: map.yaml plus a PGM or PNG image.
 
 #include <string>
+#include <vector>
 
 #include "envs/occupancy_grid.h"
 #include "envs/workspace2d.h"
@@ -22,12 +23,17 @@ UnknownCells ParseUnknownCells(const std::string& name);
 struct OccupancyMapOptions {
   UnknownCells unknown =
       UnknownCells::kBlocked;  ///< Cells between free_thresh and occupied_thresh.
+  /// If given, receives one line, naming the file, per thing read but left out (a yaw).
+  std::vector<std::string>* notes = nullptr;
 };
 
 /// Reads a ROS map_server `map.yaml`:
 ///   image: path of a PGM (P2 or P5, any maxval) or PNG image, relative to the YAML's folder
 ///   resolution: metres per pixel (> 0)
-///   origin: [x, y, yaw] of the lower-left pixel's corner; yaw must be 0
+///   origin: [x, y, yaw] of the lower-left pixel's corner; a yaw other than 0 is left out with
+///     a note: the map is read unrotated, as ROS's navigation stack reads it (map_server's
+///     documentation: "many parts of the system currently ignore yaw"; costmap_2d and AMCL
+///     do), so that coordinates agree with what a robot on that stack uses
 ///   occupied_thresh, free_thresh: in [0, 1], free_thresh < occupied_thresh (free_thresh
 ///     defaults to 0.196 and occupied_thresh to 0.65 when absent)
 ///   negate: 0 or 1, or a YAML boolean (default 0)

@@ -133,6 +133,7 @@ Scenario LoadScenario(const std::string& path) {
     polygons.repair = root["repair"] && file.Bool(root["repair"], "repair");
     polygons.notes = &s.warnings;
     envs::OccupancyMapOptions map;
+    map.notes = &s.warnings;
     if (root["unknown"])
       map.unknown = file.Parsed(root["unknown"], "unknown", envs::ParseUnknownCells);
     envs::World world = envs::LoadWorld(s.workspace_label, polygons, map);

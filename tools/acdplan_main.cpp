@@ -446,6 +446,18 @@ void ListOutputs(const std::string& dir) {
 int RunBench(const BenchArguments& args) {
   namespace bench = acdplan::bench;
   const bench::BenchSpec spec = bench::LoadBenchSpec(args.spec);
+  // The file's warnings, then its worlds' (once each: a sweep's worlds share their file's).
+  std::vector<std::string> warnings = spec.warnings;
+  for (const bench::BenchWorld& world : spec.worlds) {
+    for (const std::string& warning : world.scenario.warnings) {
+      if (std::find(warnings.begin(), warnings.end(), warning) == warnings.end()) {
+        warnings.push_back(warning);
+      }
+    }
+  }
+  for (const std::string& warning : warnings) {
+    std::fprintf(stderr, "acdplan: warning: %s\n", warning.c_str());
+  }
   const bench::BenchShard shard = bench::ParseBenchShard(args.shard);
   const std::string out = args.out.empty() ? "bench-out/" + spec.name : args.out;
   CheckOutputDir(out);

@@ -343,6 +343,7 @@ int RunEnv(const EnvArguments& given) {
   polygons.repair = args.repair;
   polygons.notes = &notes;
   envs::OccupancyMapOptions map;
+  map.notes = &notes;
   if (!args.unknown.empty()) map.unknown = envs::ParseUnknownCells(args.unknown);
   const envs::World world = envs::LoadWorld(args.input, polygons, map);
   for (const std::string& note : notes) std::fprintf(stderr, "acdplan: %s\n", note.c_str());

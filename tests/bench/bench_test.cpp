@@ -595,6 +595,35 @@ TEST(BenchCli, BadInputExitsTwoWithTheKeyPath) {
   EXPECT_HAS(ReadText(dir / "o3.txt"), "bench.json: cannot read the file");
 }
 
+// What the file says that is read but worth a word reaches stderr: its own warnings (the
+// older spelling tau_rel) and its worlds' (a map's yaw left out), once each.
+TEST(BenchCli, PrintsTheWarningsOfTheFileAndItsWorlds) {
+  const fs::path dir = Scratch("cli_warnings");
+  std::ofstream(dir / "map.pgm") << "P2\n4 4\n255\n255 255 255 255\n255 0 0 255\n"
+                                    "255 255 255 255\n255 255 255 255\n";
+  std::ofstream(dir / "map.yaml") << "image: map.pgm\nresolution: 1\norigin: [0, 0, 0.25]\n";
+  const std::string spec = WriteBench("cli_warnings",
+                                      "name: w\nacd: {tau_rel: 0.05}\nworlds:\n"
+                                      "  - {name: a, workspace: '" +
+                                          (dir / "map.yaml").string() +
+                                          "', start: [0.5, 0.5], goal: [3.5, 3.5]}\n"
+                                          "  - {name: b, workspace: '" +
+                                          (dir / "map.yaml").string() +
+                                          "', start: [0.5, 0.5], goal: [3.5, 0.5]}\n"
+                                          "cases:\n  - {samplers: [uniform], planners: [PRM], "
+                                          "budgets: [{samples: 20}]}\n");
+  EXPECT_EQ(
+      Acdplan("bench '" + spec + "' --runs 1 --no-plots --out '" + (dir / "out").string() + "'",
+              dir / "o.txt"),
+      0);
+  const std::string out = ReadText(dir / "o.txt");
+  EXPECT_HAS(out, "acdplan: warning: " + spec + ": acd.tau_rel: read as tau_diag");
+  const std::string yaw = "acdplan: warning: " + (dir / "map.yaml").string() +
+                          ": origin: yaw 0.25 left out: the map is read unrotated";
+  EXPECT_HAS(out, yaw);
+  EXPECT_EQ(out.find(yaw), out.rfind(yaw)) << out;  // Two worlds, one file: said once.
+}
+
 TEST(BenchCli, BenchCollisionNamesTheFlagOfABadPath) {
   const fs::path dir = Scratch("cli_collision");
   EXPECT_EQ(

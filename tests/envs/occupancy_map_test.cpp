@@ -189,6 +189,32 @@ TEST(OccupancyMapTest, LoadsAWorkspaceInWorldCoordinates) {
   EXPECT_NEAR(testing::TotalArea(free), 7 * 0.25, 1e-9);
 }
 
+// A yaw is left out, as ROS's navigation stack leaves it out, with a note through LoadWorld().
+TEST(OccupancyMapTest, AYawIsLeftOutWithANote) {
+  TempDir dir;
+  dir.Write("map.pgm", PlainPgm());
+  std::string yaml = kYaml;
+  yaml.replace(yaml.find("2.0, 0.0]"), 9, "2.0, 0.5]");
+  const std::string path = dir.Write("map.yaml", yaml);
+  std::vector<std::string> notes;
+  OccupancyMapOptions options;
+  options.notes = &notes;
+  const OccupancyGrid grid = ReadOccupancyMap(path, options);
+  EXPECT_EQ(grid.blocked, kBlocked);
+  EXPECT_EQ(grid.origin, Eigen::Vector2d(-1, 2));
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], path +
+                          ": origin: yaw 0.5 left out: the map is read unrotated, as ROS's "
+                          "navigation stack reads it");
+  notes.clear();
+  const World world = LoadWorld(path, {}, options);
+  EXPECT_EQ(world.workspace2d.bounds.min(), Eigen::Vector2d(-1, 2));
+  EXPECT_EQ(notes.size(), 1u);
+  notes.clear();
+  ReadOccupancyMap(dir.Write("map.yaml", kYaml), options);  // Yaw 0: nothing to say.
+  EXPECT_TRUE(notes.empty());
+}
+
 TEST(OccupancyMapTest, YamlErrors) {
   TempDir dir;
   dir.Write("map.pgm", PlainPgm());
@@ -208,8 +234,6 @@ TEST(OccupancyMapTest, YamlErrors) {
               HasSubstr("map.yaml: resolution: expected a finite number"));
   EXPECT_THAT(error("image: map.pgm\nresolution: 1\norigin: [0, 0]\n"),
               HasSubstr("map.yaml: origin: expected [x, y, yaw] (3 finite numbers)"));
-  EXPECT_THAT(error("image: map.pgm\nresolution: 1\norigin: [0, 0, 0.5]\n"),
-              HasSubstr("map.yaml: origin: yaw must be 0"));
   EXPECT_THAT(error(base + "negate: 2\n"), HasSubstr("map.yaml: negate: expected 0 or 1"));
   EXPECT_THAT(error(base + "occupied_thresh: 1.5\n"),
               HasSubstr("map.yaml: occupied_thresh: expected a number in [0, 1]"));
