@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "acd/internal/text_parsing.h"
+#include "acd/triangle_poly_reader.h"
+#include "base/file_io.h"
 #include "base/input_error.h"
 
 namespace acdplan::acd {
@@ -195,7 +198,10 @@ class PolyParser {
 
 std::vector<Polygon2d> ReadPoly(std::istream& in, const std::string& source,
                                 std::vector<std::string>* warnings) {
-  return PolyParser(in, source).Parse(warnings);
+  const std::string text = ReadRest(in);
+  if (IsTrianglePoly(text)) return ReadTrianglePoly(text, source);
+  std::istringstream lien(text);
+  return PolyParser(lien, source).Parse(warnings);
 }
 
 }  // namespace acdplan::acd

@@ -8,7 +8,9 @@
 
 namespace acdplan::acd {
 
-/// Parses Lien's .poly format (data/polygons/acd2d/POLY_FORMAT.txt): a chain count, then
+/// Parses a .poly file: Triangle's format (acd/triangle_poly_reader.h) when IsTrianglePoly()
+/// tells it by its header, else Lien's, as follows.
+/// Lien's .poly format (data/polygons/acd2d/POLY_FORMAT.txt): a chain count, then
 /// per chain "<n> out|in", n lines "x y", and one line with the 1-based vertex order. Several "out"
 /// chains may appear; each "in" chain is a hole of the preceding "out" chain. Text after '#' on a
 /// line is a comment. Returns the polygons as written (not yet cleaned or validated: see

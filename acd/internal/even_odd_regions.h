@@ -1,7 +1,8 @@
 #pragma once
 // The even-odd region of sets of rings, exactly: the region a make-valid repair keeps, and the
-// region two triangulated faces share. Internal.
+// region two triangulated faces share; and the region a segment graph bounds. Internal.
 
+#include <utility>
 #include <vector>
 
 #include "acd/polygon2d.h"
@@ -35,5 +36,21 @@ namespace acdplan::acd::internal {
 /// nothing), and an edge of several layers is one segment there. At most 32 layers.
 /// O((n + k) log n) for n edges left crossing k times.
 std::vector<Polygon2d> EvenOddRegions(const std::vector<std::vector<Ring2d>>& layers);
+
+/// What RegionsOfSegmentGraph() returns.
+struct BoundedRegions {
+  std::vector<Polygon2d> polygons;  ///< As EvenOddRegions() returns its regions.
+  int hole_on_segment = -1;  ///< The first hole point that lies on a segment (no face), or -1.
+};
+
+/// The region that a planar straight-line graph bounds, as Triangle (J. R. Shewchuk's mesh
+/// generator) meshes a .poly file without -c: the bounded faces of the arrangement of
+/// `segments` (which may cross, overlap or dangle), less each face that holds one of
+/// `hole_points`; the unbounded face is out. Returned as EvenOddRegions() returns its regions:
+/// segments with the region on both sides (internal ones) vanish. A hole point on a segment
+/// empties no face and is reported in `hole_on_segment`. Zero-length segments are skipped.
+/// O((n + k + h) log n) for n segments crossing k times and h hole points.
+BoundedRegions RegionsOfSegmentGraph(const std::vector<std::pair<Point2d, Point2d>>& segments,
+                                     const std::vector<Point2d>& hole_points);
 
 }  // namespace acdplan::acd::internal
