@@ -25,10 +25,12 @@ using internal::LowerExtension;
 
 bool IsMeshFile(const std::string& path) {
   const std::string extension = LowerExtension(path);
-  for (const char* known : {".obj", ".off", ".ply", ".stl", ".dae", ".gltf", ".glb"}) {
-    if (extension == known) return true;
+  // A shapefile's projection file, though assimp lists the extension too.
+  if (extension.empty() || extension == ".prj") return false;
+  for (const char* own : {".obj", ".off", ".ply", ".stl"}) {
+    if (extension == own) return true;
   }
-  return false;
+  return Assimp::Importer().IsExtensionSupported(extension);
 }
 
 acd::TriangleMesh ReadMesh(const std::string& path) {

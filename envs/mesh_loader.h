@@ -21,10 +21,14 @@ namespace acdplan::envs {
 acd::TriangleMesh ReadMesh(const std::string& path);
 
 /// The extensions IsMeshFile() knows, for messages.
-inline constexpr char kMeshFileExtensions[] = ".obj, .off, .ply, .stl, .dae, .gltf or .glb";
+inline constexpr char kMeshFileExtensions[] =
+    ".obj, .off, .ply, .stl, or a format assimp reads (.dae, .gltf, .glb, .fbx, .3ds, .3mf, .x3d, "
+    ".blend, ...)";
 
-/// Whether `path` names a mesh file by its extension (any case): .obj, .off, .ply, .stl, .dae,
-/// .gltf or .glb, the formats the loaders and `acdplan decompose` take as meshes.
+/// Whether `path` names a mesh file by its extension (any case), the formats the loaders and
+/// `acdplan decompose` take as meshes: .obj, .off, .ply, .stl, and every extension the assimp
+/// library linked reads (Debian's 5.2: COLLADA .dae, glTF .gltf/.glb, FBX, 3DS, 3MF, X3D,
+/// Blender, IFC, DXF, LightWave, ... about 70), but .prj, a shapefile's projection file.
 bool IsMeshFile(const std::string& path);
 
 }  // namespace acdplan::envs

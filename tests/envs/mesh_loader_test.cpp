@@ -83,6 +83,23 @@ TEST(ReadMeshTest, ReadsGltfAndCollada) {
   EXPECT_DOUBLE_EQ(acd::BoundingBox(dae).sizes().maxCoeff(), 1.0);
 }
 
+// Any format assimp reads is a mesh file: X3D, say, a tetrahedron moved up by its transform.
+TEST(ReadMeshTest, ReadsTheOtherFormatsOfAssimp) {
+  TempDir dir;
+  const std::string x3d = dir.Write(
+      "t.X3D",
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<X3D profile=\"Interchange\" "
+      "version=\"3.3\"><Scene><Transform translation=\"0 0 4\"><Shape>"
+      "<IndexedFaceSet coordIndex=\"0 2 1 -1 0 1 3 -1 0 3 2 -1 1 2 3 -1\">"
+      "<Coordinate point=\"0 0 0 1 0 0 0 1 0 0 0 1\"/></IndexedFaceSet></Shape></Transform>"
+      "</Scene></X3D>\n");
+  ASSERT_TRUE(IsMeshFile(x3d));
+  const acd::TriangleMesh mesh = ReadMesh(x3d);
+  EXPECT_EQ(mesh.triangles.rows(), 4);
+  EXPECT_EQ(acd::BoundingBox(mesh).min(), Eigen::Vector3d(0, 0, 4));
+  EXPECT_EQ(acd::BoundingBox(mesh).max(), Eigen::Vector3d(1, 1, 5));
+}
+
 TEST(ReadMeshTest, ReadsSharedMeshes) {
   const acd::TriangleMesh cup = ReadMesh(acdplan::test::DataDir() + "/meshes/vhacd/cup.obj");
   EXPECT_GT(cup.triangles.rows(), 100);
@@ -120,10 +137,14 @@ TEST(ReadMeshTest, Errors) {
 }
 
 TEST(IsMeshFileTest, ByExtensionInAnyCase) {
-  for (const char* path : {"a.obj", "b/c.OFF", "d.Ply", "e.stl", "f.dae", "g.gltf", "h.GLB"}) {
+  for (const char* path : {"a.obj", "b/c.OFF", "d.Ply", "e.stl", "f.dae", "g.gltf", "h.GLB",
+                           "i.fbx", "j.3DS", "k.3mf", "l.x3d", "m.blend"}) {
     EXPECT_TRUE(IsMeshFile(path)) << path;
   }
-  for (const char* path : {"a.poly", "world.yaml", "map.map", "obj", "a.obj.txt", "mesh"}) {
+  // Not the formats of the other loaders, nor a shapefile's sidecar files.
+  for (const char* path :
+       {"a.poly", "world.yaml", "w.yml", "map.map", "p.wkt", "p.geojson", "p.json", "p.shp",
+        "p.prj", "p.dbf", "map.pgm", "obj", "a.obj.txt", "mesh"}) {
     EXPECT_FALSE(IsMeshFile(path)) << path;
   }
 }

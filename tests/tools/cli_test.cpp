@@ -107,7 +107,9 @@ TEST_F(CliTest, UnknownExtensionListsThePolygonAndMeshFormats) {
   const RunResult run = Acdplan("decompose " + Quote(input));
   ExpectUsageError(run);
   EXPECT_NE(run.err.find(input + ": unknown file extension '.xyz' (expected a polygon file, "
-                                 ".poly, .wkt, .geojson, .json or .shp, or a mesh, .obj, .off,"),
+                                 ".poly, .wkt, .geojson, .json or .shp, or a mesh, .obj, .off, "
+                                 ".ply, .stl, or a format assimp reads (.dae, .gltf, .glb, "
+                                 ".fbx,"),
             std::string::npos)
       << run.err;
 }
