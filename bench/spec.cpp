@@ -13,6 +13,7 @@
 #include "envs/load_workspace.h"
 #include "planning/registry.h"
 #include "planning/scenario_cfg.h"
+#include "planning/scenario_moving_ai.h"
 #include "planning/scenario_yaml.h"
 
 namespace acdplan::bench {
@@ -56,7 +57,7 @@ void ReadSamplerOptions(const YamlFile& file, const YAML::Node& node, const std:
 void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& key,
                const Scenario& defaults, std::vector<BenchWorld>* worlds) {
   file.CheckKeys(node, key,
-                 {"name", "scenario", "workspace", "start", "goal", "acd", "collision",
+                 {"name", "scenario", "problem", "workspace", "start", "goal", "acd", "collision",
                   "passage_width", "passage_widths"});
   auto child = [&](const char* name) { return YamlFile::Child(key, name); };
   BenchWorld world;
@@ -67,16 +68,22 @@ void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& 
       if (node[k]) file.Fail(child(k), "give either scenario or workspace, start and goal");
     }
     const std::string path = file.ResolvePath(file.String(node["scenario"], child("scenario")));
+    // A Moving AI .scen file holds many problems: `problem` chooses one.
+    const int problem = node["problem"]
+                            ? static_cast<int>(file.Integer(node["problem"], child("problem"),
+                                                            "an integer >= 0", 0))
+                            : -1;
     try {
-      world.scenario = planning::LoadScenarioFile(path);
+      world.scenario = planning::LoadScenarioFile(path, problem);
     } catch (const InputError& error) {
       file.Fail(child("scenario"), error.what());
     }
-    world.name = std::filesystem::path(path).stem().string();
+    world.name = std::filesystem::path(path).stem().string() +
+                 (problem >= 0 ? "_" + std::to_string(problem) : "");
     // The generator's passage width, for the plots (the scenario keeps only the workspace).
-    const YAML::Node generated = planning::IsOmplAppProblemFile(path)
-                                     ? YAML::Node()
-                                     : YamlFile::Load(path).root()["workspace"];
+    const bool yaml =
+        !planning::IsOmplAppProblemFile(path) && !planning::IsMovingAiScenarioFile(path);
+    const YAML::Node generated = yaml ? YamlFile::Load(path).root()["workspace"] : YAML::Node();
     if (generated.IsMap() && generated["passage_width"]) {
       double width = 0;
       if (YAML::convert<double>::decode(generated["passage_width"], width)) {
@@ -84,6 +91,8 @@ void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& 
       }
     }
   } else {
+    if (node["problem"])
+      file.Fail(child("problem"), "only with a scenario (a Moving AI .scen file)");
     for (const char* k : {"workspace", "start", "goal"}) {
       if (!node[k]) file.Fail(child(k), "required (or give a scenario file)");
     }

@@ -91,6 +91,8 @@ struct BenchCase {
 ///     - name: demo                  # required unless `scenario` gives one (its file stem)
 ///       scenario: ../demo.yaml      # a scenario file: workspace, start, goal, acd, collision
 ///                                   # (or an OMPL.app problem .cfg, planning/scenario_cfg.h)
+///     - scenario: maps/arena.map.scen # a Moving AI scenario file, with
+///       problem: 12                 # its problem (from 0); named "<file stem>_<problem>"
 ///     - name: gap                   # or inline:
 ///       workspace: {generator: wall_gap, seed: 1, wall_thickness: 1.0}   # or a file name
 ///       start: [2.5, 5.0]

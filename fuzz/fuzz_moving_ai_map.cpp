@@ -1,10 +1,10 @@
-// libFuzzer target: envs::ReadMovingAiMap() on arbitrary bytes written to a file. InputError is the
-// expected answer to bad input; anything else (another exception, a crash, a sanitizer report, a
-// hang) is a finding. A map it accepts, up to 32 x 32 cells, also has its free space traced
-// (FreeSpace2d() of GridWorkspace()), and a wrong free space is a finding: a polygon that
-// PreparePolygon() would change, a free cell's centre in no polygon or in two, a blocked cell's
-// in one; up to 12 x 12 cells, polygons other than the Boolean construction's (by count and
-// area).
+// libFuzzer target: envs::ReadMovingAiMap() (and ReadMovingAiScenario()) on arbitrary bytes
+// written to a file. InputError is the expected answer to bad input; anything else (another
+// exception, a crash, a sanitizer report, a hang) is a finding. A map it accepts, up to 32 x 32
+// cells, also has its free space traced (FreeSpace2d() of GridWorkspace()), and a wrong free
+// space is a finding: a polygon that PreparePolygon() would change, a free cell's centre in no
+// polygon or in two, a blocked cell's in one; up to 12 x 12 cells, polygons other than the
+// Boolean construction's (by count and area).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +14,7 @@
 #include "base/input_error.h"
 #include "envs/free_space2d.h"
 #include "envs/moving_ai_map.h"
+#include "envs/moving_ai_scenario.h"
 #include "envs/occupancy_grid.h"
 #include "fuzz/fuzz_input.h"
 
@@ -64,8 +65,12 @@ void CheckFreeSpace(const acdplan::envs::OccupancyGrid& grid) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string path =
-      acdplan::fuzz::WriteInputFile("fuzz.map", acdplan::fuzz::InputText(data, size));
+  const std::string text = acdplan::fuzz::InputText(data, size);
+  try {  // The same bytes as a scenario file (.scen) of problems on maps.
+    acdplan::envs::ReadMovingAiScenario(acdplan::fuzz::WriteInputFile("fuzz.scen", text));
+  } catch (const acdplan::InputError&) {
+  }
+  const std::string path = acdplan::fuzz::WriteInputFile("fuzz.map", text);
   acdplan::envs::OccupancyGrid grid;
   try {
     grid = acdplan::envs::ReadMovingAiMap(path);

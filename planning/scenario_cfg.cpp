@@ -7,6 +7,8 @@
 
 #include "base/input_error.h"
 #include "envs/mesh_footprint.h"
+#include "envs/moving_ai_scenario.h"
+#include "planning/scenario_moving_ai.h"
 
 namespace acdplan::planning {
 namespace {
@@ -111,7 +113,17 @@ bool IsOmplAppProblemFile(const std::string& path) {
   return extension == ".cfg";
 }
 
-Scenario LoadScenarioFile(const std::string& path) {
+Scenario LoadScenarioFile(const std::string& path, int problem) {
+  if (IsMovingAiScenarioFile(path)) {
+    if (problem < 0) {
+      throw InputError(path + ": holds " + std::to_string(envs::ReadMovingAiScenario(path).size()) +
+                       " problem(s) (a Moving AI scenario file): choose one, counted from 0");
+    }
+    return ScenarioFromMovingAi(path, problem);
+  }
+  if (problem >= 0) {
+    throw InputError(path + ": a problem number is only for a Moving AI .scen file");
+  }
   if (IsOmplAppProblemFile(path)) return ScenarioFromOmplApp(envs::ReadOmplAppProblem(path));
   return LoadScenario(path);
 }

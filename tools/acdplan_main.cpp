@@ -39,6 +39,7 @@
 #include "planning/plan_scenario.h"
 #include "planning/scenario.h"
 #include "planning/scenario_cfg.h"
+#include "planning/scenario_moving_ai.h"
 #include "tools/check_report.h"
 #include "tools/decompose3d_command.h"
 #include "tools/env_command.h"
@@ -274,6 +275,7 @@ int RunBenchCollision(acdplan::bench::BenchCollisionOptions options, const std::
 /// What `acdplan plan` was asked to do (each override < 0 or empty: keep the scenario's).
 struct PlanArguments {
   std::string scenario;
+  int problem = -1;  ///< Of a Moving AI .scen file.
   std::string sampler, planner;
   long long seed = -1;
   double time = -1;
@@ -285,7 +287,12 @@ struct PlanArguments {
 /// `acdplan plan`: exit 0 solved, 3 not solved within the budget, 2 bad input.
 int RunPlan(const PlanArguments& args) {
   namespace planning = acdplan::planning;
-  planning::Scenario scenario = planning::LoadScenarioFile(args.scenario);
+  if (planning::IsMovingAiScenarioFile(args.scenario) && args.problem < 0) {
+    throw acdplan::InputError(args.scenario +
+                              ": a Moving AI scenario file holds many problems: "
+                              "choose one with --problem K (K from 0)");
+  }
+  planning::Scenario scenario = planning::LoadScenarioFile(args.scenario, args.problem);
   for (const std::string& warning : scenario.warnings) {
     std::fprintf(stderr, "acdplan: warning: %s\n", warning.c_str());
   }
@@ -676,14 +683,20 @@ int main(int argc, char** argv) {
   PlanArguments plan_args;
   CLI::App* plan = app.add_subcommand(
       "plan",
-      "Plan the scenario of SCENARIO.yaml (planning/scenario.h), or an OMPL.app problem "
-      "SCENARIO.cfg (2D problems; planning/scenario_cfg.h), with an OMPL planner and a "
+      "Plan the scenario of SCENARIO.yaml (planning/scenario.h), an OMPL.app problem "
+      "SCENARIO.cfg (planning/scenario_cfg.h), or problem K of a Moving AI benchmark "
+      "SCENARIO.scen (--problem K), with an OMPL planner and a "
       "sampler (acd: around the ACD's centroids and openings, Algorithm 10) and print a "
       "summary. Exit status: 0 solved, 3 no solution within the budget, 2 bad input or usage, "
       "1 internal error.");
   plan->add_option("SCENARIO", plan_args.scenario,
-                   "Scenario YAML file, or OMPL.app problem file (.cfg)")
+                   "Scenario YAML file, OMPL.app problem file (.cfg), or Moving AI scenario "
+                   "file (.scen)")
       ->required();
+  plan->add_option("--problem", plan_args.problem,
+                   "With a Moving AI .scen file: plan its problem K (its K-th line of problems, "
+                   "counted from 0)")
+      ->check(CLI::NonNegativeNumber);
   // The names come from the planning registry's tables, as the scenario validation does.
   plan->add_option("--sampler", plan_args.sampler,
                    "One of: " + acdplan::JoinNames(acdplan::planning::SamplerNames()))

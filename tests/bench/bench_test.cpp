@@ -624,6 +624,28 @@ TEST(BenchCli, PrintsTheWarningsOfTheFileAndItsWorlds) {
   EXPECT_EQ(out.find(yaw), out.rfind(yaw)) << out;  // Two worlds, one file: said once.
 }
 
+// A Moving AI problem is a world: the .scen file and the problem's number.
+TEST(BenchSpec, TakesAMovingAiProblemAsAWorld) {
+  const fs::path dir = Scratch("moving_ai");
+  std::ofstream(dir / "maze.map") << "type octile\nheight 4\nwidth 5\nmap\n@@@@@\n@.@.@\n"
+                                     "@...@\n@@@@@\n";
+  std::ofstream(dir / "maze.map.scen") << "version 1\n0\tmaze.map\t5\t4\t1\t1\t3\t1\t3.41\n";
+  const std::string scen = (dir / "maze.map.scen").string();
+  const std::string cases =
+      "cases:\n  - {samplers: [acd], planners: [PRM], budgets: [{samples: 50}]}\n";
+  const BenchSpec spec = LoadBenchSpec(WriteBench(
+      "moving_ai", "name: m\nworlds:\n  - {scenario: '" + scen + "', problem: 0}\n" + cases));
+  ASSERT_EQ(spec.worlds.size(), 1u);
+  EXPECT_EQ(spec.worlds[0].name, "maze.map_0");
+  EXPECT_EQ(spec.worlds[0].scenario.start, (std::vector<double>{1.5, 2.5}));
+  EXPECT_HAS(SpecErrorOf("name: m\nworlds:\n  - {scenario: '" + scen + "'}\n" + cases),
+             "worlds[0].scenario: " + scen + ": holds 1 problem(s)");
+  EXPECT_HAS(SpecErrorOf("name: m\nworlds:\n  - {scenario: '" + scen + "', problem: 1}\n" + cases),
+             "problem 1 out of range 0..0");
+  EXPECT_HAS(SpecErrorOf(kWorlds + "    problem: 0\n" + cases),
+             "worlds[0].problem: only with a scenario");
+}
+
 TEST(BenchCli, BenchCollisionNamesTheFlagOfABadPath) {
   const fs::path dir = Scratch("cli_collision");
   EXPECT_EQ(

@@ -13,7 +13,9 @@
 #include "envs/ompl_app_problem.h"
 #include "planning/plan_scenario.h"
 #include "planning/plan_scenario3d.h"
+#include "planning/scenario_moving_ai.h"
 #include "tests/data_paths.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::planning {
 namespace {
@@ -132,6 +134,45 @@ TEST(ScenarioFromOmplApp, ControlProblemsBecomeCarScenarios) {
   EXPECT_EQ(problem.control, "kinematic_car");
   ASSERT_EQ(problem.planners.size(), 2u);
   EXPECT_EQ(problem.planners[1].planner, "KPIECE1");
+}
+
+// A Moving AI problem: its map as the world, cell centres as start and goal; and the errors of
+// a problem that does not fit its map.
+TEST(LoadScenarioFile, PlansAMovingAiProblem) {
+  const test::ScratchDir dir;
+  dir.Write("maze.map", "type octile\nheight 4\nwidth 5\nmap\n@@@@@\n@.@.@\n@...@\n@@@@@\n");
+  const std::string scen =
+      dir.Write("maze.map.scen",
+                "version 1\n2\tmaps/maze.map\t5\t4\t1\t1\t3\t1\t4.82842712\n"
+                "0\tmaze.map\t5\t4\t1\t1\t2\t1\t1\n0\tmaze.map\t6\t4\t1\t1\t3\t1\t1\n");
+  EXPECT_TRUE(IsMovingAiScenarioFile("x/arena.map.SCEN"));
+  Scenario s = LoadScenarioFile(scen, 0);
+  EXPECT_EQ(s.start, (std::vector<double>{1.5, 2.5}));
+  EXPECT_EQ(s.goal, (std::vector<double>{3.5, 2.5}));
+  EXPECT_EQ(s.workspace_label, dir.Path("maze.map"));
+  EXPECT_EQ(s.workspace.bounds.max(), Eigen::Vector2d(5, 4));
+  EXPECT_EQ(s.description,
+            "Moving AI problem 0 of " + scen + " (bucket 2, optimal length on the grid 4.82843)");
+  s.samples = 300;
+  const PlanResult result = PlanScenario(s);
+  EXPECT_TRUE(result.solved);
+  EXPECT_GT(result.path_length, 2.4);  // Around the wall between the cells (straight: 2).
+  auto error = [&](int problem) {
+    try {
+      LoadScenarioFile(scen, problem);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error(1), scen + ":3: the goal cell (2, 1) is blocked in " + dir.Path("maze.map"));
+  EXPECT_EQ(error(2), scen + ":4: the map " + dir.Path("maze.map") +
+                          " has 5 x 4 cells, the problem says 6 x 4");
+  EXPECT_EQ(error(3), scen + ": problem 3 out of range 0..2 (the file holds 3 problem(s))");
+  EXPECT_EQ(error(-1), scen +
+                           ": holds 3 problem(s) (a Moving AI scenario file): choose one, "
+                           "counted from 0");
+  EXPECT_THROW(LoadScenarioFile(acdplan::test::SourceDir() + "/configs/demo.yaml", 0), InputError);
 }
 
 TEST(LoadScenarioFile, ReadsYamlScenariosAsBefore) {

@@ -828,6 +828,28 @@ TEST_F(CliTest, PlansA2dOmplAppProblemFile) {
       << car.err;
 }
 
+TEST_F(CliTest, PlansAMovingAiProblemChosenWithProblem) {
+  Write("maze.map", "type octile\nheight 4\nwidth 5\nmap\n@@@@@\n@.@.@\n@...@\n@@@@@\n");
+  const std::string scen =
+      Write("maze.map.scen", "version 1\n0\tmaps/maze.map\t5\t4\t1\t1\t3\t1\t3.41421356\n")
+          .string();
+  const RunResult none = Acdplan("plan " + Quote(scen));
+  ExpectUsageError(none);
+  EXPECT_NE(none.err.find(scen + ": a Moving AI scenario file holds many problems: choose one "
+                                 "with --problem K (K from 0)"),
+            std::string::npos)
+      << none.err;
+  const RunResult run = Acdplan("plan " + Quote(scen) + " --problem 0 --samples 300");
+  EXPECT_EQ(run.status, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("Moving AI problem 0 of " + scen +
+                         " (bucket 0, optimal length on the grid 3.41421)"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("solved            yes"), std::string::npos) << run.out;
+  ExpectUsageError(Acdplan("plan " + Quote(scen) + " --problem 1"));
+  ExpectUsageError(Acdplan("plan " + Quote(kSource + "configs/maze.yaml") + " --problem 0"));
+}
+
 TEST_F(CliTest, PlansA3dScenarioAndDrawsIt) {
   const fs::path svg = dir_ / "plan.svg", obj = dir_ / "plan.obj", glb = dir_ / "plan.glb";
   setenv("ACDPLAN_CACHE_DIR", (dir_ / "cache").c_str(), 1);  // Not the user's cache.
