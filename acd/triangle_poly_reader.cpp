@@ -1,7 +1,6 @@
 #include "acd/triangle_poly_reader.h"
 
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -158,11 +157,7 @@ std::vector<Polygon2d> ReadTrianglePoly(const std::string& text, const std::stri
       throw InputError(source + ":1: the vertex count is 0, so the vertices are in " + vertex_file +
                        ", which cannot be read: " + reason);
     }
-    std::ifstream in = OpenFile(vertex_file);
-    std::ostringstream node_text;
-    node_text << in.rdbuf();
-    CheckRead(in, vertex_file);
-    vertices = SectionReader(DataLines(node_text.str()), vertex_file).Vertices(&first);
+    vertices = SectionReader(DataLines(ReadFile(vertex_file)), vertex_file).Vertices(&first);
   }
   const long long n = static_cast<long long>(vertices.size());
   const Line& header = poly.Next("a header '<segments> [<boundary markers>]'", 1);

@@ -28,9 +28,10 @@ bool IsOmplAppProblemFile(const std::string& path);
 /// `.cfg` file, ScenarioFromMovingAi(path, problem) for a Moving AI `.scen` file (which holds
 /// many problems: `problem` chooses one, counted from 0); what the command line and benchmark
 /// specs call.
-/// @throws InputError from any of them; "<path>: holds N problems: choose one (0..N-1)" for a
-///         `.scen` file without `problem` (< 0); "<path>: a problem number is only for a Moving
-///         AI .scen file" for another file with one.
+/// @throws InputError from any of them; "<path>: holds N problem(s) (a Moving AI scenario
+///         file): choose one, counted from 0" for a `.scen` file without `problem` (< 0);
+///         "<path>: a problem number is only for a Moving AI .scen file" for another file with
+///         one.
 Scenario LoadScenarioFile(const std::string& path, int problem = -1);
 
 }  // namespace acdplan::planning

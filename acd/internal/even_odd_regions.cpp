@@ -130,7 +130,7 @@ std::vector<Polygon2d> RegionsOf(const Arrangement& arrangement,
       }
     }
     // A part is connected: one outline, whatever touches it.
-    if (outlines != 1) throw std::logic_error("EvenOddRegions(): a part with no or two outlines");
+    if (outlines != 1) throw std::logic_error("RegionsOf(): a part with no or two outlines");
     found.push_back(std::move(p));
   }
   std::sort(found.begin(), found.end(),
