@@ -53,13 +53,37 @@ void ReadSamplerOptions(const YamlFile& file, const YAML::Node& node, const std:
   planning::ReadAcdSamplerOptions(file, node, key, o);
 }
 
-/// Reads worlds[i] (one world, or several for a `passage_widths` sweep).
+/// Reads worlds[i] (one world, or several for a `passage_widths` or `problems` sweep).
 void ReadWorld(const YamlFile& file, const YAML::Node& node, const std::string& key,
                const Scenario& defaults, std::vector<BenchWorld>* worlds) {
   file.CheckKeys(node, key,
-                 {"name", "scenario", "problem", "workspace", "start", "goal", "acd", "collision",
-                  "passage_width", "passage_widths"});
+                 {"name", "scenario", "problem", "problems", "workspace", "start", "goal", "acd",
+                  "collision", "passage_width", "passage_widths"});
   auto child = [&](const char* name) { return YamlFile::Child(key, name); };
+  if (const YAML::Node& problems = node["problems"]) {
+    // A sweep over problems of a Moving AI .scen file: one world each, of one family.
+    if (node["problem"]) file.Fail(child("problems"), "give problems or problem, not both");
+    if (!problems.IsSequence() || problems.size() == 0) {
+      file.Fail(child("problems"),
+                "expected a non-empty list of problem numbers, got " + YamlFile::Shown(problems));
+    }
+    for (size_t i = 0; i < problems.size(); ++i) {
+      const long long problem =
+          file.Integer(problems[i], YamlFile::Item(child("problems"), i), "an integer >= 0", 0);
+      YAML::Node one = YAML::Clone(node);
+      one.remove("problems");
+      one["problem"] = problem;
+      ReadWorld(file, one, key, defaults, worlds);
+      BenchWorld& world = worlds->back();  // Named <stem>_<problem>, or <name>.
+      if (node["name"]) {
+        world.family = world.name;
+        world.name += "_" + std::to_string(problem);
+      } else {
+        world.family = world.name.substr(0, world.name.rfind('_'));
+      }
+    }
+    return;
+  }
   BenchWorld world;
   world.scenario = defaults;
   YAML::Node workspace_node;

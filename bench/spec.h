@@ -93,6 +93,8 @@ struct BenchCase {
 ///                                   # (or an OMPL.app problem .cfg, planning/scenario_cfg.h)
 ///     - scenario: maps/arena.map.scen # a Moving AI scenario file, with
 ///       problem: 12                 # its problem (from 0); named "<file stem>_<problem>"
+///                                   # (or problems: [0, 12, 24]: one world each, of the
+///                                   # family "<file stem>", or <name> when given)
 ///     - name: gap                   # or inline:
 ///       workspace: {generator: wall_gap, seed: 1, wall_thickness: 1.0}   # or a file name
 ///       start: [2.5, 5.0]

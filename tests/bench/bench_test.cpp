@@ -644,6 +644,27 @@ TEST(BenchSpec, TakesAMovingAiProblemAsAWorld) {
              "problem 1 out of range 0..0");
   EXPECT_HAS(SpecErrorOf(kWorlds + "    problem: 0\n" + cases),
              "worlds[0].problem: only with a scenario");
+  // A sweep over problems: one world each, of one family.
+  std::ofstream(dir / "maze.map.scen", std::ios::app) << "1\tmaze.map\t5\t4\t3\t1\t1\t2\t2\n";
+  const BenchSpec sweep =
+      LoadBenchSpec(WriteBench("moving_ai", "name: m\nworlds:\n  - {scenario: '" + scen +
+                                                "', problems: [1, 0]}\n"
+                                                "  - {name: again, scenario: '" +
+                                                scen + "', problems: [0]}\n" + cases));
+  ASSERT_EQ(sweep.worlds.size(), 3u);
+  EXPECT_EQ(sweep.worlds[0].name, "maze.map_1");
+  EXPECT_EQ(sweep.worlds[0].scenario.goal, (std::vector<double>{1.5, 1.5}));
+  EXPECT_EQ(sweep.worlds[1].name, "maze.map_0");
+  EXPECT_EQ(sweep.worlds[0].family, "maze.map");
+  EXPECT_EQ(sweep.worlds[1].family, "maze.map");
+  EXPECT_EQ(sweep.worlds[2].name, "again_0");
+  EXPECT_EQ(sweep.worlds[2].family, "again");
+  EXPECT_HAS(
+      SpecErrorOf("name: m\nworlds:\n  - {scenario: '" + scen + "', problems: []}\n" + cases),
+      "worlds[0].problems: expected a non-empty list of problem numbers");
+  EXPECT_HAS(
+      SpecErrorOf("name: m\nworlds:\n  - {scenario: '" + scen + "', problems: [0, x]}\n" + cases),
+      "worlds[0].problems[1]: expected an integer >= 0");
 }
 
 TEST(BenchCli, BenchCollisionNamesTheFlagOfABadPath) {
