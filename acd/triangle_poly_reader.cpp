@@ -1,5 +1,6 @@
 #include "acd/triangle_poly_reader.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -20,12 +21,13 @@ struct Line {
   int number = 0;
 };
 
-std::vector<Line> DataLines(const std::string& text) {
+// The lines of `text` that hold data, up to `limit` of them.
+std::vector<Line> DataLines(const std::string& text, size_t limit = SIZE_MAX) {
   std::istringstream in(text);
   internal::SkipByteOrderMark(in);
   std::vector<Line> lines;
   std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
+  for (int number = 1; lines.size() < limit && std::getline(in, line); ++number) {
     const size_t hash = line.find('#');
     if (hash != std::string::npos) line.resize(hash);
     std::istringstream words(line);
@@ -129,7 +131,7 @@ class SectionReader {
 }  // namespace
 
 bool IsTrianglePoly(const std::string& text) {
-  const std::vector<Line> lines = DataLines(text);
+  const std::vector<Line> lines = DataLines(text, 3);  // Enough for three words.
   if (lines.empty()) return false;
   const std::vector<std::string>& header = lines.front().words;
   if (header.size() < 2 || header.size() > 4) return false;
