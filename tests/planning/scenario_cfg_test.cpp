@@ -175,6 +175,16 @@ TEST(LoadScenarioFile, PlansAMovingAiProblem) {
   EXPECT_THROW(LoadScenarioFile(acdplan::test::SourceDir() + "/configs/demo.yaml", 0), InputError);
 }
 
+// The README's example: every problem of the repository's scenario file fits its map.
+TEST(LoadScenarioFile, ReadsEveryProblemOfTheExampleScenarioFile) {
+  const std::string scen = acdplan::test::SourceDir() + "/configs/maps/rooms.map.scen";
+  for (int problem = 0; problem < 4; ++problem) {
+    const Scenario s = LoadScenarioFile(scen, problem);
+    EXPECT_EQ(s.workspace.bounds.max(), Eigen::Vector2d(32, 16)) << problem;
+  }
+  EXPECT_THROW(LoadScenarioFile(scen, 4), InputError);
+}
+
 TEST(LoadScenarioFile, ReadsYamlScenariosAsBefore) {
   const Scenario s = LoadScenarioFile(acdplan::test::SourceDir() + "/configs/demo.yaml");
   EXPECT_FALSE(s.workspace.obstacles.empty());
