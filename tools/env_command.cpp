@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -21,6 +22,7 @@
 #include "envs/world_svg.h"
 #include "planning/scenario.h"
 #include "planning/scenario_cfg.h"
+#include "planning/scenario_moving_ai.h"
 #include "planning/tau_diag.h"
 #include "tools/report_lines.h"
 
@@ -305,6 +307,10 @@ CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
   env->add_option("--unknown", args->unknown,
                   "Occupancy maps: cells neither occupied nor free are blocked (default) or free")
       ->check(NameCheck(envs::ParseUnknownCells));
+  env->add_option("--problem", args->problem,
+                  "With a Moving AI .scen file: show its problem K (default 0; all of a file's "
+                  "problems share their map)")
+      ->check(CLI::NonNegativeNumber);
   env->add_option("--svg", args->svg_path, "Write a picture of the 2D world and its ACD here");
   env->add_option("--json", args->json_path, "Write the report as JSON here");
   return env;
@@ -319,8 +325,13 @@ int RunEnv(const EnvArguments& given) {
                  "radius)\n");
     args.tau_diag = args.tau_rel;
   }
-  if (IsScenarioFile(args.input) || planning::IsOmplAppProblemFile(args.input)) {
-    const planning::Scenario scenario = planning::LoadScenarioFile(args.input);
+  const bool moving_ai = planning::IsMovingAiScenarioFile(args.input);
+  if (!moving_ai && args.problem >= 0) {
+    throw InputError("--problem: only for a Moving AI .scen file (" + args.input + " is not one)");
+  }
+  if (IsScenarioFile(args.input) || planning::IsOmplAppProblemFile(args.input) || moving_ai) {
+    const planning::Scenario scenario = planning::LoadScenarioFile(
+        args.input, moving_ai ? std::max(args.problem, 0) : args.problem);
     for (const std::string& warning : scenario.warnings) {
       std::fprintf(stderr, "acdplan: warning: %s\n", warning.c_str());
     }

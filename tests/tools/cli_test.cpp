@@ -848,6 +848,13 @@ TEST_F(CliTest, PlansAMovingAiProblemChosenWithProblem) {
   EXPECT_NE(run.out.find("solved            yes"), std::string::npos) << run.out;
   ExpectUsageError(Acdplan("plan " + Quote(scen) + " --problem 1"));
   ExpectUsageError(Acdplan("plan " + Quote(kSource + "configs/maze.yaml") + " --problem 0"));
+  // env shows the world of a problem (its first by default: they share their map).
+  const RunResult env = Acdplan("env " + Quote(scen));
+  EXPECT_EQ(env.status, 0) << env.err;
+  EXPECT_NE(env.out.find("(scenario; world " + (dir_ / "maze.map").string() + ")"),
+            std::string::npos)
+      << env.out;
+  ExpectUsageError(Acdplan("env " + Quote(kSource + "configs/maze.yaml") + " --problem 0"));
 }
 
 TEST_F(CliTest, PlansA3dScenarioAndDrawsIt) {
