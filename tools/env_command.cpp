@@ -308,8 +308,8 @@ CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
                   "Occupancy maps: cells neither occupied nor free are blocked (default) or free")
       ->check(NameCheck(envs::ParseUnknownCells));
   env->add_option("--problem", args->problem,
-                  "With a Moving AI .scen file: show its problem K (default 0; all of a file's "
-                  "problems share their map)")
+                  "With a Moving AI .scen file: show its problem K (default 0: a benchmark's "
+                  "problems share one map)")
       ->check(CLI::NonNegativeNumber);
   env->add_option("--svg", args->svg_path, "Write a picture of the 2D world and its ACD here");
   env->add_option("--json", args->json_path, "Write the report as JSON here");
