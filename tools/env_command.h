@@ -14,9 +14,9 @@ struct EnvArguments {
   std::string measure;     ///< "" : the scenario's, else sp.
   bool repair = false;     ///< Make invalid obstacle polygons valid (acd::RepairPolygon).
   std::string unknown;     ///< Occupancy maps' unknown cells: "blocked" or "free"; "": blocked.
-  int problem = -1;  ///< Of a Moving AI .scen file; < 0: its first (a benchmark's share one map).
-  std::string svg_path;   ///< 2D: the world and its free-space decomposition.
-  std::string json_path;  ///< The report as JSON.
+  int problem = -1;        ///< Of a Moving AI .scen file; < 0: its first.
+  std::string svg_path;    ///< 2D: the world and its free-space decomposition.
+  std::string json_path;   ///< The report as JSON.
 };
 
 /// Adds the `env` subcommand to `app`, filling `args`; returns it.
