@@ -1,6 +1,7 @@
 #include "envs/moving_ai_scenario.h"
 
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <system_error>
 
@@ -28,6 +29,7 @@ std::vector<MovingAiProblem> ReadMovingAiScenario(const std::string& path) {
     throw InputError(path + ":" + std::to_string(line) + ": " + rule);
   };
   std::vector<MovingAiProblem> problems;
+  std::map<std::string, std::string> found;  // Each map named, resolved once (a file names one).
   std::string text;
   for (int number = 1; std::getline(in, text); ++number) {
     std::istringstream words(text);
@@ -49,7 +51,9 @@ std::vector<MovingAiProblem> ReadMovingAiScenario(const std::string& path) {
     MovingAiProblem p;
     p.line = number;
     p.map = fields[1];
-    p.map_path = ResolveMovingAiMap(path, p.map);
+    auto [at, added] = found.emplace(p.map, "");
+    if (added) at->second = ResolveMovingAiMap(path, p.map);
+    p.map_path = at->second;
     long long values[8] = {};
     for (int k : {0, 2, 3, 4, 5, 6, 7}) {
       const long long limit = k == 0 ? 1000000000 : 100000;  // The map reader's size limit.

@@ -1,10 +1,9 @@
 #include "planning/scenario_cfg.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 
+#include "acd/internal/text_parsing.h"
 #include "base/input_error.h"
 #include "envs/mesh_footprint.h"
 #include "envs/moving_ai_scenario.h"
@@ -107,10 +106,7 @@ Scenario ScenarioFromOmplApp(const envs::OmplAppProblem& problem) {
 }
 
 bool IsOmplAppProblemFile(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension == ".cfg";
+  return acd::internal::ToLower(std::filesystem::path(path).extension().string()) == ".cfg";
 }
 
 Scenario LoadScenarioFile(const std::string& path, int problem) {
