@@ -8,6 +8,7 @@
 
 #include "acd/dbf_reader.h"
 #include "acd/geojson_reader.h"
+#include "acd/geopackage_reader.h"
 #include "acd/internal/box_sweep.h"
 #include "acd/internal/disjoint_sets.h"
 #include "acd/internal/even_odd_regions.h"
@@ -134,13 +135,12 @@ std::string BesideShapefile(const std::string& shp_path, const char* lower, cons
   return std::filesystem::exists(candidate) ? candidate.string() : std::string();
 }
 
-// A note when the .prj beside a shapefile declares geographic coordinates (WKT 1's GEOGCS, WKT
-// 2's GEOGCRS or GEODCRS at the top): they are decomposed as planar x = longitude, y = latitude,
-// so shapes are stretched east-west by 1 / cos(latitude) and tau is in degrees.
-void NoteGeographicCoordinates(const std::string& shp_path, std::vector<std::string>* notes) {
-  const std::string prj_path = BesideShapefile(shp_path, ".prj", ".PRJ");
-  if (prj_path.empty()) return;
-  const std::string wkt = ReadFile(prj_path);
+// A note when `wkt`, the coordinate reference system of the polygons of `where` (a shapefile's
+// .prj, a GeoPackage layer's definition), is geographic (WKT 1's GEOGCS, WKT 2's GEOGCRS or
+// GEODCRS at the top): they are decomposed as planar x = longitude, y = latitude, so shapes are
+// stretched east-west by 1 / cos(latitude) and tau is in degrees.
+void NoteGeographicCoordinates(const std::string& where, const std::string& wkt,
+                               std::vector<std::string>* notes) {
   const size_t start = wkt.find_first_not_of(" \t\r\n\xEF\xBB\xBF");  // (And a byte order mark.)
   const size_t bracket = wkt.find('[', start);
   if (start == std::string::npos || bracket == std::string::npos) return;
@@ -152,7 +152,7 @@ void NoteGeographicCoordinates(const std::string& shp_path, std::vector<std::str
   const std::string name = name_end == std::string::npos
                                ? std::string()
                                : " " + wkt.substr(name_begin, name_end - name_begin + 1);
-  notes->push_back(prj_path + ": geographic coordinates (" + wkt.substr(start, bracket - start) +
+  notes->push_back(where + ": geographic coordinates (" + wkt.substr(start, bracket - start) +
                    name +
                    "): decomposed as planar x = longitude, y = latitude, so shapes are stretched "
                    "east-west and tau is in degrees; project the data first for true shapes");
@@ -184,15 +184,17 @@ std::vector<std::string> ShapefileAttributes(const std::string& shp_path,
 }
 
 // The formats ReadPolygons() reads, told by the file's extension (any case).
-enum class PolygonFormat { kPoly, kWkt, kGeoJson, kShapefile, kUnknown };
+enum class PolygonFormat { kPoly, kWkt, kGeoJson, kShapefile, kGeoPackage, kUnknown };
 
+// The format of `path`, a file or a GeoPackage's layer ("FILE|layername=NAME").
 PolygonFormat FormatOf(const std::string& path) {
   static constexpr std::pair<const char*, PolygonFormat> kExtensions[] = {
       {".poly", PolygonFormat::kPoly},       {".wkt", PolygonFormat::kWkt},
       {".geojson", PolygonFormat::kGeoJson}, {".json", PolygonFormat::kGeoJson},
-      {".shp", PolygonFormat::kShapefile},
+      {".shp", PolygonFormat::kShapefile},   {".gpkg", PolygonFormat::kGeoPackage},
   };
-  const std::string extension = internal::ToLower(std::filesystem::path(path).extension().string());
+  const std::string extension =
+      internal::ToLower(std::filesystem::path(SplitLayerName(path).first).extension().string());
   for (const auto& [name, format] : kExtensions) {
     if (extension == name) return format;
   }
@@ -234,21 +236,42 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
         return ReadShapefile(in, source, &multipolygons, &warnings, &features);
       };
       break;
+    case PolygonFormat::kGeoPackage:
+      break;
     case PolygonFormat::kUnknown:
       throw InputError(path + ": unknown polygon file extension '" +
                        internal::ToLower(std::filesystem::path(path).extension().string()) +
                        "' (expected " + kPolygonFileExtensions + ")");
   }
-  std::ifstream in = OpenFile(path);
-  std::vector<Polygon2d> polygons = reader(in, path);
-  CheckRead(in, path);
+  const auto [file, layer_name] = SplitLayerName(path);
+  if (format != PolygonFormat::kGeoPackage && !layer_name.empty()) {
+    throw InputError(path + ": '|layername=' names a layer of a GeoPackage (.gpkg) file only");
+  }
+  std::vector<Polygon2d> polygons;
+  if (format == PolygonFormat::kGeoPackage) {
+    GeoPackageLayer layer = ReadGeoPackage(file, layer_name, options.skip_non_areal,
+                                           options.feature_properties != nullptr);
+    polygons = std::move(layer.polygons);
+    multipolygons = std::move(layer.multipolygons);
+    features = std::move(layer.features);
+    if (options.feature_properties != nullptr) {
+      *options.feature_properties = std::move(layer.properties);
+    }
+    warnings = std::move(layer.warnings);
+    NoteGeographicCoordinates(file + ": layer '" + layer.name + "'", layer.crs_wkt, &warnings);
+  } else {
+    std::ifstream in = OpenFile(path);
+    polygons = reader(in, path);
+    CheckRead(in, path);
+  }
   if (polygons.empty()) throw InputError(path + ": no polygon in file");
   multipolygons.resize(polygons.size(), -1);
   for (size_t k = features.size(); k < polygons.size(); ++k) {
     features.push_back(static_cast<int>(k));
   }
   if (format == PolygonFormat::kShapefile) {
-    NoteGeographicCoordinates(path, &warnings);
+    const std::string prj_path = BesideShapefile(path, ".prj", ".PRJ");
+    if (!prj_path.empty()) NoteGeographicCoordinates(prj_path, ReadFile(prj_path), &warnings);
     if (options.feature_properties != nullptr) {
       *options.feature_properties = ShapefileAttributes(path, features, &warnings);
     }

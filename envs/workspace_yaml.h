@@ -13,8 +13,7 @@ namespace acdplan::envs {
 ///   description: "one line"                      # optional
 ///   bounds: [xmin, ymin, xmax, ymax]
 ///   obstacles:                                   # optional
-///     - file: rocks.poly                         # every polygon of a .poly/.wkt/.geojson/.shp
-///     file
+///     - file: rocks.poly                         # every polygon of a polygon file
 ///     - polygon: [[x, y], [x, y], [x, y], ...]   # inline outer ring (either orientation)
 ///       holes: [[[x, y], ...], ...]              # optional
 /// Relative paths are resolved against the YAML file's folder.

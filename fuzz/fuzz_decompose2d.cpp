@@ -1,4 +1,4 @@
-// libFuzzer target: whatever a polygon reader (.poly, WKT, GeoJSON, shapefile) accepts is
+// libFuzzer target: whatever a polygon reader (.poly, WKT, GeoJSON, shapefile, WKB) accepts is
 // decomposed by Decompose2d(), convex (tau = 0) and approximate (tau = 5% of the polygon's
 // reference radius), and CheckDecomposition() must pass; otherwise the problems are printed and the
 // target aborts. A polygon PreparePolygons() rejects is made valid by RepairPolygon() first, as
@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <iterator>
 #include <numeric>
 #include <sstream>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "acd/prepare_polygon.h"
 #include "acd/repair_polygon.h"
 #include "acd/shapefile_reader.h"
+#include "acd/wkb_reader.h"
 #include "acd/wkt_reader.h"
 #include "base/input_error.h"
 #include "fuzz/fuzz_input.h"
@@ -117,6 +119,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       },
       [](std::istream& in, const std::string& source) {
         return acdplan::acd::ReadShapefile(in, source);
+      },
+      [](std::istream& in, const std::string& source) {
+        const std::string bytes(std::istreambuf_iterator<char>(in), {});
+        return acdplan::acd::ReadWkb(reinterpret_cast<const unsigned char*>(bytes.data()),
+                                     bytes.size(), source)
+            .polygons;
       }};
   for (const Reader& reader : readers) {
     for (const Polygon2d& polygon : ReadValid(text, reader)) {

@@ -19,6 +19,9 @@ inline const std::filesystem::path kAcd2d = std::filesystem::path(DataDir()) / "
 /// data/polygons/shapefiles: ESRI shapefiles (.shp with their .dbf) written by other software.
 inline const std::filesystem::path kShapefiles =
     std::filesystem::path(DataDir()) / "polygons" / "shapefiles";
+/// data/polygons/geopackage: GeoPackages written by other software.
+inline const std::filesystem::path kGeoPackages =
+    std::filesystem::path(DataDir()) / "polygons" / "geopackage";
 /// configs/ (scenarios, benchmark specifications), without a trailing slash.
 inline const std::string kConfigs = SourceDir() + "/configs";
 

@@ -36,7 +36,7 @@ std::string Frame(const std::string& holes) {
 std::vector<Polygon2d> Read(const std::string& text) { return ReadTrianglePoly(text, "t.poly"); }
 
 std::string ErrorOf(const std::string& text) {
-  return test::InputErrorOf([&] { Read(text); });
+  return acdplan::test::InputErrorOf([&] { Read(text); });
 }
 
 const Ring2d kOuter = {{0, 0}, {3, 0}, {3, 3}, {0, 3}};
@@ -99,9 +99,9 @@ TEST(TrianglePolyReaderTest, IslandsAndSeparateRegionsAreSeparatePolygons) {
 }
 
 TEST(TrianglePolyReaderTest, VerticesFromTheNodeFileBeside) {
-  const test::ScratchDir dir;
+  const acdplan::test::ScratchDir dir;
   const std::string poly = dir.Write("box.poly", "0 2 0 0\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n");
-  EXPECT_THAT(test::InputErrorOf([&] { ReadPolygons(poly); }),
+  EXPECT_THAT(acdplan::test::InputErrorOf([&] { ReadPolygons(poly); }),
               HasSubstr("box.poly:1: the vertex count is 0, so the vertices are in " +
                         dir.Path("box.node") + ", which cannot be read: No such file"));
   dir.Write("box.node", "4 2 0 0\n1 0 0\n2 3 0\n3 3 3\n4 0 3\n");
@@ -109,7 +109,7 @@ TEST(TrianglePolyReaderTest, VerticesFromTheNodeFileBeside) {
   ASSERT_EQ(polygons.size(), 1u);
   EXPECT_EQ(polygons[0].outer.size(), 4u);
   dir.Write("box.node", "4 2 0 0\n1 0 0\n2 3 0\n3 3 x\n4 0 3\n");
-  EXPECT_THAT(test::InputErrorOf([&] { ReadPolygons(poly); }),
+  EXPECT_THAT(acdplan::test::InputErrorOf([&] { ReadPolygons(poly); }),
               HasSubstr("box.node:4: malformed number 'x'"));
 }
 

@@ -38,7 +38,7 @@ TEST(LoadWorkspace2dTest, DispatchesByExtensionAndContent) {
   // LoadWorld() takes meshes too, and says so.
   EXPECT_THAT(testing::ErrorOf([&] { LoadWorld("world.svg"); }),
               HasSubstr("world.svg: unknown world file extension '.svg' (expected .yaml, .yml, "
-                        ".map, .poly, .wkt, .geojson, .json or .shp, or a mesh: .obj,"));
+                        ".map, .poly, .wkt, .geojson, .json, .shp or .gpkg, or a mesh: .obj,"));
 }
 
 TEST(LoadWorkspace2dTest, LoadsEveryBuiltInWorld) {

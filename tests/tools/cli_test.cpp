@@ -106,11 +106,12 @@ TEST_F(CliTest, UnknownExtensionListsThePolygonAndMeshFormats) {
   const std::string input = Write("points.xyz", "0 0 0\n").string();
   const RunResult run = Acdplan("decompose " + Quote(input));
   ExpectUsageError(run);
-  EXPECT_NE(run.err.find(input + ": unknown file extension '.xyz' (expected a polygon file, "
-                                 ".poly, .wkt, .geojson, .json or .shp, or a mesh, .obj, .off, "
-                                 ".ply, .stl, or a format assimp reads (.dae, .gltf, .glb, "
-                                 ".fbx,"),
-            std::string::npos)
+  EXPECT_NE(
+      run.err.find(input + ": unknown file extension '.xyz' (expected a polygon file, "
+                           ".poly, .wkt, .geojson, .json, .shp or .gpkg, or a mesh, .obj, .off, "
+                           ".ply, .stl, or a format assimp reads (.dae, .gltf, .glb, "
+                           ".fbx,"),
+      std::string::npos)
       << run.err;
 }
 
@@ -171,6 +172,30 @@ TEST_F(CliTest, DecomposesAndWritesJsonAndSvg) {
   const std::string svg = Read(svg_path);
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_NE(svg.find("simple1.poly"), std::string::npos);
+}
+
+// A GeoPackage layer named as QGIS shows its source: decomposed and checked, its components
+// carrying their county's attributes.
+TEST_F(CliTest, DecomposesAGeoPackageLayerNamedAsQgisNamesIt) {
+  const fs::path geojson_path = dir_ / "nc_gpkg.geojson";
+  const RunResult run =
+      Acdplan("decompose " +
+              Quote((acdplan::test::kGeoPackages / "nc.gpkg").string() + "|layername=nc.gpkg") +
+              " --tau-rel 0.05 --measure sl --check --geojson " + Quote(geojson_path.string()));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("check          ok"), std::string::npos) << run.out;
+  EXPECT_NE(run.err.find("layer 'nc.gpkg': geographic coordinates (GEOGCS \"NAD27\")"),
+            std::string::npos)
+      << run.err;
+  const nlohmann::json layer = nlohmann::json::parse(Read(geojson_path));
+  ASSERT_FALSE(layer.at("features").empty());
+  for (const nlohmann::json& feature : layer.at("features")) {
+    EXPECT_TRUE(feature.at("properties").at("NAME").is_string());
+  }
+  const RunResult points =
+      Acdplan("decompose " + Quote((acdplan::test::kGeoPackages / "b_pump.gpkg").string()));
+  EXPECT_EQ(points.status, 2);
+  EXPECT_NE(points.err.find("no layer of polygons"), std::string::npos) << points.err;
 }
 
 // A GIS user's round: a shapefile in, a GeoJSON polygon layer out whose components carry their
