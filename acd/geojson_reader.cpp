@@ -1,10 +1,10 @@
 #include "acd/geojson_reader.h"
 
 #include <cmath>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "acd/internal/skipped_geometries.h"
 #include "acd/internal/text_parsing.h"
 #include "base/input_error.h"
 
@@ -27,7 +27,7 @@ class GeoJsonWalker {
                               std::vector<int>* features, std::vector<std::string>* properties,
                               std::vector<std::string>* warnings) {
     Object(root, "");
-    if (!skipped_.empty() && warnings != nullptr) warnings->push_back(SkippedNote());
+    if (!skipped_.empty() && warnings != nullptr) warnings->push_back(skipped_.Note(source_));
     if (multipolygons != nullptr) *multipolygons = std::move(multipolygons_);
     if (features != nullptr) *features = std::move(features_);
     if (properties != nullptr) *properties = std::move(properties_);
@@ -75,8 +75,7 @@ class GeoJsonWalker {
       multipolygon_ = -1;
     } else if (skip_non_areal_ && (type == "Point" || type == "MultiPoint" ||
                                    type == "LineString" || type == "MultiLineString")) {
-      if (skipped_.empty()) first_skipped_ = path.empty() ? std::string("root") : path;
-      ++skipped_[type];
+      skipped_.Add(type, path.empty() ? std::string("root") : path);
     } else if (type == "GeometryCollection") {
       const Json& geometries = Require(value, path, "geometries", Json::value_t::array, "an array");
       const std::string member = Member(path, "geometries");
@@ -115,20 +114,6 @@ class GeoJsonWalker {
                                       "FeatureCollection") +
                      ")");
     }
-  }
-
-  // "source: skipped 3 geometries without area (2 Point, 1 LineString; the first at
-  // features[4].geometry)".
-  std::string SkippedNote() const {
-    int count = 0;
-    std::string types;
-    for (const auto& [type, n] : skipped_) {
-      count += n;
-      types += (types.empty() ? "" : ", ") + std::to_string(n) + " " + type;
-    }
-    return source_ + ": skipped " + std::to_string(count) +
-           (count == 1 ? " geometry" : " geometries") + " without area (" + types +
-           "; the first at " + first_skipped_ + ")";
   }
 
   // RFC 7946 3.1.6: an array of linear rings, the first the exterior, the others holes. An empty
@@ -182,8 +167,7 @@ class GeoJsonWalker {
 
   const std::string& source_;
   const bool skip_non_areal_;
-  std::map<std::string, int> skipped_;  // Per geometry type skipped, how many.
-  std::string first_skipped_;           // The path of the first.
+  internal::SkippedGeometries skipped_;
   std::vector<Polygon2d> polygons_;
   std::vector<int> multipolygons_;       // Per polygon.
   std::vector<int> features_;            // Per polygon.

@@ -9,6 +9,7 @@
 #include <new>
 #include <nlohmann/json.hpp>
 
+#include "acd/internal/skipped_geometries.h"
 #include "acd/internal/text_parsing.h"
 #include "acd/wkb_reader.h"
 #include "base/file_io.h"
@@ -218,8 +219,8 @@ GeoPackageLayer ReadLayer(sqlite3* db, const std::string& source, const std::str
   if (!id_column.empty()) sql += " ORDER BY " + Quoted(id_column);
   Statement rows(db, sql, source);
   const std::string in_layer = source + ": layer '" + layer.table + "'";
-  std::vector<std::pair<std::string, int>> non_areal;
-  std::string first_non_areal, first_unclosed;
+  internal::SkippedGeometries skipped;
+  std::string first_unclosed;
   int unclosed = 0;
   int groups = 0;
   for (int feature = 0; rows.Step(); ++feature) {
@@ -247,21 +248,12 @@ GeoPackageLayer ReadLayer(sqlite3* db, const std::string& source, const std::str
     size_t wkb_size = 0;
     if (!WkbOf(blob, size, where, &wkb, &wkb_size)) continue;
     WkbPolygons read = ReadWkb(wkb, wkb_size, where);
-    for (const auto& [name, count] : read.non_areal) {
-      if (!skip_non_areal) {
-        throw InputError(where + ": a " + name +
-                         " has no area (a layer to decompose holds polygons)");
-      }
-      if (first_non_areal.empty()) first_non_areal = where;
-      bool listed = false;
-      for (auto& [known, total] : non_areal) {
-        if (known == name) {
-          total += count;
-          listed = true;
-        }
-      }
-      if (!listed) non_areal.emplace_back(name, count);
+    if (!read.non_areal.empty() && !skip_non_areal) {
+      throw InputError(where + ": a " + read.non_areal.front().first +
+                       " has no area (a layer to decompose holds polygons)");
     }
+    const std::string feature_place = where.substr(in_layer.size() + 2);
+    for (const auto& [type, count] : read.non_areal) skipped.Add(type, feature_place, count);
     if (read.unclosed_rings > 0 && unclosed == 0) first_unclosed = where;
     unclosed += read.unclosed_rings;
     int last_group = -1;
@@ -274,14 +266,7 @@ GeoPackageLayer ReadLayer(sqlite3* db, const std::string& source, const std::str
     }
     groups += last_group + 1;
   }
-  if (!non_areal.empty()) {
-    std::string counts;
-    for (const auto& [name, count] : non_areal) {
-      counts += (counts.empty() ? "" : ", ") + std::to_string(count) + " " + name;
-    }
-    out.warnings.push_back(in_layer + ": skipped geometries without area: " + counts +
-                           " (the first in " + first_non_areal.substr(in_layer.size() + 2) + ")");
-  }
+  if (!skipped.empty()) out.warnings.push_back(skipped.Note(in_layer));
   if (unclosed > 0) {
     out.warnings.push_back(first_unclosed + ": a ring without its closing point, taken as it is (" +
                            std::to_string(unclosed) + " in the layer)");

@@ -13,6 +13,7 @@
 #include "acd/internal/disjoint_sets.h"
 #include "acd/internal/even_odd_regions.h"
 #include "acd/internal/text_parsing.h"
+#include "acd/kml_reader.h"
 #include "acd/poly_reader.h"
 #include "acd/prepare_polygon.h"
 #include "acd/repair_polygon.h"
@@ -184,7 +185,7 @@ std::vector<std::string> ShapefileAttributes(const std::string& shp_path,
 }
 
 // The formats ReadPolygons() reads, told by the file's extension (any case).
-enum class PolygonFormat { kPoly, kWkt, kGeoJson, kShapefile, kGeoPackage, kUnknown };
+enum class PolygonFormat { kPoly, kWkt, kGeoJson, kShapefile, kGeoPackage, kKml, kUnknown };
 
 // The format of `path`, a file or a GeoPackage's layer ("FILE|layername=NAME").
 PolygonFormat FormatOf(const std::string& path) {
@@ -192,6 +193,7 @@ PolygonFormat FormatOf(const std::string& path) {
       {".poly", PolygonFormat::kPoly},       {".wkt", PolygonFormat::kWkt},
       {".geojson", PolygonFormat::kGeoJson}, {".json", PolygonFormat::kGeoJson},
       {".shp", PolygonFormat::kShapefile},   {".gpkg", PolygonFormat::kGeoPackage},
+      {".kml", PolygonFormat::kKml},
   };
   const std::string extension =
       internal::ToLower(std::filesystem::path(SplitLayerName(path).first).extension().string());
@@ -234,6 +236,20 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
     case PolygonFormat::kShapefile:
       reader = [&](std::istream& in, const std::string& source) {
         return ReadShapefile(in, source, &multipolygons, &warnings, &features);
+      };
+      break;
+    case PolygonFormat::kKml:
+      reader = [&](std::istream& in, const std::string& source) {
+        KmlExtras extras;
+        std::vector<Polygon2d> polygons = ReadKml(in, source, options.skip_non_areal, &extras);
+        features = std::move(extras.features);
+        if (options.feature_properties != nullptr) {
+          *options.feature_properties = std::move(extras.properties);
+        }
+        warnings = std::move(extras.warnings);
+        // KML's coordinates are WGS 84 longitude/latitude, always (OGC 07-147r2, 6.2).
+        NoteGeographicCoordinates(source, "GEOGCS[\"WGS 84\"]", &warnings);
+        return polygons;
       };
       break;
     case PolygonFormat::kGeoPackage:

@@ -30,25 +30,27 @@ struct ReadPolygonsOptions {
   /// If given, receives per returned polygon the feature of the file it comes from, the unit a
   /// GIS tool keeps attributes for: a shapefile's record (its FID, counted from 0), a GeoJSON
   /// FeatureCollection's feature, a GeoPackage layer's row (counted from 0 in the order of the
-  /// feature ids), the k-th geometry of a WKT file, the k-th polygon of a .poly file. The members
-  /// of a MULTIPOLYGON share their feature, as the pieces of one polygon do.
+  /// feature ids), a KML Placemark, the k-th geometry of a WKT file, the k-th polygon of a .poly
+  /// file. The members of a MULTIPOLYGON share their feature, as the pieces of one polygon do.
   std::vector<int>* features = nullptr;
   /// If given, receives per feature of the file (as `features` numbers them) its attributes as
   /// the text of a JSON object, to carry into output: a GeoJSON Feature's "properties" ("{}" if
   /// null), a shapefile record's row of the .dbf beside the .shp (acd/dbf_reader.h; its text
   /// encoding from the .cpg beside them if there is one), a GeoPackage row's columns but the id and
-  /// the geometry (acd/geopackage_reader.h). Empty for formats without attributes
+  /// the geometry (acd/geopackage_reader.h), a KML Placemark's name, description and
+  /// ExtendedData (acd/kml_reader.h). Empty for formats without attributes
   /// (.poly, WKT, a GeoJSON geometry) and for a shapefile without a .dbf (with a note). A .dbf
   /// that breaks its format, or has no row for a record with a shape, is an error.
   std::vector<std::string>* feature_properties = nullptr;
-  /// GeoJSON, GeoPackage: skip points and lines (geometries without area) with a note instead of
-  /// refusing the file, as a layer to decompose may hold a few among its polygons. Off for
+  /// GeoJSON, GeoPackage, KML: skip points and lines (geometries without area) with a note instead
+  /// of refusing the file, as a layer to decompose may hold a few among its polygons. Off for
   /// obstacles, where a line may stand for a wall.
   bool skip_non_areal = false;
 };
 
 /// The extensions ReadPolygons() reads, for messages.
-inline constexpr char kPolygonFileExtensions[] = ".poly, .wkt, .geojson, .json, .shp or .gpkg";
+inline constexpr char kPolygonFileExtensions[] =
+    ".poly, .wkt, .geojson, .json, .shp, .gpkg or .kml";
 
 /// Whether ReadPolygons() reads `path`, by its extension (any case).
 bool IsPolygonFile(const std::string& path);
@@ -57,7 +59,8 @@ bool IsPolygonFile(const std::string& path);
 /// acd/poly_reader.h), `.wkt` (acd/wkt_reader.h), `.geojson` / `.json` (acd/geojson_reader.h),
 /// `.shp` (an ESRI shapefile's polygons, acd/shapefile_reader.h), `.gpkg` (a GeoPackage layer's,
 /// acd/geopackage_reader.h: `FILE.gpkg|layername=NAME`, as QGIS names a layer's source, reads
-/// layer NAME; a file with one layer of polygons needs no name).
+/// layer NAME; a file with one layer of polygons needs no name), `.kml` (its Placemarks' polygons,
+/// acd/kml_reader.h).
 /// Every polygon is passed through PreparePolygons(), so the result is validated and clean; a
 /// polygon whose rings touch at points may become several (in file order, so polygon k of the
 /// result is not always polygon k of the file).

@@ -14,8 +14,8 @@ namespace acdplan::envs {
 ///  - `.yaml` / `.yml` with an `image` key: a ROS occupancy map (envs/occupancy_map.h);
 ///  - other `.yaml` / `.yml`: a workspace file (envs/workspace_yaml.h);
 ///  - `.map`: a Moving AI grid (envs/moving_ai_map.h);
-///  - `.poly`, `.wkt`, `.geojson`, `.json`, `.shp`, `.gpkg`: the file's polygons as obstacles
-///    inside their bounding box grown by 10% of its larger side on every side.
+///  - a polygon file (acd::IsPolygonFile()): its polygons as obstacles inside their bounding
+///    box grown by 10% of its larger side on every side.
 /// `polygons` says how obstacle polygons (from polygon files, inline in a workspace YAML or
 /// files it names) are read: strictly by default; with `repair`, invalid ones are made valid
 /// (acd::RepairPolygon) and each change is a line of `notes`. `map` says how an occupancy map

@@ -1,4 +1,4 @@
-// libFuzzer target: whatever a polygon reader (.poly, WKT, GeoJSON, shapefile, WKB) accepts is
+// libFuzzer target: whatever a polygon reader (.poly, WKT, GeoJSON, shapefile, WKB, KML) accepts is
 // decomposed by Decompose2d(), convex (tau = 0) and approximate (tau = 5% of the polygon's
 // reference radius), and CheckDecomposition() must pass; otherwise the problems are printed and the
 // target aborts. A polygon PreparePolygons() rejects is made valid by RepairPolygon() first, as
@@ -17,6 +17,7 @@
 #include "acd/check_decomposition.h"
 #include "acd/decompose2d.h"
 #include "acd/geojson_reader.h"
+#include "acd/kml_reader.h"
 #include "acd/poly_reader.h"
 #include "acd/prepare_polygon.h"
 #include "acd/repair_polygon.h"
@@ -125,6 +126,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return acdplan::acd::ReadWkb(reinterpret_cast<const unsigned char*>(bytes.data()),
                                      bytes.size(), source)
             .polygons;
+      },
+      [](std::istream& in, const std::string& source) {
+        acdplan::acd::KmlExtras extras;
+        return acdplan::acd::ReadKml(in, source, /*skip_non_areal=*/true, &extras);
       }};
   for (const Reader& reader : readers) {
     for (const Polygon2d& polygon : ReadValid(text, reader)) {

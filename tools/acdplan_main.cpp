@@ -565,9 +565,10 @@ int main(int argc, char** argv) {
   InputKindOptions kinds;
   decompose
       ->add_option("INPUT", args.input,
-                   "Polygon file: .poly, .wkt, .geojson, .json, .shp (ESRI shapefile) or .gpkg "
-                   "(a GeoPackage; FILE.gpkg|layername=NAME for one of several layers); or mesh "
-                   "file: .obj, .stl, .ply, .off, .gltf, .glb, .dae or another format assimp reads")
+                   "Polygon file: .poly, .wkt, .geojson, .json, .shp (ESRI shapefile), .gpkg "
+                   "(a GeoPackage; FILE.gpkg|layername=NAME for one of several layers) or .kml; "
+                   "or mesh file: .obj, .stl, .ply, .off, .gltf, .glb, .dae or another format "
+                   "assimp reads")
       ->required();
   CLI::Option* tau = decompose->add_option(
       "--tau", args.tau,

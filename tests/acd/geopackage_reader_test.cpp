@@ -236,8 +236,8 @@ TEST(GeoPackageReaderTest, SkipsPointsAndLinesWithANoteWhenAsked) {
   options.notes = &notes;
   EXPECT_EQ(ReadPolygons(path, nullptr, options).size(), 1u);
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_THAT(notes[0], HasSubstr("mixed.gpkg: layer 'things': skipped geometries without area: "
-                                  "2 LineString, 1 Point (the first in feature 1 (fid 11))"));
+  EXPECT_THAT(notes[0], HasSubstr("mixed.gpkg: layer 'things': skipped 3 geometries without area "
+                                  "(2 LineString, 1 Point; the first at feature 1 (fid 11))"));
 }
 
 TEST(GeoPackageReaderTest, ErrorsNameTheFileLayerAndFeature) {

@@ -36,9 +36,10 @@ TEST(LoadWorkspace2dTest, DispatchesByExtensionAndContent) {
   EXPECT_THAT(testing::ErrorOf([&] { LoadWorkspace2d("world.svg"); }),
               HasSubstr("world.svg: unknown world file extension '.svg'"));
   // LoadWorld() takes meshes too, and says so.
-  EXPECT_THAT(testing::ErrorOf([&] { LoadWorld("world.svg"); }),
-              HasSubstr("world.svg: unknown world file extension '.svg' (expected .yaml, .yml, "
-                        ".map, .poly, .wkt, .geojson, .json, .shp or .gpkg, or a mesh: .obj,"));
+  EXPECT_THAT(
+      testing::ErrorOf([&] { LoadWorld("world.svg"); }),
+      HasSubstr("world.svg: unknown world file extension '.svg' (expected .yaml, .yml, "
+                ".map, .poly, .wkt, .geojson, .json, .shp, .gpkg or .kml, or a mesh: .obj,"));
 }
 
 TEST(LoadWorkspace2dTest, LoadsEveryBuiltInWorld) {

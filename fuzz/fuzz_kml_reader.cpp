@@ -1,0 +1,18 @@
+// libFuzzer target: acd::ReadKml() on arbitrary bytes, with points and lines skipped and the
+// attributes kept, as `acdplan decompose` reads a file. InputError is the expected answer to bad
+// input; anything else (another exception, a crash, a sanitizer report, a hang) is a finding.
+#include <sstream>
+
+#include "acd/kml_reader.h"
+#include "base/input_error.h"
+#include "fuzz/fuzz_input.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  std::istringstream in(acdplan::fuzz::InputText(data, size));
+  acdplan::acd::KmlExtras extras;
+  try {
+    acdplan::acd::ReadKml(in, "fuzz.kml", /*skip_non_areal=*/true, &extras);
+  } catch (const acdplan::InputError&) {
+  }
+  return 0;
+}
