@@ -236,11 +236,11 @@ GeoPackageLayer ReadLayer(sqlite3* db, const std::string& source, const std::str
       out.properties.push_back(
           properties.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
     }
-    const int type = sqlite3_column_type(rows.get(), 1);
-    if (type == SQLITE_NULL) continue;
-    if (type != SQLITE_BLOB) {
+    const int column_type = sqlite3_column_type(rows.get(), 1);
+    if (column_type == SQLITE_NULL) continue;
+    if (column_type != SQLITE_BLOB) {
       throw InputError(where + ": the geometry is no GeoPackageBinary (a BLOB), found " +
-                       (type == SQLITE_TEXT ? "text" : "a number"));
+                       (column_type == SQLITE_TEXT ? "text" : "a number"));
     }
     const auto* blob = static_cast<const unsigned char*>(sqlite3_column_blob(rows.get(), 1));
     const size_t size = static_cast<size_t>(sqlite3_column_bytes(rows.get(), 1));

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <exception>
 #include <iterator>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -67,12 +68,12 @@ class KmlParser {
       const size_t size = std::min(kPiece, text.size() - at);
       const bool last = at + size == text.size();
       if (XML_Parse(parser_, text.data() + at, static_cast<int>(size), last) != XML_STATUS_OK) {
-        if (!error_.empty()) throw InputError(error_);
+        if (error_) std::rethrow_exception(error_);
         Fail("malformed XML: " + std::string(XML_ErrorString(XML_GetErrorCode(parser_))));
       }
       at += size;
     } while (at < text.size());
-    if (!error_.empty()) throw InputError(error_);
+    if (error_) std::rethrow_exception(error_);
     if (!skipped_.empty()) extras_.warnings.push_back(skipped_.Note(source_));
     if (unclosed_ > 0) {
       extras_.warnings.push_back(first_unclosed_ +
@@ -86,11 +87,11 @@ class KmlParser {
  private:
   template <typename F>
   void Guarded(F&& f) {
-    if (!error_.empty()) return;
+    if (error_) return;
     try {
       f(*this);
-    } catch (const InputError& error) {
-      error_ = error.what();
+    } catch (...) {
+      error_ = std::current_exception();
       XML_StopParser(parser_, XML_FALSE);
     }
   }
@@ -235,7 +236,7 @@ class KmlParser {
   const std::string& source_;
   const bool skip_non_areal_;
   XML_Parser parser_ = nullptr;
-  std::string error_;  // The first error, from a callback.
+  std::exception_ptr error_;  // The first error, from a callback.
   std::vector<std::string> path_;
   int features_ = 0, feature_ = -1;
   int placemark_depth_ = -1, polygon_depth_ = -1;

@@ -137,9 +137,9 @@ std::string BesideShapefile(const std::string& shp_path, const char* lower, cons
 }
 
 // A note when `wkt`, the coordinate reference system of the polygons of `where` (a shapefile's
-// .prj, a GeoPackage layer's definition), is geographic (WKT 1's GEOGCS, WKT 2's GEOGCRS or
-// GEODCRS at the top): they are decomposed as planar x = longitude, y = latitude, so shapes are
-// stretched east-west by 1 / cos(latitude) and tau is in degrees.
+// .prj, a GeoPackage layer's definition, KML's fixed WGS 84), is geographic (WKT 1's GEOGCS, WKT
+// 2's GEOGCRS or GEODCRS at the top): they are decomposed as planar x = longitude, y = latitude, so
+// shapes are stretched east-west by 1 / cos(latitude) and tau is in degrees.
 void NoteGeographicCoordinates(const std::string& where, const std::string& wkt,
                                std::vector<std::string>* notes) {
   const size_t start = wkt.find_first_not_of(" \t\r\n\xEF\xBB\xBF");  // (And a byte order mark.)
