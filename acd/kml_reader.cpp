@@ -1,8 +1,10 @@
 #include "acd/kml_reader.h"
 
 #include <expat.h>
+#include <unzip.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <exception>
 #include <iterator>
@@ -12,6 +14,7 @@
 
 #include "acd/internal/skipped_geometries.h"
 #include "acd/internal/text_parsing.h"
+#include "base/file_io.h"
 #include "base/input_error.h"
 
 namespace acdplan::acd {
@@ -261,6 +264,52 @@ std::vector<Polygon2d> ReadKml(std::istream& in, const std::string& source, bool
   const std::string text(std::istreambuf_iterator<char>(in), {});
   KmlExtras own;
   return KmlParser(source, skip_non_areal).Parse(text, extras != nullptr ? extras : &own);
+}
+
+std::string ReadKmzRoot(const std::string& path, std::string* entry) {
+  OpenFile(path);  // The common message for a missing or unreadable file.
+  const std::unique_ptr<void, decltype(&unzClose)> zip(unzOpen64(path.c_str()), &unzClose);
+  if (!zip) throw InputError(path + ": not a KMZ (not a readable zip archive)");
+  for (int status = unzGoToFirstFile(zip.get()); status == UNZ_OK;
+       status = unzGoToNextFile(zip.get())) {
+    unz_file_info64 info;
+    char name[1024];
+    if (unzGetCurrentFileInfo64(zip.get(), &info, name, sizeof name, nullptr, 0, nullptr, 0) !=
+        UNZ_OK) {
+      throw InputError(path + ": damaged zip archive (an entry's header)");
+    }
+    const std::string entry_name = name;
+    if (entry_name.size() < 4 ||
+        internal::ToLower(entry_name.substr(entry_name.size() - 4)) != ".kml") {
+      continue;
+    }
+    const std::string where = path + "/" + entry_name;
+    constexpr std::uint64_t kMaxBytes = std::uint64_t{1} << 30;
+    if (info.uncompressed_size > kMaxBytes) {
+      throw InputError(where + ": " + std::to_string(info.uncompressed_size) +
+                       " bytes uncompressed, over the 1 GiB this reader takes");
+    }
+    if ((info.flag & 1) != 0) throw InputError(where + ": encrypted (not supported)");
+    if (unzOpenCurrentFile(zip.get()) != UNZ_OK) {
+      throw InputError(where +
+                       ": cannot open the entry (damaged, or compressed by a method zlib "
+                       "does not read)");
+    }
+    std::string text;
+    char buffer[1 << 16];
+    int read = 0;
+    while ((read = unzReadCurrentFile(zip.get(), buffer, sizeof buffer)) > 0) {
+      text.append(buffer, static_cast<size_t>(read));
+      if (text.size() > kMaxBytes) throw InputError(where + ": over 1 GiB uncompressed");
+    }
+    // Closing checks the entry's CRC once it was read to the end.
+    if (read < 0 || unzCloseCurrentFile(zip.get()) != UNZ_OK) {
+      throw InputError(where + ": damaged entry (its data does not decompress or fails its CRC)");
+    }
+    if (entry != nullptr) *entry = entry_name;
+    return text;
+  }
+  throw InputError(path + ": no .kml entry in the KMZ archive");
 }
 
 }  // namespace acdplan::acd

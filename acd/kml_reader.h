@@ -36,4 +36,11 @@ struct KmlExtras {
 std::vector<Polygon2d> ReadKml(std::istream& in, const std::string& source, bool skip_non_areal,
                                KmlExtras* extras);
 
+/// The root document of the KMZ archive `path` (a zip file, Google Earth's default for saving):
+/// its first entry whose name ends in ".kml" (any case), as OGC 07-147r2 Sec. 16 takes it
+/// (usually doc.kml); `entry` receives that name.
+/// @throws InputError naming the file: not a readable zip archive, no .kml entry, a damaged or
+///         encrypted entry, an entry over 1 GiB uncompressed.
+std::string ReadKmzRoot(const std::string& path, std::string* entry);
+
 }  // namespace acdplan::acd

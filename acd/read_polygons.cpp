@@ -185,7 +185,7 @@ std::vector<std::string> ShapefileAttributes(const std::string& shp_path,
 }
 
 // The formats ReadPolygons() reads, told by the file's extension (any case).
-enum class PolygonFormat { kPoly, kWkt, kGeoJson, kShapefile, kGeoPackage, kKml, kUnknown };
+enum class PolygonFormat { kPoly, kWkt, kGeoJson, kShapefile, kGeoPackage, kKml, kKmz, kUnknown };
 
 // The format of `path`, a file or a GeoPackage's layer ("FILE|layername=NAME").
 PolygonFormat FormatOf(const std::string& path) {
@@ -193,7 +193,7 @@ PolygonFormat FormatOf(const std::string& path) {
       {".poly", PolygonFormat::kPoly},       {".wkt", PolygonFormat::kWkt},
       {".geojson", PolygonFormat::kGeoJson}, {".json", PolygonFormat::kGeoJson},
       {".shp", PolygonFormat::kShapefile},   {".gpkg", PolygonFormat::kGeoPackage},
-      {".kml", PolygonFormat::kKml},
+      {".kml", PolygonFormat::kKml},         {".kmz", PolygonFormat::kKmz},
   };
   const std::string extension =
       internal::ToLower(std::filesystem::path(SplitLayerName(path).first).extension().string());
@@ -239,6 +239,7 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
       };
       break;
     case PolygonFormat::kKml:
+    case PolygonFormat::kKmz:
       reader = [&](std::istream& in, const std::string& source) {
         KmlExtras extras;
         std::vector<Polygon2d> polygons = ReadKml(in, source, options.skip_non_areal, &extras);
@@ -275,6 +276,10 @@ std::vector<Polygon2d> ReadPolygons(const std::string& path, std::vector<double>
     }
     warnings = std::move(layer.warnings);
     NoteGeographicCoordinates(file + ": layer '" + layer.name + "'", layer.crs_wkt, &warnings);
+  } else if (format == PolygonFormat::kKmz) {
+    std::string entry;
+    std::istringstream in(ReadKmzRoot(path, &entry));
+    polygons = reader(in, path + "/" + entry);
   } else {
     std::ifstream in = OpenFile(path);
     polygons = reader(in, path);

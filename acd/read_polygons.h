@@ -50,7 +50,7 @@ struct ReadPolygonsOptions {
 
 /// The extensions ReadPolygons() reads, for messages.
 inline constexpr char kPolygonFileExtensions[] =
-    ".poly, .wkt, .geojson, .json, .shp, .gpkg or .kml";
+    ".poly, .wkt, .geojson, .json, .shp, .gpkg, .kml or .kmz";
 
 /// Whether ReadPolygons() reads `path`, by its extension (any case).
 bool IsPolygonFile(const std::string& path);
@@ -60,7 +60,7 @@ bool IsPolygonFile(const std::string& path);
 /// `.shp` (an ESRI shapefile's polygons, acd/shapefile_reader.h), `.gpkg` (a GeoPackage layer's,
 /// acd/geopackage_reader.h: `FILE.gpkg|layername=NAME`, as QGIS names a layer's source, reads
 /// layer NAME; a file with one layer of polygons needs no name), `.kml` (its Placemarks' polygons,
-/// acd/kml_reader.h).
+/// acd/kml_reader.h) or `.kmz` (the KML inside; messages name it as FILE.kmz/doc.kml).
 /// Every polygon is passed through PreparePolygons(), so the result is validated and clean; a
 /// polygon whose rings touch at points may become several (in file order, so polygon k of the
 /// result is not always polygon k of the file).

@@ -566,7 +566,8 @@ int main(int argc, char** argv) {
   decompose
       ->add_option("INPUT", args.input,
                    "Polygon file: .poly, .wkt, .geojson, .json, .shp (ESRI shapefile), .gpkg "
-                   "(a GeoPackage; FILE.gpkg|layername=NAME for one of several layers) or .kml; "
+                   "(a GeoPackage; FILE.gpkg|layername=NAME for one of several layers), .kml or "
+                   ".kmz; "
                    "or mesh file: .obj, .stl, .ply, .off, .gltf, .glb, .dae or another format "
                    "assimp reads")
       ->required();

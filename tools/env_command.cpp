@@ -284,7 +284,8 @@ CLI::App* AddEnvCommand(CLI::App* app, EnvArguments* args) {
   CLI::App* env = app->add_subcommand(
       "env",
       "Load a world (workspace YAML 2D or 3D, occupancy map.yaml, Moving AI .map, .poly/.wkt/"
-      ".geojson/.shp/.gpkg/.kml obstacles, a mesh) or a scenario's world, report what was loaded, "
+      ".geojson/.shp/.gpkg/.kml/.kmz obstacles, a mesh) or a scenario's world, report what was "
+      "loaded, "
       "its "
       "free "
       "space and ACD; --svg draws a 2D world and its decomposition. Exit status: 0 ok, 2 bad "

@@ -10,6 +10,7 @@ packages=(
   libboost-dev libboost-filesystem-dev libboost-serialization-dev libboost-system-dev
   libompl-dev libode-dev libfcl-dev libyaml-cpp-dev libassimp-dev libpng-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev libsqlite3-dev libexpat1-dev
+  libminizip-dev
   python3-matplotlib ompl-demos
 )
 

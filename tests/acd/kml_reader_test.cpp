@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <zip.h>
 
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -11,8 +12,10 @@
 #include "acd/check_decomposition.h"
 #include "acd/decompose2d.h"
 #include "acd/read_polygons.h"
+#include "base/file_io.h"
 #include "tests/data_paths.h"
 #include "tests/input_error_of.h"
+#include "tests/scratch_dir.h"
 
 namespace acdplan::acd {
 namespace {
@@ -149,6 +152,65 @@ TEST(KmlReaderTest, ErrorsNameTheLineAndTheRule) {
                     nullptr, /*skip_non_areal=*/false);
               }),
               HasSubstr("t.kml:2: a LineString has no area"));
+}
+
+// Writes a zip archive of `entries` (name, content), deflated, as Google Earth writes a KMZ.
+std::string WriteZip(const std::string& path,
+                     const std::vector<std::pair<std::string, std::string>>& entries) {
+  zipFile zip = zipOpen64(path.c_str(), APPEND_STATUS_CREATE);
+  EXPECT_NE(zip, nullptr);
+  for (const auto& [name, content] : entries) {
+    EXPECT_EQ(zipOpenNewFileInZip64(zip, name.c_str(), nullptr, nullptr, 0, nullptr, 0, nullptr,
+                                    Z_DEFLATED, Z_DEFAULT_COMPRESSION, 0),
+              ZIP_OK);
+    EXPECT_EQ(zipWriteInFileInZip(zip, content.data(), static_cast<unsigned>(content.size())),
+              ZIP_OK);
+    EXPECT_EQ(zipCloseFileInZip(zip), ZIP_OK);
+  }
+  EXPECT_EQ(zipClose(zip, nullptr), ZIP_OK);
+  return path;
+}
+
+// A KMZ (Google Earth's "Save Place As" default) reads as the first .kml inside it.
+TEST(KmlReaderTest, ReadsTheRootKmlOfAKmz) {
+  const acdplan::test::ScratchDir dir;
+  const std::string kml = ReadFile(kKmlSamples);
+  const std::string kmz =
+      WriteZip(dir.Path("samples.KMZ"), {{"files/icon.png", "not a picture"}, {"doc.kml", kml}});
+  std::vector<std::string> notes;
+  ReadPolygonsOptions options;
+  options.skip_non_areal = true;
+  options.notes = &notes;
+  const std::vector<Polygon2d> from_kmz = ReadPolygons(kmz, nullptr, options);
+  EXPECT_EQ(from_kmz.size(), ReadPolygons(kKmlSamples, nullptr, options).size());
+  ASSERT_FALSE(notes.empty());
+  EXPECT_THAT(notes[0], HasSubstr("samples.KMZ/doc.kml: skipped 10 geometries"));
+  EXPECT_THAT(InputErrorOf([&] { ReadPolygons(kmz); }),
+              HasSubstr("samples.KMZ/doc.kml:126: a Point has no area"));
+
+  const std::string no_kml = WriteZip(dir.Path("pictures.kmz"), {{"a.png", "x"}});
+  EXPECT_THAT(InputErrorOf([&] { ReadPolygons(no_kml); }),
+              HasSubstr("pictures.kmz: no .kml entry in the KMZ archive"));
+  EXPECT_THAT(InputErrorOf([&] { ReadPolygons(dir.Write("text.kmz", kml)); }),
+              HasSubstr("text.kmz: not a KMZ (not a readable zip archive)"));
+  // A stored entry whose bytes were changed fails its CRC.
+  const std::string stored = dir.Path("stored.kmz");
+  {
+    zipFile zip = zipOpen64(stored.c_str(), APPEND_STATUS_CREATE);
+    ASSERT_EQ(
+        zipOpenNewFileInZip64(zip, "doc.kml", nullptr, nullptr, 0, nullptr, 0, nullptr, 0, 0, 0),
+        ZIP_OK);
+    ASSERT_EQ(zipWriteInFileInZip(zip, kml.data(), static_cast<unsigned>(kml.size())), ZIP_OK);
+    zipCloseFileInZip(zip);
+    zipClose(zip, nullptr);
+  }
+  std::string bytes = ReadFile(stored);
+  const size_t at = bytes.find("<kml");
+  ASSERT_NE(at, std::string::npos);
+  bytes[at + 1] = 'K';
+  const std::string damaged = dir.Write("damaged.kmz", bytes);
+  EXPECT_THAT(InputErrorOf([&] { ReadPolygons(damaged); }),
+              HasSubstr("damaged.kmz/doc.kml: damaged entry"));
 }
 
 }  // namespace

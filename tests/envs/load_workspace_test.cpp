@@ -39,7 +39,7 @@ TEST(LoadWorkspace2dTest, DispatchesByExtensionAndContent) {
   EXPECT_THAT(
       testing::ErrorOf([&] { LoadWorld("world.svg"); }),
       HasSubstr("world.svg: unknown world file extension '.svg' (expected .yaml, .yml, "
-                ".map, .poly, .wkt, .geojson, .json, .shp, .gpkg or .kml, or a mesh: .obj,"));
+                ".map, .poly, .wkt, .geojson, .json, .shp, .gpkg, .kml or .kmz, or a mesh: .obj,"));
 }
 
 TEST(LoadWorkspace2dTest, LoadsEveryBuiltInWorld) {

@@ -106,12 +106,13 @@ TEST_F(CliTest, UnknownExtensionListsThePolygonAndMeshFormats) {
   const std::string input = Write("points.xyz", "0 0 0\n").string();
   const RunResult run = Acdplan("decompose " + Quote(input));
   ExpectUsageError(run);
-  EXPECT_NE(run.err.find(
-                input + ": unknown file extension '.xyz' (expected a polygon file, "
-                        ".poly, .wkt, .geojson, .json, .shp, .gpkg or .kml, or a mesh, .obj, .off, "
-                        ".ply, .stl, or a format assimp reads (.dae, .gltf, .glb, "
-                        ".fbx,"),
-            std::string::npos)
+  EXPECT_NE(
+      run.err.find(
+          input + ": unknown file extension '.xyz' (expected a polygon file, "
+                  ".poly, .wkt, .geojson, .json, .shp, .gpkg, .kml or .kmz, or a mesh, .obj, .off, "
+                  ".ply, .stl, or a format assimp reads (.dae, .gltf, .glb, "
+                  ".fbx,"),
+      std::string::npos)
       << run.err;
 }
 
