@@ -250,7 +250,7 @@ GeoPackageLayer ReadLayer(sqlite3* db, const std::string& source, const std::str
     WkbPolygons read = ReadWkb(wkb, wkb_size, where);
     if (!read.non_areal.empty() && !skip_non_areal) {
       throw InputError(where + ": a " + read.non_areal.front().first +
-                       " has no area (a layer to decompose holds polygons)");
+                       " has no area (only polygons are read here)");
     }
     const std::string feature_place = where.substr(in_layer.size() + 2);
     for (const auto& [type, count] : read.non_areal) skipped.Add(type, feature_place, count);

@@ -136,8 +136,7 @@ class KmlParser {
       Capture();
     } else if ((name == "LinearRing" && !in_polygon) || name == "Point" || name == "LineString" ||
                name == "Model" || name == "Track" || name == "MultiTrack") {
-      if (!skip_non_areal_)
-        Fail("a " + name + " has no area (a layer to decompose holds polygons)");
+      if (!skip_non_areal_) Fail("a " + name + " has no area (only polygons are read here)");
       skipped_.Add(name, "line " + std::to_string(XML_GetCurrentLineNumber(parser_)));
     } else if (placemark_depth_ >= 0 && !in_polygon) {
       const bool attribute = ((name == "name" || name == "description") && parent == "Placemark") ||
