@@ -224,10 +224,11 @@ GeoPackageLayer ReadLayer(sqlite3* db, const std::string& source, const std::str
   int unclosed = 0;
   int groups = 0;
   for (int feature = 0; rows.Step(); ++feature) {
-    std::string where = in_layer + ": feature " + std::to_string(feature);
+    std::string feature_place = "feature " + std::to_string(feature);
     if (sqlite3_column_type(rows.get(), 0) == SQLITE_INTEGER) {
-      where += " (fid " + std::to_string(sqlite3_column_int64(rows.get(), 0)) + ")";
+      feature_place += " (fid " + std::to_string(sqlite3_column_int64(rows.get(), 0)) + ")";
     }
+    const std::string where = in_layer + ": " + feature_place;
     if (with_properties) {
       nlohmann::ordered_json properties = nlohmann::ordered_json::object();
       for (size_t k = 0; k < attributes.size(); ++k) {
@@ -252,7 +253,6 @@ GeoPackageLayer ReadLayer(sqlite3* db, const std::string& source, const std::str
       throw InputError(where + ": a " + read.non_areal.front().first +
                        " has no area (only polygons are read here)");
     }
-    const std::string feature_place = where.substr(in_layer.size() + 2);
     for (const auto& [type, count] : read.non_areal) skipped.Add(type, feature_place, count);
     if (read.unclosed_rings > 0 && unclosed == 0) first_unclosed = where;
     unclosed += read.unclosed_rings;

@@ -36,6 +36,7 @@ std::string Attribute(const char** attributes, const char* name) {
   return "";
 }
 
+// XML's white space (its S production), not std::isspace()'s, which adds \v and \f.
 bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 // Walks the document's elements (expat's callbacks) and collects what ReadKml() returns. A

@@ -10,13 +10,13 @@
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  std::istringstream in(acdplan::fuzz::InputText(data, size));
+  const std::string text = acdplan::fuzz::InputText(data, size);
+  std::istringstream in(text);
   acdplan::acd::KmlExtras extras;
   try {
     acdplan::acd::ReadKml(in, "fuzz.kml", /*skip_non_areal=*/true, &extras);
   } catch (const acdplan::InputError&) {
   }
-  const std::string text = acdplan::fuzz::InputText(data, size);
   if (text.compare(0, 4, "PK\x03\x04") == 0) {
     try {
       std::istringstream root(
